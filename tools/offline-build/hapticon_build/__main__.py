@@ -1,0 +1,155 @@
+"""./build COMMAND — the offline build. Run `./build help` for the commands."""
+from __future__ import annotations
+
+import os
+import re
+import shutil
+import subprocess
+import sys
+import time
+
+from . import ui
+from .builder import Build, TestResult
+from .errors import BuildError
+from .project import load_project
+
+USAGE = """usage: ./build COMMAND [options]
+  apk                 build and verify the signed debug APK (out/app/hapticon-debug.apk)
+  test [MODULE...] [--tests REGEX]
+                      compile and run tests (all modules by default); the last line is
+                      "N passed, N failed, N skipped"; exits 1 on any failure
+  companion           build the companion command-line tool (used by ./hapticon)
+  demo                build the APK, then run the companion demo into out/demo
+  bench               build the companion and run `hapticon bench`
+  classpath MODULE [main|test]
+                      print a module's runtime classpath
+  clean               delete out/ (keeps downloaded artifacts and .build-cache/)
+options: --quiet (no progress), --offline (use only the local Maven repository)"""
+
+
+def main(argv: list[str]) -> int:
+    root = os.path.dirname(os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))))
+    args = [a for a in argv if a not in ("--quiet", "--offline")]
+    ui.QUIET = "--quiet" in argv
+    if "--offline" in argv:
+        os.environ["HAPTICON_OFFLINE"] = "1"
+    if not args or args[0] in ("help", "-h", "--help"):
+        print(USAGE)
+        return 0 if args else 2
+    command, rest = args[0], args[1:]
+    started = time.monotonic()
+    try:
+        project = load_project(root)
+        build = Build(project)
+        if command == "test":
+            return run_tests(build, rest)
+        if command == "apk":
+            from .android import AndroidApp
+            apk = AndroidApp(build, app_module(project)).assemble()
+            print(apk)
+        elif command == "companion":
+            companion_classpath(build)
+        elif command == "classpath":
+            m = project.module(rest[0])
+            print(os.pathsep.join(build.runtime_classpath(m, rest[1] if len(rest) > 1 else "main")))
+        elif command == "demo":
+            from .android import AndroidApp
+            apk = AndroidApp(build, app_module(project)).assemble()
+            build.kotlinc.close()
+            cp = companion_classpath(build)
+            run_companion(build, cp, ["demo", "--out", os.path.join(root, "out", "demo"), "--apk", apk])
+        elif command == "bench":
+            cp = companion_classpath(build)
+            build.kotlinc.close()
+            run_companion(build, cp, ["bench"] + rest)
+        elif command == "clean":
+            shutil.rmtree(os.path.join(root, "out"), ignore_errors=True)
+        else:
+            print(USAGE, file=sys.stderr)
+            return 2
+    except BuildError as e:
+        print(f"build failed: {e}", file=sys.stderr)
+        return 1
+    except KeyboardInterrupt:
+        return 130
+    ui.info(f"{command} done in {time.monotonic() - started:.1f} s")
+    return 0
+
+
+def app_module(project):
+    apps = [m for m in project.modules.values() if m.is_android_app]
+    if not apps:
+        raise BuildError("no module applies the android-application plugin")
+    return apps[0]
+
+
+def companion_classpath(build: Build) -> list[str]:
+    module = build.project.module(":companion")
+    cp = build.runtime_classpath(module, "main")
+    path = os.path.join(build.out, "companion", "runtime-classpath.txt")
+    os.makedirs(os.path.dirname(path), exist_ok=True)
+    with open(path, "w") as f:
+        f.write(os.pathsep.join(cp) + "\n")
+        f.write((module.main_class or "") + "\n")
+    return cp
+
+
+def run_companion(build: Build, classpath: list[str], args: list[str]) -> None:
+    module = build.project.module(":companion")
+    cmd = [build.tools.java, "-Djava.awt.headless=true", "-cp", os.pathsep.join(classpath), module.main_class] + args
+    code = subprocess.call(cmd, cwd=build.root)
+    if code != 0:
+        raise BuildError(f"hapticon {' '.join(args)} exited {code}")
+
+
+def run_tests(build: Build, rest: list[str]) -> int:
+    name_filter = None
+    if "--tests" in rest:
+        i = rest.index("--tests")
+        name_filter = rest[i + 1]
+        rest = rest[:i] + rest[i + 2:]
+    modules = [build.project.module(m) for m in rest] if rest else build.project.in_dependency_order()
+    results = []
+    if not rest:
+        results.append(build_tool_tests(build.root, name_filter))
+    for m in modules:
+        results.append(build.test_module(m, name_filter))
+        if m.is_android_app:
+            build.kotlinc.close()
+    build.kotlinc.close()
+    passed = sum(r.passed for r in results)
+    failed = sum(r.failed for r in results) + sum(1 for r in results if r.crashed)
+    skipped = sum(r.skipped for r in results)
+    for r in results:
+        if r.passed or r.failed or r.skipped or r.crashed:
+            print(f"{r.module}: {r.passed} passed, {r.failed} failed, {r.skipped} skipped"
+                  + (" (test JVM crashed)" if r.crashed else ""))
+    print(f"{passed} passed, {failed} failed, {skipped} skipped")
+    return 0 if failed == 0 else 1
+
+
+def build_tool_tests(root: str, name_filter: str | None) -> TestResult:
+    """The offline build's own Python tests (tools/offline-build/tests)."""
+    result = TestResult("tools/offline-build")
+    cmd = [sys.executable, "-B", "-m", "unittest", "discover", "-s", "tests", "-t", "."]
+    if name_filter:
+        cmd += ["-k", name_filter]
+    with ui.Stage("test tools/offline-build"):
+        p = subprocess.run(cmd, cwd=os.path.join(root, "tools", "offline-build"), text=True,
+                           stdout=subprocess.PIPE, stderr=subprocess.STDOUT)
+    ran = re.search(r"Ran (\d+) tests?", p.stdout)
+    if not ran:
+        print(p.stdout, file=sys.stderr)
+        result.crashed = True
+        return result
+    counts = {k: int(v) for k, v in re.findall(r"(failures|errors|skipped)=(\d+)", p.stdout)}
+    result.failed = counts.get("failures", 0) + counts.get("errors", 0)
+    result.skipped = counts.get("skipped", 0)
+    result.passed = int(ran.group(1)) - result.failed - result.skipped
+    if p.returncode != 0:
+        print(p.stdout, file=sys.stderr)
+    return result
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1:]))

@@ -1,0 +1,384 @@
+"""The Android application pipeline AGP would run: aapt2, manifest merger, kotlinc, D8, apksig.
+
+Resource ids are generated non-final (`--non-final-ids`, AGP's default since 8.0) so compiled app
+classes never inline ids, and the same classes run under Robolectric with the test resource table.
+"""
+from __future__ import annotations
+
+import fnmatch
+import hashlib
+import os
+import re
+import shutil
+import struct
+import subprocess
+import zipfile
+
+from .builder import Build, Outputs, TestResult
+from .errors import BuildError
+from .kotlin import fingerprint
+from .project import Module
+from .toolchain import run
+from .ui import Stage, info
+
+# AGP's default packaging excludes for Java resources taken from jars.
+JAVA_RESOURCE_EXCLUDES = [
+    "META-INF/LICENSE", "META-INF/LICENSE.txt", "META-INF/MANIFEST.MF", "META-INF/NOTICE", "META-INF/NOTICE.txt",
+    "META-INF/*.DSA", "META-INF/*.EC", "META-INF/*.SF", "META-INF/*.RSA", "META-INF/maven/*",
+    "META-INF/proguard/*", "META-INF/com.android.tools/*", "NOTICE", "NOTICE.txt", "LICENSE.txt", "LICENSE",
+    "*/.svn/*", "*/CVS/*", "*/SCCS/*", ".*", "*/.*", "*~", "*/thumbs.db", "*/picasa.ini", "*/about.html",
+    "*/package.html", "*/overview.html", "*/protobuf.meta", "_*", "*/_*", "*.kotlin_metadata",
+    "*.class", "META-INF/versions/*/module-info.class",
+]
+MERGED_JAVA_RESOURCES = ("META-INF/services/",)  # concatenated, as AGP's default merges do
+
+
+def excluded(name: str) -> bool:
+    return name.endswith("/") or any(fnmatch.fnmatchcase(name, p) for p in JAVA_RESOURCE_EXCLUDES)
+
+
+class AndroidApp:
+    def __init__(self, build: Build, module: Module):
+        self.b = build
+        self.m = module
+        self.tools = build.tools
+        self.out = os.path.join(build.out, module.name)
+        self.namespace = module.android["namespace"]
+        self.application_id = module.android.get("applicationId", self.namespace)
+        self.min_sdk = module.android["minSdk"]
+        self.target_sdk = module.android["targetSdk"]
+        self.version_code = module.android.get("versionCode", "1")
+        self.version_name = module.android.get("versionName", "1.0")
+        self.src = os.path.join(module.directory, "src", "main")
+        self.apk = os.path.join(self.out, f"{build.project.name}-debug.apk")
+
+    # -- resources --------------------------------------------------------------------------------
+    def _libraries(self, scope: str) -> list[dict]:
+        return [self.b.explode_aar(p) for p in self.b.external_classpath(self.m, scope) if p.endswith(".aar")]
+
+    def _compile_library_resources(self, libs: list[dict]) -> list[str]:
+        zips = []
+        pending = []
+        for lib in libs:
+            if not lib["res"]:
+                continue
+            z = os.path.join(self.b.cache, "aapt2", os.path.basename(lib["dir"]) + ".zip")
+            zips.append(z)
+            if not os.path.exists(z):
+                pending.append((lib["res"], z))
+        if pending:
+            os.makedirs(os.path.join(self.b.cache, "aapt2"), exist_ok=True)
+            procs = []
+            for res, z in pending:  # two at a time: the machines have two cores
+                procs.append((subprocess.Popen([self.tools.aapt2, "compile", "--dir", res, "-o", z + ".tmp"],
+                                               stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True), z))
+                if len(procs) == 2:
+                    self._wait_aapt2(procs)
+            self._wait_aapt2(procs)
+        return zips
+
+    @staticmethod
+    def _wait_aapt2(procs):
+        for p, z in procs:
+            output = p.communicate()[0]
+            if p.returncode != 0:
+                raise BuildError(f"aapt2 compile for {z} failed:\n{output}")
+            os.replace(z + ".tmp", z)
+        procs.clear()
+
+    def _merge_manifest(self, libs: list[dict], out: str) -> str:
+        main = os.path.join(self.src, "AndroidManifest.xml")
+        if not os.path.exists(main):
+            raise BuildError(f"{main} not found")
+        text = open(main).read()
+        if "<uses-sdk" in text:
+            raise BuildError(f"{main}: declare minSdk/targetSdk in build.gradle.kts, not <uses-sdk>")
+        # AGP injects the namespace as the package; the merger needs it on the main manifest.
+        text = re.sub(r"<manifest\b", f'<manifest package="{self.namespace}"', text, count=1)
+        os.makedirs(out, exist_ok=True)
+        staged = os.path.join(out, "main-AndroidManifest.xml")
+        with open(staged, "w") as f:
+            f.write(text)
+        merged = os.path.join(out, "AndroidManifest.xml")
+        lib_manifests = [l["manifest"] for l in libs if os.path.exists(l["manifest"])]
+        run([self.tools.java, "-cp", os.pathsep.join(self.tools.manifest_merger), "com.android.manifmerger.Merger",
+             "--main", staged, "--libs", os.pathsep.join(lib_manifests),
+             "--property", f"MIN_SDK_VERSION={self.min_sdk}", "--property", f"TARGET_SDK_VERSION={self.target_sdk}",
+             "--property", f"VERSION_CODE={self.version_code}", "--property", f"VERSION_NAME={self.version_name}",
+             "--placeholder", f"applicationId={self.application_id}", "--placeholder", f"packageName={self.application_id}",
+             "--remove-tools-declarations", "--out", merged], "manifest merge", log=os.path.join(out, "merger.log"))
+        return merged
+
+    def _link(self, scope: str, work: str) -> tuple[str, str]:
+        """Links resources for `scope` (main-runtime or test-runtime); returns (resource apk, R classes jar)."""
+        libs = self._libraries(scope)
+        lib_zips = self._compile_library_resources(libs)
+        app_res = os.path.join(self.src, "res")
+        app_zip = os.path.join(work, "app-res.zip")
+        os.makedirs(work, exist_ok=True)
+        if os.path.isdir(app_res):
+            run([self.tools.aapt2, "compile", "--dir", app_res, "-o", app_zip], "aapt2 compile of app resources")
+        manifest = self._merge_manifest(libs, work)
+        packages = set()
+        for lib in libs:
+            if lib["res"] and os.path.exists(lib["manifest"]):
+                m = re.search(r'package="([^"]+)"', open(lib["manifest"]).read())
+                if m:
+                    packages.add(m.group(1))
+        packages.discard(self.namespace)
+        gen = os.path.join(work, "gen")
+        shutil.rmtree(gen, ignore_errors=True)
+        res_apk = os.path.join(work, "resources.apk")
+        overlays = []
+        for z in lib_zips + ([app_zip] if os.path.isdir(app_res) else []):  # the app's own resources win
+            overlays += ["-R", z]
+        cmd = [self.tools.aapt2, "link", "-I", self.tools.android_jar, "--manifest", manifest, "--auto-add-overlay",
+               *overlays, "--java", gen, "--non-final-ids", "--min-sdk-version", self.min_sdk,
+               "--target-sdk-version", self.target_sdk, "--version-code", self.version_code,
+               "--version-name", self.version_name, "--rename-manifest-package", self.application_id,
+               "--debug-mode", "-o", res_apk]
+        if packages:
+            cmd += ["--extra-packages", ":".join(sorted(packages))]
+        run(cmd, "aapt2 link", log=os.path.join(work, "aapt2-link.log"))
+        r_sources = [os.path.join(r, f) for r, _d, fs in os.walk(gen) for f in fs if f.endswith(".java")]
+        r_classes = os.path.join(work, "r-classes")
+        shutil.rmtree(r_classes, ignore_errors=True)
+        run([self.tools.javac, "--release", "11", "-nowarn", "-encoding", "UTF-8", "-d", r_classes, *r_sources],
+            "javac of R classes")
+        r_jar = os.path.join(work, "R.jar")
+        _jar_directory(r_classes, r_jar)
+        return res_apk, r_jar
+
+    # -- compile ----------------------------------------------------------------------------------
+    def compile_main(self) -> Outputs:
+        work = os.path.join(self.out, "intermediates", "main")
+        fp = fingerprint(self.b.external_classpath(self.m, "main-runtime"), os.path.join(self.src, "res"),
+                         os.path.join(self.src, "AndroidManifest.xml"), str(self.m.android))
+        stamp = os.path.join(work, "resources.stamp")
+        self.res_apk, self.r_jar = os.path.join(work, "resources.apk"), os.path.join(work, "R.jar")
+        if not (os.path.exists(stamp) and open(stamp).read() == fp and os.path.exists(self.r_jar)):
+            with Stage(f"resources {self.m.path}"):
+                self._link("main-runtime", work)
+                with open(stamp, "w") as f:
+                    f.write(fp)
+        outputs = self.b.compile_module(self.m, "main", extra_classpath=[self.r_jar])
+        return outputs
+
+    # -- APK --------------------------------------------------------------------------------------
+    def assemble(self) -> str:
+        classes = self.b.compile_module(self.m, "main")
+        if not hasattr(self, "r_jar"):
+            self.compile_main()
+        runtime = self.b.runtime_classpath(self.m, "main")
+        project_entries = [e for e in runtime if e.startswith(self.b.out) or os.path.isdir(e)]
+        library_jars = []
+        for p in self.b.external_classpath(self.m, "main-runtime"):
+            library_jars += self.b.explode_aar(p)["jars"] if p.endswith(".aar") else [p]
+        with Stage("dex"):
+            dex_dir = self._dex(project_entries, library_jars)
+        with Stage("package and sign"):
+            unsigned = os.path.join(self.out, "intermediates", "unsigned.apk")
+            shutil.copyfile(self.res_apk, unsigned)
+            with zipfile.ZipFile(unsigned, "a", zipfile.ZIP_DEFLATED) as apk:
+                for f in sorted(os.listdir(dex_dir)):
+                    if f.endswith(".dex"):
+                        apk.write(os.path.join(dex_dir, f), f)
+                count = self._add_java_resources(apk, project_entries + library_jars)
+                natives = self._add_native_libraries(apk)
+            info(f"{count} Java resources, {natives} native libraries packaged")
+            self._sign(unsigned, self.apk)
+        with Stage("verify APK"):
+            self.verify(self.apk)
+        return self.apk
+
+    def _d8(self, args: list[str], what: str) -> None:
+        run([self.tools.java, "-Xmx3g", "-cp", self.tools.r8, "com.android.tools.r8.D8", "--release",
+             "--min-api", self.min_sdk, "--lib", self.tools.android_jar, "--lib", self.tools.java_home, *args], what)
+
+    def _dex(self, project_entries: list[str], library_jars: list[str]) -> str:
+        work = os.path.join(self.out, "intermediates", "dex")
+        os.makedirs(work, exist_ok=True)
+        # Libraries change rarely: dex them once per exact set, keyed by content.
+        key = hashlib.sha1("\n".join(library_jars).encode())
+        for j in library_jars:
+            key.update(str(os.path.getsize(j)).encode())
+        cache = os.path.join(self.b.cache, "dex", key.hexdigest()[:16])
+        if not os.path.exists(os.path.join(cache, ".done")):
+            os.makedirs(cache, exist_ok=True)
+            info(f"pre-dexing {len(library_jars)} library jars (cached for later builds)")
+            self._d8(["--intermediate", "--output", os.path.join(cache, "libs.zip"),
+                      "--globals-output", os.path.join(cache, "libs-globals.zip"), *library_jars], "D8 of libraries")
+            open(os.path.join(cache, ".done"), "w").close()
+        program = os.path.join(work, "program.jar")
+        with zipfile.ZipFile(program, "w") as z:
+            for entry in project_entries:
+                _add_tree(z, entry, classes_only=True)
+            with zipfile.ZipFile(self.r_jar) as r:
+                for n in r.namelist():
+                    z.writestr(n, r.read(n))
+        classpath = []
+        for j in library_jars:
+            classpath += ["--classpath", j]
+        self._d8(["--intermediate", *classpath, "--output", os.path.join(work, "program-dex.zip"),
+                  "--globals-output", os.path.join(work, "program-globals.zip"), program], "D8 of app classes")
+        final = os.path.join(work, "final")
+        shutil.rmtree(final, ignore_errors=True)
+        os.makedirs(final)
+        self._d8(["--output", final, "--globals", os.path.join(cache, "libs-globals.zip"),
+                  "--globals", os.path.join(work, "program-globals.zip"),
+                  os.path.join(cache, "libs.zip"), os.path.join(work, "program-dex.zip")], "D8 merge")
+        return final
+
+    def _add_java_resources(self, apk: zipfile.ZipFile, entries: list[str]) -> int:
+        taken: dict[str, bytes] = {}
+        for entry in entries:
+            for name, read in _iter_files(entry):
+                if excluded(name):
+                    continue
+                data = read()
+                if name in taken:
+                    if name.startswith(MERGED_JAVA_RESOURCES) and data not in taken[name]:
+                        taken[name] = taken[name].rstrip(b"\n") + b"\n" + data
+                    continue  # first one wins, as AGP's pickFirst
+                taken[name] = data
+        existing = set(apk.namelist())
+        for name, data in sorted(taken.items()):
+            if name not in existing:
+                apk.writestr(name, data)
+        return len(taken)
+
+    def _add_native_libraries(self, apk: zipfile.ZipFile) -> int:
+        count = 0
+        for p in self.b.external_classpath(self.m, "main-runtime"):
+            if p.endswith(".aar"):
+                jni = os.path.join(self.b.explode_aar(p)["dir"], "jni")
+                for root, _d, files in os.walk(jni):
+                    for f in files:
+                        if f.endswith(".so"):
+                            rel = os.path.relpath(os.path.join(root, f), jni)
+                            apk.write(os.path.join(root, f), "lib/" + rel, compress_type=zipfile.ZIP_STORED)
+                            count += 1
+        return count
+
+    def _sign(self, unsigned: str, signed: str) -> None:
+        keystore = os.environ.get("HAPTICON_DEBUG_KEYSTORE") or os.path.join(os.path.expanduser("~"), ".android", "debug.keystore")
+        if not os.path.exists(keystore):
+            os.makedirs(os.path.dirname(keystore), exist_ok=True)
+            run([os.path.join(self.tools.java_home, "bin", "keytool"), "-genkeypair", "-keystore", keystore,
+                 "-storepass", "android", "-keypass", "android", "-alias", "androiddebugkey", "-keyalg", "RSA",
+                 "-keysize", "2048", "-validity", "10000", "-dname", "CN=Android Debug,O=Android,C=US"],
+                "creating the debug keystore")
+        helper = self.tools.helper_classes("ApkTool", [self.tools.apksig])
+        run([self.tools.java, "-cp", os.pathsep.join([helper, self.tools.apksig]), "ApkTool", "sign", keystore,
+             "android", "androiddebugkey", unsigned, signed, self.min_sdk], "APK signing")
+
+    def verify(self, apk: str) -> None:
+        """Signature (apksig), badging (aapt2) and that the dex holds the launcher activity."""
+        helper = self.tools.helper_classes("ApkTool", [self.tools.apksig])
+        sig = run([self.tools.java, "-cp", os.pathsep.join([helper, self.tools.apksig]), "ApkTool", "verify", apk,
+                   self.min_sdk], "APK signature verification").strip()
+        badging = run([self.tools.aapt2, "dump", "badging", apk], "aapt2 dump badging")
+        package = re.search(r"package: name='([^']+)'", badging)
+        activity = re.search(r"launchable-activity: name='([^']+)'", badging)
+        if not package or package.group(1) != self.application_id:
+            raise BuildError(f"APK package is {package and package.group(1)}, expected {self.application_id}")
+        if not activity:
+            raise BuildError("APK has no launchable activity")
+        sdk = re.search(r"(?m)^(?:minSdkVersion|sdkVersion):'(\d+)'", badging)
+        target = re.search(r"(?m)^targetSdkVersion:'(\d+)'", badging)
+        if not sdk or sdk.group(1) != self.min_sdk or not target or target.group(1) != self.target_sdk:
+            raise BuildError(f"APK SDK levels are min {sdk and sdk.group(1)} / target {target and target.group(1)}")
+        descriptor = "L" + activity.group(1).replace(".", "/") + ";"
+        with zipfile.ZipFile(apk) as z:
+            dexes = [n for n in z.namelist() if re.fullmatch(r"classes\d*\.dex", n)]
+            if not any(descriptor in dex_type_names(z.read(n)) for n in dexes):
+                raise BuildError(f"no dex in the APK defines {descriptor}")
+        size = os.path.getsize(apk)
+        info(f"{sig}; package {package.group(1)}, launcher {activity.group(1)}, minSdk {self.min_sdk}, "
+             f"targetSdk {self.target_sdk}, {len(dexes)} dex, {size / 1e6:.2f} MB")
+
+    # -- tests ------------------------------------------------------------------------------------
+    def test(self, name_filter: str | None) -> TestResult:
+        if not self.b.sources(self.m, "test"):
+            return TestResult(self.m.path)
+        self.b.compile_module(self.m, "main")
+        work = os.path.join(self.out, "intermediates", "test")
+        fp = fingerprint(self.b.external_classpath(self.m, "test-runtime"), os.path.join(self.src, "res"),
+                         os.path.join(self.src, "AndroidManifest.xml"), str(self.m.android))
+        stamp = os.path.join(work, "resources.stamp")
+        res_apk, r_jar = os.path.join(work, "resources.apk"), os.path.join(work, "R.jar")
+        if not (os.path.exists(stamp) and open(stamp).read() == fp and os.path.exists(r_jar)):
+            with Stage(f"test resources {self.m.path}"):
+                self._link("test-runtime", work)
+                with open(stamp, "w") as f:
+                    f.write(fp)
+        config = os.path.join(work, "config")
+        os.makedirs(os.path.join(config, "com", "android", "tools"), exist_ok=True)
+        assets = os.path.join(self.src, "assets")
+        with open(os.path.join(config, "com", "android", "tools", "test_config.properties"), "w") as f:
+            f.write(f"android_merged_manifest={os.path.join(work, 'AndroidManifest.xml')}\n"
+                    f"android_resource_apk={res_apk}\n"
+                    f"android_merged_assets={assets if os.path.isdir(assets) else os.path.join(work, 'assets')}\n"
+                    f"android_custom_package={self.namespace}\n")
+        test_classes = self.b.compile_module(self.m, "test", extra_classpath=[r_jar]).classes
+        runtime = [test_classes, config, r_jar]
+        runtime += [e for e in self.b.runtime_classpath(self.m, "test") if e != test_classes]
+        runtime.append(self.tools.android_runtime_jar)
+        return self.b.run_junit(self.m, test_classes, runtime, name_filter, jvm_args=[
+            "-Drobolectric.offline=true", f"-Drobolectric.dependency.dir={self.tools.robolectric_sdk_dir}",
+            "-Drobolectric.logging.enabled=false"])
+
+
+def _jar_directory(directory: str, jar: str) -> None:
+    with zipfile.ZipFile(jar, "w", zipfile.ZIP_DEFLATED) as z:
+        _add_tree(z, directory)
+
+
+def _add_tree(z: zipfile.ZipFile, entry: str, classes_only: bool = False) -> None:
+    for name, read in _iter_files(entry):
+        if not classes_only or name.endswith(".class"):
+            z.writestr(name, read())
+
+
+def _iter_files(entry: str):
+    if os.path.isdir(entry):
+        for root, _d, files in sorted(os.walk(entry)):
+            for f in sorted(files):
+                p = os.path.join(root, f)
+                yield os.path.relpath(p, entry).replace(os.sep, "/"), (lambda p=p: open(p, "rb").read())
+    elif entry.endswith(".jar") and os.path.exists(entry):
+        with zipfile.ZipFile(entry) as z:
+            for n in z.namelist():
+                yield n, (lambda n=n: z.read(n))
+
+
+def _uleb128(data: bytes, pos: int) -> tuple[int, int]:
+    result = shift = 0
+    while True:
+        b = data[pos]
+        pos += 1
+        result |= (b & 0x7F) << shift
+        if b < 0x80:
+            return result, pos
+        shift += 7
+
+
+def dex_type_names(dex: bytes) -> set[str]:
+    """Type descriptors (e.g. `Lorg/x/MainActivity;`) of the classes a dex file defines."""
+    if dex[:4] != b"dex\n":
+        raise BuildError("not a dex file")
+    string_ids_size, string_ids_off, type_ids_size, type_ids_off = struct.unpack_from("<IIII", dex, 0x38)
+    class_defs_size, class_defs_off = struct.unpack_from("<II", dex, 0x60)
+
+    def string(i: int) -> str:
+        off = struct.unpack_from("<I", dex, string_ids_off + 4 * i)[0]
+        _length, start = _uleb128(dex, off)
+        end = dex.index(b"\0", start)
+        return dex[start:end].decode("utf-8", "replace")
+
+    names = set()
+    for c in range(class_defs_size):
+        type_idx = struct.unpack_from("<I", dex, class_defs_off + 32 * c)[0]
+        string_idx = struct.unpack_from("<I", dex, type_ids_off + 4 * type_idx)[0]
+        names.add(string(string_idx))
+    return names

@@ -1,0 +1,281 @@
+"""The project model: modules, plugins and dependencies read from the Gradle files.
+
+Only a declarative subset of the Kotlin DSL is understood (see docs/build.md). Anything inside
+`plugins {}` or `dependencies {}` that is not understood is an error, so a dependency can never be
+silently ignored by the offline build while Gradle would use it.
+"""
+from __future__ import annotations
+
+import os
+import re
+import tomllib
+from dataclasses import dataclass, field
+
+from .errors import BuildError
+
+
+@dataclass(frozen=True)
+class Coordinate:
+    group: str
+    name: str
+    version: str | None  # None: the version comes from a platform (BOM)
+
+    def __str__(self) -> str:
+        return f"{self.group}:{self.name}" + (f":{self.version}" if self.version else "")
+
+
+@dataclass
+class Dependency:
+    configuration: str           # implementation, api, testImplementation, debugImplementation, ksp, ...
+    project: str | None = None   # ":haptics-core"
+    library: Coordinate | None = None
+    platform: bool = False
+
+
+@dataclass
+class Module:
+    path: str                    # ":app"
+    directory: str
+    plugins: set[str] = field(default_factory=set)     # catalog plugin aliases or core plugin ids
+    dependencies: list[Dependency] = field(default_factory=list)
+    explicit_api: bool = False
+    main_class: str | None = None
+    android: dict[str, str] = field(default_factory=dict)
+
+    @property
+    def name(self) -> str:
+        return self.path.lstrip(":").replace(":", "-")
+
+    @property
+    def is_android_app(self) -> bool:
+        return "android-application" in self.plugins
+
+    @property
+    def uses_compose(self) -> bool:
+        return "kotlin-compose" in self.plugins
+
+    @property
+    def uses_ksp(self) -> bool:
+        return "ksp" in self.plugins
+
+    def deps(self, *configurations: str) -> list[Dependency]:
+        return [d for d in self.dependencies if d.configuration in configurations]
+
+
+class Catalog:
+    """gradle/libs.versions.toml, with Gradle's accessor naming (`libs.a.b.c` is alias a-b-c, a_b_c or a.b.c)."""
+
+    def __init__(self, path: str):
+        try:
+            with open(path, "rb") as f:
+                data = tomllib.load(f)
+        except FileNotFoundError:
+            raise BuildError(f"version catalog not found: {path}")
+        self.versions: dict[str, str] = {k: str(v) for k, v in data.get("versions", {}).items()}
+        self._libraries = {self._key(k): (k, v) for k, v in data.get("libraries", {}).items()}
+        self._plugins = {self._key(k): (k, v) for k, v in data.get("plugins", {}).items()}
+        self._versions_by_key = {self._key(k): v for k, v in self.versions.items()}
+
+    @staticmethod
+    def _key(alias: str) -> str:
+        return re.sub(r"[-_.]", ".", alias).lower()
+
+    def version(self, accessor: str) -> str:
+        try:
+            return self._versions_by_key[self._key(accessor)]
+        except KeyError:
+            raise BuildError(f"libs.versions.{accessor} is not declared in gradle/libs.versions.toml")
+
+    def library(self, accessor: str) -> Coordinate:
+        entry = self._libraries.get(self._key(accessor))
+        if entry is None:
+            raise BuildError(f"libs.{accessor} is not declared in [libraries] of gradle/libs.versions.toml")
+        alias, spec = entry
+        if isinstance(spec, str):
+            g, a, v = spec.split(":")
+            return Coordinate(g, a, v)
+        if "module" in spec:
+            g, a = spec["module"].split(":")
+        else:
+            g, a = spec["group"], spec["name"]
+        v = spec.get("version")
+        if isinstance(v, dict):
+            if "ref" not in v:
+                raise BuildError(f"library {alias}: only version.ref or a plain version is supported")
+            v = self.versions.get(v["ref"])
+            if v is None:
+                raise BuildError(f"library {alias}: version.ref {spec['version']['ref']!r} is not in [versions]")
+        elif "version.ref" in spec:  # dotted key form
+            v = self.versions[spec["version.ref"]]
+        return Coordinate(g, a, v)
+
+    def plugin_alias(self, accessor: str) -> str:
+        entry = self._plugins.get(self._key(accessor))
+        if entry is None:
+            raise BuildError(f"libs.plugins.{accessor} is not declared in [plugins] of gradle/libs.versions.toml")
+        return entry[0]
+
+    def tool(self, alias: str) -> Coordinate:
+        return self.library(alias)
+
+
+CONFIGURATIONS = {
+    "implementation", "api", "compileOnly", "runtimeOnly",
+    "testImplementation", "testRuntimeOnly", "testCompileOnly",
+    "debugImplementation", "ksp",
+}
+CORE_PLUGINS = {"application", "java-library", "java"}
+
+
+def _read(path: str) -> str:
+    with open(path, encoding="utf-8") as f:
+        return f.read()
+
+
+def _block(text: str, name: str) -> str | None:
+    """Body of the first top-level `name { ... }` block (brace matched), or None."""
+    m = re.search(r"(?m)^\s*" + re.escape(name) + r"\s*\{", text)
+    if not m:
+        return None
+    depth, i = 1, m.end()
+    while depth and i < len(text):
+        depth += {"{": 1, "}": -1}.get(text[i], 0)
+        i += 1
+    if depth:
+        raise BuildError(f"unbalanced braces in block {name}")
+    return text[m.end(): i - 1]
+
+
+def _statements(body: str) -> list[str]:
+    lines = []
+    for raw in body.splitlines():
+        line = re.sub(r"//.*$", "", raw).strip()
+        if line:
+            lines.append(line)
+    return lines
+
+
+def _value(expr: str, catalog: Catalog) -> str:
+    expr = expr.strip()
+    m = re.fullmatch(r'"([^"]*)"', expr)
+    if m:
+        return m.group(1)
+    m = re.fullmatch(r"libs\.versions\.([\w.]+)\.get\(\)(?:\.toInt\(\))?", expr)
+    if m:
+        return catalog.version(m.group(1))
+    if re.fullmatch(r"\d+", expr):
+        return expr
+    raise BuildError(f"cannot evaluate {expr!r}: use a literal or libs.versions.x.get()")
+
+
+def parse_module(path: str, directory: str, catalog: Catalog) -> Module:
+    build_file = os.path.join(directory, "build.gradle.kts")
+    try:
+        text = _read(build_file)
+    except FileNotFoundError:
+        raise BuildError(f"module {path} is included in settings.gradle.kts but {build_file} does not exist")
+    text = re.sub(r"/\*.*?\*/", "", text, flags=re.S)
+    module = Module(path=path, directory=directory)
+
+    for stmt in _statements(_block(text, "plugins") or ""):
+        m = re.fullmatch(r"alias\(libs\.plugins\.([\w.]+)\)", stmt)
+        if m:
+            module.plugins.add(catalog.plugin_alias(m.group(1)))
+        elif stmt in CORE_PLUGINS or re.fullmatch(r"`[\w-]+`", stmt):
+            module.plugins.add(stmt.strip("`"))
+        else:
+            raise BuildError(f"{build_file}: plugins: cannot read {stmt!r} (use alias(libs.plugins.x))")
+
+    for stmt in _statements(_block(text, "dependencies") or ""):
+        m = re.fullmatch(r"(\w+)\((.*)\)", stmt)
+        if not m or m.group(1) not in CONFIGURATIONS:
+            raise BuildError(f"{build_file}: dependencies: cannot read {stmt!r}")
+        conf, arg = m.group(1), m.group(2).strip()
+        pm = re.fullmatch(r'project\("(:[\w:-]+)"\)', arg)
+        lm = re.fullmatch(r"libs\.([\w.]+)", arg)
+        plm = re.fullmatch(r"platform\(libs\.([\w.]+)\)", arg)
+        if pm:
+            module.dependencies.append(Dependency(conf, project=pm.group(1)))
+        elif lm:
+            module.dependencies.append(Dependency(conf, library=catalog.library(lm.group(1))))
+        elif plm:
+            module.dependencies.append(Dependency(conf, library=catalog.library(plm.group(1)), platform=True))
+        else:
+            raise BuildError(f"{build_file}: dependencies: {arg!r} must be project(\":x\"), libs.x or platform(libs.x)")
+
+    kotlin = _block(text, "kotlin") or ""
+    module.explicit_api = "explicitApi()" in kotlin
+
+    application = _block(text, "application")
+    if application:
+        m = re.search(r'mainClass(?:\.set\(|\s*=\s*)"([\w.$]+)"', application)
+        if not m:
+            raise BuildError(f"{build_file}: application {{}} needs mainClass = \"...\"")
+        module.main_class = m.group(1)
+
+    android = _block(text, "android")
+    if android is not None:
+        for key in ("namespace", "compileSdk", "minSdk", "targetSdk", "applicationId", "versionCode", "versionName"):
+            m = re.search(r"(?m)^\s*" + key + r"\s*=\s*(.+?)\s*$", android)
+            if m:
+                module.android[key] = _value(m.group(1), catalog)
+        for key in ("namespace", "compileSdk", "minSdk", "targetSdk"):
+            if key not in module.android:
+                raise BuildError(f"{build_file}: android {{}} must set {key}")
+    if module.is_android_app and android is None:
+        raise BuildError(f"{build_file}: an android application needs an android {{}} block")
+    return module
+
+
+@dataclass
+class Project:
+    root: str
+    name: str
+    catalog: Catalog
+    modules: dict[str, Module]
+
+    def module(self, path: str) -> Module:
+        if not path.startswith(":"):
+            path = ":" + path
+        if path not in self.modules:
+            raise BuildError(f"no module {path}; modules: {', '.join(self.modules)}")
+        return self.modules[path]
+
+    def project_deps(self, module: Module, *configurations: str) -> list[Module]:
+        return [self.module(d.project) for d in module.deps(*configurations) if d.project]
+
+    def in_dependency_order(self) -> list[Module]:
+        order, state = [], {}
+
+        def visit(m: Module, chain: tuple[str, ...]):
+            if state.get(m.path) == "done":
+                return
+            if state.get(m.path) == "visiting":
+                raise BuildError("module dependency cycle: " + " -> ".join(chain + (m.path,)))
+            state[m.path] = "visiting"
+            for d in m.dependencies:  # test-only project dependencies may point back; they don't order modules
+                if d.project and not d.configuration.startswith("test"):
+                    visit(self.module(d.project), chain + (m.path,))
+            state[m.path] = "done"
+            order.append(m)
+
+        for m in self.modules.values():
+            visit(m, ())
+        return order
+
+
+def load_project(root: str) -> Project:
+    settings = os.path.join(root, "settings.gradle.kts")
+    try:
+        text = _read(settings)
+    except FileNotFoundError:
+        raise BuildError(f"{settings} not found: run ./build from the project root")
+    name_match = re.search(r'rootProject\.name\s*=\s*"([^"]+)"', text)
+    catalog = Catalog(os.path.join(root, "gradle", "libs.versions.toml"))
+    modules = {}
+    for path in re.findall(r'(?m)^\s*include\("(:[\w:-]+)"\)', text):
+        directory = os.path.join(root, *path.strip(":").split(":"))
+        modules[path] = parse_module(path, directory, catalog)
+    if not modules:
+        raise BuildError(f"{settings} includes no modules")
+    return Project(root, name_match.group(1) if name_match else "project", catalog, modules)

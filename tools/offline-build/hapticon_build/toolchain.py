@@ -1,0 +1,136 @@
+"""The tools the Android Gradle Plugin would drive, fetched from Maven Central by catalog alias."""
+from __future__ import annotations
+
+import hashlib
+import os
+import shutil
+import subprocess
+import zipfile
+from functools import cached_property
+
+from .errors import BuildError
+from .maven import Repository
+from .project import Project
+from .resolver import Resolver
+from .ui import Stage
+
+HERE = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+
+
+def java_home() -> str:
+    home = os.environ.get("JAVA_HOME")
+    if not home:
+        java = shutil.which("java")
+        if not java:
+            raise BuildError("no java on PATH: install a JDK 17+ (Debian: apt-get install openjdk-17-jdk-headless)")
+        home = os.path.dirname(os.path.dirname(os.path.realpath(java)))
+    if not os.path.exists(os.path.join(home, "bin", "javac")):
+        raise BuildError(f"{home} is not a JDK (no bin/javac): set JAVA_HOME to a JDK 17+")
+    return home
+
+
+def run(cmd: list[str], what: str, log: str | None = None, env=None, cwd=None) -> str:
+    """Runs a tool; on failure raises BuildError with the tail of its output."""
+    try:
+        p = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, env=env, cwd=cwd)
+    except FileNotFoundError:
+        raise BuildError(f"{what}: {cmd[0]} not found")
+    if log:
+        os.makedirs(os.path.dirname(log), exist_ok=True)
+        with open(log, "w") as f:
+            f.write(p.stdout)
+    if p.returncode != 0:
+        tail = "\n".join(p.stdout.strip().splitlines()[-40:])
+        raise BuildError(f"{what} failed (exit {p.returncode})" + (f"; log: {log}" if log else "") + f"\n{tail}")
+    return p.stdout
+
+
+class Toolchain:
+    def __init__(self, project: Project, repo: Repository, cache: str):
+        self.project = project
+        self.repo = repo
+        self.cache = cache
+        self.catalog = project.catalog
+        self.java_home = java_home()
+        self.java = os.path.join(self.java_home, "bin", "java")
+        self.javac = os.path.join(self.java_home, "bin", "javac")
+
+    def _jar(self, alias: str) -> str:
+        c = self.catalog.tool(alias)
+        rel = Repository.relative(c.group, c.name, c.version, f"{c.name}-{c.version}.jar")
+        path = self.repo.fetch(rel, verify=True)
+        if path is None:
+            raise BuildError(f"{alias} ({c}) is not on Maven Central")
+        return path
+
+    def _classpath(self, *aliases: str) -> list[str]:
+        resolver = Resolver(self.repo, "jvm")
+        roots = [(c.group, c.name, c.version) for c in (self.catalog.tool(a) for a in aliases)]
+        artifacts = resolver.resolve(roots)
+        return self.repo.fetch_all([f for a in artifacts for f in a.files if f.endswith(".jar")])
+
+    @cached_property
+    def kotlin_compiler(self) -> list[str]:
+        with Stage("fetch Kotlin compiler"):
+            return self._classpath("tool-kotlin-compiler")
+
+    @cached_property
+    def compose_plugin(self) -> str:
+        return self._jar("tool-compose-compiler-plugin")
+
+    @cached_property
+    def r8(self) -> str:
+        return self._jar("tool-r8")
+
+    @cached_property
+    def apksig(self) -> str:
+        return self._jar("tool-apksig")
+
+    @cached_property
+    def manifest_merger(self) -> list[str]:
+        with Stage("fetch manifest merger"):
+            return self._classpath("tool-manifest-merger")
+
+    @cached_property
+    def android_jar(self) -> str:
+        """android.jar for compileSdk: classes plus resources.arsc, usable as `aapt2 link -I`."""
+        return self._jar("tool-android-all-compile")
+
+    @cached_property
+    def android_runtime_jar(self) -> str:
+        return self._jar("tool-android-all-runtime")
+
+    @cached_property
+    def robolectric_sdk_dir(self) -> str:
+        """Directory holding the instrumented SDK jar Robolectric loads (run offline, no fetching of its own)."""
+        return os.path.dirname(self._jar("tool-android-all-instrumented"))
+
+    @cached_property
+    def aapt2(self) -> str:
+        jar = self._jar("tool-apktool")
+        out = os.path.join(self.cache, "tools", "aapt2-" + os.path.basename(jar).removesuffix(".jar"), "aapt2")
+        if not os.path.exists(out):
+            os.makedirs(os.path.dirname(out), exist_ok=True)
+            with zipfile.ZipFile(jar) as z:
+                try:
+                    data = z.read("prebuilt/linux/aapt2")
+                except KeyError:
+                    raise BuildError(f"{jar} has no prebuilt/linux/aapt2")
+            with open(out + ".tmp", "wb") as f:
+                f.write(data)
+            os.chmod(out + ".tmp", 0o755)
+            os.replace(out + ".tmp", out)
+        return out
+
+    def helper_classes(self, name: str, classpath: list[str]) -> str:
+        """Compiles tools/offline-build/java/NAME.java once per content and classpath; returns its class dir."""
+        source = os.path.join(HERE, "java", name + ".java")
+        h = hashlib.sha1(open(source, "rb").read())
+        h.update("\n".join(classpath).encode())
+        out = os.path.join(self.cache, "helpers", f"{name}-{h.hexdigest()[:16]}")
+        if not os.path.exists(os.path.join(out, ".done")):
+            os.makedirs(out, exist_ok=True)
+            run([self.javac, "--release", "17", "-nowarn", "-d", out, "-cp", os.pathsep.join(classpath), source],
+                f"compiling build helper {name}")
+            open(os.path.join(out, ".done"), "w").close()
+        return out

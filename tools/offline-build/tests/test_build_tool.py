@@ -1,0 +1,179 @@
+"""Tests of the offline build's own logic: the Gradle-file reader and Gradle-semantics resolution."""
+import json
+import os
+import tempfile
+import textwrap
+import unittest
+
+from hapticon_build.android import excluded
+from hapticon_build.errors import BuildError
+from hapticon_build.maven import Repository
+from hapticon_build.project import Catalog, load_project
+from hapticon_build.resolver import Resolver, concrete_version, highest
+
+CATALOG = """
+[versions]
+kotlin = "2.4.21"
+android-minSdk = "26"
+[libraries]
+kotlin-stdlib = { module = "org.jetbrains.kotlin:kotlin-stdlib", version.ref = "kotlin" }
+androidx-compose-ui = { module = "androidx.compose.ui:ui" }
+junit4 = "junit:junit:4.13.2"
+[plugins]
+kotlin-jvm = { id = "org.jetbrains.kotlin.jvm", version.ref = "kotlin" }
+android-application = { id = "com.android.application", version = "9.4.1" }
+"""
+
+
+def write(root, path, text):
+    full = os.path.join(root, path)
+    os.makedirs(os.path.dirname(full), exist_ok=True)
+    with open(full, "w") as f:
+        f.write(textwrap.dedent(text))
+
+
+class ProjectReaderTest(unittest.TestCase):
+    def setUp(self):
+        self.root = tempfile.mkdtemp()
+        write(self.root, "gradle/libs.versions.toml", CATALOG)
+        write(self.root, "settings.gradle.kts", 'rootProject.name = "demo"\ninclude(":core")\ninclude(":app")\n')
+        write(self.root, "core/build.gradle.kts", """
+            plugins {
+                alias(libs.plugins.kotlin.jvm)
+            }
+            kotlin { explicitApi() }
+            dependencies {
+                testImplementation(libs.junit4)
+            }
+        """)
+
+    def app(self, dependencies):
+        write(self.root, "app/build.gradle.kts", """
+            plugins {
+                alias(libs.plugins.android.application)
+            }
+            android {
+                namespace = "org.demo"
+                compileSdk = 37
+                defaultConfig {
+                    minSdk = libs.versions.android.minSdk.get().toInt()
+                    targetSdk = 35
+                }
+            }
+            dependencies {
+        """ + dependencies + "\n}\n")
+
+    def test_load_project_readsModulesPluginsAndDependencies(self):
+        self.app('    implementation(project(":core"))\n    implementation(libs.androidx.compose.ui)')
+        project = load_project(self.root)
+        self.assertEqual([":core", ":app"], list(project.modules))
+        core, app = project.module(":core"), project.module(":app")
+        self.assertTrue(core.explicit_api)
+        self.assertEqual({"kotlin-jvm"}, core.plugins)
+        self.assertEqual("junit:junit:4.13.2", str(core.dependencies[0].library))
+        self.assertTrue(app.is_android_app)
+        self.assertEqual({"namespace": "org.demo", "compileSdk": "37", "minSdk": "26", "targetSdk": "35"}, app.android)
+        self.assertEqual(":core", app.dependencies[0].project)
+        self.assertIsNone(app.dependencies[1].library.version)
+        self.assertEqual([":core", ":app"], [m.path for m in project.in_dependency_order()])
+
+    def test_load_project_unknownDependencyForm_failsNamingTheLine(self):
+        self.app('    implementation("com.squareup.okio:okio:3.9.0")')
+        with self.assertRaises(BuildError) as e:
+            load_project(self.root)
+        self.assertIn("app/build.gradle.kts", str(e.exception))
+        self.assertIn("okio", str(e.exception))
+
+    def test_load_project_undeclaredCatalogAlias_fails(self):
+        self.app("    implementation(libs.not.there)")
+        with self.assertRaises(BuildError) as e:
+            load_project(self.root)
+        self.assertIn("libs.not.there is not declared", str(e.exception))
+
+    def test_load_project_moduleWithoutBuildFile_fails(self):
+        write(self.root, "settings.gradle.kts", 'include(":core")\ninclude(":ghost")\n')
+        with self.assertRaises(BuildError) as e:
+            load_project(self.root)
+        self.assertIn("ghost", str(e.exception))
+
+    def test_catalog_accessorsIgnoreSeparators(self):
+        catalog = Catalog(os.path.join(self.root, "gradle/libs.versions.toml"))
+        self.assertEqual("org.jetbrains.kotlin:kotlin-stdlib:2.4.21", str(catalog.library("kotlin.stdlib")))
+        self.assertEqual("26", catalog.version("android.minSdk"))
+
+
+class VersionTest(unittest.TestCase):
+    def test_highest_ordersLikeGradle(self):
+        self.assertEqual("1.10.0", highest(["1.9.0", "1.10.0", "1.10.0-rc01"]))
+        self.assertEqual("2.0.0-beta01", highest(["2.0.0-alpha09", "2.0.0-beta01"]))
+        self.assertEqual("1.2", highest(["1.2", "1.2-rc1"]))
+
+    def test_concreteVersion_takesExactAndLowerBounds(self):
+        self.assertEqual("1.4.0", concrete_version({"strictly": "[1.4.0]"}))
+        self.assertEqual("1.0", concrete_version("[1.0,2.0)"))
+        self.assertEqual("3.1", concrete_version({"requires": "3.1"}))
+
+
+class ResolverTest(unittest.TestCase):
+    """Resolution against a fabricated local repository (offline)."""
+
+    def setUp(self):
+        self.repo = Repository(tempfile.mkdtemp(), offline=True)
+
+    def module(self, g, a, v, deps=(), constraints=(), redirect=None, platform="jvm"):
+        variant = {"name": "runtime", "attributes": {"org.gradle.usage": "java-runtime",
+                                                      "org.jetbrains.kotlin.platform.type": platform}}
+        if redirect:
+            variant["available-at"] = dict(zip(("group", "module", "version"), redirect), url="x")
+        else:
+            variant["files"] = [{"name": f"{a}-{v}.jar", "url": f"{a}-{v}.jar"}]
+            variant["dependencies"] = [{"group": dg, "module": da, "version": {"requires": dv}} for dg, da, dv in deps]
+            variant["dependencyConstraints"] = [{"group": cg, "module": ca, "version": {"requires": cv}}
+                                                for cg, ca, cv in constraints]
+        path = self.repo.path(Repository.relative(g, a, v, f"{a}-{v}.module"))
+        os.makedirs(os.path.dirname(path), exist_ok=True)
+        with open(path, "w") as f:
+            json.dump({"variants": [variant]}, f)
+
+    def test_resolve_highestRequestedVersionWins(self):
+        self.module("g", "app", "1", deps=[("g", "lib", "1.0"), ("g", "mid", "1")])
+        self.module("g", "mid", "1", deps=[("g", "lib", "1.2")])
+        self.module("g", "lib", "1.0")
+        self.module("g", "lib", "1.2")
+        got = {a.name: a.version for a in Resolver(self.repo, "jvm").resolve([("g", "app", "1")])}
+        self.assertEqual({"app": "1", "mid": "1", "lib": "1.2"}, got)
+
+    def test_resolve_constraintRaisesVersionInGraph(self):
+        self.module("g", "a", "1", deps=[("g", "b", "1.0")], constraints=[("g", "b", "1.5")])
+        self.module("g", "b", "1.0")
+        self.module("g", "b", "1.5")
+        got = {a.name: a.version for a in Resolver(self.repo, "jvm").resolve([("g", "a", "1")])}
+        self.assertEqual("1.5", got["b"])
+
+    def test_resolve_followsAvailableAtToPlatformVariant(self):
+        self.module("g", "kmp", "2", redirect=("g", "kmp-jvm", "2"))
+        self.module("g", "kmp-jvm", "2")
+        artifacts = Resolver(self.repo, "jvm").resolve([("g", "kmp", "2")])
+        files = [f for a in artifacts for f in a.files]
+        self.assertEqual(["g/kmp-jvm/2/kmp-jvm-2.jar"], files)
+
+    def test_resolve_versionlessRootWithoutPlatform_fails(self):
+        self.module("g", "a", "1")
+        with self.assertRaises(BuildError) as e:
+            Resolver(self.repo, "jvm").resolve([("g", "a", "1"), ("g", "nobom", None)])
+        self.assertIn("no version for g:nobom", str(e.exception))
+
+
+class PackagingTest(unittest.TestCase):
+    def test_excluded_followsAgpDefaults(self):
+        self.assertTrue(excluded("META-INF/MANIFEST.MF"))
+        self.assertTrue(excluded("META-INF/maven/org.x/y/pom.xml"))
+        self.assertTrue(excluded("org/x/Foo.class"))
+        self.assertTrue(excluded("kotlin/collections/collections.kotlin_metadata"))
+        self.assertFalse(excluded("META-INF/androidx.core_core.version"))
+        self.assertFalse(excluded("kotlin/kotlin.kotlin_builtins"))
+        self.assertFalse(excluded("META-INF/services/kotlinx.coroutines.internal.MainDispatcherFactory"))
+
+
+if __name__ == "__main__":
+    unittest.main()
