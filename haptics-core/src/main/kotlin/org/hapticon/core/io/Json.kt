@@ -1,0 +1,84 @@
+package org.hapticon.core.io
+
+import java.nio.ByteBuffer
+import java.nio.CharBuffer
+import java.nio.charset.CodingErrorAction
+
+/**
+ * Strict JSON (RFC 8259) decoding and encoding without dependencies.
+ *
+ * Decoding is safe for hostile input: the text length and nesting depth are capped, malformed input
+ * fails with a [JsonException] giving the character offset, duplicate member names and unpaired
+ * surrogates are rejected, and nothing may follow the value.
+ */
+public object Json {
+    /** Default cap on the input size, in characters for [decode] and bytes for [decodeUtf8]: 1 MiB. */
+    public const val DEFAULT_MAX_LENGTH: Int = 1 shl 20
+
+    /** Default cap on the number of nested objects and arrays. */
+    public const val DEFAULT_MAX_DEPTH: Int = 64
+
+    /** Largest nesting depth that may be requested; it keeps recursion far from the stack limit. */
+    public const val MAX_DEPTH_LIMIT: Int = 512
+
+    /**
+     * Parses [text], which must hold exactly one JSON value (surrounding whitespace allowed).
+     *
+     * Throws [JsonException] when the text is malformed, longer than [maxLength] characters or nested
+     * deeper than [maxDepth] objects and arrays; [IllegalArgumentException] when [maxLength] is negative
+     * or [maxDepth] is outside 1..[MAX_DEPTH_LIMIT].
+     */
+    public fun decode(text: String, maxLength: Int = DEFAULT_MAX_LENGTH, maxDepth: Int = DEFAULT_MAX_DEPTH): JsonValue {
+        checkLimits(maxLength, maxDepth)
+        if (text.length > maxLength) {
+            throw JsonException("input of ${text.length} characters exceeds the limit of $maxLength", maxLength)
+        }
+        return JsonReader(text, maxDepth).readDocument()
+    }
+
+    /**
+     * Parses UTF-8 [bytes] (for example a message payload) like [decode]. [maxLength] counts bytes.
+     *
+     * Throws [JsonException] when the bytes are not valid UTF-8 (offset = byte index), when the text is
+     * malformed or exceeds a limit (offset = character index); [IllegalArgumentException] for bad limits.
+     */
+    public fun decodeUtf8(bytes: ByteArray, maxLength: Int = DEFAULT_MAX_LENGTH, maxDepth: Int = DEFAULT_MAX_DEPTH): JsonValue {
+        checkLimits(maxLength, maxDepth)
+        if (bytes.size > maxLength) {
+            throw JsonException("input of ${bytes.size} bytes exceeds the limit of $maxLength", maxLength)
+        }
+        return JsonReader(decodeUtf8Strictly(bytes), maxDepth).readDocument()
+    }
+
+    /**
+     * Writes [value] as JSON text: compact when [indent] is empty, otherwise one member or element per
+     * line, each level indented by [indent].
+     *
+     * Throws [IllegalArgumentException] when a number is infinite, a string holds an unpaired surrogate
+     * (it has no UTF-8 form), nesting exceeds [MAX_DEPTH_LIMIT], or [indent] holds anything but spaces and tabs.
+     */
+    public fun encode(value: JsonValue, indent: String = ""): String {
+        val out = StringBuilder()
+        JsonWriter(out, indent).write(value)
+        return out.toString()
+    }
+
+    private fun checkLimits(maxLength: Int, maxDepth: Int) {
+        require(maxLength >= 0) { "maxLength must be >= 0, was $maxLength" }
+        require(maxDepth in 1..MAX_DEPTH_LIMIT) { "maxDepth must be in 1..$MAX_DEPTH_LIMIT, was $maxDepth" }
+    }
+
+    // String(bytes, UTF_8) would silently replace malformed sequences; a strict decoder reports them.
+    private fun decodeUtf8Strictly(bytes: ByteArray): String {
+        val decoder = Charsets.UTF_8.newDecoder()
+            .onMalformedInput(CodingErrorAction.REPORT)
+            .onUnmappableCharacter(CodingErrorAction.REPORT)
+        val input = ByteBuffer.wrap(bytes)
+        val output = CharBuffer.allocate(bytes.size) // UTF-8 never yields more UTF-16 units than bytes
+        val result = decoder.decode(input, output, true)
+        if (result.isError) throw JsonException("malformed UTF-8", input.position())
+        decoder.flush(output)
+        output.flip()
+        return output.toString()
+    }
+}

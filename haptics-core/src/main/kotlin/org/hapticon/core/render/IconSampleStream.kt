@@ -1,0 +1,39 @@
+package org.hapticon.core.render
+
+/**
+ * [SampleStream] over an [IconSynthesizer]: samples are made as doubles in a fixed scratch block
+ * (allocated once per stream) and narrowed to floats, so reading allocates nothing.
+ */
+internal class IconSampleStream(
+    private val synthesizer: IconSynthesizer,
+    override val sampleRate: Int,
+) : SampleStream {
+    private val scratch = DoubleArray(SCRATCH_SAMPLES)
+
+    override val totalSamples: Long get() = synthesizer.totalSamples
+    override val position: Long get() = synthesizer.position
+
+    override fun read(destination: FloatArray, offset: Int, length: Int): Int {
+        checkRange(destination.size, offset, length)
+        if (position >= totalSamples) return -1
+        var written = 0
+        while (written < length) {
+            val made = synthesizer.fill(scratch, 0, minOf(SCRATCH_SAMPLES, length - written))
+            if (made == 0) break
+            for (j in 0 until made) destination[offset + written + j] = scratch[j].toFloat()
+            written += made
+        }
+        return written
+    }
+
+    private companion object {
+        const val SCRATCH_SAMPLES = 1024
+    }
+}
+
+/** Throws [IndexOutOfBoundsException] unless [offset, offset + length) lies within an array of [size]. */
+internal fun checkRange(size: Int, offset: Int, length: Int) {
+    if (offset < 0 || length < 0 || offset > size - length) {
+        throw IndexOutOfBoundsException("offset $offset and length $length do not fit an array of $size")
+    }
+}
