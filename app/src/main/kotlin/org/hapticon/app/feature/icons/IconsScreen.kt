@@ -1,0 +1,118 @@
+package org.hapticon.app.feature.icons
+
+import androidx.compose.foundation.clickable
+import androidx.compose.foundation.layout.Arrangement
+import androidx.compose.foundation.layout.Box
+import androidx.compose.foundation.layout.Column
+import androidx.compose.foundation.layout.PaddingValues
+import androidx.compose.foundation.layout.Row
+import androidx.compose.foundation.layout.fillMaxSize
+import androidx.compose.foundation.layout.fillMaxWidth
+import androidx.compose.foundation.layout.padding
+import androidx.compose.foundation.lazy.LazyColumn
+import androidx.compose.foundation.lazy.items
+import androidx.compose.material3.Card
+import androidx.compose.material3.CardDefaults
+import androidx.compose.material3.CircularProgressIndicator
+import androidx.compose.material3.ExperimentalMaterial3Api
+import androidx.compose.material3.MaterialTheme
+import androidx.compose.material3.Scaffold
+import androidx.compose.material3.Text
+import androidx.compose.material3.TopAppBar
+import androidx.compose.runtime.Composable
+import androidx.compose.runtime.getValue
+import androidx.compose.ui.Alignment
+import androidx.compose.ui.Modifier
+import androidx.compose.ui.semantics.Role
+import androidx.compose.ui.semantics.contentDescription
+import androidx.compose.ui.semantics.semantics
+import androidx.compose.ui.semantics.stateDescription
+import androidx.compose.ui.unit.dp
+import androidx.lifecycle.compose.collectAsStateWithLifecycle
+import androidx.lifecycle.viewmodel.compose.viewModel
+import androidx.lifecycle.viewmodel.initializer
+import androidx.lifecycle.viewmodel.viewModelFactory
+import java.util.Locale
+import org.hapticon.app.AppContainer
+import org.hapticon.core.HapticIcon
+import org.hapticon.app.ui.EnvelopeThumbnail
+
+/** The icon list wired to its [IconsViewModel]. */
+@Composable
+fun IconsRoute(container: AppContainer) {
+    val viewModel: IconsViewModel = viewModel(
+        factory = viewModelFactory { initializer { IconsViewModel(container.iconRepository, container.player) } },
+    )
+    val uiState by viewModel.uiState.collectAsStateWithLifecycle()
+    IconsScreen(uiState, onPlay = viewModel::play)
+}
+
+/** The icon list: each icon with its parameters and envelope; pressing one plays it. */
+@OptIn(ExperimentalMaterial3Api::class)
+@Composable
+fun IconsScreen(uiState: IconsUiState, onPlay: (HapticIcon) -> Unit) {
+    Scaffold(topBar = { TopAppBar(title = { Text("Haptic icons") }) }) { padding ->
+        when (uiState) {
+            IconsUiState.Loading -> Box(Modifier.fillMaxSize().padding(padding), Alignment.Center) {
+                CircularProgressIndicator()
+            }
+            is IconsUiState.Success -> LazyColumn(
+                contentPadding = PaddingValues(16.dp),
+                verticalArrangement = Arrangement.spacedBy(12.dp),
+                modifier = Modifier.fillMaxSize().padding(padding),
+            ) {
+                item {
+                    Text(
+                        "This phone plays icons as: ${uiState.renderer.label}",
+                        style = MaterialTheme.typography.bodyMedium,
+                    )
+                }
+                items(uiState.icons, key = { it.name }) { icon ->
+                    IconCard(icon, playing = uiState.nowPlaying?.takeIf { it.iconName == icon.name }, onPlay)
+                }
+            }
+        }
+    }
+}
+
+@Composable
+private fun IconCard(icon: HapticIcon, playing: NowPlaying?, onPlay: (HapticIcon) -> Unit) {
+    val colors = if (playing != null) {
+        CardDefaults.cardColors(containerColor = MaterialTheme.colorScheme.primaryContainer)
+    } else {
+        CardDefaults.cardColors()
+    }
+    Card(
+        colors = colors,
+        modifier = Modifier
+            .fillMaxWidth()
+            .clickable(role = Role.Button, onClickLabel = "play") { onPlay(icon) }
+            .semantics {
+                contentDescription = "Play ${icon.name}"
+                stateDescription = if (playing != null) "playing" else "not playing"
+            },
+    ) {
+        Column(Modifier.padding(16.dp), verticalArrangement = Arrangement.spacedBy(8.dp)) {
+            Row(verticalAlignment = Alignment.CenterVertically) {
+                Text(icon.name.replaceFirstChar { it.titlecase(Locale.ROOT) }, style = MaterialTheme.typography.titleMedium)
+            }
+            Text(describe(icon), style = MaterialTheme.typography.bodySmall)
+            EnvelopeThumbnail(icon)
+            if (playing != null) {
+                Text(
+                    "Playing ${playing.durationMillis} ms as ${playing.renderer.label} · " +
+                        "RMS error ${"%.3f".format(Locale.ROOT, playing.fidelity.rmsError)}",
+                    style = MaterialTheme.typography.labelMedium,
+                )
+            }
+        }
+    }
+}
+
+/** One line with every parameter, e.g. "A 0.005 s · S 0.01 s · L 0.5 · R 0.005 s · note 57 (220.0 Hz) · 3× every 0.27 s". */
+internal fun describe(icon: HapticIcon): String {
+    fun n(x: Double) = if (x == Math.floor(x) && x < 1e6) x.toLong().toString() else x.toString()
+    val repeat = if (icon.count > 1) " · ${icon.count}× every ${n(icon.period)} s" else ""
+    return "A ${n(icon.attack)} s · S ${n(icon.sustain)} s · L ${n(icon.level)} · R ${n(icon.release)} s · " +
+        "note ${n(icon.note)} (${"%.1f".format(Locale.ROOT, icon.frequency)} Hz)$repeat"
+}

@@ -1,0 +1,50 @@
+package org.hapticon.app.playback
+
+import org.hapticon.core.HapticIcon
+import org.hapticon.core.render.Fidelity
+
+/** Plays haptic icons on the phone's actuator. */
+interface HapticPlayer {
+    /** What the phone's vibrator can do. */
+    val capabilities: PlaybackCapabilities
+
+    /**
+     * Starts playing [icon], replacing whatever is playing. Returns how it is played, or
+     * [Playback.Unsupported] when the phone has no vibrator. Never blocks.
+     */
+    fun play(icon: HapticIcon): Playback
+
+    /** Stops any vibration this player started. */
+    fun stop()
+}
+
+/** The vibrator features that decide how faithfully an icon can be played. */
+data class PlaybackCapabilities(
+    val hasVibrator: Boolean,
+    val hasAmplitudeControl: Boolean,
+    val apiLevel: Int,
+) {
+    /** The renderer this phone gets: amplitude steps when it can vary strength, else on/off. */
+    val renderer: Renderer
+        get() = when {
+            !hasVibrator -> Renderer.NONE
+            hasAmplitudeControl -> Renderer.AMPLITUDE_WAVEFORM
+            else -> Renderer.ON_OFF
+        }
+}
+
+/** How an icon reaches the actuator, best first. */
+enum class Renderer(val label: String) {
+    AMPLITUDE_WAVEFORM("amplitude waveform"),
+    ON_OFF("on/off pattern"),
+    NONE("no vibrator"),
+}
+
+/** The outcome of [HapticPlayer.play]. */
+sealed interface Playback {
+    /** Playing with [renderer] for [durationMillis]; [fidelity] compares it with the ideal envelope. */
+    data class Playing(val renderer: Renderer, val durationMillis: Long, val fidelity: Fidelity) : Playback
+
+    /** Nothing plays: the phone has no vibrator. */
+    data object Unsupported : Playback
+}

@@ -1,0 +1,66 @@
+package org.hapticon.app.playback
+
+import android.content.Context
+import android.os.Build
+import android.os.VibrationEffect
+import android.os.Vibrator
+import android.os.VibratorManager
+import org.hapticon.core.HapticIcon
+import org.hapticon.core.render.VibrationWaveform
+
+/**
+ * Plays icons through [Vibrator] as `VibrationEffect.createWaveform` step waveforms rendered by
+ * haptics-core ([VibrationWaveform]): amplitude steps where the vibrator supports amplitude
+ * control, an on/off pattern otherwise.
+ */
+class VibratorHapticPlayer(private val vibrator: Vibrator) : HapticPlayer {
+
+    // Read at each use: cheap, and right even if the vibrator changes (e.g. an external one attaches).
+    override val capabilities: PlaybackCapabilities
+        get() = PlaybackCapabilities(
+            hasVibrator = vibrator.hasVibrator(),
+            hasAmplitudeControl = vibrator.hasAmplitudeControl(),
+            apiLevel = Build.VERSION.SDK_INT,
+        )
+
+    override fun play(icon: HapticIcon): Playback {
+        val renderer = capabilities.renderer
+        val waveform = when (renderer) {
+            Renderer.AMPLITUDE_WAVEFORM -> VibrationWaveform.render(icon)
+            Renderer.ON_OFF -> VibrationWaveform.onOff(icon)
+            Renderer.NONE -> return Playback.Unsupported
+        }
+        vibrator.vibrate(waveform.toVibrationEffect())
+        return Playback.Playing(renderer, waveform.totalMillis, waveform.fidelity)
+    }
+
+    override fun stop() = vibrator.cancel()
+
+    companion object {
+        /** A player on the phone's default vibrator. */
+        fun create(context: Context): VibratorHapticPlayer {
+            val vibrator = if (Build.VERSION.SDK_INT >= Build.VERSION_CODES.S) {
+                context.getSystemService(VibratorManager::class.java).defaultVibrator
+            } else {
+                @Suppress("DEPRECATION")
+                context.getSystemService(Vibrator::class.java)
+            }
+            return VibratorHapticPlayer(vibrator)
+        }
+    }
+}
+
+/**
+ * The platform effect for this waveform. [VibrationWaveform] guarantees the safety limits
+ * (timings > 0, amplitudes 0..255, total ≤ 30 s); checked again here because this is the last
+ * step before the actuator.
+ */
+fun VibrationWaveform.toVibrationEffect(): VibrationEffect {
+    val timings = timings()
+    val amplitudes = amplitudes()
+    check(timings.sum() <= HapticIcon.MAX_DURATION_SECONDS * 1000) { "vibration longer than the safety cap" }
+    check(amplitudes.all { it in 0..VibrationWaveform.MAX_AMPLITUDE }) { "amplitude outside 0..255" }
+    return VibrationEffect.createWaveform(timings, amplitudes, NO_REPEAT)
+}
+
+private const val NO_REPEAT = -1

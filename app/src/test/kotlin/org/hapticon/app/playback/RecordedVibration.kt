@@ -1,0 +1,27 @@
+package org.hapticon.app.playback
+
+import android.os.Vibrator
+import kotlin.math.roundToInt
+import org.robolectric.Shadows.shadowOf
+import org.robolectric.shadows.ShadowVibrator
+
+/** The last waveform handed to a (Robolectric) vibrator: step durations in ms and amplitudes 0..255. */
+data class RecordedVibration(val timings: List<Long>, val amplitudes: List<Int>)
+
+/**
+ * Reads what [vibrator] was last asked to play. Robolectric 4.17 records waveform effects as the
+ * platform's step segments in a protected field without a getter, and the segment class is hidden
+ * from the public android.jar, so both are read reflectively.
+ */
+fun lastVibration(vibrator: Vibrator): RecordedVibration? {
+    val timingsOnly = shadowOf(vibrator).pattern ?: return null
+    val field = ShadowVibrator::class.java.getDeclaredField("vibrationEffectSegments").apply { isAccessible = true }
+    val segments = field.get(null) as List<*>
+    check(segments.size == timingsOnly.size) { "segments and pattern disagree: ${segments.size} vs ${timingsOnly.size}" }
+    val timings = segments.map { it!!.javaClass.getMethod("getDuration").invoke(it) as Long }
+    val amplitudes = segments.map { segment ->
+        val amplitude = segment!!.javaClass.getMethod("getAmplitude").invoke(segment) as Float
+        (amplitude * 255f).roundToInt()
+    }
+    return RecordedVibration(timings, amplitudes)
+}

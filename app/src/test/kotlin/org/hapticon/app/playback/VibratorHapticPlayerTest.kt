@@ -1,0 +1,90 @@
+package org.hapticon.app.playback
+
+import android.content.Context
+import android.os.Vibrator
+import androidx.test.core.app.ApplicationProvider
+import org.hapticon.core.HapticIcon
+import org.junit.Assert.assertEquals
+import org.junit.Assert.assertNull
+import org.junit.Assert.assertTrue
+import org.junit.Before
+import org.junit.Test
+import org.junit.runner.RunWith
+import org.robolectric.RobolectricTestRunner
+import org.robolectric.Shadows.shadowOf
+
+@RunWith(RobolectricTestRunner::class)
+class VibratorHapticPlayerTest {
+    private lateinit var vibrator: Vibrator
+    private lateinit var player: VibratorHapticPlayer
+
+    @Before
+    fun setUp() {
+        val context = ApplicationProvider.getApplicationContext<Context>()
+        player = VibratorHapticPlayer.create(context)
+        vibrator = context.getSystemService(Vibrator::class.java)
+    }
+
+    @Test
+    fun play_knockWithAmplitudeControl_handsExactStepWaveformToVibrator() {
+        shadowOf(vibrator).setHasAmplitudeControl(true)
+
+        val playback = player.play(HapticIcon.KNOCK)
+
+        // Knock: three 20 ms pulses (0.005 + 0.01 + 0.005 s) every 270 ms at mean envelope 0.375 → 96/255.
+        assertEquals(
+            RecordedVibration(timings = listOf(20L, 250L, 20L, 250L, 20L), amplitudes = listOf(96, 0, 96, 0, 96)),
+            lastVibration(vibrator),
+        )
+        assertEquals(560L, (playback as Playback.Playing).durationMillis)
+        assertEquals(Renderer.AMPLITUDE_WAVEFORM, playback.renderer)
+        assertTrue(shadowOf(vibrator).isVibrating)
+    }
+
+    @Test
+    fun play_hugWithAmplitudeControl_rampsOverThreeSeconds() {
+        shadowOf(vibrator).setHasAmplitudeControl(true)
+
+        player.play(HapticIcon.HUG)
+
+        val recorded = lastVibration(vibrator)!!
+        assertEquals(3000L, recorded.timings.sum())
+        // Hug holds level 0.5 for the second after its 1.5 s attack: 0.5 · 255 = 127.5, rounded up.
+        assertTrue(recorded.amplitudes.contains(128))
+        assertTrue(recorded.amplitudes.all { it in 0..255 })
+        assertEquals(recorded.amplitudes.max(), 128)
+    }
+
+    @Test
+    fun play_withoutAmplitudeControl_fallsBackToFullStrengthOnOff() {
+        shadowOf(vibrator).setHasAmplitudeControl(false)
+
+        val playback = player.play(HapticIcon.KNOCK)
+
+        assertEquals(Renderer.ON_OFF, (playback as Playback.Playing).renderer)
+        assertEquals(
+            RecordedVibration(timings = listOf(20L, 250L, 20L, 250L, 20L), amplitudes = listOf(255, 0, 255, 0, 255)),
+            lastVibration(vibrator),
+        )
+    }
+
+    @Test
+    fun play_withoutVibrator_isUnsupportedAndVibratesNothing() {
+        shadowOf(vibrator).setHasVibrator(false)
+
+        val playback = player.play(HapticIcon.STROKE)
+
+        assertEquals(Playback.Unsupported, playback)
+        assertNull(lastVibration(vibrator))
+    }
+
+    @Test
+    fun stop_afterPlay_cancelsVibration() {
+        shadowOf(vibrator).setHasAmplitudeControl(true)
+        player.play(HapticIcon.STROKE)
+
+        player.stop()
+
+        assertTrue(shadowOf(vibrator).isCancelled)
+    }
+}
