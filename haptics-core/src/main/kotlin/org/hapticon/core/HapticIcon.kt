@@ -1,5 +1,6 @@
 package org.hapticon.core
 
+import java.util.Locale
 import kotlin.math.pow
 
 /**
@@ -34,7 +35,7 @@ public data class HapticIcon(
         requireField(period.isFinite() && period >= 0.0, "period") { "must be a finite number of seconds >= 0, was $period" }
         requireField(count == 1 || period > 0.0, "period") { "must be > 0 when count > 1, was $period" }
         requireField(duration <= MAX_DURATION_SECONDS, "duration") {
-            "total duration ${"%.3f".format(duration)} s exceeds the ${MAX_DURATION_SECONDS} s safety cap"
+            "total duration ${"%.3f".format(Locale.ROOT, duration)} s exceeds the ${MAX_DURATION_SECONDS} s safety cap"
         }
     }
 
@@ -57,7 +58,7 @@ public data class HapticIcon(
             "must be in $MIN_SAMPLE_RATE..$MAX_SAMPLE_RATE Hz, was $sampleRate"
         }
         requireField(frequency < sampleRate / 2.0, "note") {
-            "carrier ${"%.2f".format(frequency)} Hz (note $note) is at or above the Nyquist frequency " +
+            "carrier ${"%.2f".format(Locale.ROOT, frequency)} Hz (note $note) is at or above the Nyquist frequency " +
                 "${sampleRate / 2} Hz of a $sampleRate Hz render"
         }
     }

@@ -11,7 +11,8 @@ public sealed interface JsonValue
  * A JSON object whose members keep their insertion order (the order they had in the text).
  *
  * The public constructor copies its argument, so later changes to it do not show through (the parser,
- * whose maps nobody else holds, skips the copy). Two objects are equal when they have equal members, regardless of order.
+ * whose maps nobody else holds, skips the copy). Two objects are equal when they have equal members,
+ * regardless of order.
  */
 public class JsonObject internal constructor(
     /** The members in insertion order. */
