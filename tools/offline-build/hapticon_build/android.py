@@ -174,41 +174,50 @@ class AndroidApp:
         library_jars = []
         for p in self.b.external_classpath(self.m, "main-runtime"):
             library_jars += self.b.explode_aar(p)["jars"] if p.endswith(".aar") else [p]
+        stamp = self.apk + ".stamp"
+        fp = fingerprint(project_entries, library_jars, self.res_apk, self.r_jar)
+        if os.path.exists(self.apk) and os.path.exists(stamp) and open(stamp).read() == fp:
+            info(f"{os.path.relpath(self.apk, self.b.root)} is up to date")
+            return self.apk
         with Stage("dex"):
-            dex_dir = self._dex(project_entries, library_jars)
+            dex_files = self._dex(project_entries, library_jars)
         with Stage("package and sign"):
             unsigned = os.path.join(self.out, "intermediates", "unsigned.apk")
             shutil.copyfile(self.res_apk, unsigned)
             with zipfile.ZipFile(unsigned, "a", zipfile.ZIP_DEFLATED) as apk:
-                for f in sorted(os.listdir(dex_dir)):
-                    if f.endswith(".dex"):
-                        apk.write(os.path.join(dex_dir, f), f)
+                for i, dex in enumerate(dex_files):
+                    apk.write(dex, "classes.dex" if i == 0 else f"classes{i + 1}.dex")
                 count = self._add_java_resources(apk, project_entries + library_jars)
                 natives = self._add_native_libraries(apk)
             info(f"{count} Java resources, {natives} native libraries packaged")
             self._sign(unsigned, self.apk)
         with Stage("verify APK"):
             self.verify(self.apk)
+        with open(stamp, "w") as f:
+            f.write(fp)
         return self.apk
 
     def _d8(self, args: list[str], what: str) -> None:
         run([self.tools.java, "-Xmx3g", "-cp", self.tools.r8, "com.android.tools.r8.D8", "--release",
              "--min-api", self.min_sdk, "--lib", self.tools.android_jar, "--lib", self.tools.java_home, *args], what)
 
-    def _dex(self, project_entries: list[str], library_jars: list[str]) -> str:
+    def _dex(self, project_entries: list[str], library_jars: list[str]) -> list[str]:
+        """Dex files for the APK: the libraries' set (built once per exact set of jars and cached), then the
+        program's own. minSdk ≥ 21 loads several dex files natively, so the two are never merged."""
         work = os.path.join(self.out, "intermediates", "dex")
         os.makedirs(work, exist_ok=True)
-        # Libraries change rarely: dex them once per exact set, keyed by content.
         key = hashlib.sha1("\n".join(library_jars).encode())
         for j in library_jars:
             key.update(str(os.path.getsize(j)).encode())
-        cache = os.path.join(self.b.cache, "dex", key.hexdigest()[:16])
+        cache = os.path.join(self.b.cache, "library-dex", key.hexdigest()[:16])
         if not os.path.exists(os.path.join(cache, ".done")):
-            os.makedirs(cache, exist_ok=True)
-            info(f"pre-dexing {len(library_jars)} library jars (cached for later builds)")
-            self._d8(["--intermediate", "--output", os.path.join(cache, "libs.zip"),
-                      "--globals-output", os.path.join(cache, "libs-globals.zip"), *library_jars], "D8 of libraries")
+            shutil.rmtree(cache, ignore_errors=True)
+            os.makedirs(os.path.join(cache, "final"))
+            info(f"dexing {len(library_jars)} library jars (cached for later builds)")
+            self._d8(["--output", os.path.join(cache, "final"), *library_jars], "D8 of libraries")
             open(os.path.join(cache, ".done"), "w").close()
+        library_dex = sorted((os.path.join(cache, "final", f) for f in os.listdir(os.path.join(cache, "final"))),
+                             key=_dex_order)
         program = os.path.join(work, "program.jar")
         with zipfile.ZipFile(program, "w") as z:
             for entry in project_entries:
@@ -216,18 +225,21 @@ class AndroidApp:
             with zipfile.ZipFile(self.r_jar) as r:
                 for n in r.namelist():
                     z.writestr(n, r.read(n))
+        program_out = os.path.join(work, "program")
+        shutil.rmtree(program_out, ignore_errors=True)
+        os.makedirs(program_out)
         classpath = []
         for j in library_jars:
             classpath += ["--classpath", j]
-        self._d8(["--intermediate", *classpath, "--output", os.path.join(work, "program-dex.zip"),
-                  "--globals-output", os.path.join(work, "program-globals.zip"), program], "D8 of app classes")
-        final = os.path.join(work, "final")
-        shutil.rmtree(final, ignore_errors=True)
-        os.makedirs(final)
-        self._d8(["--output", final, "--globals", os.path.join(cache, "libs-globals.zip"),
-                  "--globals", os.path.join(work, "program-globals.zip"),
-                  os.path.join(cache, "libs.zip"), os.path.join(work, "program-dex.zip")], "D8 merge")
-        return final
+        self._d8([*classpath, "--output", program_out, program], "D8 of app classes")
+        program_dex = sorted((os.path.join(program_out, f) for f in os.listdir(program_out)), key=_dex_order)
+        # Two dex sets must not define one class twice (e.g. a global synthetic made for both).
+        library_types = set().union(*(dex_type_names(open(d, "rb").read()) for d in library_dex))
+        program_types = set().union(*(dex_type_names(open(d, "rb").read()) for d in program_dex))
+        clash = library_types & program_types
+        if clash:
+            raise BuildError(f"classes defined by both the app and its libraries: {sorted(clash)[:5]}")
+        return library_dex + program_dex
 
     def _add_java_resources(self, apk: zipfile.ZipFile, entries: list[str]) -> int:
         taken: dict[str, bytes] = {}
@@ -327,6 +339,13 @@ class AndroidApp:
         return self.b.run_junit(self.m, test_classes, runtime, name_filter, jvm_args=[
             "-Drobolectric.offline=true", f"-Drobolectric.dependency.dir={self.tools.robolectric_sdk_dir}",
             "-Drobolectric.logging.enabled=false"])
+
+
+def _dex_order(path: str) -> int:
+    m = re.fullmatch(r"classes(\d*)\.dex", os.path.basename(path))
+    if not m:
+        raise BuildError(f"unexpected D8 output {path}")
+    return int(m.group(1) or 1)
 
 
 def _jar_directory(directory: str, jar: str) -> None:

@@ -12,6 +12,7 @@ import json
 import re
 import xml.etree.ElementTree as ET
 from collections import defaultdict
+from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass, field
 
 from .errors import BuildError
@@ -205,6 +206,21 @@ class Resolver:
         self._nodes[key] = node
         return node
 
+    def _prefetch(self, queue, requested, constraints, previous_constraints, forced, seen) -> None:
+        """Reads the metadata of every queued module in parallel: resolution is bound by round trips."""
+        wanted = set()
+        for ga, _ in queue:
+            if ga in seen:
+                continue
+            versions = requested[ga] | previous_constraints.get(ga, set()) | constraints.get(ga, set())
+            if versions:
+                key = (ga[0], ga[1], forced.get(ga) or highest(versions))
+                if key not in self._nodes:
+                    wanted.add(key)
+        if len(wanted) > 1:
+            with ThreadPoolExecutor(max_workers=8) as pool:
+                list(pool.map(lambda k: self.node(*k), wanted))
+
     # -- resolution -------------------------------------------------------------------------------
     def resolve(self, roots: list[tuple[str, str, str | None]]) -> list[Artifact]:
         """Runtime classpath of `roots` (versionless roots take their version from platforms among them)."""
@@ -218,6 +234,7 @@ class Resolver:
             seen, selected = set(), {}
             queue = [((g, a), frozenset()) for g, a, _ in roots]
             while queue:
+                self._prefetch(queue, requested, constraints, previous_constraints, forced, seen)
                 ga, _excl = queue.pop()
                 if ga in seen:
                     continue
