@@ -1,0 +1,21 @@
+package org.hapticon.companion
+
+import org.hapticon.core.io.WavEncoding
+import org.hapticon.core.render.EnvelopeModel
+import org.hapticon.core.render.RenderMode
+import java.io.File
+
+/** `hapticon render ICON --out FILE.wav [--rate HZ] [--format f32|s16] [--model paper|processing] [--mode exact|fast]`. */
+fun runRender(args: List<String>, console: Console) {
+    val arguments = Arguments.parse("render", args, valueOptions = setOf("out", "rate", "format", "model", "mode"))
+    val spec = arguments.single("an ICON (a preset name or an icon JSON file)")
+    val settings = AudioSettings(
+        sampleRate = arguments.int("rate", DEFAULT_SAMPLE_RATE),
+        encoding = arguments.choice("format", FORMAT_CHOICES, WavEncoding.FLOAT32),
+        model = arguments.choice("model", MODEL_CHOICES, EnvelopeModel.PAPER),
+        mode = arguments.choice("mode", MODE_CHOICES, RenderMode.EXACT),
+    )
+    val file = File(arguments.required("out"))
+    val icon = IconSource.load(spec)
+    console.out.println(WavExport.write(icon, settings, file))
+}

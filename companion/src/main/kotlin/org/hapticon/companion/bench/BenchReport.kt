@@ -1,0 +1,135 @@
+package org.hapticon.companion.bench
+
+import org.hapticon.core.io.Json
+import org.hapticon.core.io.JsonArray
+import org.hapticon.core.io.JsonBoolean
+import org.hapticon.core.io.JsonNumber
+import org.hapticon.core.io.JsonObject
+import org.hapticon.core.io.JsonString
+import org.hapticon.core.io.JsonValue
+import java.util.Locale
+
+/** Formats a [BenchResult] as a human-readable table or as one JSON object. */
+object BenchReport {
+    /** The table `hapticon bench` prints. */
+    fun table(result: BenchResult): String = buildString {
+        line("hapticon bench: paper model, %d Hz, reads into a reused %d-sample block", result.sampleRate, result.blockSamples)
+        line("")
+        line("throughput, M samples/s (median / best of the runs)")
+        line("  %-9s %9s %17s %17s %17s %8s %8s", "workload", "samples", "naive", "exact", "fast", "exact/n", "fast/n")
+        for (t in result.throughputs) {
+            line(
+                "  %-9s %9d %17s %17s %17s %7.1f× %7.1f×", t.workload, t.samples,
+                rate(t.naive), rate(t.exact), rate(t.fast), t.exactSpeedup, t.fastSpeedup,
+            )
+        }
+        line("  naive = for each sample i: t = i/fs; sin(2π·f·t) · envelope.sample(t), envelope = icon.envelope(model) built once")
+        line("")
+        val worst = result.worstError
+        val rates = result.errorCases.map { it.sampleRate }.distinct().sorted()
+        val notes = result.errorCases.map { it.note }.distinct().sorted()
+        line(
+            "FAST max |error| vs EXACT: %.3g over %d full streams (rates %s Hz; notes %s; both models)",
+            worst.maxAbsError, result.errorCases.size, rates.joinToString(", "), notes.joinToString(", ") { number(it) },
+        )
+        line("  worst: note %s at %d Hz, %s model, %d samples", number(worst.note), worst.sampleRate, worst.model.name.lowercase(), worst.samples)
+        line("  compared as the float32 samples the stream yields; one float32 step just below 1.0 is 5.96e-08")
+        line("")
+        line(
+            "time to the first 10 ms block (%d samples), µs, median of %d runs: renderer construction to samples in hand",
+            result.firstBlockSamples, result.firstBlockRuns,
+        )
+        line("  %-9s %9s %9s", "icon", "exact", "fast")
+        for (f in result.firstBlocks) line("  %-9s %9.1f %9.1f", f.icon, f.exactMicros, f.fastMicros)
+        line("")
+        line(
+            "allocated bytes per block in steady state: exact %s, fast %s",
+            number(result.allocatedBytesPerBlockExact), number(result.allocatedBytesPerBlockFast),
+        )
+        line("")
+        line("targets (each judged on its worst case)")
+        for (target in result.targets) {
+            line("  %-11s %-20s measured %10s %-12s %s", target.name, target.goal, number(target.measured), target.unit, if (target.met) "met" else "NOT MET")
+        }
+        line("")
+        line("total %.1f s", result.elapsedSeconds)
+    }.trimEnd()
+
+    /** One JSON object with every figure; rates in samples per second, times in µs. */
+    fun json(result: BenchResult): String = Json.encode(jsonValue(result), indent = "  ")
+
+    /** The object [json] prints. */
+    fun jsonValue(result: BenchResult): JsonObject = obj(
+        "sampleRate" to JsonNumber(result.sampleRate),
+        "blockSamples" to JsonNumber(result.blockSamples),
+        "throughput" to JsonArray(
+            result.throughputs.map { t ->
+                obj(
+                    "workload" to JsonString(t.workload),
+                    "samples" to JsonNumber(t.samples),
+                    "naive" to rateJson(t.naive),
+                    "exact" to rateJson(t.exact),
+                    "fast" to rateJson(t.fast),
+                    "exactVsNaive" to rounded(t.exactSpeedup, 3),
+                    "fastVsNaive" to rounded(t.fastSpeedup, 3),
+                )
+            },
+        ),
+        "fastMaxAbsError" to JsonNumber(result.worstError.maxAbsError),
+        "fastErrorCases" to JsonArray(
+            result.errorCases.map { e ->
+                obj(
+                    "model" to JsonString(e.model.name.lowercase()),
+                    "sampleRate" to JsonNumber(e.sampleRate),
+                    "note" to JsonNumber(e.note),
+                    "samples" to JsonNumber(e.samples),
+                    "maxAbsError" to JsonNumber(e.maxAbsError),
+                )
+            },
+        ),
+        "firstBlockSamples" to JsonNumber(result.firstBlockSamples),
+        "firstBlockMicros" to JsonArray(
+            result.firstBlocks.map { f ->
+                obj("icon" to JsonString(f.icon), "exact" to rounded(f.exactMicros, 2), "fast" to rounded(f.fastMicros, 2))
+            },
+        ),
+        "allocatedBytesPerBlock" to obj(
+            "exact" to JsonNumber(result.allocatedBytesPerBlockExact),
+            "fast" to JsonNumber(result.allocatedBytesPerBlockFast),
+        ),
+        "targets" to JsonObject(
+            result.targets.associateTo(LinkedHashMap()) { target ->
+                target.name to obj(
+                    "goal" to JsonString(target.goal),
+                    "measured" to rounded(target.measured, 3),
+                    "unit" to JsonString(target.unit),
+                    "met" to JsonBoolean(target.met),
+                )
+            },
+        ),
+        "elapsedSeconds" to rounded(result.elapsedSeconds, 2),
+    )
+
+    private fun rateJson(rate: Rate): JsonObject = obj(
+        "medianSamplesPerSecond" to JsonNumber(Math.round(rate.medianSamplesPerSecond)),
+        "bestSamplesPerSecond" to JsonNumber(Math.round(rate.bestSamplesPerSecond)),
+        "runs" to JsonNumber(rate.runs),
+    )
+
+    private fun obj(vararg members: Pair<String, JsonValue>): JsonObject = JsonObject(linkedMapOf(*members))
+
+    private fun rounded(value: Double, decimals: Int): JsonNumber = JsonNumber(Math.round(value * POWERS[decimals]) / POWERS[decimals])
+
+    private val POWERS = doubleArrayOf(1.0, 10.0, 100.0, 1000.0)
+
+    private fun rate(rate: Rate): String =
+        String.format(Locale.ROOT, "%.1f / %.1f", rate.medianSamplesPerSecond / 1e6, rate.bestSamplesPerSecond / 1e6)
+
+    /** Whole numbers without a fraction, others with up to 3 significant decimals. */
+    private fun number(value: Double): String =
+        if (value == Math.rint(value)) String.format(Locale.ROOT, "%.0f", value) else String.format(Locale.ROOT, "%.3g", value)
+
+    private fun StringBuilder.line(format: String, vararg args: Any) {
+        append(String.format(Locale.ROOT, format, *args)).append('\n')
+    }
+}

@@ -1,0 +1,58 @@
+package org.hapticon.companion.bench
+
+import org.hapticon.core.render.EnvelopeModel
+
+/** Samples per second over several runs of one case. */
+data class Rate(val medianSamplesPerSecond: Double, val bestSamplesPerSecond: Double, val runs: Int)
+
+/** Throughput of the naive baseline, EXACT and FAST over one workload of [samples] samples. */
+data class Throughput(val workload: String, val samples: Long, val naive: Rate, val exact: Rate, val fast: Rate) {
+    /** EXACT's median speed over the naive baseline's. */
+    val exactSpeedup: Double get() = exact.medianSamplesPerSecond / naive.medianSamplesPerSecond
+
+    /** FAST's median speed over the naive baseline's. */
+    val fastSpeedup: Double get() = fast.medianSamplesPerSecond / naive.medianSamplesPerSecond
+}
+
+/** Largest |FAST − EXACT| over a full stream of a full-scale icon at [note] and [sampleRate]. */
+data class ErrorCase(val model: EnvelopeModel, val sampleRate: Int, val note: Double, val samples: Long, val maxAbsError: Double)
+
+/** Median time from constructing the renderer to holding the first 10 ms of samples, per carrier mode. */
+data class FirstBlock(val icon: String, val exactMicros: Double, val fastMicros: Double) {
+    val worstMicros: Double get() = maxOf(exactMicros, fastMicros)
+}
+
+/** One performance target and whether this run met it. */
+data class Target(val name: String, val goal: String, val measured: Double, val unit: String, val met: Boolean)
+
+/** Everything one bench run measured. */
+data class BenchResult(
+    val sampleRate: Int,
+    val blockSamples: Int,
+    val throughputs: List<Throughput>,
+    val errorCases: List<ErrorCase>,
+    val firstBlockSamples: Int,
+    val firstBlockRuns: Int,
+    val firstBlocks: List<FirstBlock>,
+    val allocatedBytesPerBlockExact: Double,
+    val allocatedBytesPerBlockFast: Double,
+    val elapsedSeconds: Double,
+) {
+    /** The worst FAST error case. */
+    val worstError: ErrorCase get() = errorCases.maxBy { it.maxAbsError }
+
+    /** The targets, each judged on its worst measured case (slowest workload, slowest icon). */
+    val targets: List<Target>
+        get() {
+            val fast = throughputs.minOf { it.fast.medianSamplesPerSecond }
+            val exact = throughputs.minOf { it.exact.medianSamplesPerSecond }
+            val firstBlock = firstBlocks.maxOf { it.worstMicros }
+            val allocation = maxOf(allocatedBytesPerBlockExact, allocatedBytesPerBlockFast)
+            return listOf(
+                Target("fast", ">= 200 M samples/s", fast / 1e6, "M samples/s", fast >= 200e6),
+                Target("exact", ">= 30 M samples/s", exact / 1e6, "M samples/s", exact >= 30e6),
+                Target("firstBlock", "<= 50 µs", firstBlock, "µs", firstBlock <= 50.0),
+                Target("allocation", "0 bytes/block", allocation, "bytes/block", allocation == 0.0),
+            )
+        }
+}

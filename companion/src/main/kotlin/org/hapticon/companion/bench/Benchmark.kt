@@ -1,0 +1,188 @@
+package org.hapticon.companion.bench
+
+import org.hapticon.core.HapticIcon
+import org.hapticon.core.render.EnvelopeModel
+import org.hapticon.core.render.IconRenderer
+import org.hapticon.core.render.RenderMode
+import org.hapticon.core.render.SampleStream
+import java.lang.management.ManagementFactory
+import kotlin.math.abs
+import kotlin.math.ceil
+
+/**
+ * Runs the measurements of `hapticon bench` as [config] says, reporting each step to [progress].
+ * All renders use the paper model at [BenchConfig.sampleRate] unless stated; every read loop fills one
+ * reused FloatArray of [BenchConfig.blockSamples], as a real consumer does.
+ */
+class Benchmark(private val config: BenchConfig, private val progress: (String) -> Unit = {}) {
+    private val block = FloatArray(config.blockSamples)
+
+    /** Sum of one sample per block read, kept so the JIT cannot discard the work being timed. */
+    var checksum: Double = 0.0
+        private set
+
+    /** Runs every measurement in turn; takes about 30 s with [BenchConfig.FULL]. */
+    fun run(): BenchResult {
+        val started = System.nanoTime()
+        val throughputs = WORKLOADS.map { (name, icons) ->
+            progress("throughput over $name (naive, exact, fast)")
+            throughput(name, icons)
+        }
+        progress("FAST error against EXACT")
+        val errors = errorCases()
+        progress("time to the first 10 ms block")
+        val firstBlockSamples = ceil(FIRST_BLOCK_SECONDS * config.sampleRate).toInt()
+        val firstBlocks = (HapticIcon.PRESETS + LONGEST).map { firstBlock(it, firstBlockSamples) }
+        progress("allocation per block")
+        val exactBytes = allocatedBytesPerBlock(RenderMode.EXACT)
+        val fastBytes = allocatedBytesPerBlock(RenderMode.FAST)
+        return BenchResult(
+            sampleRate = config.sampleRate,
+            blockSamples = config.blockSamples,
+            throughputs = throughputs,
+            errorCases = errors,
+            firstBlockSamples = firstBlockSamples,
+            firstBlockRuns = config.firstBlockRuns,
+            firstBlocks = firstBlocks,
+            allocatedBytesPerBlockExact = exactBytes,
+            allocatedBytesPerBlockFast = fastBytes,
+            elapsedSeconds = (System.nanoTime() - started) / 1e9,
+        )
+    }
+
+    private fun throughput(name: String, icons: List<HapticIcon>): Throughput {
+        val rate = config.sampleRate
+        // Renderers are built once: throughput is about reading streams; construction has its own figure.
+        val exact = icons.map { IconRenderer(it, rate, EnvelopeModel.PAPER, RenderMode.EXACT) }
+        val fast = icons.map { IconRenderer(it, rate, EnvelopeModel.PAPER, RenderMode.FAST) }
+        val samples = exact.sumOf { it.sampleCount }
+        return Throughput(
+            workload = name,
+            samples = samples,
+            naive = measure(samples) { for (icon in icons) drain(NaiveRenderer(icon, rate, EnvelopeModel.PAPER)) },
+            exact = measure(samples) { for (renderer in exact) drain(renderer.stream()) },
+            fast = measure(samples) { for (renderer in fast) drain(renderer.stream()) },
+        )
+    }
+
+    /** Warms [runOnce] up for the configured time, then times whole runs; median and best samples per second. */
+    private inline fun measure(samplesPerRun: Long, runOnce: () -> Unit): Rate {
+        val warmUntil = System.nanoTime() + config.warmupMillis * 1_000_000
+        do runOnce() while (System.nanoTime() < warmUntil)
+        val rates = ArrayList<Double>()
+        val measureUntil = System.nanoTime() + config.measureMillis * 1_000_000
+        while (rates.size < config.minRuns || System.nanoTime() < measureUntil) {
+            val start = System.nanoTime()
+            runOnce()
+            rates += samplesPerRun / ((System.nanoTime() - start) / 1e9)
+        }
+        return Rate(median(rates), rates.max(), rates.size)
+    }
+
+    private fun drain(stream: SampleStream) {
+        while (true) {
+            val count = stream.read(block, 0, block.size)
+            if (count < 0) return
+            checksum += block[count - 1]
+        }
+    }
+
+    private fun drain(naive: NaiveRenderer) {
+        while (true) {
+            val count = naive.read(block)
+            if (count < 0) return
+            checksum += block[count - 1]
+        }
+    }
+
+    private fun errorCases(): List<ErrorCase> {
+        val cases = ArrayList<ErrorCase>()
+        for (model in EnvelopeModel.values()) {
+            for (rate in config.errorRates) {
+                for (note in config.errorNotes) {
+                    // A full-scale hold makes the envelope 1, so the difference is the carrier's alone.
+                    val icon = HapticIcon("full-scale", 0.0, config.errorSeconds, 1.0, 0.0, note)
+                    if (icon.frequency >= rate / 2.0) continue
+                    cases += errorCase(icon, rate, model)
+                }
+            }
+        }
+        return cases
+    }
+
+    private fun errorCase(icon: HapticIcon, rate: Int, model: EnvelopeModel): ErrorCase {
+        val exact = IconRenderer(icon, rate, model, RenderMode.EXACT).stream()
+        val fast = IconRenderer(icon, rate, model, RenderMode.FAST).stream()
+        val fastBlock = FloatArray(block.size)
+        var maxError = 0.0
+        while (true) {
+            val count = exact.read(block, 0, block.size)
+            if (count < 0) break
+            check(fast.read(fastBlock, 0, count) == count) { "FAST stream is shorter than EXACT" }
+            for (j in 0 until count) maxError = maxOf(maxError, abs(block[j].toDouble() - fastBlock[j].toDouble()))
+        }
+        return ErrorCase(model, rate, icon.note, exact.totalSamples, maxError)
+    }
+
+    private fun firstBlock(icon: HapticIcon, samples: Int): FirstBlock {
+        fun medianMicros(mode: RenderMode): Double {
+            repeat(config.firstBlockRuns) { firstBlockNanos(icon, mode, samples) }
+            val runs = DoubleArray(config.firstBlockRuns) { firstBlockNanos(icon, mode, samples) / 1e3 }
+            return median(runs.asList())
+        }
+        return FirstBlock(icon.name, medianMicros(RenderMode.EXACT), medianMicros(RenderMode.FAST))
+    }
+
+    /** Nanoseconds from constructing a renderer to holding its first [samples] samples. */
+    private fun firstBlockNanos(icon: HapticIcon, mode: RenderMode, samples: Int): Long {
+        val start = System.nanoTime()
+        val stream = IconRenderer(icon, config.sampleRate, EnvelopeModel.PAPER, mode).stream()
+        var filled = 0
+        while (filled < samples) {
+            val count = stream.read(block, filled, samples - filled)
+            if (count < 0) break
+            filled += count
+        }
+        val elapsed = System.nanoTime() - start
+        checksum += block[0]
+        return elapsed
+    }
+
+    /** Bytes the current thread allocates per block read, after the stream's first blocks (steady state). */
+    private fun allocatedBytesPerBlock(mode: RenderMode): Double {
+        val threads = ManagementFactory.getThreadMXBean() as com.sun.management.ThreadMXBean
+        check(threads.isThreadAllocatedMemorySupported && threads.isThreadAllocatedMemoryEnabled) {
+            "this JVM cannot count allocated bytes per thread"
+        }
+        val stream = IconRenderer(LONGEST, config.sampleRate, EnvelopeModel.PAPER, mode).stream()
+        repeat(STEADY_STATE_AFTER_BLOCKS) { stream.read(block, 0, block.size) }
+        val thread = Thread.currentThread().id
+        // The counter's own cost, subtracted so that only reading is counted.
+        val overhead = (1..5).minOf { threads.getThreadAllocatedBytes(thread).let { before -> threads.getThreadAllocatedBytes(thread) - before } }
+        val before = threads.getThreadAllocatedBytes(thread)
+        var blocks = 0
+        while (blocks < config.allocationBlocks && stream.read(block, 0, block.size) > 0) blocks++
+        val allocated = threads.getThreadAllocatedBytes(thread) - before - overhead
+        check(blocks > 0) { "the stream ended before steady state" }
+        return allocated.coerceAtLeast(0L).toDouble() / blocks
+    }
+
+    companion object {
+        /** The longest icon the safety caps allow: 64 overlapping repetitions, exactly 30 s. */
+        val LONGEST: HapticIcon = HapticIcon("longest", 0.8125, 0.8125, 0.7, 0.8125, 69.0, 0.4375, 64)
+
+        /** Named workloads of the throughput measurement. */
+        val WORKLOADS: List<Pair<String, List<HapticIcon>>> = listOf("longest" to listOf(LONGEST), "presets" to HapticIcon.PRESETS)
+
+        private const val FIRST_BLOCK_SECONDS = 0.010
+        private const val STEADY_STATE_AFTER_BLOCKS = 4
+    }
+}
+
+/** The median of [values] (mean of the middle two for an even count). */
+fun median(values: List<Double>): Double {
+    require(values.isNotEmpty()) { "median of nothing" }
+    val sorted = values.sorted()
+    val middle = sorted.size / 2
+    return if (sorted.size % 2 == 1) sorted[middle] else (sorted[middle - 1] + sorted[middle]) / 2
+}

@@ -1,0 +1,54 @@
+package org.hapticon.companion
+
+import org.hapticon.core.io.WavEncoding
+import org.hapticon.core.io.WavReader
+import org.junit.Assert.assertEquals
+import org.junit.Rule
+import org.junit.Test
+import org.junit.rules.TemporaryFolder
+import java.io.File
+import javax.imageio.ImageIO
+
+class DemoCommandTest {
+    @get:Rule
+    val temp = TemporaryFolder()
+
+    @Test
+    fun demo_withApk_writesWavsPlotsAndComparisonAndReportsTheApk() {
+        val dir = File(temp.root, "demo/nested")
+        val apk = temp.newFile("app.apk").also { it.writeBytes(ByteArray(1234)) }
+        val result = cli("demo", "--out", dir.path, "--apk", apk.path)
+        assertEquals(result.toString(), 0, result.exitCode)
+
+        val expectedFiles = listOf("stroke", "hit", "knock", "hug").flatMap { listOf("$it.wav", "$it.png") } + "envelope-models.png"
+        assertEquals(expectedFiles.sorted(), dir.list()!!.sorted())
+        val lines = result.stdout.lines().dropLast(1)
+        assertEquals(10, lines.size)
+        assertEquals("wrote ${File(dir, "stroke.wav")}: stroke, 476280 samples, 10.800 s at 44100 Hz, f32, paper model, exact mode", lines[0])
+        assertEquals("wrote ${File(dir, "envelope-models.png")}: 1200×1224 PNG", lines[8])
+        assertEquals("APK: $apk (1234 bytes, 0.0 MB)", lines[9])
+
+        val hug = File(dir, "hug.wav").inputStream().use { WavReader.read(it) }
+        assertEquals(WavEncoding.FLOAT32, hug.encoding)
+        assertEquals(44_100, hug.sampleRate)
+        assertEquals(132_300, hug.frames)
+        assertEquals(600, ImageIO.read(File(dir, "knock.png")).height)
+    }
+
+    @Test
+    fun demo_missingApk_exitsTwoBeforeWritingAnything() {
+        val dir = File(temp.root, "demo")
+        val result = cli("demo", "--out", dir.path, "--apk", File(temp.root, "none.apk").path)
+        assertEquals(2, result.exitCode)
+        assertEquals(listOf("hapticon: --apk: no such file: ${File(temp.root, "none.apk")}"), result.stderrLines)
+        assertEquals(false, dir.exists())
+    }
+
+    @Test
+    fun demo_outIsAFile_exitsTwo() {
+        val file = temp.newFile("taken")
+        val result = cli("demo", "--out", file.path)
+        assertEquals(2, result.exitCode)
+        assertEquals(listOf("hapticon: cannot write into $file: it is not a directory"), result.stderrLines)
+    }
+}

@@ -1,0 +1,153 @@
+package org.hapticon.companion.bench
+
+import org.hapticon.companion.cli
+import org.hapticon.core.HapticIcon
+import org.hapticon.core.io.Json
+import org.hapticon.core.io.JsonArray
+import org.hapticon.core.io.JsonBoolean
+import org.hapticon.core.io.JsonNumber
+import org.hapticon.core.io.JsonObject
+import org.hapticon.core.render.EnvelopeModel
+import org.hapticon.core.render.IconRenderer
+import org.hapticon.testing.TestIcons
+import org.hapticon.testing.readAllSamples
+import org.junit.Assert.assertEquals
+import org.junit.Assert.assertTrue
+import org.junit.Test
+import kotlin.math.PI
+import kotlin.math.abs
+import kotlin.math.sin
+
+class BenchmarkTest {
+    @Test
+    fun run_quick_measuresEveryPartWithoutAllocatingPerBlock() {
+        val steps = ArrayList<String>()
+        val result = Benchmark(BenchConfig.QUICK) { steps += it }.run()
+
+        assertEquals(listOf("longest", "presets"), result.throughputs.map { it.workload })
+        assertEquals(1_323_000L, result.throughputs[0].samples)
+        assertEquals(HapticIcon.PRESETS.sumOf { IconRenderer(it, 44_100).sampleCount }, result.throughputs[1].samples)
+        // Note 127 is above Nyquist at 8 kHz, so it is compared at 44.1 kHz only, for each model.
+        val cases = result.errorCases.map { Triple(it.model, it.sampleRate, it.note) }
+        val expected = EnvelopeModel.values().flatMap { listOf(Triple(it, 8_000, 0.0), Triple(it, 44_100, 0.0), Triple(it, 44_100, 127.0)) }
+        assertEquals(expected, cases)
+        assertTrue(result.worstError.maxAbsError <= 1e-6)
+        assertEquals(listOf("stroke", "hit", "knock", "hug", "longest"), result.firstBlocks.map { it.icon })
+        assertEquals(441, result.firstBlockSamples)
+        assertEquals(0.0, result.allocatedBytesPerBlockExact, 0.0)
+        assertEquals(0.0, result.allocatedBytesPerBlockFast, 0.0)
+        assertEquals(5, steps.size)
+    }
+
+    @Test
+    fun longest_isTheSharedLongestTestIcon() {
+        assertEquals(TestIcons.LONGEST, Benchmark.LONGEST)
+    }
+
+    @Test
+    fun naiveRenderer_computesTheSameSignalAsTheExactRenderer() {
+        val icon = HapticIcon.HUG
+        val naive = NaiveRenderer(icon, 8_000, EnvelopeModel.PAPER)
+        val exact = IconRenderer(icon, 8_000, EnvelopeModel.PAPER).stream().readAllSamples()
+        assertEquals(exact.size.toLong(), naive.sampleCount)
+        val block = FloatArray(1000)
+        var index = 0
+        while (true) {
+            val count = naive.read(block)
+            if (count < 0) break
+            for (j in 0 until count) assertEquals("sample ${index + j}", exact[index + j], block[j], 1e-6f)
+            index += count
+        }
+        assertEquals(exact.size, index)
+        // Spot-check the formula itself: sin(2π·f·t) · envelope(t) at t = 0.75 s (attack, 0.25).
+        val t = 6_000 / 8_000.0
+        assertEquals((sin(2 * PI * icon.frequency * t) * 0.25).toFloat(), exact[6_000], 1e-6f)
+    }
+
+    @Test
+    fun median_oddAndEvenCounts() {
+        assertEquals(2.0, median(listOf(3.0, 1.0, 2.0)), 0.0)
+        assertEquals(2.5, median(listOf(4.0, 1.0, 2.0, 3.0)), 0.0)
+    }
+
+    @Test
+    fun targets_judgeTheWorstCaseOfEachFigure() {
+        val targets = SAMPLE_RESULT.targets.associateBy { it.name }
+        assertEquals(210.0, targets.getValue("fast").measured, 1e-9) // the slower workload
+        assertEquals(true, targets.getValue("fast").met)
+        assertEquals(25.0, targets.getValue("exact").measured, 1e-9)
+        assertEquals(false, targets.getValue("exact").met)
+        assertEquals(150.0, targets.getValue("firstBlock").measured, 0.0)
+        assertEquals(false, targets.getValue("firstBlock").met)
+        assertEquals(true, targets.getValue("allocation").met)
+    }
+
+    @Test
+    fun table_listsEveryFigureAndMarksMissedTargets() {
+        val table = BenchReport.table(SAMPLE_RESULT)
+        val lines = table.lines()
+        assertEquals("hapticon bench: paper model, 44100 Hz, reads into a reused 4096-sample block", lines[0])
+        assertTrue(table, "  longest     1323000       10.0 / 11.0       25.0 / 26.0     210.0 / 220.0     2.5×    21.0×" in lines)
+        assertTrue(table, "  longest       150.0     120.0" in lines)
+        assertTrue(table, "  exact       >= 30 M samples/s    measured         25 M samples/s  NOT MET" in lines)
+        assertTrue(table, "  fast        >= 200 M samples/s   measured        210 M samples/s  met" in lines)
+        assertTrue(table, "FAST max |error| vs EXACT: 5.96e-08 over 2 full streams (rates 8000, 44100 Hz; notes 0, 127; both models)" in lines)
+        assertEquals("total 12.5 s", lines.last())
+    }
+
+    @Test
+    fun json_isOneObjectWithEveryFigure() {
+        val json = Json.decode(BenchReport.json(SAMPLE_RESULT)) as JsonObject
+        assertEquals(JsonNumber(44_100), json["sampleRate"])
+        val longest = (json["throughput"] as JsonArray)[0] as JsonObject
+        assertEquals(JsonNumber(210_000_000), (longest["fast"] as JsonObject)["medianSamplesPerSecond"])
+        assertEquals(JsonNumber(21.0), longest["fastVsNaive"])
+        assertEquals(JsonNumber(5.960464477539063E-8), json["fastMaxAbsError"])
+        assertEquals(2, (json["fastErrorCases"] as JsonArray).size)
+        val firstBlock = (json["targets"] as JsonObject)["firstBlock"] as JsonObject
+        assertEquals(JsonBoolean(false), firstBlock["met"])
+        assertEquals(JsonNumber(150.0), firstBlock["measured"])
+    }
+
+    @Test
+    fun benchCommand_quickJson_printsOneParsableObjectAndProgressOnStderr() {
+        val result = cli("bench", "--json", "--quick")
+        assertEquals(result.toString(), 0, result.exitCode)
+        val json = Json.decode(result.stdout) as JsonObject
+        val allocation = json["allocatedBytesPerBlock"] as JsonObject
+        assertEquals(JsonNumber(0), allocation["exact"])
+        assertEquals(JsonNumber(0), allocation["fast"])
+        assertEquals(setOf("fast", "exact", "firstBlock", "allocation"), (json["targets"] as JsonObject).members.keys)
+        assertTrue(result.stderr, result.stderr.startsWith("bench: throughput over longest"))
+    }
+
+    @Test
+    fun benchCommand_unknownOption_exitsTwo() {
+        val result = cli("bench", "--fast")
+        assertEquals(2, result.exitCode)
+        assertEquals(listOf("hapticon: unknown option --fast for bench"), result.stderrLines)
+    }
+
+    private companion object {
+        private fun rate(median: Double, best: Double) = Rate(median, best, 7)
+
+        val SAMPLE_RESULT = BenchResult(
+            sampleRate = 44_100,
+            blockSamples = 4096,
+            throughputs = listOf(
+                Throughput("longest", 1_323_000, rate(10e6, 11e6), rate(25e6, 26e6), rate(210e6, 220e6)),
+                Throughput("presets", 701_190, rate(20e6, 21e6), rate(60e6, 61e6), rate(260e6, 270e6)),
+            ),
+            errorCases = listOf(
+                ErrorCase(EnvelopeModel.PAPER, 8_000, 0.0, 240_000, 0.0),
+                ErrorCase(EnvelopeModel.PROCESSING, 44_100, 127.0, 1_323_000, 5.960464477539063E-8),
+            ),
+            firstBlockSamples = 441,
+            firstBlockRuns = 2000,
+            firstBlocks = listOf(FirstBlock("stroke", 15.0, 4.0), FirstBlock("longest", 150.0, 120.0)),
+            allocatedBytesPerBlockExact = 0.0,
+            allocatedBytesPerBlockFast = 0.0,
+            elapsedSeconds = 12.5,
+        )
+    }
+}
