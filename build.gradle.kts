@@ -2,6 +2,7 @@
 // The offline build (./build) reads the per-module build.gradle.kts files; keep them declarative.
 plugins {
     alias(libs.plugins.android.application) apply false
+    alias(libs.plugins.android.library) apply false
     alias(libs.plugins.kotlin.jvm) apply false
     alias(libs.plugins.kotlin.compose) apply false
     alias(libs.plugins.ksp) apply false

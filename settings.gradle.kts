@@ -18,6 +18,8 @@ dependencyResolutionManagement {
 rootProject.name = "hapticon"
 
 include(":haptics-core")
+include(":sensor-bridge")
+include(":sensor-bridge:usb")
 include(":test-fixtures")
 include(":companion")
 include(":app")

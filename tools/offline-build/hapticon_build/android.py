@@ -54,13 +54,44 @@ class AndroidApp:
 
     # -- resources --------------------------------------------------------------------------------
     def _libraries(self, scope: str) -> list[dict]:
-        return [self.b.explode_aar(p) for p in self.b.external_classpath(self.m, scope) if p.endswith(".aar")]
+        """Everything whose resources and manifest merge into this module's: AARs and project Android libraries."""
+        aars = [self.b.explode_aar(p) for p in self.b.external_classpath(self.m, scope) if p.endswith(".aar")]
+        return aars + [self._project_library(m) for m in self._project_android_libraries(self.m, set())]
+
+    def _project_android_libraries(self, module: Module, seen: set) -> list[Module]:
+        found = []
+        for d in module.dependencies:
+            if d.project and d.project not in seen and not d.configuration.startswith("test"):
+                seen.add(d.project)
+                dep = self.b.project.module(d.project)
+                if dep.is_android_library:
+                    found.append(dep)
+                found += self._project_android_libraries(dep, seen)
+        return found
+
+    def _project_library(self, library: Module) -> dict:
+        src = os.path.join(library.directory, "src", "main")
+        work = os.path.join(self.b.out, library.name, "intermediates")
+        os.makedirs(work, exist_ok=True)
+        manifest = os.path.join(work, "AndroidManifest.xml")
+        main = os.path.join(src, "AndroidManifest.xml")
+        text = open(main).read() if os.path.exists(main) else '<manifest xmlns:android="http://schemas.android.com/apk/res/android" />'
+        with open(manifest, "w") as f:
+            f.write(re.sub(r"<manifest\b", f'<manifest package="{library.android["namespace"]}"', text, count=1))
+        res = os.path.join(src, "res")
+        return {"dir": work, "jars": [], "manifest": manifest, "project": library.name,
+                "res": res if os.path.isdir(res) and os.listdir(res) else None}
 
     def _compile_library_resources(self, libs: list[dict]) -> list[str]:
         zips = []
         pending = []
         for lib in libs:
             if not lib["res"]:
+                continue
+            if lib.get("project"):  # project sources change: compiled every time, they are small
+                z = os.path.join(lib["dir"], "res.zip")
+                run([self.tools.aapt2, "compile", "--dir", lib["res"], "-o", z], f"aapt2 compile of {lib['project']}")
+                zips.append(z)
                 continue
             z = os.path.join(self.b.cache, "aapt2", os.path.basename(lib["dir"]) + ".zip")
             zips.append(z)
@@ -149,11 +180,14 @@ class AndroidApp:
         _jar_directory(r_classes, r_jar)
         return res_apk, r_jar
 
+    def _resource_sources(self) -> list[str]:
+        modules = [self.m] + self._project_android_libraries(self.m, set())
+        return [os.path.join(m.directory, "src", "main", p) for m in modules for p in ("res", "AndroidManifest.xml")]
+
     # -- compile ----------------------------------------------------------------------------------
     def compile_main(self) -> Outputs:
         work = os.path.join(self.out, "intermediates", "main")
-        fp = fingerprint(self.b.external_classpath(self.m, "main-runtime"), os.path.join(self.src, "res"),
-                         os.path.join(self.src, "AndroidManifest.xml"), str(self.m.android))
+        fp = fingerprint(self.b.external_classpath(self.m, "main-runtime"), self._resource_sources(), str(self.m.android))
         stamp = os.path.join(work, "resources.stamp")
         self.res_apk, self.r_jar = os.path.join(work, "resources.apk"), os.path.join(work, "R.jar")
         if not (os.path.exists(stamp) and open(stamp).read() == fp and os.path.exists(self.r_jar)):
@@ -315,8 +349,7 @@ class AndroidApp:
             return TestResult(self.m.path)
         self.b.compile_module(self.m, "main")
         work = os.path.join(self.out, "intermediates", "test")
-        fp = fingerprint(self.b.external_classpath(self.m, "test-runtime"), os.path.join(self.src, "res"),
-                         os.path.join(self.src, "AndroidManifest.xml"), str(self.m.android))
+        fp = fingerprint(self.b.external_classpath(self.m, "test-runtime"), self._resource_sources(), str(self.m.android))
         stamp = os.path.join(work, "resources.stamp")
         res_apk, r_jar = os.path.join(work, "resources.apk"), os.path.join(work, "R.jar")
         if not (os.path.exists(stamp) and open(stamp).read() == fp and os.path.exists(r_jar)):

@@ -56,7 +56,7 @@ class Build:
 
     # -- dependency declarations ------------------------------------------------------------------
     def platform(self, module: Module) -> str:
-        return "android" if module.is_android_app else "jvm"
+        return "android" if module.is_android else "jvm"
 
     def _implicit(self, module: Module) -> list[Dependency]:
         # The Kotlin Gradle plugin (and AGP's built-in Kotlin) adds kotlin-stdlib to every Kotlin module.
@@ -103,7 +103,7 @@ class Build:
             return self._classpaths[key]
         source_set, use = scope.split("-")
         configurations = MAIN_COMPILE if use == "compile" else MAIN_RUNTIME
-        if module.is_android_app:
+        if module.is_android:
             configurations += ("debugImplementation",)
         if source_set == "test":
             configurations += TEST_COMPILE if use == "compile" else TEST_RUNTIME
@@ -162,7 +162,7 @@ class Build:
 
     def compile_classpath(self, module: Module, source_set: str, extra: list[str] = ()) -> list[str]:
         cp = list(extra)
-        if module.is_android_app:
+        if module.is_android:
             cp.append(self.tools.android_jar)
         if source_set == "test":
             cp += self.compile_module(module, "main").entries
@@ -216,7 +216,7 @@ class Build:
 
     # -- tests ------------------------------------------------------------------------------------
     def test_module(self, module: Module, name_filter: str | None = None) -> TestResult:
-        if module.is_android_app:
+        if module.is_android:
             from .android import AndroidApp
             return AndroidApp(self, module).test(name_filter)
         if not self.sources(module, "test"):

@@ -51,6 +51,14 @@ class Module:
         return "android-application" in self.plugins
 
     @property
+    def is_android_library(self) -> bool:
+        return "android-library" in self.plugins
+
+    @property
+    def is_android(self) -> bool:
+        return self.is_android_app or self.is_android_library
+
+    @property
     def uses_compose(self) -> bool:
         return "kotlin-compose" in self.plugins
 
@@ -219,11 +227,12 @@ def parse_module(path: str, directory: str, catalog: Catalog) -> Module:
             m = re.search(r"(?m)^\s*" + key + r"\s*=\s*(.+?)\s*$", android)
             if m:
                 module.android[key] = _value(m.group(1), catalog)
+        # A library states the targetSdk its unit tests run with in testOptions { targetSdk = … }.
         for key in ("namespace", "compileSdk", "minSdk", "targetSdk"):
             if key not in module.android:
                 raise BuildError(f"{build_file}: android {{}} must set {key}")
-    if module.is_android_app and android is None:
-        raise BuildError(f"{build_file}: an android application needs an android {{}} block")
+    if module.is_android and android is None:
+        raise BuildError(f"{build_file}: an Android module needs an android {{}} block")
     return module
 
 

@@ -1,0 +1,17 @@
+// Sensor protocols, models and safety limits: pure Kotlin, testable on the JVM. The Android USB
+// transport lives in :sensor-bridge:usb and only moves bytes.
+plugins {
+    alias(libs.plugins.kotlin.jvm)
+}
+
+kotlin {
+    explicitApi()
+    jvmToolchain(libs.versions.jvmTarget.get().toInt())
+}
+
+dependencies {
+    api(project(":haptics-core"))
+
+    testImplementation(project(":test-fixtures"))
+    testImplementation(libs.junit4)
+}
