@@ -184,6 +184,8 @@ class Build:
         sources = self.sources(module, source_set) + list(extra_sources)
         out_dir = os.path.join(self.out, module.name, "classes", source_set)
         classpath = self.compile_classpath(module, source_set, list(extra_classpath))
+        if module.uses_ksp and source_set == "main":
+            sources += self.run_ksp(module, sources, classpath)
         resources = self.resource_dirs(module, source_set)
         stamp = os.path.join(self.out, module.name, f"{source_set}.stamp")
         fp = fingerprint(sources, classpath, str(module.explicit_api), str(module.uses_compose), source_set)
@@ -203,6 +205,42 @@ class Build:
         outputs = Outputs(out_dir, resources)
         self._outputs[key] = outputs
         return outputs
+
+    def run_ksp(self, module: Module, sources: list[str], classpath: list[str]) -> list[str]:
+        """Runs the module's `ksp(...)` processors (e.g. Room) and returns the Kotlin sources they generate."""
+        roots = [(d.library.group, d.library.name, d.library.version) for d in module.deps("ksp") if d.library]
+        if not roots:
+            return []
+        processors = Resolver(self.repo, "jvm").resolve(roots)
+        # The KSP tool provides its own API; a second copy on the processor path breaks class identity.
+        processor_jars = self.repo.fetch_all([f for a in processors for f in a.files
+                                              if f.endswith(".jar") and a.name != "symbol-processing-api"])
+        base = os.path.join(self.out, module.name, "ksp")
+        stamp = os.path.join(base, "ksp.stamp")
+        fp = fingerprint(sources, classpath, processor_jars, str(sorted(module.ksp_args.items())))
+        generated = os.path.join(base, "kotlin")
+        if not (os.path.exists(stamp) and open(stamp).read() == fp):
+            with Stage(f"ksp {module.path}"):
+                shutil.rmtree(base, ignore_errors=True)
+                os.makedirs(base)
+                source_roots = sorted({os.path.join(module.directory, "src", "main", "kotlin")})
+                cmd = [self.tools.java, "-Xmx2g", "-cp", os.pathsep.join(self.tools.ksp),
+                       "com.google.devtools.ksp.cmdline.KSPJvmMain",
+                       "-jvm-target=17", f"-module-name={self.project.name}-{module.name}",
+                       "-source-roots=" + os.pathsep.join(source_roots), f"-project-base-dir={module.directory}",
+                       f"-output-base-dir={base}", f"-caches-dir={base}/caches", f"-class-output-dir={base}/classes",
+                       f"-kotlin-output-dir={generated}", f"-java-output-dir={base}/java",
+                       f"-resource-output-dir={base}/resources", f"-jdk-home={self.tools.java_home}",
+                       "-language-version=2.3", "-api-version=2.3",
+                       "-libraries=" + os.pathsep.join(classpath)]
+                if module.ksp_args:
+                    cmd.append("-processor-options=" + os.pathsep.join(f"{k}={v}" for k, v in module.ksp_args.items()))
+                cmd.append(os.pathsep.join(processor_jars))
+                from .toolchain import run
+                run(cmd, f"KSP for {module.path}", log=os.path.join(base, "ksp.log"))
+                with open(stamp, "w") as f:
+                    f.write(fp)
+        return sorted(os.path.join(r, f) for r, _d, fs in os.walk(generated) for f in fs if f.endswith(".kt"))
 
     def runtime_classpath(self, module: Module, source_set: str) -> list[str]:
         cp = []

@@ -40,6 +40,7 @@ class Module:
     dependencies: list[Dependency] = field(default_factory=list)
     explicit_api: bool = False
     main_class: str | None = None
+    ksp_args: dict[str, str] = field(default_factory=dict)
     android: dict[str, str] = field(default_factory=dict)
 
     @property
@@ -214,6 +215,9 @@ def parse_module(path: str, directory: str, catalog: Catalog) -> Module:
     kotlin = _block(text, "kotlin") or ""
     module.explicit_api = "explicitApi()" in kotlin
 
+    for key, value in re.findall(r'arg\("([^"]+)",\s*"([^"]*)"\)', _block(text, "ksp") or ""):
+        module.ksp_args[key] = value.replace("$projectDir", directory).replace("${projectDir}", directory)
+
     application = _block(text, "application")
     if application:
         m = re.search(r'mainClass(?:\.set\(|\s*=\s*)"([\w.$]+)"', application)
@@ -224,7 +228,7 @@ def parse_module(path: str, directory: str, catalog: Catalog) -> Module:
     android = _block(text, "android")
     if android is not None:
         for key in ("namespace", "compileSdk", "minSdk", "targetSdk", "applicationId", "versionCode", "versionName"):
-            m = re.search(r"(?m)^\s*" + key + r"\s*=\s*(.+?)\s*$", android)
+            m = re.search(r"(?:^|[\s{;])" + key + r"\s*=\s*([^\n;}]+?)\s*(?=$|[;}\n])", android, re.M)
             if m:
                 module.android[key] = _value(m.group(1), catalog)
         # A library states the targetSdk its unit tests run with in testOptions { targetSdk = … }.

@@ -75,6 +75,12 @@ class Toolchain:
             return self._classpath("tool-kotlin-compiler")
 
     @cached_property
+    def ksp(self) -> list[str]:
+        """The standalone KSP2 command line (`KSPJvmMain`) and what it needs at run time."""
+        with Stage("fetch KSP"):
+            return self._classpath("tool-ksp", "tool-ksp-common-deps", "tool-ksp-api", "kotlinx-coroutines-core")
+
+    @cached_property
     def compose_plugin(self) -> str:
         return self._jar("tool-compose-compiler-plugin")
 

@@ -96,6 +96,20 @@ class ProjectReaderTest(unittest.TestCase):
             load_project(self.root)
         self.assertIn("ghost", str(e.exception))
 
+    def test_load_project_oneLineAndroidBlockAndKspArgs(self):
+        write(self.root, "app/build.gradle.kts", """
+            plugins {
+                alias(libs.plugins.android.application)
+            }
+            android { namespace = "org.demo"; compileSdk = 37; defaultConfig { minSdk = 26; targetSdk = 35 } }
+            ksp {
+                arg("room.schemaLocation", "$projectDir/schemas")
+            }
+        """)
+        app = load_project(self.root).module(":app")
+        self.assertEqual({"namespace": "org.demo", "compileSdk": "37", "minSdk": "26", "targetSdk": "35"}, app.android)
+        self.assertEqual({"room.schemaLocation": os.path.join(self.root, "app") + "/schemas"}, app.ksp_args)
+
     def test_catalog_accessorsIgnoreSeparators(self):
         catalog = Catalog(os.path.join(self.root, "gradle/libs.versions.toml"))
         self.assertEqual("org.jetbrains.kotlin:kotlin-stdlib:2.4.21", str(catalog.library("kotlin.stdlib")))
