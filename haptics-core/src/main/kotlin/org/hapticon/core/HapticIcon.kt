@@ -84,6 +84,15 @@ public data class HapticIcon(
         /** Hug: 1.5/1.0/0.5/0.5 s, note 50, played once. */
         public val HUG: HapticIcon = HapticIcon("hug", 1.5, 1.0, 0.5, 0.5, 50.0, 0.0, 1)
 
+        /**
+         * The longest icon the safety caps allow, and the busiest envelope: [MAX_COUNT] repetitions
+         * lasting exactly [MAX_DURATION_SECONDS] (63 · 0.4375 + 3 · 0.8125 = 30 s, every term exact in
+         * binary), attack/sustain/release 0.8125 s at level 0.7, note 69 (440 Hz), period 0.4375 s.
+         * Its 2.4375 s envelopes overlap up to six at a time. The worst case for rendering cost, shared by
+         * the benchmark and the tests so they measure the same icon. Not a preset.
+         */
+        public val LONGEST_ALLOWED: HapticIcon = HapticIcon("longest", 0.8125, 0.8125, 0.7, 0.8125, 69.0, 0.4375, 64)
+
         /** The four presets in the study's order: stroke, hit, knock, hug. */
         public val PRESETS: List<HapticIcon> = listOf(STROKE, HIT, KNOCK, HUG)
 

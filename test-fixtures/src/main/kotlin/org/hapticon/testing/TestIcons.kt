@@ -8,11 +8,11 @@ import org.hapticon.core.HapticIcon
  */
 public object TestIcons {
     /**
-     * The longest icon the safety caps allow: [HapticIcon.MAX_COUNT] repetitions lasting exactly
-     * [HapticIcon.MAX_DURATION_SECONDS]: 63 · 0.4375 + 3 · 0.8125 = 30 s, every term exact in binary.
-     * Its repetitions overlap (2.4375 s envelopes every 0.4375 s), so it is also the busiest envelope.
+     * The longest icon the safety caps allow, [HapticIcon.LONGEST_ALLOWED] (defined there once, so the
+     * benchmark and every test use the same icon): [HapticIcon.MAX_COUNT] repetitions lasting exactly
+     * [HapticIcon.MAX_DURATION_SECONDS]. Its repetitions overlap, so it is also the busiest envelope.
      */
-    public val LONGEST: HapticIcon = HapticIcon("longest", 0.8125, 0.8125, 0.7, 0.8125, 69.0, 0.4375, 64)
+    public val LONGEST: HapticIcon = HapticIcon.LONGEST_ALLOWED
 
     /** The lowest carrier, MIDI note 0 (8.18 Hz): less than one cycle per 100 ms. */
     public val NOTE_0: HapticIcon = HapticIcon("note-0", 0.01, 0.1, 1.0, 0.01, 0.0)

@@ -34,6 +34,9 @@ object BenchReport {
         )
         line("  worst: note %s at %d Hz, %s model, %d samples", number(worst.note), worst.sampleRate, worst.model.name.lowercase(), worst.samples)
         line("  compared as the float32 samples the stream yields; one float32 step just below 1.0 is 5.96e-08")
+        val worstDouble = result.worstDoubleError
+        line("FAST max |error| vs EXACT in double precision: %.3g over the same streams, read as doubles before narrowing", worstDouble.maxAbsDoubleError)
+        line("  worst: note %s at %d Hz, %s model, %d samples", number(worstDouble.note), worstDouble.sampleRate, worstDouble.model.name.lowercase(), worstDouble.samples)
         line("")
         line(
             "time to the first 10 ms block (%d samples), µs, median of %d runs: renderer construction to samples in hand",
@@ -76,6 +79,7 @@ object BenchReport {
             },
         ),
         "fastMaxAbsError" to JsonNumber(result.worstError.maxAbsError),
+        "fastMaxAbsErrorDouble" to JsonNumber(result.worstDoubleError.maxAbsDoubleError),
         "fastErrorCases" to JsonArray(
             result.errorCases.map { e ->
                 obj(
@@ -84,6 +88,7 @@ object BenchReport {
                     "note" to JsonNumber(e.note),
                     "samples" to JsonNumber(e.samples),
                     "maxAbsError" to JsonNumber(e.maxAbsError),
+                    "maxAbsErrorDouble" to JsonNumber(e.maxAbsDoubleError),
                 )
             },
         ),
@@ -116,7 +121,12 @@ object BenchReport {
         "runs" to JsonNumber(rate.runs),
     )
 
-    private fun obj(vararg members: Pair<String, JsonValue>): JsonObject = JsonObject(linkedMapOf(*members))
+    /** An object of [members] in order, leaving out those whose value is null (not measured). */
+    private fun obj(vararg members: Pair<String, JsonValue?>): JsonObject {
+        val present = LinkedHashMap<String, JsonValue>()
+        for ((key, value) in members) if (value != null) present[key] = value
+        return JsonObject(present)
+    }
 
     private fun rounded(value: Double, decimals: Int): JsonNumber = JsonNumber(Math.round(value * POWERS[decimals]) / POWERS[decimals])
 

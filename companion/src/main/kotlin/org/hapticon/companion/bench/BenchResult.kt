@@ -14,8 +14,19 @@ data class Throughput(val workload: String, val samples: Long, val naive: Rate, 
     val fastSpeedup: Double get() = fast.medianSamplesPerSecond / naive.medianSamplesPerSecond
 }
 
-/** Largest |FAST − EXACT| over a full stream of a full-scale icon at [note] and [sampleRate]. */
-data class ErrorCase(val model: EnvelopeModel, val sampleRate: Int, val note: Double, val samples: Long, val maxAbsError: Double)
+/**
+ * Largest |FAST − EXACT| over a full stream of a full-scale icon at [note] and [sampleRate]: [maxAbsError]
+ * between the float32 samples the streams yield, [maxAbsDoubleError] between the double samples before
+ * narrowing (FAST's own error).
+ */
+data class ErrorCase(
+    val model: EnvelopeModel,
+    val sampleRate: Int,
+    val note: Double,
+    val samples: Long,
+    val maxAbsError: Double,
+    val maxAbsDoubleError: Double,
+)
 
 /** Median time from constructing the renderer to holding the first 10 ms of samples, per carrier mode. */
 data class FirstBlock(val icon: String, val exactMicros: Double, val fastMicros: Double) {
@@ -38,8 +49,11 @@ data class BenchResult(
     val allocatedBytesPerBlockFast: Double,
     val elapsedSeconds: Double,
 ) {
-    /** The worst FAST error case. */
+    /** The worst FAST error case, compared as float32. */
     val worstError: ErrorCase get() = errorCases.maxBy { it.maxAbsError }
+
+    /** The worst FAST error case compared in double precision. */
+    val worstDoubleError: ErrorCase get() = errorCases.maxBy { it.maxAbsDoubleError }
 
     /** The targets, each judged on its worst measured case (slowest workload, slowest icon). */
     val targets: List<Target>

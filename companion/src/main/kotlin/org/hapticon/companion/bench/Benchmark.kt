@@ -110,18 +110,27 @@ class Benchmark(private val config: BenchConfig, private val progress: (String) 
         return cases
     }
 
+    /**
+     * Reads both streams as doubles, and compares them both as they are and narrowed to the float32
+     * samples a float read yields (float reads narrow the very same doubles).
+     */
     private fun errorCase(icon: HapticIcon, rate: Int, model: EnvelopeModel): ErrorCase {
         val exact = IconRenderer(icon, rate, model, RenderMode.EXACT).stream()
         val fast = IconRenderer(icon, rate, model, RenderMode.FAST).stream()
-        val fastBlock = FloatArray(block.size)
-        var maxError = 0.0
+        val exactBlock = DoubleArray(block.size)
+        val fastBlock = DoubleArray(block.size)
+        var maxFloatError = 0.0
+        var maxDoubleError = 0.0
         while (true) {
-            val count = exact.read(block, 0, block.size)
+            val count = exact.read(exactBlock, 0, exactBlock.size)
             if (count < 0) break
             check(fast.read(fastBlock, 0, count) == count) { "FAST stream is shorter than EXACT" }
-            for (j in 0 until count) maxError = maxOf(maxError, abs(block[j].toDouble() - fastBlock[j].toDouble()))
+            for (j in 0 until count) {
+                maxDoubleError = maxOf(maxDoubleError, abs(exactBlock[j] - fastBlock[j]))
+                maxFloatError = maxOf(maxFloatError, abs(exactBlock[j].toFloat().toDouble() - fastBlock[j].toFloat().toDouble()))
+            }
         }
-        return ErrorCase(model, rate, icon.note, exact.totalSamples, maxError)
+        return ErrorCase(model, rate, icon.note, exact.totalSamples, maxFloatError, maxDoubleError)
     }
 
     private fun firstBlock(icon: HapticIcon, samples: Int): FirstBlock {
@@ -168,8 +177,8 @@ class Benchmark(private val config: BenchConfig, private val progress: (String) 
     }
 
     companion object {
-        /** The longest icon the safety caps allow: 64 overlapping repetitions, exactly 30 s. */
-        val LONGEST: HapticIcon = HapticIcon("longest", 0.8125, 0.8125, 0.7, 0.8125, 69.0, 0.4375, 64)
+        /** The longest icon the safety caps allow ([HapticIcon.LONGEST_ALLOWED]): 64 overlapping repetitions, exactly 30 s. */
+        val LONGEST: HapticIcon = HapticIcon.LONGEST_ALLOWED
 
         /** Named workloads of the throughput measurement. */
         val WORKLOADS: List<Pair<String, List<HapticIcon>>> = listOf("longest" to listOf(LONGEST), "presets" to HapticIcon.PRESETS)

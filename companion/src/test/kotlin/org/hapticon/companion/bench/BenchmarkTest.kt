@@ -92,6 +92,7 @@ class BenchmarkTest {
         assertTrue(table, "  exact       >= 30 M samples/s    measured         25 M samples/s  NOT MET" in lines)
         assertTrue(table, "  fast        >= 200 M samples/s   measured        210 M samples/s  met" in lines)
         assertTrue(table, "FAST max |error| vs EXACT: 5.96e-08 over 2 full streams (rates 8000, 44100 Hz; notes 0, 127; both models)" in lines)
+        assertTrue(table, "FAST max |error| vs EXACT in double precision: 1.14e-11 over the same streams, read as doubles before narrowing" in lines)
         assertEquals("total 12.5 s", lines.last())
     }
 
@@ -103,6 +104,7 @@ class BenchmarkTest {
         assertEquals(JsonNumber(210_000_000), (longest["fast"] as JsonObject)["medianSamplesPerSecond"])
         assertEquals(JsonNumber(21.0), longest["fastVsNaive"])
         assertEquals(JsonNumber(5.960464477539063E-8), json["fastMaxAbsError"])
+        assertEquals(JsonNumber(1.14e-11), json["fastMaxAbsErrorDouble"])
         assertEquals(2, (json["fastErrorCases"] as JsonArray).size)
         val firstBlock = (json["targets"] as JsonObject)["firstBlock"] as JsonObject
         assertEquals(JsonBoolean(false), firstBlock["met"])
@@ -139,8 +141,8 @@ class BenchmarkTest {
                 Throughput("presets", 701_190, rate(20e6, 21e6), rate(60e6, 61e6), rate(260e6, 270e6)),
             ),
             errorCases = listOf(
-                ErrorCase(EnvelopeModel.PAPER, 8_000, 0.0, 240_000, 0.0),
-                ErrorCase(EnvelopeModel.PROCESSING, 44_100, 127.0, 1_323_000, 5.960464477539063E-8),
+                ErrorCase(EnvelopeModel.PAPER, 8_000, 0.0, 240_000, 0.0, 2.5e-13),
+                ErrorCase(EnvelopeModel.PROCESSING, 44_100, 127.0, 1_323_000, 5.960464477539063E-8, 1.14e-11),
             ),
             firstBlockSamples = 441,
             firstBlockRuns = 2000,

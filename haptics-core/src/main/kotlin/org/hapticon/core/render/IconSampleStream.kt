@@ -1,13 +1,14 @@
 package org.hapticon.core.render
 
 /**
- * [SampleStream] over an [IconSynthesizer]: samples are made as doubles in a fixed scratch block
- * (allocated once per stream) and narrowed to floats, so reading allocates nothing.
+ * [DoubleSampleStream] over an [IconSynthesizer]. Float reads make samples as doubles in a fixed
+ * scratch block (allocated once per stream) and narrow them; double reads write straight into the
+ * caller's array. Neither allocates.
  */
 internal class IconSampleStream(
     private val synthesizer: IconSynthesizer,
     override val sampleRate: Int,
-) : SampleStream {
+) : DoubleSampleStream {
     private val scratch = DoubleArray(SCRATCH_SAMPLES)
 
     override val totalSamples: Long get() = synthesizer.totalSamples
@@ -24,6 +25,12 @@ internal class IconSampleStream(
             written += made
         }
         return written
+    }
+
+    override fun read(destination: DoubleArray, offset: Int, length: Int): Int {
+        checkRange(destination.size, offset, length)
+        if (position >= totalSamples) return -1
+        return synthesizer.fill(destination, offset, length)
     }
 
     private companion object {

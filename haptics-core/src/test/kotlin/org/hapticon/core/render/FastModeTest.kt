@@ -7,7 +7,7 @@ import org.junit.Test
 import kotlin.math.abs
 
 class FastModeTest {
-    private val longest = HapticIcon("longest", 0.8125, 0.8125, 0.7, 0.8125, 69.0, 0.4375, 64)
+    private val longest = HapticIcon.LONGEST_ALLOWED
     private val rates = listOf(8_000, 44_100, 48_000, 96_000, 192_000)
     private val notes = listOf(0.0, 21.0, 57.0, 65.0, 100.0, 127.0)
 
@@ -29,6 +29,53 @@ class FastModeTest {
         }
         assertEquals(exact.totalSamples, total)
         return worst
+    }
+
+    /** Largest |FAST − EXACT| over the two full streams read as doubles (before narrowing to float). */
+    private fun maxDoubleDifference(icon: HapticIcon, fs: Int, model: EnvelopeModel): Double {
+        val exact = IconRenderer(icon, fs, model, RenderMode.EXACT).stream()
+        val fast = IconRenderer(icon, fs, model, RenderMode.FAST).stream()
+        val a = DoubleArray(4096)
+        val b = DoubleArray(4096)
+        var worst = 0.0
+        var total = 0L
+        while (true) {
+            val n = exact.read(a)
+            assertEquals(n, fast.read(b))
+            if (n < 0) break
+            for (j in 0 until n) worst = maxOf(worst, abs(a[j] - b[j]))
+            total += n
+        }
+        assertEquals(exact.totalSamples, total)
+        return worst
+    }
+
+    /** Rates and notes of the double-precision checks, without the pairs at or above Nyquist (note 127 at 8 kHz). */
+    private val doubleCases = listOf(8_000, 44_100, 192_000).flatMap { fs ->
+        listOf(0.0, 57.0, 127.0).filter { note -> HapticIcon("n", 0.0, 0.1, 1.0, 0.0, note).frequency < fs / 2.0 }.map { fs to it }
+    }
+
+    @Test
+    fun doubleCases_areEightRateNotePairs() {
+        assertEquals(8, doubleCases.size)
+    }
+
+    @Test
+    fun fastDoubles_fullScaleThirtySecondsBothModels_staysWithin1e9OfExact() {
+        // Envelope 1 throughout, so the difference is the carrier's alone, over the longest allowed stream.
+        for ((fs, note) in doubleCases) for (model in EnvelopeModel.values()) {
+            val icon = HapticIcon("full-scale", 0.0, HapticIcon.MAX_DURATION_SECONDS, 1.0, 0.0, note)
+            val worst = maxDoubleDifference(icon, fs, model)
+            assertTrue("note $note $fs Hz $model: $worst", worst <= 1e-9)
+        }
+    }
+
+    @Test
+    fun fastDoubles_longestIconBothModels_staysWithin1e9OfExact() {
+        for ((fs, note) in doubleCases) for (model in EnvelopeModel.values()) {
+            val worst = maxDoubleDifference(longest.copy(note = note), fs, model)
+            assertTrue("longest note $note $fs Hz $model: $worst", worst <= 1e-9)
+        }
     }
 
     @Test

@@ -51,7 +51,7 @@ class IconRendererPresetTest {
     @Test
     fun envelopeAt_sixtyFourHeavilyOverlappingRepetitions_isTheMaximumOverAllOfThem() {
         // Each envelope lasts 2.4375 s and a new one starts every 0.4375 s: up to 6 overlap.
-        val longest = HapticIcon("longest", 0.8125, 0.8125, 0.7, 0.8125, 69.0, 0.4375, 64)
+        val longest = HapticIcon.LONGEST_ALLOWED
         for (fs in listOf(8_000, 44_100)) for (model in EnvelopeModel.values()) {
             val renderer = IconRenderer(longest, fs, model)
             for (i in 0 until renderer.sampleCount step 3) {

@@ -11,7 +11,7 @@ import kotlin.math.abs
 
 class RendererExtremesTest {
     /** 64 repetitions, exactly 30 s: 63 · 0.4375 + 3 · 0.8125 = 27.5625 + 2.4375 (all exact in binary). */
-    private val longest = HapticIcon("longest", 0.8125, 0.8125, 0.7, 0.8125, 69.0, 0.4375, 64)
+    private val longest = HapticIcon.LONGEST_ALLOWED
 
     private fun expectInvalid(field: String, block: () -> Unit) {
         try {
@@ -93,6 +93,15 @@ class RendererExtremesTest {
                 assertEquals("$fs $model $i", IconReference.sample(icon, model, i, fs), renderer.sampleAt(i), 1e-12)
             }
         }
+    }
+
+    @Test
+    fun longestAllowed_isExactlyAtBothSafetyCaps() {
+        assertEquals(HapticIcon.MAX_DURATION_SECONDS, longest.duration, 0.0)
+        assertEquals(HapticIcon.MAX_COUNT, longest.count)
+        assertEquals(1_323_000L, IconRenderer(longest, 44_100).sampleCount)
+        expectInvalid("duration") { longest.copy(sustain = longest.sustain + 1e-6) }
+        expectInvalid("count") { longest.copy(count = HapticIcon.MAX_COUNT + 1, period = 0.1) }
     }
 
     @Test

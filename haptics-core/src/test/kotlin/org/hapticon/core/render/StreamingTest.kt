@@ -73,6 +73,83 @@ class StreamingTest {
     }
 
     @Test
+    fun readDoubles_bothModesAndModels_narrowToTheFloatReadExactly() {
+        for (mode in RenderMode.values()) for (model in EnvelopeModel.values()) {
+            val renderer = IconRenderer(HapticIcon.HIT, 48_000, model, mode)
+            val floats = readAll(renderer.stream(), 4096)
+            val stream = renderer.stream()
+            val block = DoubleArray(483)
+            var index = 0
+            while (true) {
+                // Offset 3 exercises the offset argument.
+                val n = stream.read(block, 3, 480)
+                if (n < 0) break
+                assertEquals(index + n.toLong(), stream.position)
+                for (j in 0 until n) assertEquals("$mode $model ${index + j}", floats[index + j], block[3 + j].toFloat(), 0f)
+                index += n
+            }
+            assertEquals(73_920, index)
+        }
+    }
+
+    @Test
+    fun readDoubles_exactMode_equalsSampleAtBitForBit() {
+        for (model in EnvelopeModel.values()) {
+            val renderer = IconRenderer(HapticIcon.KNOCK, 44_100, model)
+            val stream = renderer.stream()
+            val block = DoubleArray(1000)
+            var index = 0L
+            while (true) {
+                val n = stream.read(block)
+                if (n < 0) break
+                for (j in 0 until n) assertEquals("$model ${index + j}", renderer.sampleAt(index + j), block[j], 0.0)
+                index += n
+            }
+            assertEquals(24_696L, index)
+        }
+    }
+
+    @Test
+    fun read_floatsAndDoublesMixed_continueOneSequence() {
+        val renderer = IconRenderer(HapticIcon.HIT, 44_100, mode = RenderMode.FAST)
+        val reference = readAll(renderer.stream(), 4096)
+        val stream = renderer.stream()
+        val floats = FloatArray(700)
+        val doubles = DoubleArray(1300)
+        assertEquals(700, stream.read(floats))
+        assertEquals(1300, stream.read(doubles))
+        assertEquals(2_000L, stream.position)
+        assertEquals(reference[699], floats[699], 0f)
+        assertEquals(reference[700], doubles[0].toFloat(), 0f)
+        assertEquals(reference[1999], doubles[1299].toFloat(), 0f)
+        assertEquals(700, stream.read(floats))
+        assertEquals(reference[2000], floats[0], 0f)
+    }
+
+    @Test
+    fun readDoubles_atEnd_returnsMinusOne() {
+        val stream = IconRenderer(HapticIcon.KNOCK, 48_000).stream()
+        val block = DoubleArray(20_000)
+        assertEquals(20_000, stream.read(block))
+        assertEquals(6_880, stream.read(block))
+        assertEquals(-1, stream.read(block))
+        assertEquals(-1, stream.read(block, 0, 0))
+        assertEquals(26_880L, stream.position)
+    }
+
+    @Test
+    fun readDoubles_zeroLengthBeforeEnd_returnsZero() {
+        val stream = IconRenderer(HapticIcon.KNOCK, 48_000).stream()
+        assertEquals(0, stream.read(DoubleArray(4), 2, 0))
+        assertEquals(0L, stream.position)
+    }
+
+    @Test(expected = IndexOutOfBoundsException::class)
+    fun readDoubles_rangeOutsideArray_throws() {
+        IconRenderer(HapticIcon.KNOCK, 48_000).stream().read(DoubleArray(4), 2, 3)
+    }
+
+    @Test
     fun stream_eachCall_startsAfreshAtSampleZero() {
         val renderer = IconRenderer(HapticIcon.HUG, 48_000, mode = RenderMode.FAST)
         val first = renderer.stream()
