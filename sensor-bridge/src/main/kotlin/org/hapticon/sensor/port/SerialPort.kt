@@ -8,11 +8,13 @@ import java.io.IOException
  * recorded file on the command line. Everything above this interface is plain Kotlin.
  *
  * Implementations are not thread-safe for concurrent reads; one reader and one writer thread may
- * use a port at the same time.
+ * use a port at the same time. [close] may be called from any thread and unblocks a pending [read],
+ * which then throws or returns -1; only finite sources (recordings) return -1 otherwise.
  */
 public interface SerialPort : Closeable {
     /**
      * Applies line settings (ignored by transports without a line, such as files).
+     * @throws UnsupportedSettingException if the device cannot do them (e.g. a baud rate its clock can't divide to).
      * @throws IOException if the device rejects them or is gone.
      */
     public fun configure(settings: LineSettings)
@@ -28,7 +30,7 @@ public interface SerialPort : Closeable {
 
     /**
      * Writes all [length] bytes from [offset] within [timeoutMillis] in total (one deadline across
-     * chunks).
+     * chunks; 0 means no deadline, as for [read]).
      * @throws PortTimeoutException if the deadline passes before every byte is written.
      * @throws PortDisconnectedException when the device was unplugged.
      */
@@ -64,6 +66,9 @@ public enum class StopBits { ONE, ONE_POINT_FIVE, TWO }
 
 /** The device behind a port is gone (unplugged, powered off). */
 public class PortDisconnectedException(message: String) : IOException(message)
+
+/** The port cannot apply a requested line setting. */
+public class UnsupportedSettingException(message: String) : IOException(message)
 
 /** A write did not finish before its deadline. */
 public class PortTimeoutException(message: String) : IOException(message)

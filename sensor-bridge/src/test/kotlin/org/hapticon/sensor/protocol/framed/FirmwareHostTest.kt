@@ -1,0 +1,26 @@
+package org.hapticon.sensor.protocol.framed
+
+import org.hapticon.sensor.protocol.ModuleFiles
+import org.junit.Assert.assertEquals
+import org.junit.Assert.assertTrue
+import org.junit.Assume.assumeTrue
+import org.junit.Test
+
+/**
+ * Builds the reference firmware's protocol code and sketch with the host's g++ and runs their tests
+ * (sensor-bridge/firmware/test/run.sh), so `./build test` covers the C++ side and its agreement with
+ * the shared vectors. Skipped where there is no g++.
+ */
+class FirmwareHostTest {
+    @Test
+    fun firmwareHostTests_withSharedVectors_pass() {
+        assumeTrue("g++ is not installed", ModuleFiles.onPath("g++"))
+        val script = ModuleFiles.sensorBridge("firmware/test/run.sh")
+        val vectors = ModuleFiles.testFixtures("src/main/resources/streams/framed-vectors.txt")
+        val (exit, output) = ModuleFiles.run("bash", script.path, vectors.path)
+        assertEquals(output, 0, exit)
+        assertTrue(output, Regex("""host_test: \d+ checks, 0 failed""").containsMatchIn(output))
+        assertTrue(output, output.contains("shared vectors: 13 frames, 11 exchanges"))
+        assertTrue(output, output.contains("sketch_test: 1 infos, 11 samples, 1 acks, 0 failed"))
+    }
+}
