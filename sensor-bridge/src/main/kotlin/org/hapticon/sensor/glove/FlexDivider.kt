@@ -1,0 +1,136 @@
+package org.hapticon.sensor.glove
+
+/**
+ * A flex sensor read through a voltage divider: the fixed resistor [fixedKiloohms] runs from the supply
+ * [supplyVolts] to the output node and the flex sensor from the output node to ground, so
+ * Vout = Vin·R/(R + Rfix) and the sensor's resistance is R = Vout/(Vin − Vout)·Rfix.
+ *
+ * Resistances are in kΩ throughout the glove model, the unit of the study's calibration constant β.
+ * A reading at or below 0 V (sensor shorted to ground, R = 0), at or above the supply (sensor open or
+ * unplugged, R = ∞) or NaN is reported as a [DividerReading.Fault]; the result is never 0, ∞ or NaN.
+ */
+public data class FlexDivider(
+    val fixedKiloohms: Double = DEFAULT_FIXED_KILOOHMS,
+    val supplyVolts: Double = DEFAULT_SUPPLY_VOLTS,
+) {
+    init {
+        require(fixedKiloohms > 0.0 && fixedKiloohms <= MAX_FIXED_KILOOHMS) {
+            "fixedKiloohms must be in (0, $MAX_FIXED_KILOOHMS] kΩ, was $fixedKiloohms"
+        }
+        require(supplyVolts > 0.0 && supplyVolts <= MAX_SUPPLY_VOLTS) {
+            "supplyVolts must be in (0, $MAX_SUPPLY_VOLTS] V, was $supplyVolts"
+        }
+    }
+
+    /**
+     * The sensor's resistance for an output of [volts]: R = Vout/(Vin − Vout)·Rfix in kΩ, or a fault when
+     * [volts] is NaN, ≤ 0 or ≥ [supplyVolts].
+     */
+    public fun resistanceOf(volts: Double): DividerReading {
+        val fault = faultOf(volts)
+        if (fault != null) return DividerReading.Fault(fault, volts)
+        val kiloohms = volts / (supplyVolts - volts) * fixedKiloohms
+        // A subnormal Vout underflows R to 0 (ln R = −∞ downstream): that is a short in all but name.
+        if (kiloohms <= 0.0) return DividerReading.Fault(SensorFault.SHORT_CIRCUIT, volts)
+        // Vout one ulp below Vin still gives a finite R with the bounded Rfix; stay defensive anyway.
+        if (!kiloohms.isFinite()) return DividerReading.Fault(SensorFault.OPEN_CIRCUIT, volts)
+        return DividerReading.Resistance(kiloohms)
+    }
+
+    /** The output voltage the divider gives for a sensor of [kiloohms] (> 0, finite): Vin·R/(R + Rfix). */
+    public fun voltsFor(kiloohms: Double): Double {
+        require(kiloohms > 0.0 && kiloohms.isFinite()) { "kiloohms must be finite and > 0, was $kiloohms" }
+        return supplyVolts * kiloohms / (kiloohms + fixedKiloohms)
+    }
+
+    private fun faultOf(volts: Double): SensorFault? = when {
+        volts.isNaN() -> SensorFault.NOT_A_NUMBER
+        volts <= 0.0 -> SensorFault.SHORT_CIRCUIT
+        volts >= supplyVolts -> SensorFault.OPEN_CIRCUIT
+        else -> null
+    }
+
+    public companion object {
+        /** The study's supply voltage. */
+        public const val DEFAULT_SUPPLY_VOLTS: Double = 5.0
+
+        /**
+         * 33 kΩ: close to √(16 kΩ · 68 kΩ), the geometric mean of the study's flex resistances at 0° and 90°,
+         * which maximises the output swing over that range (a default, not from the study).
+         */
+        public const val DEFAULT_FIXED_KILOOHMS: Double = 33.0
+
+        /** Largest fixed resistor accepted (1 GΩ); bounds R so that it stays finite. */
+        public const val MAX_FIXED_KILOOHMS: Double = 1.0e6
+
+        /** Largest supply accepted. */
+        public const val MAX_SUPPLY_VOLTS: Double = 50.0
+    }
+}
+
+/** What a voltage-divider reading says: a resistance, or why there is none. */
+public sealed interface DividerReading {
+    /** A valid reading: the sensor's resistance in kΩ, finite and > 0. */
+    public data class Resistance(val kiloohms: Double) : DividerReading
+
+    /** A sensor fault: [fault] says which, [volts] is the offending output (for logs). */
+    public data class Fault(val fault: SensorFault, val volts: Double) : DividerReading
+}
+
+/** Why a sensor reading could not be turned into a value. */
+public enum class SensorFault {
+    /** The output is NaN (a decoding or arithmetic error upstream). */
+    NOT_A_NUMBER,
+
+    /** The output is at or below 0 V: the sensor or its wire is shorted to ground. */
+    SHORT_CIRCUIT,
+
+    /** The output is at or above the supply: the sensor is open or unplugged. */
+    OPEN_CIRCUIT,
+
+    /** An ADC count outside 0..full scale: the sample was corrupted in transfer. */
+    COUNT_OUT_OF_RANGE,
+}
+
+/**
+ * An ADC of [bits] resolution referenced to [referenceVolts]: counts 0..2^bits − 1 map linearly onto
+ * 0..Vref, Vout = counts/(2^bits − 1)·Vref. Full scale maps to exactly Vref, so a saturated input (an open
+ * flex sensor) reads as the supply and is reported as a fault rather than as a huge resistance.
+ */
+public data class AdcScale(val bits: Int, val referenceVolts: Double = FlexDivider.DEFAULT_SUPPLY_VOLTS) {
+    init {
+        require(bits in MIN_BITS..MAX_BITS) { "bits must be in $MIN_BITS..$MAX_BITS, was $bits" }
+        require(referenceVolts > 0.0 && referenceVolts <= FlexDivider.MAX_SUPPLY_VOLTS) {
+            "referenceVolts must be in (0, ${FlexDivider.MAX_SUPPLY_VOLTS}] V, was $referenceVolts"
+        }
+    }
+
+    /** The largest count, 2^bits − 1 (1023 for 10 bits, 4095 for 12 bits). */
+    public val fullScale: Int get() = (1 shl bits) - 1
+
+    /** Whether [counts] is a count this ADC can produce, 0..[fullScale]. */
+    public fun isValid(counts: Int): Boolean = counts in 0..fullScale
+
+    /**
+     * Vout in volts for [counts]: counts/[fullScale]·[referenceVolts].
+     * @throws IllegalArgumentException when [counts] is outside 0..[fullScale].
+     */
+    public fun voltsOf(counts: Int): Double {
+        require(isValid(counts)) { "counts must be in 0..$fullScale, was $counts" }
+        return counts.toDouble() / fullScale * referenceVolts
+    }
+
+    public companion object {
+        /** Fewest bits accepted. */
+        public const val MIN_BITS: Int = 8
+
+        /** Most bits accepted. */
+        public const val MAX_BITS: Int = 16
+
+        /** A 10-bit ADC at 5 V (Arduino Uno/Nano). */
+        public val TEN_BIT: AdcScale = AdcScale(10)
+
+        /** A 12-bit ADC at 5 V. */
+        public val TWELVE_BIT: AdcScale = AdcScale(12)
+    }
+}

@@ -1,0 +1,48 @@
+package org.hapticon.sensor.grains
+
+/**
+ * The parameters of compliance grains that do not depend on the sensor's sample rate.
+ *
+ * [grainCount] bins over [[minNewtons], [maxNewtons]] placed by [distribution] (see [GrainBins]), the FSR
+ * force smoothed by a first-order low-pass at [cutoffHz] (see [LowPassFilter]), and each grain lasting
+ * [grainSeconds], during which no other grain may start.
+ */
+public data class GrainSettings(
+    val grainCount: Int = DEFAULT_GRAIN_COUNT,
+    val distribution: BinDistribution = BinDistribution.LINEAR,
+    val minNewtons: Double = 0.0,
+    val maxNewtons: Double = DEFAULT_MAX_NEWTONS,
+    val cutoffHz: Double = DEFAULT_CUTOFF_HZ,
+    val grainSeconds: Double = DEFAULT_GRAIN_SECONDS,
+) {
+    init {
+        require(grainSeconds > 0.0 && grainSeconds <= MAX_GRAIN_SECONDS) { "grainSeconds must be in (0, $MAX_GRAIN_SECONDS], was $grainSeconds" }
+        require(cutoffHz > 0.0 && cutoffHz.isFinite()) { "cutoffHz must be finite and > 0, was $cutoffHz" }
+    }
+
+    /** The bins; throws from the constructor like [GrainBins] when the count or range is invalid. */
+    val bins: GrainBins = GrainBins(minNewtons, maxNewtons, grainCount, distribution)
+
+    public companion object {
+        /** Default number of grains: the middle of the study's 9–39 range. */
+        public const val DEFAULT_GRAIN_COUNT: Int = 24
+
+        /** Fewest grains the study used. */
+        public const val STUDY_MIN_GRAIN_COUNT: Int = 9
+
+        /** Most grains the study used. */
+        public const val STUDY_MAX_GRAIN_COUNT: Int = 39
+
+        /** Default top of the force range: 10 N, a firm finger press and the Interlink 402's useful range. */
+        public const val DEFAULT_MAX_NEWTONS: Double = 10.0
+
+        /** Default low-pass cutoff: 20 Hz passes a finger's pressing (< 10 Hz) and removes FSR and ADC noise. */
+        public const val DEFAULT_CUTOFF_HZ: Double = 20.0
+
+        /** Default grain length: 20 ms, the middle of the usual 10–30 ms. */
+        public const val DEFAULT_GRAIN_SECONDS: Double = 0.020
+
+        /** Longest grain accepted: 0.5 s (longer is no longer a grain). */
+        public const val MAX_GRAIN_SECONDS: Double = 0.5
+    }
+}

@@ -1,0 +1,120 @@
+package org.hapticon.sensor.electrotactile
+
+import org.hapticon.sensor.safety.SafetyLimitException
+import org.junit.Assert.assertEquals
+import org.junit.Assert.assertFalse
+import org.junit.Assert.assertTrue
+import org.junit.Assert.fail
+import org.junit.Test
+
+class ElectrotactileCommandTest {
+    private val full = ElectrotactileUserLimit(2.7)
+
+    private fun assertRefused(call: () -> Unit) {
+        try {
+            call()
+            fail("accepted")
+        } catch (e: SafetyLimitException) {
+            assertEquals("electrotactileCurrent", e.limit)
+        }
+    }
+
+    @Test
+    fun masks_areTheDocumentedPatterns() {
+        assertEquals(listOf("XXX", "X.X", "XXX"), ElectrodeMask.LARGE_SQUARE.pattern.rows())
+        assertEquals(listOf("XX.", "XX.", "..."), ElectrodeMask.SMALL_SQUARE.pattern.rows())
+        assertEquals(listOf("...", "XXX", "..."), ElectrodeMask.HORIZONTAL_LINE.pattern.rows())
+        assertEquals(listOf(".X.", ".X.", ".X."), ElectrodeMask.VERTICAL_LINE.pattern.rows())
+        assertEquals(listOf(".X.", "X.X", "XXX"), ElectrodeMask.TRIANGLE.pattern.rows())
+        assertEquals(listOf(8, 4, 3, 3, 6), ElectrodeMask.entries.map { it.pattern.activeCount })
+    }
+
+    @Test
+    fun pattern_bits_areRowMajorFromTheTopLeft() {
+        // Electrode 3·row + column: the middle row is bits 3, 4, 5 = 0b000111000 = 56.
+        assertEquals(56, ElectrodeMask.HORIZONTAL_LINE.pattern.bits)
+        assertEquals(0b010010010, ElectrodeMask.VERTICAL_LINE.pattern.bits)
+        assertTrue(ElectrodeMask.TRIANGLE.pattern.isOn(0, 1))
+        assertFalse(ElectrodeMask.TRIANGLE.pattern.isOn(1, 1))
+        assertEquals("XXX/X.X/XXX", ElectrodeMask.LARGE_SQUARE.pattern.toString())
+    }
+
+    @Test
+    fun pattern_emptyMalformedOrOutOfRange_isRejected() {
+        for (make in listOf(
+            { ElectrodePattern(0) },
+            { ElectrodePattern(512) },
+            { ElectrodePattern.of("...", "...", "...") },
+            { ElectrodePattern.of("XX", "XXX", "XXX") },
+            { ElectrodePattern.of("XXX", "XOX", "XXX") },
+            { ElectrodePattern.of("XXX", "XXX") },
+            { ElectrodeMask.TRIANGLE.pattern.isOn(3, 0) },
+        )) {
+            try {
+                make()
+                fail("accepted")
+            } catch (_: IllegalArgumentException) {
+            }
+        }
+    }
+
+    @Test
+    fun grainPulseTrain_isTwoAnodic200MicrosecondPulsesAt125Hz() {
+        val grain = PulseTrain.GRAIN
+        assertEquals(PulseTrain(125.0, 2, 200.0, PulsePolarity.ANODIC), grain)
+        // 1/125 s between onsets plus one width: 8.2 ms.
+        assertEquals(0.0082, grain.durationSeconds, 1e-15)
+    }
+
+    @Test
+    fun command_atTheHardCap_isAcceptedWithItsCharge() {
+        val command = ElectrotactileCommand(ElectrodeMask.LARGE_SQUARE.pattern, 2.7, full)
+        // 2.7 mA × 200 µs = 0.54 µC.
+        assertEquals(0.54, command.chargePerPulseMicrocoulombs, 1e-15)
+    }
+
+    @Test
+    fun command_justAboveTheHardCap_isRefused() {
+        assertRefused { ElectrotactileCommand(ElectrodeMask.LARGE_SQUARE.pattern, Math.nextUp(2.7), full) }
+        assertRefused { ElectrotactileUserLimit(Math.nextUp(2.7)) }
+        assertRefused { ElectrotactileUserLimit(3.0) }
+    }
+
+    @Test
+    fun command_atAndJustAboveTheUserMaximum_isAcceptedThenRefused() {
+        val user = ElectrotactileUserLimit(1.5)
+        ElectrotactileCommand(ElectrodeMask.TRIANGLE.pattern, 1.5, user)
+        assertRefused { ElectrotactileCommand(ElectrodeMask.TRIANGLE.pattern, Math.nextUp(1.5), user) }
+    }
+
+    @Test
+    fun command_copyAboveTheLimit_isRefusedToo() {
+        val command = ElectrotactileCommand(ElectrodeMask.TRIANGLE.pattern, 1.0, ElectrotactileUserLimit(1.5))
+        assertRefused { command.copy(currentMilliamps = 2.0) }
+        assertRefused { command.copy(userLimit = ElectrotactileUserLimit(0.5)) }
+    }
+
+    @Test
+    fun command_zeroNegativeNanOrInfiniteCurrent_isRefused() {
+        for (bad in listOf(0.0, -1.0, Double.NaN, Double.POSITIVE_INFINITY, Double.NEGATIVE_INFINITY)) {
+            assertRefused { ElectrotactileCommand(ElectrodeMask.VERTICAL_LINE.pattern, bad, full) }
+            assertRefused { ElectrotactileUserLimit(bad) }
+        }
+    }
+
+    @Test
+    fun pulseTrain_aPulseLongerThanItsPeriodOrOutOfRange_isRejected() {
+        for (make in listOf(
+            { PulseTrain(frequencyHz = 1000.0, pulseWidthMicros = 1000.0) },
+            { PulseTrain(frequencyHz = 0.5) },
+            { PulseTrain(pulseCount = 0) },
+            { PulseTrain(pulseWidthMicros = Double.NaN) },
+        )) {
+            try {
+                make()
+                fail("accepted")
+            } catch (_: IllegalArgumentException) {
+            }
+        }
+    }
+}
