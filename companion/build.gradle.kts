@@ -13,6 +13,7 @@ kotlin {
 
 dependencies {
     implementation(project(":haptics-core"))
+    implementation(project(":sensor-bridge"))
 
     testImplementation(project(":test-fixtures"))
     testImplementation(libs.junit4)

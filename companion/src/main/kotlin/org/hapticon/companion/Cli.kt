@@ -1,5 +1,8 @@
 package org.hapticon.companion
 
+import org.hapticon.companion.sensors.runDecode
+import org.hapticon.companion.sensors.runGrains
+import org.hapticon.companion.sensors.runHandshake
 import java.io.PrintStream
 
 /** Exit status for success. */
@@ -66,6 +69,9 @@ private fun dispatch(args: List<String>, console: Console) {
         "plot" -> runPlot(rest, console)
         "bench" -> runBench(rest, console)
         "demo" -> runDemo(rest, console)
+        "decode" -> runDecode(rest, console)
+        "grains" -> runGrains(rest, console)
+        "handshake" -> runHandshake(rest, console)
         else -> throw UsageException("unknown command '$command'; try 'hapticon help'")
     }
 }

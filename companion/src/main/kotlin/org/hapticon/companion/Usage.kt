@@ -13,10 +13,21 @@ val USAGE: String = """
     |  hapticon plot ICON --out FILE.png [--model paper|processing] [--rate HZ]
     |      Draw ICON's envelope over its carrier waveform.
     |  hapticon bench [--json] [--quick]
-    |      Measure render speed, FAST-mode error, first-block latency and allocation;
+    |      Measure render speed, FAST-mode error, first-block latency and allocation, and the sensor
+    |      path: decoding speed, grain and handshake cost per sample, fake-port sample-to-grain latency;
     |      --json prints one JSON object, --quick does fewer runs (a smoke test, not a measurement).
     |  hapticon demo --out DIR [--apk PATH]
     |      Render and plot the presets into DIR, plus envelope-models.png; report the APK if given.
+    |      Also a sensor demo: a synthetic FSR press as a framed stream, decoded, and its grains; a handshake.
+    |  hapticon decode --protocol csv|lucid|framed --in FILE
+    |      Decode a recorded sensor byte stream: one JSON object per frame per line, then one line
+    |      {"stats":{"frames":N,"bad_frames":N,"dropped_bytes":N,...}}. Garbage is counted, not an error.
+    |  hapticon grains --in FSR.csv [--grains N] [--distribution linear|convex|concave]
+    |      Compliance-grain onsets of an FSR recording (header time_s,force in N, or time_s,voltage in V)
+    |      as CSV onset_s,bin,force_n: bin 0..N-1 and filtered force of each grain. Defaults: 24, linear.
+    |  hapticon handshake --self ANGLES.csv --partner ANGLES.csv
+    |      Tele-handshake commands for the self hand at each of its rows (header time_s,thumb_deg,middle_deg)
+    |      as CSV time_s,active, then per region pressure V, actuator deg, servo (not palm), vibration amp.
     |  hapticon help
     |      Print this text.
     |

@@ -20,13 +20,15 @@ class DemoCommandTest {
         val result = cli("demo", "--out", dir.path, "--apk", apk.path)
         assertEquals(result.toString(), 0, result.exitCode)
 
-        val expectedFiles = listOf("stroke", "hit", "knock", "hug").flatMap { listOf("$it.wav", "$it.png") } + "envelope-models.png"
+        val sensorFiles = listOf("fsr-press.bin", "fsr-press.jsonl", "fsr-press.csv", "grains.csv", "handshake-self.csv", "handshake-partner.csv", "handshake.csv")
+        val expectedFiles = listOf("stroke", "hit", "knock", "hug").flatMap { listOf("$it.wav", "$it.png") } + "envelope-models.png" + sensorFiles
         assertEquals(expectedFiles.sorted(), dir.list()!!.sorted())
         val lines = result.stdout.lines().dropLast(1)
-        assertEquals(10, lines.size)
+        assertEquals(16, lines.size)
         assertEquals("wrote ${File(dir, "stroke.wav")}: stroke, 476280 samples, 10.800 s at 44100 Hz, f32, paper model, exact mode", lines[0])
         assertEquals("wrote ${File(dir, "envelope-models.png")}: 1200×1224 PNG", lines[8])
-        assertEquals("APK: $apk (1234 bytes, 0.0 MB)", lines[9])
+        assertEquals("wrote ${File(dir, "fsr-press.bin")}: framed stream from hapticon-demo-fsr, device info + 2000 FSR samples at 1000 Hz, 28036 bytes", lines[9])
+        assertEquals("APK: $apk (1234 bytes, 0.0 MB)", lines[15])
 
         val hug = File(dir, "hug.wav").inputStream().use { WavReader.read(it) }
         assertEquals(WavEncoding.FLOAT32, hug.encoding)

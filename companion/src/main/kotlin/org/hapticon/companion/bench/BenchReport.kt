@@ -7,6 +7,7 @@ import org.hapticon.core.io.JsonNumber
 import org.hapticon.core.io.JsonObject
 import org.hapticon.core.io.JsonString
 import org.hapticon.core.io.JsonValue
+import org.hapticon.sensor.protocol.ProtocolBenchmark
 import java.util.Locale
 
 /** Formats a [BenchResult] as a human-readable table or as one JSON object. */
@@ -50,13 +51,34 @@ object BenchReport {
             number(result.allocatedBytesPerBlockExact), number(result.allocatedBytesPerBlockFast),
         )
         line("")
+        sensors(result.sensors)
+        line("")
         line("targets (each judged on its worst case)")
         for (target in result.targets) {
-            line("  %-11s %-20s measured %10s %-12s %s", target.name, target.goal, number(target.measured), target.unit, if (target.met) "met" else "NOT MET")
+            line("  %-16s %-20s measured %10s %-12s %s", target.name, target.goal, number(target.measured), target.unit, if (target.met) "met" else "NOT MET")
         }
         line("")
         line("total %.1f s", result.elapsedSeconds)
     }.trimEnd()
+
+    private fun StringBuilder.sensors(sensors: SensorFigures) {
+        line("sensor decoding on one core: synthetic streams fed in %d-byte reads, median of the runs", ProtocolBenchmark.DEFAULT_READ_SIZE)
+        line("  %-17s %7s %9s %11s %12s", "protocol", "MB", "MB/s", "M frames/s", "bytes/frame")
+        for (d in sensors.decode) {
+            line("  %-17s %7.1f %9.1f %11.2f %12s", d.name, d.bytes / 1e6, d.megabytesPerSecond, d.framesPerSecond / 1e6, allocation(d.bytesAllocatedPerFrame))
+        }
+        line("sensor models, ns per sample (median / best) and bytes allocated per sample")
+        for (m in sensors.models) {
+            line("  %-17s %8.1f / %6.1f %12s", m.name, m.medianNanosPerSample, m.bestNanosPerSample, allocation(m.allocatedBytesPerSample))
+        }
+        val latency = sensors.latency
+        line(
+            "fake-port FSR sample to grain command, µs: p50 %.1f, p99 %.1f, max %.1f (%d grains from %d samples at 1 kHz)",
+            latency.p50Micros, latency.p99Micros, latency.maxMicros, latency.grains, latency.samples,
+        )
+        line("  framed sample written to a FakeSerialPort -> SensorReader thread -> FramedDecoder -> FSR force -> GrainDecider")
+        line("  -> set-outputs command written back; one sample in flight at a time")
+    }
 
     /** One JSON object with every figure; rates in samples per second, times in µs. */
     fun json(result: BenchResult): String = Json.encode(jsonValue(result), indent = "  ")
@@ -102,11 +124,12 @@ object BenchReport {
             "exact" to JsonNumber(result.allocatedBytesPerBlockExact),
             "fast" to JsonNumber(result.allocatedBytesPerBlockFast),
         ),
+        "sensors" to sensorsJson(result.sensors),
         "targets" to JsonObject(
             result.targets.associateTo(LinkedHashMap()) { target ->
                 target.name to obj(
                     "goal" to JsonString(target.goal),
-                    "measured" to rounded(target.measured, 3),
+                    "measured" to measured(target.measured, 3),
                     "unit" to JsonString(target.unit),
                     "met" to JsonBoolean(target.met),
                 )
@@ -114,6 +137,46 @@ object BenchReport {
         ),
         "elapsedSeconds" to rounded(result.elapsedSeconds, 2),
     )
+
+    private fun sensorsJson(sensors: SensorFigures): JsonObject = obj(
+        "decode" to JsonArray(
+            sensors.decode.map { d ->
+                obj(
+                    "protocol" to JsonString(d.name),
+                    "bytes" to JsonNumber(d.bytes),
+                    "frames" to JsonNumber(d.frames),
+                    "megabytesPerSecond" to rounded(d.megabytesPerSecond, 2),
+                    "framesPerSecond" to JsonNumber(Math.round(d.framesPerSecond)),
+                    "allocatedBytesPerFrame" to measured(d.bytesAllocatedPerFrame, 3),
+                )
+            },
+        ),
+        "models" to JsonArray(
+            sensors.models.map { m ->
+                obj(
+                    "name" to JsonString(m.name),
+                    "medianNanosPerSample" to rounded(m.medianNanosPerSample, 2),
+                    "bestNanosPerSample" to rounded(m.bestNanosPerSample, 2),
+                    "allocatedBytesPerSample" to measured(m.allocatedBytesPerSample, 3),
+                    "samplesPerRun" to JsonNumber(m.samplesPerRun),
+                    "runs" to JsonNumber(m.runs),
+                )
+            },
+        ),
+        "grainLatency" to obj(
+            "samples" to JsonNumber(sensors.latency.samples),
+            "grains" to JsonNumber(sensors.latency.grains),
+            "p50Micros" to rounded(sensors.latency.p50Micros, 2),
+            "p99Micros" to rounded(sensors.latency.p99Micros, 2),
+            "maxMicros" to rounded(sensors.latency.maxMicros, 2),
+        ),
+    )
+
+    /** [value] rounded, or null (left out) where it was not measured: NaN or negative, as the sensor benchmarks say so. */
+    private fun measured(value: Double, decimals: Int): JsonNumber? = if (value.isNaN() || value < 0) null else rounded(value, decimals)
+
+    /** An allocation figure for the table; `n/a` where the JVM could not count. */
+    private fun allocation(bytes: Double): String = if (bytes.isNaN() || bytes < 0) "n/a" else number(bytes)
 
     private fun rateJson(rate: Rate): JsonObject = obj(
         "medianSamplesPerSecond" to JsonNumber(Math.round(rate.medianSamplesPerSecond)),

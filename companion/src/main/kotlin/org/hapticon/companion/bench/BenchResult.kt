@@ -47,6 +47,7 @@ data class BenchResult(
     val firstBlocks: List<FirstBlock>,
     val allocatedBytesPerBlockExact: Double,
     val allocatedBytesPerBlockFast: Double,
+    val sensors: SensorFigures,
     val elapsedSeconds: Double,
 ) {
     /** The worst FAST error case, compared as float32. */
@@ -55,7 +56,11 @@ data class BenchResult(
     /** The worst FAST error case compared in double precision. */
     val worstDoubleError: ErrorCase get() = errorCases.maxBy { it.maxAbsDoubleError }
 
-    /** The targets, each judged on its worst measured case (slowest workload, slowest icon). */
+    /**
+     * The targets, each judged on its worst measured case (slowest workload, slowest icon); then the sensor
+     * targets: decoding speed of CSV and framed streams, allocation while decoding (every protocol), grain
+     * decision cost, and the sample-to-grain-command latency at the 99th percentile.
+     */
     val targets: List<Target>
         get() {
             val fast = throughputs.minOf { it.fast.medianSamplesPerSecond }
@@ -67,6 +72,22 @@ data class BenchResult(
                 Target("exact", ">= 30 M samples/s", exact / 1e6, "M samples/s", exact >= 30e6),
                 Target("firstBlock", "<= 50 µs", firstBlock, "µs", firstBlock <= 50.0),
                 Target("allocation", "0 bytes/block", allocation, "bytes/block", allocation == 0.0),
-            )
+            ) + sensorTargets()
         }
+
+    private fun sensorTargets(): List<Target> {
+        val csv = sensors.decode("csv").megabytesPerSecond
+        val framed = sensors.decode("framed").megabytesPerSecond
+        // NaN (a JVM that cannot count) fails the target rather than passing unmeasured.
+        val decodeAllocation = sensors.decode.maxOf { it.bytesAllocatedPerFrame }
+        val grainDecision = sensors.model("grainDecider").medianNanosPerSample
+        val p99 = sensors.latency.p99Micros
+        return listOf(
+            Target("decodeCsv", ">= 50 MB/s", csv, "MB/s", csv >= 50.0),
+            Target("decodeFramed", ">= 50 MB/s", framed, "MB/s", framed >= 50.0),
+            Target("decodeAllocation", "0 bytes/frame", decodeAllocation, "bytes/frame", decodeAllocation == 0.0),
+            Target("grainDecision", "<= 1000 ns/sample", grainDecision, "ns/sample", grainDecision <= 1000.0),
+            Target("grainLatencyP99", "<= 1000 µs", p99, "µs", p99 <= 1000.0),
+        )
+    }
 }

@@ -7,8 +7,11 @@ import org.hapticon.core.io.JsonArray
 import org.hapticon.core.io.JsonBoolean
 import org.hapticon.core.io.JsonNumber
 import org.hapticon.core.io.JsonObject
+import org.hapticon.core.io.JsonString
 import org.hapticon.core.render.EnvelopeModel
 import org.hapticon.core.render.IconRenderer
+import org.hapticon.sensor.grains.SensorBenchmarkResult
+import org.hapticon.sensor.protocol.ProtocolBenchmark
 import org.hapticon.testing.TestIcons
 import org.hapticon.testing.readAllSamples
 import org.junit.Assert.assertEquals
@@ -36,7 +39,12 @@ class BenchmarkTest {
         assertEquals(441, result.firstBlockSamples)
         assertEquals(0.0, result.allocatedBytesPerBlockExact, 0.0)
         assertEquals(0.0, result.allocatedBytesPerBlockFast, 0.0)
-        assertEquals(5, steps.size)
+        assertEquals(0.0, result.sensors.decode.maxOf { it.bytesAllocatedPerFrame }, 0.0)
+        assertEquals(listOf("csv", "framed", "lucidgloves"), result.sensors.decode.map { it.name })
+        assertEquals(listOf("grainDecider", "handshakePressure"), result.sensors.models.map { it.name })
+        assertEquals(2_000, result.sensors.latency.samples)
+        assertEquals(8, steps.size)
+        assertEquals("fake-port sample to grain command", steps.last())
     }
 
     @Test
@@ -89,11 +97,35 @@ class BenchmarkTest {
         assertEquals("hapticon bench: paper model, 44100 Hz, reads into a reused 4096-sample block", lines[0])
         assertTrue(table, "  longest     1323000       10.0 / 11.0       25.0 / 26.0     210.0 / 220.0     2.5×    21.0×" in lines)
         assertTrue(table, "  longest       150.0     120.0" in lines)
-        assertTrue(table, "  exact       >= 30 M samples/s    measured         25 M samples/s  NOT MET" in lines)
-        assertTrue(table, "  fast        >= 200 M samples/s   measured        210 M samples/s  met" in lines)
+        assertTrue(table, "  exact            >= 30 M samples/s    measured         25 M samples/s  NOT MET" in lines)
+        assertTrue(table, "  fast             >= 200 M samples/s   measured        210 M samples/s  met" in lines)
         assertTrue(table, "FAST max |error| vs EXACT: 5.96e-08 over 2 full streams (rates 8000, 44100 Hz; notes 0, 127; both models)" in lines)
         assertTrue(table, "FAST max |error| vs EXACT in double precision: 1.14e-11 over the same streams, read as doubles before narrowing" in lines)
         assertEquals("total 12.5 s", lines.last())
+    }
+
+    @Test
+    fun table_listsSensorFiguresAndTheirTargets() {
+        val table = BenchReport.table(SAMPLE_RESULT)
+        val lines = table.lines()
+        val expected = listOf(
+            "sensor decoding on one core: synthetic streams fed in 4096-byte reads, median of the runs",
+            "  protocol               MB      MB/s  M frames/s  bytes/frame",
+            "  csv                  16.8     120.0       10.00            0",
+            "  framed               16.8      45.5        2.00            0",
+            "  lucidgloves          16.8     300.0        4.00        0.250",
+            "sensor models, ns per sample (median / best) and bytes allocated per sample",
+            "  grainDecider           8.5 /    8.0            0",
+            "  handshakePressure     70.0 /   66.0          n/a",
+            "fake-port FSR sample to grain command, µs: p50 3.5, p99 1200.0, max 5000.0 (2200 grains from 100000 samples at 1 kHz)",
+        )
+        val start = lines.indexOf(expected[0])
+        assertEquals(expected, lines.subList(start, start + expected.size))
+        assertTrue(table, "  decodeCsv        >= 50 MB/s           measured        120 MB/s         met" in lines)
+        assertTrue(table, "  decodeFramed     >= 50 MB/s           measured       45.5 MB/s         NOT MET" in lines)
+        assertTrue(table, "  decodeAllocation 0 bytes/frame        measured      0.250 bytes/frame  NOT MET" in lines)
+        assertTrue(table, "  grainDecision    <= 1000 ns/sample    measured       8.50 ns/sample    met" in lines)
+        assertTrue(table, "  grainLatencyP99  <= 1000 µs           measured       1200 µs           NOT MET" in lines)
     }
 
     @Test
@@ -109,6 +141,19 @@ class BenchmarkTest {
         val firstBlock = (json["targets"] as JsonObject)["firstBlock"] as JsonObject
         assertEquals(JsonBoolean(false), firstBlock["met"])
         assertEquals(JsonNumber(150.0), firstBlock["measured"])
+        val sensors = json["sensors"] as JsonObject
+        val framed = (sensors["decode"] as JsonArray)[1] as JsonObject
+        assertEquals(JsonString("framed"), framed["protocol"])
+        assertEquals(JsonNumber(45.5), framed["megabytesPerSecond"])
+        assertEquals(JsonNumber(2_000_000), framed["framesPerSecond"])
+        val handshake = (sensors["models"] as JsonArray)[1] as JsonObject
+        assertEquals(JsonNumber(70.0), handshake["medianNanosPerSample"])
+        assertEquals(null, handshake["allocatedBytesPerSample"]) // -1: not counted, so left out
+        val latency = sensors["grainLatency"] as JsonObject
+        assertEquals(JsonNumber(1200.0), latency["p99Micros"])
+        assertEquals(JsonNumber(2200), latency["grains"])
+        val p99 = (json["targets"] as JsonObject)["grainLatencyP99"] as JsonObject
+        assertEquals(JsonBoolean(false), p99["met"])
     }
 
     @Test
@@ -119,7 +164,10 @@ class BenchmarkTest {
         val allocation = json["allocatedBytesPerBlock"] as JsonObject
         assertEquals(JsonNumber(0), allocation["exact"])
         assertEquals(JsonNumber(0), allocation["fast"])
-        assertEquals(setOf("fast", "exact", "firstBlock", "allocation"), (json["targets"] as JsonObject).members.keys)
+        val targets = setOf("fast", "exact", "firstBlock", "allocation", "decodeCsv", "decodeFramed", "decodeAllocation", "grainDecision", "grainLatencyP99")
+        assertEquals(targets, (json["targets"] as JsonObject).members.keys)
+        val latency = (json["sensors"] as JsonObject)["grainLatency"] as JsonObject
+        assertEquals(JsonNumber(2_000), latency["samples"])
         assertTrue(result.stderr, result.stderr.startsWith("bench: throughput over longest"))
     }
 
@@ -149,6 +197,18 @@ class BenchmarkTest {
             firstBlocks = listOf(FirstBlock("stroke", 15.0, 4.0), FirstBlock("longest", 150.0, 120.0)),
             allocatedBytesPerBlockExact = 0.0,
             allocatedBytesPerBlockFast = 0.0,
+            sensors = SensorFigures(
+                decode = listOf(
+                    ProtocolBenchmark.Result("csv", 16_777_224, 1_400_000, 120.0, 10e6, 0.0),
+                    ProtocolBenchmark.Result("framed", 16_777_222, 760_000, 45.5, 2e6, 0.0),
+                    ProtocolBenchmark.Result("lucidgloves", 16_777_219, 210_000, 300.0, 4e6, 0.25),
+                ),
+                models = listOf(
+                    SensorBenchmarkResult("grainDecider", 8.5, 8.0, 0.0, 65_536, 900),
+                    SensorBenchmarkResult("handshakePressure", 70.0, 66.0, -1.0, 65_536, 200),
+                ),
+                latency = GrainLatencyResult(samples = 100_000, grains = 2_200, p50Micros = 3.5, p99Micros = 1200.0, maxMicros = 5000.0),
+            ),
             elapsedSeconds = 12.5,
         )
     }

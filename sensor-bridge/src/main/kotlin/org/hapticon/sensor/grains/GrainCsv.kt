@@ -5,15 +5,21 @@ import org.hapticon.sensor.glove.readSensorCsv
 import java.util.Locale
 
 /**
- * Where grains start in a force recording: [onsetTimesSeconds] (the time column of each sample at which a
- * grain fires), decided at [sampleRateHz] over [samples] rows, with [grainSamples] samples per grain.
+ * Where grains start in a force recording: [grains] in order, decided at [sampleRateHz] over [samples] rows,
+ * with [grainSamples] samples per grain.
  */
 public data class GrainOnsets(
-    val onsetTimesSeconds: List<Double>,
+    val grains: List<GrainOnset>,
     val sampleRateHz: Double,
     val samples: Int,
     val grainSamples: Int,
-)
+) {
+    /** The time column of each sample at which a grain fires. */
+    val onsetTimesSeconds: List<Double> get() = grains.map { it.timeSeconds }
+}
+
+/** One grain: its onset [timeSeconds] (the recording's time column), the force [bin] it fired for, and the filtered force then. */
+public data class GrainOnset(val timeSeconds: Double, val bin: Int, val filteredNewtons: Double)
 
 /**
  * The `hapticon grains` computation as a pure function: an FSR recording in, grain onset times out.
@@ -64,8 +70,10 @@ public object GrainCsv {
             (rows.size - 1) / (rows.last().values[0] - rows.first().values[0])
         }
         val decider = GrainDecider(settings, rate)
-        val onsets = ArrayList<Double>()
-        for (i in forces.indices) if (decider.offer(forces[i])) onsets += rows[i].values[0]
+        val onsets = ArrayList<GrainOnset>()
+        for (i in forces.indices) {
+            if (decider.offer(forces[i])) onsets += GrainOnset(rows[i].values[0], decider.currentReferenceBin, decider.filteredNewtons)
+        }
         return GrainOnsets(onsets, rate, rows.size, decider.grainSamples)
     }
 

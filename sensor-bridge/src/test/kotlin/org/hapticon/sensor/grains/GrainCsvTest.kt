@@ -34,7 +34,8 @@ class GrainCsvTest {
 
     @Test
     fun format_onsets_isOneTimePerLine() {
-        assertEquals("onset_s\n0.001000\n0.004000\n", GrainCsv.format(GrainOnsets(listOf(0.001, 0.004), 1000.0, 8, 3)))
+        val grains = listOf(GrainOnset(0.001, 2, 2.5), GrainOnset(0.004, 4, 4.6875))
+        assertEquals("onset_s\n0.001000\n0.004000\n", GrainCsv.format(GrainOnsets(grains, 1000.0, 8, 3)))
         assertEquals("onset_s\n", GrainCsv.format(GrainOnsets(emptyList(), 1000.0, 8, 3)))
     }
 
@@ -42,7 +43,10 @@ class GrainCsvTest {
     fun onsets_voltageCsv_convertsThroughTheFsrDivider() {
         // 4 V is 5 N (400 µS): filtered 2.5, 3.75, 4.375, 4.6875 → bins 2, 3, 4, 4: grains at samples 1 and 4.
         val csv = "# FSR on A0\ntime_s,voltage\n" + (0..7).joinToString("\n") { "${it / 1000.0},${if (it == 0) 0.0 else 4.0}" }
-        assertEquals(listOf(0.001, 0.004), GrainCsv.onsets(csv, settings).onsetTimesSeconds)
+        val grains = GrainCsv.onsets(csv, settings).grains
+        assertEquals(listOf(0.001, 0.004), grains.map { it.timeSeconds })
+        assertEquals(listOf(2, 4), grains.map { it.bin })
+        assertEquals(listOf(2.5, 4.6875), grains.map { it.filteredNewtons })
     }
 
     @Test

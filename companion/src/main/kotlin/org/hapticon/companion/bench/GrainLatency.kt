@@ -1,0 +1,131 @@
+package org.hapticon.companion.bench
+
+import org.hapticon.companion.sensors.SensorDemo
+import org.hapticon.companion.sensors.SyntheticPress
+import org.hapticon.sensor.grains.FsrForceConverter
+import org.hapticon.sensor.grains.FsrReading
+import org.hapticon.sensor.grains.GrainDecider
+import org.hapticon.sensor.grains.GrainSettings
+import org.hapticon.sensor.port.FakeSerialPort
+import org.hapticon.sensor.port.SensorReader
+import org.hapticon.sensor.protocol.framed.FramedDecoder
+import org.hapticon.sensor.protocol.framed.FramedEncoder
+import org.hapticon.sensor.protocol.framed.FramedProtocol
+import org.hapticon.sensor.protocol.framed.SampleFrame
+import org.hapticon.sensor.safety.SafetyLimits
+import java.util.concurrent.atomic.AtomicInteger
+import kotlin.math.ceil
+
+/**
+ * Latency from an FSR sample arriving to the grain command it causes: [p50Micros] and [p99Micros] (nearest
+ * rank) and [maxMicros] over the [grains] measured, which [samples] samples (after warm-up) caused.
+ */
+data class GrainLatencyResult(val samples: Int, val grains: Int, val p50Micros: Double, val p99Micros: Double, val maxMicros: Double)
+
+/**
+ * Measures the app's grain path end to end on a [FakeSerialPort]: the bench thread writes one framed FSR
+ * sample ([SyntheticPress], 1 kHz, 12 bit) into the port; a [SensorReader] thread reads it, a [FramedDecoder]
+ * decodes it, counts become volts and an [FsrForceConverter] force, a [GrainDecider] (default settings)
+ * decides, and when a grain starts a set-outputs command (output 0 at full scale) is encoded and written back
+ * to the port. Each latency runs from just before the sample's write to just after the command's write
+ * (System.nanoTime on both threads).
+ *
+ * One sample is in flight at a time: the next is written only once the reader has handled the previous one,
+ * so a latency never includes queueing behind earlier samples, only the wake-up and the work. The first
+ * [warmupSamples] are not counted, so the JIT has compiled the path.
+ */
+class GrainLatency(private val samples: Int, private val warmupSamples: Int) {
+    init {
+        require(samples >= 1 && warmupSamples >= 0) { "need samples >= 1 and warmupSamples >= 0, were $samples and $warmupSamples" }
+    }
+
+    /** Runs the measurement; throws [IllegalStateException] if the reader fails, stalls, or no grain fires. */
+    fun run(): GrainLatencyResult {
+        val total = warmupSamples + samples
+        val frames = encodeFrames(total)
+        val writtenAt = LongArray(total)
+        val latencies = LongArray(total) { NOT_A_GRAIN }
+        val handled = AtomicInteger(0)
+        val port = FakeSerialPort()
+        val path = GrainPath(port, writtenAt, latencies, handled)
+        var failure: Throwable? = null
+        val reader = SensorReader(port, FramedDecoder(path), { _, cause -> failure = cause }, bufferSize = READ_BYTES)
+        reader.start("hapticon-bench-grain-latency")
+        try {
+            port.enqueue(frames.deviceInfo)
+            for (i in 0 until total) {
+                writtenAt[i] = System.nanoTime()
+                port.enqueue(frames.samples[i])
+                awaitHandled(handled, i + 1, reader) { failure }
+            }
+        } finally {
+            reader.stop()
+            port.close()
+            reader.awaitStop(STALL_MILLIS)
+        }
+        val measured = latencies.copyOfRange(warmupSamples, total).filter { it != NOT_A_GRAIN }.sorted()
+        check(measured.isNotEmpty()) { "no grain fired in $samples samples" }
+        return GrainLatencyResult(samples, measured.size, rank(measured, 0.50) / 1e3, rank(measured, 0.99) / 1e3, measured.last() / 1e3)
+    }
+
+    /** The reader side: decodes a sample into a force, decides, and writes a command for each grain. */
+    private class GrainPath(
+        private val port: FakeSerialPort,
+        private val writtenAt: LongArray,
+        private val latencies: LongArray,
+        private val handled: AtomicInteger,
+    ) : FramedDecoder.Listener {
+        private val converter = FsrForceConverter()
+        private val decider = GrainDecider(GrainSettings(), SyntheticPress.SAMPLE_RATE_HZ.toDouble())
+        private val encoder = FramedEncoder()
+        private val command = ByteArray(FramedProtocol.MAX_ENCODED_FRAME_LENGTH)
+        private val fullScale = intArrayOf(SafetyLimits.SERVO_MAX)
+        private var index = 0
+
+        override fun onSample(frame: SampleFrame) {
+            val i = index++
+            val reading = converter.forceOf(SyntheticPress.voltsOfCounts(frame.values[0]))
+            if (reading is FsrReading.Force && decider.offer(reading.newtons)) {
+                val length = encoder.setOutputs(0, fullScale, command)
+                port.write(command, 0, length, WRITE_TIMEOUT_MILLIS)
+                latencies[i] = System.nanoTime() - writtenAt[i]
+            }
+            // The volatile write publishes latencies[i] to the bench thread.
+            handled.set(i + 1)
+        }
+    }
+
+    /** Each frame encoded beforehand, so a write times only the port. */
+    private class Frames(val deviceInfo: ByteArray, val samples: List<ByteArray>)
+
+    private fun encodeFrames(total: Int): Frames {
+        val encoder = FramedEncoder()
+        val buffer = ByteArray(FramedProtocol.MAX_ENCODED_FRAME_LENGTH)
+        val deviceInfo = buffer.copyOf(encoder.deviceInfo(SensorDemo.DEVICE, buffer))
+        val value = IntArray(1)
+        val samples = List(total) { k ->
+            value[0] = SyntheticPress.countsAt(k)
+            buffer.copyOf(encoder.sample(k * 1_000_000L / SyntheticPress.SAMPLE_RATE_HZ, value, buffer))
+        }
+        return Frames(deviceInfo, samples)
+    }
+
+    /** Spins until [handled] reaches [count]; the reader answers within microseconds, so a stall is a failure. */
+    private inline fun awaitHandled(handled: AtomicInteger, count: Int, reader: SensorReader, failure: () -> Throwable?) {
+        val deadline = System.nanoTime() + STALL_MILLIS * 1_000_000
+        while (handled.get() < count) {
+            if (!reader.isRunning) throw IllegalStateException("the sensor reader stopped at sample $count", failure())
+            check(System.nanoTime() < deadline) { "sample $count was not handled within $STALL_MILLIS ms" }
+            Thread.onSpinWait()
+        }
+    }
+
+    private fun rank(sorted: List<Long>, fraction: Double): Double = sorted[(ceil(fraction * sorted.size).toInt() - 1).coerceAtLeast(0)].toDouble()
+
+    private companion object {
+        const val NOT_A_GRAIN = -1L
+        const val READ_BYTES = 256
+        const val WRITE_TIMEOUT_MILLIS = 100
+        const val STALL_MILLIS = 5_000L
+    }
+}

@@ -1,0 +1,31 @@
+package org.hapticon.companion.sensors
+
+import org.hapticon.companion.Arguments
+import org.hapticon.companion.Console
+import org.hapticon.companion.UsageException
+import org.hapticon.sensor.port.ReplayPort
+import java.io.BufferedWriter
+import java.io.FileInputStream
+import java.io.IOException
+import java.io.OutputStreamWriter
+
+/** `hapticon decode --protocol csv|lucid|framed --in FILE`: one JSON line per frame, then a stats line, to stdout. */
+fun runDecode(args: List<String>, console: Console) {
+    val arguments = Arguments.parse("decode", args, valueOptions = setOf("protocol", "in"))
+    arguments.requireNoPositionals()
+    val protocol = arguments.choice<DecodeProtocol?>("protocol", DecodeProtocol.CHOICES, null)
+        ?: throw UsageException("decode needs --protocol ${DecodeProtocol.CHOICES.keys.joinToString("|")}")
+    val file = InputFiles.existing("in", arguments.required("in"))
+    // Not closed: it wraps stdout, which belongs to the caller.
+    val out = BufferedWriter(OutputStreamWriter(console.out, Charsets.UTF_8), StreamToJsonLines.READ_BYTES)
+    try {
+        ReplayPort(FileInputStream(file), intArrayOf(StreamToJsonLines.READ_BYTES)).use { port ->
+            StreamToJsonLines.decode(port, protocol, out)
+        }
+    } catch (e: IOException) {
+        // stdout never throws (PrintStream keeps its errors), so this is the input failing.
+        throw UsageException("cannot read $file: ${e.message}")
+    } finally {
+        out.flush()
+    }
+}

@@ -1,0 +1,106 @@
+package org.hapticon.companion.sensors
+
+import org.hapticon.core.io.JsonArray
+import org.hapticon.core.io.JsonNull
+import org.hapticon.core.io.JsonNumber
+import org.hapticon.core.io.JsonObject
+import org.hapticon.core.io.JsonString
+import org.hapticon.core.io.JsonValue
+import org.hapticon.sensor.protocol.FrameError
+import org.hapticon.sensor.protocol.StreamStats
+import org.hapticon.sensor.protocol.csv.CsvSample
+import org.hapticon.sensor.protocol.framed.AckStatus
+import org.hapticon.sensor.protocol.framed.DeviceInfo
+import org.hapticon.sensor.protocol.framed.SampleFrame
+import org.hapticon.sensor.protocol.lucid.LucidButton
+import org.hapticon.sensor.protocol.lucid.LucidGloveFrame
+
+/**
+ * The JSON objects `hapticon decode` prints, one per decoded frame, and its final statistics object.
+ * Keys are snake_case; every object starts with `"type"`. Decoders reuse their frame objects, so each
+ * function copies what it needs at once.
+ */
+object FrameJson {
+    /** `{"type":"csv","values":[...]}`. */
+    fun csv(sample: CsvSample): JsonObject =
+        obj("type" to JsonString("csv"), "values" to JsonArray(List(sample.fieldCount) { JsonNumber(sample.values[it]) }))
+
+    /**
+     * `{"type":"lucid","fingers":[5 curls]}`, then only what the line carried: `"joystick":[x,y]`, `"trigger"`,
+     * `"buttons"` (names of the pressed flags), `"splay"` (5 entries) and `"joints"` (5 × 4 per-joint curls);
+     * inside the last three, a value the line did not carry is null.
+     */
+    fun lucid(frame: LucidGloveFrame): JsonObject {
+        val members = linkedMapOf<String, JsonValue>("type" to JsonString("lucid"), "fingers" to ints(frame.curl))
+        if (frame.joystickX != ABSENT || frame.joystickY != ABSENT) {
+            members["joystick"] = JsonArray(listOf(optional(frame.joystickX), optional(frame.joystickY)))
+        }
+        if (frame.trigger != ABSENT) members["trigger"] = JsonNumber(frame.trigger)
+        val pressed = LucidButton.entries.filter { frame.isPressed(it) }
+        if (pressed.isNotEmpty()) members["buttons"] = JsonArray(pressed.map { JsonString(it.name.lowercase()) })
+        if (frame.splay.any { it != ABSENT }) members["splay"] = JsonArray(frame.splay.map(::optional))
+        if (frame.jointCurl.any { it != ABSENT }) {
+            val perFinger = frame.jointCurl.asList().chunked(LucidGloveFrame.JOINTS_PER_FINGER)
+            members["joints"] = JsonArray(perFinger.map { joints -> JsonArray(joints.map(::optional)) })
+        }
+        return JsonObject(members)
+    }
+
+    /** `{"type":"sample","seq":N,"timestamp_us":N,"channels":[...]}` for a framed sample. */
+    fun sample(frame: SampleFrame): JsonObject = obj(
+        "type" to JsonString("sample"),
+        "seq" to JsonNumber(frame.sequence),
+        "timestamp_us" to JsonNumber(frame.timestampMicros),
+        "channels" to JsonArray(List(frame.channelCount) { JsonNumber(frame.values[it]) }),
+    )
+
+    /** `{"type":"device_info",...}` with the firmware version, ADC bits, rate, outputs, channel units and name. */
+    fun deviceInfo(info: DeviceInfo): JsonObject = obj(
+        "type" to JsonString("device_info"),
+        "name" to JsonString(info.name),
+        "firmware" to JsonString(info.firmwareVersion),
+        "adc_bits" to JsonNumber(info.adcBits),
+        "sample_rate_hz" to JsonNumber(info.sampleRateHz),
+        "outputs" to JsonNumber(info.outputCount),
+        "channel_units" to JsonArray(info.channelUnits.map { JsonString(it.name.lowercase()) }),
+    )
+
+    /** `{"type":"ack","command_seq":N,"status":"ok","detail":N}`: the device's answer to the command numbered `command_seq`. */
+    fun ack(commandSequence: Int, status: AckStatus, detail: Int): JsonObject = obj(
+        "type" to JsonString("ack"),
+        "command_seq" to JsonNumber(commandSequence),
+        "status" to JsonString(status.name.lowercase()),
+        "detail" to JsonNumber(detail),
+    )
+
+    /**
+     * `{"stats":{"frames","bad_frames","dropped_bytes","bytes","ignored_lines","sequence_gaps","lost_frames",
+     * "bad_frames_by_error":{...}}}`; the last holds only the [FrameError] kinds that occurred.
+     */
+    fun stats(stats: StreamStats): JsonObject {
+        val byError = LinkedHashMap<String, JsonValue>()
+        for (error in FrameError.entries) {
+            val count = stats.badFrames(error)
+            if (count != 0L) byError[error.name.lowercase()] = JsonNumber(count)
+        }
+        val counts = obj(
+            "frames" to JsonNumber(stats.frames),
+            "bad_frames" to JsonNumber(stats.badFrames),
+            "dropped_bytes" to JsonNumber(stats.droppedBytes),
+            "bytes" to JsonNumber(stats.bytes),
+            "ignored_lines" to JsonNumber(stats.ignoredLines),
+            "sequence_gaps" to JsonNumber(stats.sequenceGaps),
+            "lost_frames" to JsonNumber(stats.lostFrames),
+            "bad_frames_by_error" to JsonObject(byError),
+        )
+        return obj("stats" to counts)
+    }
+
+    private const val ABSENT = LucidGloveFrame.ABSENT
+
+    private fun ints(values: IntArray): JsonArray = JsonArray(values.map { JsonNumber(it) })
+
+    private fun optional(value: Int): JsonValue = if (value == ABSENT) JsonNull else JsonNumber(value)
+
+    private fun obj(vararg members: Pair<String, JsonValue>): JsonObject = JsonObject(linkedMapOf(*members))
+}

@@ -1,0 +1,28 @@
+package org.hapticon.companion.bench
+
+import org.junit.Assert.assertEquals
+import org.junit.Assert.assertTrue
+import org.junit.Test
+
+class GrainLatencyTest {
+    @Test
+    fun run_onePressCycle_measuresEveryGrainItCauses() {
+        // One 2 s press-and-release at 1 kHz fires 44 grains (SensorDemoTest sees the same 44 in the CSV).
+        val result = GrainLatency(samples = 2_000, warmupSamples = 0).run()
+        assertEquals(2_000, result.samples)
+        assertEquals(44, result.grains)
+        assertTrue(result.toString(), result.p50Micros > 0 && result.p50Micros <= result.p99Micros && result.p99Micros <= result.maxMicros)
+    }
+
+    @Test
+    fun run_warmupSamples_areNotCounted() {
+        // The first 1000 samples are the rest and the 0.8 s rise, whose grains climb bins 1..23; the release fires the other 21.
+        val result = GrainLatency(samples = 1_000, warmupSamples = 1_000).run()
+        assertEquals(21, result.grains)
+    }
+
+    @Test(expected = IllegalArgumentException::class)
+    fun constructor_noSamples_isRejected() {
+        GrainLatency(samples = 0, warmupSamples = 0)
+    }
+}
