@@ -126,13 +126,14 @@ class Resolver:
             x = el.find(q(p))
             return x.text.strip() if x is not None and x.text else None
 
-        props, managed = {}, {}
+        props, managed, managed_scopes = {}, {}, {}
         pg, pa, pv = text(root, "parent/groupId"), text(root, "parent/artifactId"), text(root, "parent/version")
         if pg:
             parent = self._pom(pg, pa, pv)
             if parent:
                 props.update(parent["props"])
                 managed.update(parent["managed"])
+                managed_scopes.update(parent["managed_scopes"])
         gid, ver = text(root, "groupId") or pg, text(root, "version") or pv
         props.update({"project.version": ver, "project.groupId": gid, "pom.version": ver,
                       "project.parent.version": pv or "", "parent.version": pv or ""})
@@ -155,16 +156,22 @@ class Resolver:
                     managed.setdefault(k, val)
             else:
                 managed[(dg, da)] = dv
+                if text(d, "scope"):
+                    managed_scopes[(dg, da)] = sub(text(d, "scope"))
         deps = []
         for d in root.findall(q("dependencies/dependency")):
-            if (text(d, "scope") or "compile") not in ("compile", "runtime") or text(d, "optional") == "true":
-                continue
             dg, da = sub(text(d, "groupId")), sub(text(d, "artifactId"))
+            # A dependency without a scope takes the one its (parent's) dependencyManagement gives, as in
+            # Maven: Netty's parent manages mockito as test, which must not reach an app.
+            scope = text(d, "scope") or managed_scopes.get((dg, da)) or "compile"
+            if scope not in ("compile", "runtime") or text(d, "optional") == "true":
+                continue
             dv = sub(text(d, "version")) or managed.get((dg, da))
             excludes = frozenset((sub(text(e, "groupId")), sub(text(e, "artifactId")))
                                  for e in d.findall(q("exclusions/exclusion")))
             deps.append((dg, da, concrete_version(dv), excludes))
-        result = {"packaging": sub(text(root, "packaging")) or "jar", "props": props, "managed": managed, "deps": deps}
+        result = {"packaging": sub(text(root, "packaging")) or "jar", "props": props, "managed": managed,
+                  "managed_scopes": managed_scopes, "deps": deps}
         self._poms[key] = result
         return result
 

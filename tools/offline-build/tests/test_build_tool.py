@@ -171,6 +171,23 @@ class ResolverTest(unittest.TestCase):
         files = [f for a in artifacts for f in a.files]
         self.assertEqual(["g/kmp-jvm/2/kmp-jvm-2.jar"], files)
 
+    def pom(self, g, a, v, body):
+        path = self.repo.path(Repository.relative(g, a, v, f"{a}-{v}.pom"))
+        os.makedirs(os.path.dirname(path), exist_ok=True)
+        with open(path, "w") as f:
+            f.write(f"<project><groupId>{g}</groupId><artifactId>{a}</artifactId><version>{v}</version>{body}</project>")
+        open(self.repo.path(Repository.relative(g, a, v, f"{a}-{v}.module")) + ".404", "w").close()
+
+    def test_resolve_scopeManagedByParentPom_keepsTestDependenciesOut(self):
+        self.pom("g", "parent", "1", "<packaging>pom</packaging><dependencyManagement><dependencies>"
+                 "<dependency><groupId>t</groupId><artifactId>mockito</artifactId><version>5</version>"
+                 "<scope>test</scope></dependency></dependencies></dependencyManagement>")
+        self.pom("g", "lib", "1", "<parent><groupId>g</groupId><artifactId>parent</artifactId><version>1</version></parent>"
+                 "<dependencies><dependency><groupId>t</groupId><artifactId>mockito</artifactId></dependency>"
+                 "</dependencies>")
+        got = [a.name for a in Resolver(self.repo, "jvm").resolve([("g", "lib", "1")])]
+        self.assertEqual(["lib"], got)
+
     def test_resolve_versionlessRootWithoutPlatform_fails(self):
         self.module("g", "a", "1")
         with self.assertRaises(BuildError) as e:
