@@ -20,6 +20,8 @@ rootProject.name = "hapticon"
 include(":haptics-core")
 include(":sensor-bridge")
 include(":sensor-bridge:usb")
+include(":messaging")
+include(":messaging:broker")
 include(":test-fixtures")
 include(":companion")
 include(":app")

@@ -14,7 +14,10 @@ kotlin {
 dependencies {
     implementation(project(":haptics-core"))
     implementation(project(":sensor-bridge"))
+    implementation(project(":messaging"))
+    implementation(project(":messaging:broker"))
 
     testImplementation(project(":test-fixtures"))
     testImplementation(libs.junit4)
+    testImplementation(libs.hivemq.mqtt.client) // a raw client for hostile payloads in the chat tests
 }

@@ -3,11 +3,13 @@ package org.hapticon.companion
 import org.hapticon.companion.bench.BenchConfig
 import org.hapticon.companion.bench.BenchReport
 import org.hapticon.companion.bench.Benchmark
+import org.hapticon.companion.chat.runMessagingBench
 
-/** `hapticon bench [--json] [--quick]`: measurements to stdout, progress to stderr. */
+/** `hapticon bench [--json] [--quick] [--messaging]`: measurements to stdout, progress to stderr. */
 fun runBench(args: List<String>, console: Console) {
-    val arguments = Arguments.parse("bench", args, flagOptions = setOf("json", "quick"))
+    val arguments = Arguments.parse("bench", args, flagOptions = setOf("json", "quick", "messaging"))
     arguments.requireNoPositionals()
+    if (arguments.flag("messaging")) return runMessagingBench(arguments.flag("quick"), arguments.flag("json"), console)
     val config = if (arguments.flag("quick")) BenchConfig.QUICK else BenchConfig.FULL
     val result = Benchmark(config) { step -> console.err.println("bench: $step") }.run()
     console.out.println(if (arguments.flag("json")) BenchReport.json(result) else BenchReport.table(result))

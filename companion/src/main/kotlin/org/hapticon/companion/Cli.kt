@@ -1,5 +1,7 @@
 package org.hapticon.companion
 
+import org.hapticon.companion.chat.runBroker
+import org.hapticon.companion.chat.runChat
 import org.hapticon.companion.sensors.runDecode
 import org.hapticon.companion.sensors.runGrains
 import org.hapticon.companion.sensors.runHandshake
@@ -72,6 +74,8 @@ private fun dispatch(args: List<String>, console: Console) {
         "decode" -> runDecode(rest, console)
         "grains" -> runGrains(rest, console)
         "handshake" -> runHandshake(rest, console)
+        "chat" -> runChat(rest, console)
+        "broker" -> runBroker(rest, console)
         else -> throw UsageException("unknown command '$command'; try 'hapticon help'")
     }
 }

@@ -1,5 +1,6 @@
 package org.hapticon.companion
 
+import org.hapticon.companion.chat.MessagingDemo
 import org.hapticon.companion.plot.IconPlot
 import org.hapticon.companion.plot.ModelComparisonPlot
 import org.hapticon.companion.plot.PngExport
@@ -21,7 +22,8 @@ fun runDemo(args: List<String>, console: Console) {
 
 /**
  * Writes the demo into [dir]: each preset as `<name>.wav` (float32, 44.1 kHz, paper model) and
- * `<name>.png`, then `envelope-models.png`, then the [SensorDemo] files; reports each file and the [apk]
+ * `<name>.png`, then `envelope-models.png`, then the [SensorDemo] files, then the [MessagingDemo] exchange
+ * and `received-knock.wav`; reports each file and the [apk]
  * (with its size) through [report].
  * One step per line so that later demo parts (broker, chat) slot in as further steps.
  */
@@ -35,5 +37,6 @@ fun writeDemo(dir: File, apk: File?, report: (String) -> Unit) {
     val comparison = ModelComparisonPlot.draw(HapticIcon.PRESETS, DEFAULT_SAMPLE_RATE)
     report(PngExport.write(comparison, File(dir, "envelope-models.png")))
     SensorDemo.write(dir, report)
+    MessagingDemo.write(dir, report)
     if (apk != null) report(String.format(Locale.ROOT, "APK: %s (%d bytes, %.1f MB)", apk, apk.length(), apk.length() / 1e6))
 }

@@ -12,13 +12,15 @@ val USAGE: String = """
     |      Render ICON to a mono WAV file, streaming block by block.
     |  hapticon plot ICON --out FILE.png [--model paper|processing] [--rate HZ]
     |      Draw ICON's envelope over its carrier waveform.
-    |  hapticon bench [--json] [--quick]
+    |  hapticon bench [--json] [--quick] [--messaging]
     |      Measure render speed, FAST-mode error, first-block latency and allocation, and the sensor
     |      path: decoding speed, grain and handshake cost per sample, fake-port sample-to-grain latency;
-    |      --json prints one JSON object, --quick does fewer runs (a smoke test, not a measurement).
+    |      --json prints one JSON object, --quick does fewer runs (a smoke test, not a measurement);
+    |      --messaging measures message encode + decode and send-to-receive latency instead.
     |  hapticon demo --out DIR [--apk PATH]
     |      Render and plot the presets into DIR, plus envelope-models.png; report the APK if given.
     |      Also a sensor demo: a synthetic FSR press as a framed stream, decoded, and its grains; a handshake.
+    |      And a chat: two users exchange a message with the knock icon through the embedded broker.
     |  hapticon decode --protocol csv|lucid|framed --in FILE
     |      Decode a recorded sensor byte stream: one JSON object per frame per line, then one line
     |      {"stats":{"frames":N,"bad_frames":N,"dropped_bytes":N,...}}. Garbage is counted, not an error.
@@ -28,6 +30,13 @@ val USAGE: String = """
     |  hapticon handshake --self ANGLES.csv --partner ANGLES.csv
     |      Tele-handshake commands for the self hand at each of its rows (header time_s,thumb_deg,middle_deg)
     |      as CSV time_s,active, then per region pressure V, actuator deg, servo (not palm), vibration amp.
+    |  hapticon chat --broker URL --user NAME [--to PEER] [--device ID] [--password-file FILE] [--wav-dir DIR]
+    |      Chat over MQTT (tcp://HOST:PORT, or ssl://HOST:PORT for TLS) with the app or another chat: lines
+    |      are sent to PEER; /icon ICON [TEXT], /sticker NAME [TEXT], /to PEER, /help, /quit. Received icons
+    |      are rendered to WAV files in DIR. Delivered and read receipts both ways.
+    |  hapticon broker [--port N] [--data DIR]
+    |      Run the embedded MQTT broker on 127.0.0.1 (default port 1883, store in ~/.hapticon/broker)
+    |      until Ctrl-C.
     |  hapticon help
     |      Print this text.
     |

@@ -21,14 +21,22 @@ class DemoCommandTest {
         assertEquals(result.toString(), 0, result.exitCode)
 
         val sensorFiles = listOf("fsr-press.bin", "fsr-press.jsonl", "fsr-press.csv", "grains.csv", "handshake-self.csv", "handshake-partner.csv", "handshake.csv")
-        val expectedFiles = listOf("stroke", "hit", "knock", "hug").flatMap { listOf("$it.wav", "$it.png") } + "envelope-models.png" + sensorFiles
+        val expectedFiles = listOf("stroke", "hit", "knock", "hug").flatMap { listOf("$it.wav", "$it.png") } + "envelope-models.png" + sensorFiles + "received-knock.wav"
         assertEquals(expectedFiles.sorted(), dir.list()!!.sorted())
         val lines = result.stdout.lines().dropLast(1)
-        assertEquals(16, lines.size)
+        assertEquals(20, lines.size)
         assertEquals("wrote ${File(dir, "stroke.wav")}: stroke, 476280 samples, 10.800 s at 44100 Hz, f32, paper model, exact mode", lines[0])
         assertEquals("wrote ${File(dir, "envelope-models.png")}: 1200×1224 PNG", lines[8])
         assertEquals("wrote ${File(dir, "fsr-press.bin")}: framed stream from hapticon-demo-fsr, device info + 2000 FSR samples at 1000 Hz, 28036 bytes", lines[9])
-        assertEquals("APK: $apk (1234 bytes, 0.0 MB)", lines[15])
+        assertEquals(true, Regex("messaging: embedded MQTT broker on tcp://127\\.0\\.0\\.1:\\d+").matches(lines[15]))
+        assertEquals(
+            "messaging: alice sent bob \"hello from alice\" with icon knock: attack 0.005 s, sustain 0.01 s, release 0.005 s, " +
+                "level 0.5, note 57 (220.0 Hz), 3× every 0.27 s, 0.560 s; bob received it intact",
+            lines[16],
+        )
+        assertEquals("wrote ${File(dir, "received-knock.wav")}: knock, 24696 samples, 0.560 s at 44100 Hz, f32, paper model, exact mode", lines[17])
+        assertEquals("messaging: bob's delivered receipt reached alice", lines[18])
+        assertEquals("APK: $apk (1234 bytes, 0.0 MB)", lines[19])
 
         val hug = File(dir, "hug.wav").inputStream().use { WavReader.read(it) }
         assertEquals(WavEncoding.FLOAT32, hug.encoding)

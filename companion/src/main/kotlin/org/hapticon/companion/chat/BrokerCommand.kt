@@ -1,0 +1,42 @@
+package org.hapticon.companion.chat
+
+import org.hapticon.companion.Arguments
+import org.hapticon.companion.Console
+import org.hapticon.companion.UsageException
+import org.hapticon.messaging.broker.EmbeddedBroker
+import java.io.File
+import java.io.IOException
+
+/**
+ * `hapticon broker [--port N] [--data DIR]`: runs the embedded MQTT broker on 127.0.0.1 in the foreground
+ * until the process is stopped (Ctrl-C). [waitForStop] blocks until then; tests pass their own.
+ */
+fun runBroker(args: List<String>, console: Console, waitForStop: () -> Unit = { Thread.currentThread().join() }) {
+    val arguments = Arguments.parse("broker", args, valueOptions = setOf("port", "data"))
+    arguments.requireNoPositionals()
+    val port = arguments.int("port", DEFAULT_BROKER_PORT)
+    if (port !in 1..65_535) throw UsageException("--port must be in 1..65535, got $port")
+    val data = File(arguments.value("data") ?: defaultDataDirectory())
+    val broker = EmbeddedBroker(data, port)
+    try {
+        broker.start()
+    } catch (e: IOException) {
+        throw UsageException("cannot start the broker: ${e.message}")
+    }
+    // Ctrl-C ends the JVM through its shutdown hooks; this one closes the store so queued messages are kept.
+    val hook = Thread { broker.stop() }
+    Runtime.getRuntime().addShutdownHook(hook)
+    console.out.println("broker: listening on tcp://${EmbeddedBroker.HOST}:${broker.port}, store in $data; Ctrl-C stops it")
+    console.out.flush()
+    try {
+        waitForStop()
+    } finally {
+        Runtime.getRuntime().removeShutdownHook(hook)
+        broker.stop()
+    }
+}
+
+/** The standard MQTT port, which `hapticon broker` uses unless told otherwise. */
+const val DEFAULT_BROKER_PORT: Int = 1883
+
+private fun defaultDataDirectory(): String = File(System.getProperty("user.home"), ".hapticon/broker").path

@@ -1,0 +1,292 @@
+package org.hapticon.companion.chat
+
+import kotlinx.coroutines.CoroutineScope
+import kotlinx.coroutines.Deferred
+import kotlinx.coroutines.NonCancellable
+import kotlinx.coroutines.SupervisorJob
+import kotlinx.coroutines.async
+import kotlinx.coroutines.cancel
+import kotlinx.coroutines.channels.Channel
+import kotlinx.coroutines.coroutineScope
+import kotlinx.coroutines.delay
+import kotlinx.coroutines.flow.first
+import kotlinx.coroutines.job
+import kotlinx.coroutines.launch
+import kotlinx.coroutines.selects.select
+import kotlinx.coroutines.withContext
+import kotlinx.coroutines.withTimeoutOrNull
+import org.hapticon.companion.AudioSettings
+import org.hapticon.companion.IconSource
+import org.hapticon.companion.UsageException
+import org.hapticon.companion.WavExport
+import org.hapticon.core.HapticIcon
+import org.hapticon.messaging.Admission
+import org.hapticon.messaging.Capabilities
+import org.hapticon.messaging.ChatMessage
+import org.hapticon.messaging.Clock
+import org.hapticon.messaging.ConnectionState
+import org.hapticon.messaging.InMemoryOutbox
+import org.hapticon.messaging.InboxEvent
+import org.hapticon.messaging.InboxGate
+import org.hapticon.messaging.InboxListener
+import org.hapticon.messaging.InvalidMessageException
+import org.hapticon.messaging.Messenger
+import org.hapticon.messaging.OutboxSender
+import org.hapticon.messaging.Receipt
+import org.hapticon.messaging.ReceiptState
+import org.hapticon.messaging.RendererKind
+import org.hapticon.messaging.Topics
+import org.hapticon.messaging.VibrationDecision
+import java.io.BufferedReader
+import java.io.File
+import java.io.PrintStream
+import java.util.concurrent.ConcurrentHashMap
+import kotlin.concurrent.thread
+
+/**
+ * A terminal chat for [messenger]'s user: lines read from the input are sent to the current peer, what
+ * arrives is printed to [out], connection news and rejected payloads go to [err].
+ *
+ * Typed messages go through an outbox, so they wait while the broker is unreachable. Received messages
+ * pass an [InboxGate] (repeats dropped, icons rate-limited), are acknowledged with a delivered receipt,
+ * and get a read receipt when the user next enters a line (the terminal showed them by then). A laptop
+ * cannot vibrate: with [wavDir], icons the gate lets through are rendered to WAV files there instead.
+ */
+class ChatSession(
+    private val messenger: Messenger,
+    initialPeer: String?,
+    private val out: PrintStream,
+    private val err: PrintStream,
+    private val wavDir: File? = null,
+    private val gate: InboxGate,
+    private val clock: Clock = Clock.SYSTEM,
+    private val drainTimeoutMillis: Long = 5_000,
+) : InboxListener {
+    private val user = messenger.user
+    private val outbox = InMemoryOutbox()
+    private val sender = OutboxSender(outbox, messenger, clock = clock)
+    @Volatile private var peer: String? = initialPeer
+    private val unread = ArrayList<ChatMessage>() // shown, read receipt not yet sent
+    private val sentTexts = ConcurrentHashMap<String, String>() // message id → how to mention it in a receipt
+    private val receipts = Channel<Pair<String, Receipt>>(Channel.UNLIMITED)
+
+    // Everyone's capabilities arrive (retained); the peer's are shown, the rest kept for a later /to. Bounded,
+    // least recently updated first out, so a flood of retained messages cannot exhaust memory.
+    private val capabilities = object : LinkedHashMap<String, Capabilities>(16, 0.75f, true) {
+        override fun removeEldestEntry(eldest: MutableMap.MutableEntry<String, Capabilities>): Boolean = size > MAX_KNOWN_CAPABILITIES
+    }
+
+    /**
+     * Runs the chat until `/quit` or the end of [input]; then waits up to the drain timeout for typed
+     * messages to reach the broker, and disconnects. Suspends meanwhile. Throws [UsageException] when the
+     * broker refuses the user for good (bad password, ACL).
+     */
+    suspend fun run(input: BufferedReader) {
+        // The input is read on a thread of its own: a blocked readLine cannot be cancelled, and the chat must
+        // be able to end (broker refusal) while it waits.
+        val lines = Channel<String?>(Channel.UNLIMITED)
+        thread(isDaemon = true, name = "hapticon-chat-input") {
+            while (true) {
+                val line = try {
+                    input.readLine()
+                } catch (e: java.io.IOException) {
+                    null
+                }
+                lines.trySend(line)
+                if (line == null) break
+            }
+        }
+        coroutineScope {
+            val background = CoroutineScope(coroutineContext + SupervisorJob(coroutineContext.job))
+            background.launch { reportConnection() }
+            background.launch { sendReceipts() }
+            background.launch { sender.run() }
+            val connection = background.async {
+                messenger.connect(this@ChatSession)
+                messenger.publishCapabilities(Capabilities(user, if (wavDir != null) RendererKind.AUDIO else RendererKind.NONE, amplitudeControl = false))
+            }
+            try {
+                readLines(lines, connection)
+                drainOutbox()
+            } finally {
+                background.cancel()
+                withContext(NonCancellable) { messenger.disconnect() }
+            }
+        }
+    }
+
+    private suspend fun readLines(lines: Channel<String?>, connection: Deferred<Unit>) {
+        var connected = false
+        while (true) {
+            // Also wakes when the connection settles: a refusal (which onAwait rethrows) ends the chat at once.
+            val next = select<Any?> {
+                lines.onReceive { it }
+                if (!connected) connection.onAwait { ConnectionSettled }
+            }
+            if (next === ConnectionSettled) {
+                connected = true
+                continue
+            }
+            val line = next as String? ?: return
+            if (!handle(line)) return
+        }
+    }
+
+    /** Handles one input line; returns false for `/quit`. */
+    private suspend fun handle(line: String): Boolean {
+        markShownAsRead()
+        val trimmed = line.trim()
+        if (trimmed.isEmpty()) return true
+        if (!trimmed.startsWith("/")) {
+            send(trimmed, sticker = null, icon = null)
+            return true
+        }
+        val command = trimmed.substringBefore(' ')
+        val rest = trimmed.substringAfter(' ', "").trim()
+        when (command) {
+            "/quit" -> return false
+            "/help" -> say(HELP)
+            "/to" -> if (Topics.isValidUserName(rest)) {
+                peer = rest
+                say("talking to $rest")
+                synchronized(capabilities) { capabilities[rest] }?.let { say(ChatFormat.capabilities(it)) }
+            } else {
+                say("not a user name: '$rest'")
+            }
+            "/icon" -> {
+                val name = rest.substringBefore(' ')
+                val icon = try {
+                    IconSource.load(name)
+                } catch (e: UsageException) {
+                    say("no icon sent: ${e.message}")
+                    return true
+                }
+                send(rest.substringAfter(' ', ""), sticker = null, icon = icon)
+            }
+            "/sticker" -> send(rest.substringAfter(' ', ""), sticker = rest.substringBefore(' '), icon = null)
+            else -> say("unknown command $command; /help lists them")
+        }
+        return true
+    }
+
+    private suspend fun send(text: String, sticker: String?, icon: HapticIcon?) {
+        val to = peer ?: return say("no recipient: start with --to PEER or type /to PEER")
+        val message = try {
+            ChatMessage.compose(user, text, sticker, icon, clock)
+        } catch (e: InvalidMessageException) {
+            return say("not sent: ${e.message}")
+        }
+        sentTexts[message.id] = mention(message)
+        sender.enqueue(to, message)
+        if (messenger.state.value != ConnectionState.Connected) say("(queued until the broker is reachable)")
+    }
+
+    override fun onInboxEvent(event: InboxEvent) {
+        when (event) {
+            is InboxEvent.MessageReceived -> received(event.message)
+            is InboxEvent.ReceiptReceived -> {
+                val r = event.receipt
+                val what = sentTexts[r.messageId] ?: "message ${r.messageId.take(8)}"
+                say(if (r.state == ReceiptState.READ) "✓✓ ${r.from} read $what" else "✓ ${r.from} received $what")
+            }
+            is InboxEvent.CapabilitiesReceived -> {
+                val owner = event.capabilities.user
+                synchronized(capabilities) { capabilities[owner] = event.capabilities }
+                if (owner == peer) say(ChatFormat.capabilities(event.capabilities))
+            }
+            is InboxEvent.Rejected -> {
+                val r = event.rejection
+                err.println("chat: rejected a payload on ${event.topic}: ${r.reason}${r.field?.let { " ($it)" } ?: ""}: ${r.detail}")
+            }
+        }
+    }
+
+    private fun received(message: ChatMessage) {
+        val admission = gate.admit(message) as? Admission.New ?: return // a repeat: it took effect already
+        say(ChatFormat.message(message))
+        receipts.trySend(message.sender to Receipt(message.id, user, ReceiptState.DELIVERED, clock.nowMillis()))
+        synchronized(unread) { unread += message }
+        val icon = message.icon ?: return
+        when (admission.vibration) {
+            VibrationDecision.VIBRATE -> if (wavDir != null) renderIcon(message, icon, wavDir)
+            VibrationDecision.SENDER_LIMIT -> say("  (icon not played: ${message.sender} is sending icons too fast)")
+            VibrationDecision.DUTY_CYCLE_LIMIT -> say("  (icon not played: enough vibration for this minute)")
+            null -> Unit
+        }
+    }
+
+    private fun renderIcon(message: ChatMessage, icon: HapticIcon, dir: File) {
+        val file = File(dir, "${message.sender}-${message.id.take(8)}-${ChatFormat.fileSafe(icon.name)}.wav")
+        try {
+            say("  " + WavExport.write(icon, AudioSettings(), file))
+        } catch (e: UsageException) {
+            say("  (icon not rendered: ${e.message})")
+        }
+    }
+
+    private fun markShownAsRead() {
+        val shown = synchronized(unread) { unread.toList().also { unread.clear() } }
+        for (message in shown) receipts.trySend(message.sender to Receipt(message.id, user, ReceiptState.READ, clock.nowMillis()))
+    }
+
+    // Receipts are best effort: one that fails is reported, not retried (the message itself was delivered).
+    private suspend fun sendReceipts() {
+        for ((to, receipt) in receipts) {
+            messenger.state.first { it == ConnectionState.Connected }
+            try {
+                messenger.send(to, receipt)
+            } catch (e: Exception) {
+                err.println("chat: ${receipt.state.wireName} receipt to $to not sent: ${e.message}")
+            }
+        }
+    }
+
+    private suspend fun reportConnection() {
+        var wasConnected = false
+        messenger.state.collect { state ->
+            when (state) {
+                ConnectionState.Connected -> err.println("chat: connected as $user" + (peer?.let { ", talking to $it" } ?: "") + "; /help lists commands")
+                is ConnectionState.Connecting -> if (wasConnected) err.println("chat: connection lost (${state.lastFailure}); reconnecting")
+                is ConnectionState.Failed -> err.println("chat: the broker refused $user: ${state.reason}")
+                ConnectionState.Disconnected -> Unit
+            }
+            wasConnected = state == ConnectionState.Connected
+        }
+    }
+
+    private suspend fun drainOutbox() {
+        val drained = withTimeoutOrNull(drainTimeoutMillis) {
+            while (outbox.pending().isNotEmpty()) delay(DRAIN_POLL_MILLIS)
+        }
+        if (drained == null) {
+            val left = outbox.pending().size
+            err.println("chat: $left message(s) not sent: the broker was unreachable; they are lost with this process")
+        }
+    }
+
+    private fun say(line: String) {
+        synchronized(out) { out.println(line) }
+    }
+
+    private fun mention(message: ChatMessage): String = when {
+        message.text.isNotEmpty() -> "\"" + ChatFormat.terminalSafe(message.text.take(40)) + (if (message.text.length > 40) "…\"" else "\"")
+        message.icon != null -> "icon ${message.icon!!.name}"
+        else -> "sticker ${message.sticker}"
+    }
+
+    companion object {
+        /** The in-chat commands, as `/help` prints them. */
+        val HELP: String = """
+            |  TEXT                  send TEXT to the current peer
+            |  /icon ICON [TEXT]     send a preset icon (stroke, hit, knock, hug) or an icon JSON file, with optional text
+            |  /sticker NAME [TEXT]  send a sticker (a-z, 0-9, '_', '-'), with optional text
+            |  /to PEER              talk to PEER from now on
+            |  /quit                 leave (so does end of input)
+        """.trimMargin()
+
+        private const val DRAIN_POLL_MILLIS = 20L
+        private const val MAX_KNOWN_CAPABILITIES = 1_000
+    }
+
+    private object ConnectionSettled
+}

@@ -1,0 +1,51 @@
+package org.hapticon.companion.chat
+
+import org.hapticon.companion.cli
+import org.hapticon.core.io.Json
+import org.hapticon.core.io.JsonBoolean
+import org.hapticon.core.io.JsonNumber
+import org.hapticon.core.io.JsonObject
+import org.junit.Assert.assertEquals
+import org.junit.Assert.assertTrue
+import org.junit.Test
+
+class MessagingBenchmarkTest {
+    @Test
+    fun benchMessagingQuickJson_measuresBothPartsAndPrintsOneObject() {
+        // One run only: each starts and stops a broker, which takes seconds.
+        val result = cli("bench", "--messaging", "--quick", "--json")
+        assertEquals(result.toString(), 0, result.exitCode)
+        assertEquals(
+            listOf("bench: messaging codec: 2 runs of 2000 messages", "bench: messaging latency: 50 messages through the embedded broker"),
+            result.stderrLines,
+        )
+        val json = Json.decode(result.stdout) as JsonObject
+        assertEquals(
+            listOf("codecMessagesPerSecond", "encodedBytes", "latencyP50Micros", "latencyP99Micros", "latencySamples", "codecTargetMet"),
+            json.members.keys.toList(),
+        )
+        // The benchmark message: 43 characters of text and the knock icon, as the codec writes it.
+        assertEquals(JsonNumber(346), json["encodedBytes"])
+        assertEquals(JsonNumber(50), json["latencySamples"])
+        val p50 = (json["latencyP50Micros"] as JsonNumber).value
+        val p99 = (json["latencyP99Micros"] as JsonNumber).value
+        assertTrue("p50 $p50 <= p99 $p99", p50 > 0.0 && p50 <= p99)
+        assertTrue(json["codecTargetMet"] is JsonBoolean)
+    }
+
+    @Test
+    fun table_result_showsEveryFigureAndTheVerdict() {
+        val result = MessagingBenchmark.Result(codecPerSecond = 251_094.4, encodedBytes = 346, latencyP50Micros = 429.14, latencyP99Micros = 3776.1, latencySamples = 2_000)
+        assertEquals(
+            """
+            |messaging (one core for the codec; loopback through the embedded broker for latency)
+            |  encode + decode            251094 messages/s  (346-byte message with text and knock icon)
+            |  send → receive p50          429.1 µs
+            |  send → receive p99         3776.1 µs  (2000 messages, one at a time, QoS 1)
+            |  target: codec >= 100000 messages/s: met
+            """.trimMargin(),
+            MessagingBenchmark.table(result),
+        )
+        assertEquals(false, MessagingBenchmark.Result(99_999.0, 346, 1.0, 2.0, 1).codecTargetMet)
+    }
+}

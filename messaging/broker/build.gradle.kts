@@ -1,0 +1,18 @@
+// An embedded MQTT broker (HiveMQ Community Edition) for the companion's `hapticon broker`, the demo and
+// the tests. A module of its own so that the broker and its server-side dependencies (RocksDB, Netty
+// server, logback…) never reach the app, which depends on :messaging only.
+plugins {
+    alias(libs.plugins.kotlin.jvm)
+}
+
+kotlin {
+    explicitApi()
+    jvmToolchain(libs.versions.jvmTarget.get().toInt())
+}
+
+dependencies {
+    implementation(libs.hivemq.community.edition.embedded)
+    implementation(libs.logback.classic)
+
+    testImplementation(libs.junit4)
+}

@@ -1,0 +1,189 @@
+package org.hapticon.messaging.broker
+
+import ch.qos.logback.classic.Level
+import ch.qos.logback.classic.LoggerContext
+import ch.qos.logback.classic.encoder.PatternLayoutEncoder
+import ch.qos.logback.classic.spi.ILoggingEvent
+import ch.qos.logback.core.ConsoleAppender
+import com.hivemq.embedded.EmbeddedHiveMQ
+import org.slf4j.LoggerFactory
+import java.io.File
+import java.io.IOException
+import java.net.InetAddress
+import java.net.ServerSocket
+import java.util.concurrent.ExecutionException
+
+/**
+ * An MQTT broker (HiveMQ Community Edition) running inside this JVM, listening on [HOST] (loopback) only:
+ * for the `hapticon broker` command, the demo and tests. Not a deployment broker; see `companion/mosquitto/`.
+ *
+ * Sessions, subscriptions, retained messages and the QoS 1 messages queued for offline persistent
+ * sessions (clients that connect with cleanSession=false) are kept in [dataDirectory], so they survive
+ * [stop] and [start], and [restart]. Anonymous clients are allowed: the broker is reachable from this
+ * machine only.
+ *
+ * [requestedPort] 0 picks a free port on the first [start]; later starts reuse the port it got, so clients
+ * can reconnect to the same address after a restart. Not thread-safe: start and stop from one thread.
+ *
+ * The first start sets this process's logback logging to warnings on stderr: HiveMQ would otherwise log
+ * at INFO to stdout, which belongs to the command that embeds the broker.
+ *
+ * @property dataDirectory where the persistent store lives; created when missing.
+ */
+public class EmbeddedBroker(
+    public val dataDirectory: File,
+    private val requestedPort: Int = 0,
+) : AutoCloseable {
+    private var broker: EmbeddedHiveMQ? = null
+    private var boundPort: Int = requestedPort
+
+    init {
+        require(requestedPort in 0..65_535) { "port must be in 0..65535, was $requestedPort" }
+    }
+
+    /** True between [start] and [stop]. */
+    public val isRunning: Boolean get() = broker != null
+
+    /**
+     * The port the broker listens on. Throws [IllegalStateException] when it was never started and was
+     * created with port 0 (no port is known yet).
+     */
+    public val port: Int
+        get() {
+            check(boundPort != 0) { "the broker has not been started yet" }
+            return boundPort
+        }
+
+    /**
+     * Starts listening on [HOST]:[port] and blocks until the broker accepts connections (about a second;
+     * five in a JVM that has not loaded the broker's classes yet).
+     * Does nothing when already running. Throws [IOException] when the port is taken or the data directory
+     * is unusable.
+     */
+    public fun start() {
+        if (broker != null) return
+        if (boundPort == 0) boundPort = ServerSocket(0, 1, InetAddress.getByName(HOST)).use { it.localPort }
+        try {
+            ServerSocket(boundPort, 1, InetAddress.getByName(HOST)).close()
+        } catch (e: IOException) {
+            throw IOException("cannot listen on $HOST:$boundPort: ${e.message}", e)
+        }
+        val conf = File(dataDirectory, "conf")
+        val data = File(dataDirectory, "data")
+        val extensions = File(dataDirectory, "extensions")
+        for (dir in listOf(conf, data, extensions)) {
+            if (!dir.isDirectory && !dir.mkdirs()) throw IOException("cannot create the broker directory $dir")
+        }
+        quietLogging()
+        File(conf, "config.xml").writeText(configXml(boundPort))
+        File(conf, "logback.xml").writeText(LOGBACK_XML)
+        val started = EmbeddedHiveMQ.builder()
+            .withConfigurationFolder(conf.toPath())
+            .withDataFolder(data.toPath())
+            .withExtensionsFolder(extensions.toPath())
+            .build()
+        try {
+            started.start().get()
+        } catch (e: ExecutionException) {
+            runCatching { started.close() }
+            throw IOException("the broker did not start on $HOST:$boundPort: ${e.cause?.message}", e.cause)
+        }
+        broker = started
+    }
+
+    /**
+     * Stops the broker, blocking until its store is closed (about 4.5 s: HiveMQ shuts its two Netty event
+     * loop groups down gracefully, each with a fixed 2 s quiet period); queued messages stay on disk.
+     * Idempotent.
+     */
+    public fun stop() {
+        val running = broker ?: return
+        broker = null
+        running.stop().get()
+        running.close()
+    }
+
+    /** [stop], then [start] on the same port; blocks for about 6 s. Throws as [start] does. */
+    public fun restart() {
+        stop()
+        start()
+    }
+
+    /** Same as [stop]. */
+    override fun close(): Unit = stop()
+
+    public companion object {
+        private var loggingQuieted = false
+
+        // HiveMQ's jar carries a logback.xml that logs INFO to stdout, which belongs to the command embedding
+        // the broker; its own logging set-up (from LOGBACK_XML, written into the configuration folder) comes
+        // only after its first lines. So logback is set to warnings on stderr before anything starts.
+        @Synchronized
+        private fun quietLogging() {
+            if (loggingQuieted) return
+            loggingQuieted = true
+            val context = LoggerFactory.getILoggerFactory() as? LoggerContext ?: return // another backend: not ours to touch
+            context.reset()
+            val encoder = PatternLayoutEncoder().apply {
+                this.context = context
+                pattern = LOG_PATTERN
+                start()
+            }
+            val appender = ConsoleAppender<ILoggingEvent>().apply {
+                this.context = context
+                target = "System.err"
+                this.encoder = encoder
+                start()
+            }
+            context.getLogger(org.slf4j.Logger.ROOT_LOGGER_NAME).apply {
+                level = Level.WARN
+                addAppender(appender)
+            }
+        }
+
+        private const val LOG_PATTERN = "broker %level %logger{0}: %msg%n%ex"
+
+        /** The only address the embedded broker binds: loopback. */
+        public const val HOST: String = "127.0.0.1"
+
+        /** QoS 1 messages kept per offline persistent session. */
+        public const val MAX_QUEUED_MESSAGES: Int = 10_000
+
+        /** Largest MQTT packet accepted, in bytes: a 64 KiB payload plus topic and headers, with room to spare. */
+        public const val MAX_PACKET_BYTES: Int = 131_072
+
+        private fun configXml(port: Int) = """
+            |<?xml version="1.0"?>
+            |<hivemq>
+            |    <listeners>
+            |        <tcp-listener>
+            |            <port>$port</port>
+            |            <bind-address>$HOST</bind-address>
+            |        </tcp-listener>
+            |    </listeners>
+            |    <mqtt>
+            |        <queued-messages>
+            |            <max-queue-size>$MAX_QUEUED_MESSAGES</max-queue-size>
+            |        </queued-messages>
+            |        <packets>
+            |            <max-packet-size>$MAX_PACKET_BYTES</max-packet-size>
+            |        </packets>
+            |    </mqtt>
+            |    <anonymous-usage-statistics>
+            |        <enabled>false</enabled>
+            |    </anonymous-usage-statistics>
+            |</hivemq>
+            |""".trimMargin()
+
+        private val LOGBACK_XML = """
+            |<configuration scan="false">
+            |    <appender name="STDERR" class="ch.qos.logback.core.ConsoleAppender">
+            |        <target>System.err</target>
+            |        <encoder><pattern>$LOG_PATTERN</pattern></encoder>
+            |    </appender>
+            |    <logger name="com.hivemq" level="WARN"/>
+            |    <root level="WARN"><appender-ref ref="STDERR"/></root>
+            |</configuration>
+            |""".trimMargin()
+    }
+}

@@ -1,0 +1,93 @@
+package org.hapticon.messaging.broker
+
+import org.junit.After
+import org.junit.Assert.assertArrayEquals
+import org.junit.Assert.assertEquals
+import org.junit.Assert.assertThrows
+import org.junit.Assume.assumeTrue
+import org.junit.Rule
+import org.junit.Test
+import org.junit.rules.TemporaryFolder
+import java.io.IOException
+import java.net.ConnectException
+import java.net.Inet4Address
+import java.net.InetAddress
+import java.net.InetSocketAddress
+import java.net.NetworkInterface
+import java.net.ServerSocket
+import java.net.Socket
+
+class EmbeddedBrokerTest {
+    @get:Rule
+    val temp = TemporaryFolder()
+
+    private val brokers = mutableListOf<EmbeddedBroker>()
+
+    // A stop takes 2 s (Netty's graceful quiet period); every test has its own port, so they wind down meanwhile.
+    @After
+    fun stopBrokers() = brokers.forEach { Thread(it::stop).start() }
+
+    private fun broker(port: Int = 0) = EmbeddedBroker(temp.newFolder(), port).also { brokers += it }
+
+    @Test
+    fun start_portZero_answersAnMqttConnectOnLoopbackOnly() {
+        val broker = broker()
+        broker.start()
+        assertArrayEquals(CONNACK_ACCEPTED, connect(InetAddress.getByName(EmbeddedBroker.HOST), broker.port))
+        val other = NetworkInterface.networkInterfaces().toList()
+            .flatMap { it.inetAddresses.toList() }
+            .firstOrNull { it is Inet4Address && !it.isLoopbackAddress }
+        assumeTrue("no non-loopback IPv4 address to try", other != null)
+        assertThrows(ConnectException::class.java) { Socket().use { it.connect(InetSocketAddress(other, broker.port), 2_000) } }
+    }
+
+    // One test for the lifecycle: every stop takes 4.5 s.
+    @Test
+    fun restartThenStop_keepsThePortThenFreesIt() {
+        val broker = broker()
+        broker.start()
+        val port = broker.port
+        broker.start() // already running: nothing happens
+        broker.restart()
+        assertEquals(port, broker.port)
+        assertEquals(true, broker.isRunning)
+        assertArrayEquals(CONNACK_ACCEPTED, connect(InetAddress.getByName(EmbeddedBroker.HOST), port))
+        broker.stop()
+        broker.stop()
+        assertEquals(false, broker.isRunning)
+        assertThrows(ConnectException::class.java) { Socket(EmbeddedBroker.HOST, port).close() }
+    }
+
+    @Test
+    fun start_portTaken_throwsIOException() {
+        ServerSocket(0, 1, InetAddress.getByName(EmbeddedBroker.HOST)).use { taken ->
+            val broker = broker(taken.localPort)
+            val e = assertThrows(IOException::class.java) { broker.start() }
+            assertEquals("cannot listen on 127.0.0.1:${taken.localPort}: Address already in use", e.message!!.substringBefore(" (Bind failed)"))
+            assertEquals(false, broker.isRunning)
+        }
+    }
+
+    @Test
+    fun port_beforeTheFirstStartWithPortZero_throws() {
+        assertThrows(IllegalStateException::class.java) { broker().port }
+        assertEquals(1883, EmbeddedBroker(temp.root, 1883).port)
+    }
+
+    /** Sends an MQTT 3.1.1 CONNECT (clean session, client id "t") and returns the 4-byte reply. */
+    private fun connect(host: InetAddress, port: Int): ByteArray = Socket(host, port).use { socket ->
+        socket.soTimeout = 10_000
+        val connect = byteArrayOf(
+            0x10, 13, // CONNECT, remaining length
+            0, 4, 'M'.code.toByte(), 'Q'.code.toByte(), 'T'.code.toByte(), 'T'.code.toByte(), 4, // protocol name, level 4 = 3.1.1
+            0x02, 0, 30, // clean session, keep-alive 30 s
+            0, 1, 't'.code.toByte(), // client id
+        )
+        socket.getOutputStream().write(connect)
+        socket.getInputStream().readNBytes(4)
+    }
+
+    private companion object {
+        val CONNACK_ACCEPTED = byteArrayOf(0x20, 0x02, 0x00, 0x00)
+    }
+}

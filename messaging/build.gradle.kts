@@ -1,0 +1,20 @@
+// Chat messages with haptic icons over MQTT: the wire format and its hostile-input checks, flood
+// control, outbox with retries, deduplication, and the MQTT messenger. Pure Kotlin/JVM so the app and
+// the companion share it. The embedded broker lives in :messaging:broker and never reaches the app.
+plugins {
+    alias(libs.plugins.kotlin.jvm)
+}
+
+kotlin {
+    explicitApi()
+    jvmToolchain(libs.versions.jvmTarget.get().toInt())
+}
+
+dependencies {
+    api(project(":haptics-core"))
+    api(libs.kotlinx.coroutines.core)
+    implementation(libs.hivemq.mqtt.client)
+
+    testImplementation(project(":messaging:broker"))
+    testImplementation(libs.junit4)
+}

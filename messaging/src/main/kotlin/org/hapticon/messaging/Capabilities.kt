@@ -1,0 +1,62 @@
+package org.hapticon.messaging
+
+/**
+ * What a user's device can do with a haptic icon, published as a retained message at
+ * [Topics.capabilities] so that a sender can see how its icons will be felt. A value is always valid: the
+ * constructor throws [InvalidMessageException] naming the first bad field.
+ *
+ * @property user whose device this describes.
+ * @property renderer how the device plays icons.
+ * @property amplitudeControl whether its vibrator can vary strength (Android `Vibrator.hasAmplitudeControl()`).
+ * @property apiLevel the Android API level, or null when the device is not an Android phone.
+ * @property resonantFrequencyHz the actuator's resonant frequency when known (Android 12+), else null.
+ */
+public data class Capabilities(
+    val user: String,
+    val renderer: RendererKind,
+    val amplitudeControl: Boolean,
+    val apiLevel: Int? = null,
+    val resonantFrequencyHz: Double? = null,
+) {
+    init {
+        check(Topics.isValidUserName(user), RejectionReason.INVALID_VALUE, "user") { "not a valid user name: ${quote(user)}" }
+        if (apiLevel != null) {
+            check(apiLevel in 1..MAX_API_LEVEL, RejectionReason.INVALID_VALUE, "apiLevel") { "expected 1..$MAX_API_LEVEL, got $apiLevel" }
+        }
+        if (resonantFrequencyHz != null) {
+            check(
+                resonantFrequencyHz.isFinite() && resonantFrequencyHz in 1.0..MAX_RESONANT_FREQUENCY_HZ,
+                RejectionReason.INVALID_VALUE, "resonantFrequencyHz",
+            ) { "expected a frequency in 1..$MAX_RESONANT_FREQUENCY_HZ Hz, got $resonantFrequencyHz" }
+        }
+    }
+
+    public companion object {
+        /** Highest API level accepted; far above any that exists, low enough to catch garbage. */
+        public const val MAX_API_LEVEL: Int = 1_000
+
+        /** Highest resonant frequency accepted, in Hz; phone actuators resonate around 150–250 Hz. */
+        public const val MAX_RESONANT_FREQUENCY_HZ: Double = 2_000.0
+    }
+}
+
+/** How a device turns an icon into something felt (or heard). */
+public enum class RendererKind(
+    /** The value of the capabilities' `renderer` member. */
+    public val wireName: String,
+) {
+    /** A vibrator with amplitude control plays the icon's envelope as amplitude steps. */
+    AMPLITUDE_WAVEFORM("amplitude-waveform"),
+
+    /** A vibrator without amplitude control plays an on/off pattern. */
+    ON_OFF("on-off"),
+
+    /** No actuator: the icon is rendered as audio (the command-line chat's WAV files). */
+    AUDIO("audio"),
+
+    /** The icon is not played at all. */
+    NONE("none"),
+
+    /** A renderer named by a newer client that this build does not know; encoded as `unknown`. */
+    UNKNOWN("unknown"),
+}

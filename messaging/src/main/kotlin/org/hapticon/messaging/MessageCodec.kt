@@ -1,0 +1,240 @@
+package org.hapticon.messaging
+
+import org.hapticon.core.IconValidationException
+import org.hapticon.core.io.IconJson
+import org.hapticon.core.io.Json
+import org.hapticon.core.io.JsonBoolean
+import org.hapticon.core.io.JsonException
+import org.hapticon.core.io.JsonNull
+import org.hapticon.core.io.JsonNumber
+import org.hapticon.core.io.JsonObject
+import org.hapticon.core.io.JsonString
+import org.hapticon.core.io.JsonValue
+
+/**
+ * The wire format: UTF-8 JSON, versioned by `schema` and `version` members.
+ *
+ * ```
+ * {"schema":"hapticon.message","version":1,"id":"<uuid>","sender":"alice","sentAt":<epoch ms>,
+ *  "text":"…","sticker":"hug"|null,"icon":{icon JSON}|null}
+ * {"schema":"hapticon.receipt","version":1,"messageId":"<uuid>","from":"bob","state":"delivered"|"read","at":<epoch ms>}
+ * {"schema":"hapticon.capabilities","version":1,"user":"bob","renderer":"amplitude-waveform","amplitudeControl":true,
+ *  "apiLevel":34|null,"resonantFrequencyHz":170.0|null}
+ * ```
+ *
+ * Decoding is for untrusted input and never throws: the size is checked before parsing, the parser is
+ * strict and depth-limited, and every problem becomes a [Decoded.Rejected] with a [RejectionReason].
+ * Unknown members are ignored, so that newer writers can add optional members within version 1.
+ */
+public object MessageCodec {
+    /** `schema` of a chat message. */
+    public const val MESSAGE_SCHEMA: String = "hapticon.message"
+
+    /** `schema` of a receipt. */
+    public const val RECEIPT_SCHEMA: String = "hapticon.receipt"
+
+    /** `schema` of a capabilities document. */
+    public const val CAPABILITIES_SCHEMA: String = "hapticon.capabilities"
+
+    /** The version this build writes and the only one it reads. */
+    public const val VERSION: Int = 1
+
+    /** [message] as UTF-8 JSON. Does not throw: every valid message is encodable and within the payload limit. */
+    public fun encode(message: ChatMessage): ByteArray = encodeObject(
+        "schema" to JsonString(MESSAGE_SCHEMA),
+        "version" to JsonNumber(VERSION),
+        "id" to JsonString(message.id),
+        "sender" to JsonString(message.sender),
+        "sentAt" to JsonNumber(message.sentAtMillis),
+        "text" to JsonString(message.text),
+        "sticker" to (message.sticker?.let(::JsonString) ?: JsonNull),
+        "icon" to (message.icon?.let(IconJson::toJsonValue) ?: JsonNull),
+    )
+
+    /** [receipt] as UTF-8 JSON. Does not throw. */
+    public fun encode(receipt: Receipt): ByteArray = encodeObject(
+        "schema" to JsonString(RECEIPT_SCHEMA),
+        "version" to JsonNumber(VERSION),
+        "messageId" to JsonString(receipt.messageId),
+        "from" to JsonString(receipt.from),
+        "state" to JsonString(receipt.state.wireName),
+        "at" to JsonNumber(receipt.atMillis),
+    )
+
+    /** [capabilities] as UTF-8 JSON. Does not throw. */
+    public fun encode(capabilities: Capabilities): ByteArray = encodeObject(
+        "schema" to JsonString(CAPABILITIES_SCHEMA),
+        "version" to JsonNumber(VERSION),
+        "user" to JsonString(capabilities.user),
+        "renderer" to JsonString(capabilities.renderer.wireName),
+        "amplitudeControl" to JsonBoolean(capabilities.amplitudeControl),
+        "apiLevel" to (capabilities.apiLevel?.let { JsonNumber(it) } ?: JsonNull),
+        "resonantFrequencyHz" to (capabilities.resonantFrequencyHz?.let { JsonNumber(it) } ?: JsonNull),
+    )
+
+    /** Decodes what arrives in an inbox: a [ChatMessage] or a [Receipt]. Never throws. */
+    public fun decodeInbox(payload: ByteArray): Decoded<InboxPayload> = decodeWith(payload) { fields ->
+        when (fields.schema(MESSAGE_SCHEMA, RECEIPT_SCHEMA)) {
+            MESSAGE_SCHEMA -> decodeMessage(fields)
+            else -> decodeReceipt(fields)
+        }
+    }
+
+    /** Decodes a capabilities document. Never throws. */
+    public fun decodeCapabilities(payload: ByteArray): Decoded<Capabilities> = decodeWith(payload) { fields ->
+        fields.schema(CAPABILITIES_SCHEMA)
+        val renderer = fields.requiredString("renderer").let { name ->
+            RendererKind.entries.firstOrNull { it.wireName == name }
+                ?: if (RENDERER_FORM.matches(name)) RendererKind.UNKNOWN else invalid("renderer", "expected a renderer name, got ${quote(name)}")
+        }
+        Capabilities(
+            user = fields.requiredString("user"),
+            renderer = renderer,
+            amplitudeControl = fields.requiredBoolean("amplitudeControl"),
+            apiLevel = fields.optionalWhole("apiLevel")?.let { if (it in 1..Capabilities.MAX_API_LEVEL) it.toInt() else invalid("apiLevel", "expected 1..${Capabilities.MAX_API_LEVEL}, got $it") },
+            resonantFrequencyHz = fields.optionalNumber("resonantFrequencyHz"),
+        )
+    }
+
+    private fun decodeMessage(fields: Fields): ChatMessage {
+        val icon = when (val value = fields.optional("icon")) {
+            null -> null
+            else -> try {
+                IconJson.fromJsonValue(value)
+            } catch (e: IconValidationException) {
+                val detail = e.message.orEmpty().removePrefix("${e.field}: ")
+                throw InvalidMessageException(RejectionReason.INVALID_ICON, if (e.field == "icon") "icon" else "icon.${e.field}", detail)
+            }
+        }
+        return ChatMessage(
+            // Upper-case UUIDs name the same message; one spelling keeps deduplication by id exact.
+            id = fields.requiredString("id").lowercase(),
+            sender = fields.requiredString("sender"),
+            sentAtMillis = fields.requiredWhole("sentAt"),
+            text = fields.requiredString("text"),
+            sticker = fields.optionalString("sticker"),
+            icon = icon,
+        )
+    }
+
+    private fun decodeReceipt(fields: Fields): Receipt {
+        val stateName = fields.requiredString("state")
+        val state = ReceiptState.entries.firstOrNull { it.wireName == stateName }
+            ?: invalid("state", "expected \"delivered\" or \"read\", got ${quote(stateName)}")
+        return Receipt(
+            messageId = fields.requiredString("messageId").lowercase(),
+            from = fields.requiredString("from"),
+            state = state,
+            atMillis = fields.requiredWhole("at"),
+        )
+    }
+
+    private inline fun <T> decodeWith(payload: ByteArray, decode: (Fields) -> T): Decoded<T> {
+        // Checked before the bytes are even decoded as UTF-8: an oversized payload costs nothing more.
+        if (payload.size > MessageLimits.MAX_PAYLOAD_BYTES) {
+            return Decoded.Rejected(
+                RejectionReason.PAYLOAD_TOO_LARGE, null,
+                "${payload.size} bytes exceed the limit of ${MessageLimits.MAX_PAYLOAD_BYTES}",
+            )
+        }
+        return try {
+            val value = Json.decodeUtf8(payload, MessageLimits.MAX_PAYLOAD_BYTES, MessageLimits.MAX_JSON_DEPTH)
+            if (value !is JsonObject) return Decoded.Rejected(RejectionReason.NOT_AN_OBJECT, null, "expected an object, got ${kind(value)}")
+            Decoded.Accepted(decode(Fields(value)))
+        } catch (e: JsonException) {
+            Decoded.Rejected(RejectionReason.MALFORMED_JSON, null, e.message.orEmpty())
+        } catch (e: InvalidMessageException) {
+            Decoded.Rejected(e.reason, e.field, e.message.orEmpty().removePrefix("${e.field}: "))
+        } catch (e: RuntimeException) {
+            // Not reachable through the checks above; a decoder of untrusted input must be total regardless.
+            Decoded.Rejected(RejectionReason.INVALID_VALUE, null, "unexpected ${e.javaClass.simpleName}: ${e.message}")
+        }
+    }
+
+    private fun encodeObject(vararg members: Pair<String, JsonValue>): ByteArray =
+        Json.encode(JsonObject(linkedMapOf(*members))).toByteArray(Charsets.UTF_8)
+
+    private val RENDERER_FORM = Regex("[a-z0-9-]{1,32}")
+
+    /** Typed access to the members of a decoded object; every problem is an [InvalidMessageException]. */
+    private class Fields(private val json: JsonObject) {
+        fun schema(vararg accepted: String): String {
+            val schema = json["schema"] ?: throw InvalidMessageException(RejectionReason.UNKNOWN_SCHEMA, "schema", "missing")
+            val name = (schema as? JsonString)?.value
+            if (name == null || name !in accepted) {
+                throw InvalidMessageException(
+                    RejectionReason.UNKNOWN_SCHEMA, "schema",
+                    "expected ${accepted.joinToString(" or ") { "\"$it\"" }}, got ${snippet(schema)}",
+                )
+            }
+            // The version comes right after the schema: a newer document may have changed any other member.
+            val version = json["version"]
+            if (version !is JsonNumber || version.value != VERSION.toDouble()) {
+                throw InvalidMessageException(
+                    RejectionReason.UNSUPPORTED_VERSION, "version",
+                    "this build reads version $VERSION of \"$name\", got ${version?.let(::snippet) ?: "none"}",
+                )
+            }
+            return name
+        }
+
+        fun optional(field: String): JsonValue? = json[field]?.takeUnless { it == JsonNull }
+
+        fun requiredString(field: String): String = optionalString(field) ?: missing(field)
+
+        fun optionalString(field: String): String? {
+            val value = optional(field) ?: return null
+            return (value as? JsonString)?.value ?: wrongType(field, "a string", value)
+        }
+
+        fun requiredBoolean(field: String): Boolean {
+            val value = optional(field) ?: missing(field)
+            return (value as? JsonBoolean)?.value ?: wrongType(field, "true or false", value)
+        }
+
+        fun optionalNumber(field: String): Double? {
+            val value = optional(field) ?: return null
+            val number = (value as? JsonNumber)?.value ?: wrongType(field, "a number", value)
+            // JSON has no NaN or infinity, but 1e400 overflows a double to infinity.
+            if (!number.isFinite()) invalid(field, "expected a finite number, got ${snippet(value)}")
+            return number
+        }
+
+        fun requiredWhole(field: String): Long = optionalWhole(field) ?: missing(field)
+
+        fun optionalWhole(field: String): Long? {
+            val number = optionalNumber(field) ?: return null
+            if (number != Math.rint(number)) invalid(field, "expected a whole number, got ${snippet(json[field]!!)}")
+            // Beyond 2^53 a double is no longer an exact integer; no field of ours gets near it.
+            if (Math.abs(number) > MAX_EXACT_INTEGER) invalid(field, "${snippet(json[field]!!)} is out of range")
+            return number.toLong()
+        }
+
+        private fun missing(field: String): Nothing = throw InvalidMessageException(RejectionReason.MISSING_FIELD, field, "missing")
+
+        private fun wrongType(field: String, expected: String, value: JsonValue): Nothing =
+            throw InvalidMessageException(RejectionReason.WRONG_TYPE, field, "expected $expected, got ${snippet(value)}")
+    }
+
+    private const val MAX_EXACT_INTEGER = 9.007199254740992E15
+}
+
+private fun invalid(field: String, detail: String): Nothing = throw InvalidMessageException(RejectionReason.INVALID_VALUE, field, detail)
+
+private fun kind(value: JsonValue): String = when (value) {
+    is JsonObject -> "an object"
+    is org.hapticon.core.io.JsonArray -> "an array"
+    is JsonString -> "a string"
+    is JsonNumber -> "a number"
+    is JsonBoolean -> "a boolean"
+    JsonNull -> "null"
+}
+
+/** A short rendering of [value] for a one-line detail: strings quoted and cut, containers by kind. */
+private fun snippet(value: JsonValue): String = when (value) {
+    is JsonString -> quote(value.value)
+    is JsonNumber -> if (value.isIntegral && Math.abs(value.value) <= 9.007199254740992E15) value.value.toLong().toString() else value.value.toString()
+    is JsonBoolean -> value.value.toString()
+    JsonNull -> "null"
+    else -> kind(value)
+}

@@ -1,0 +1,47 @@
+package org.hapticon.messaging
+
+/**
+ * The MQTT topics of protocol version 1 and the user names they embed.
+ *
+ * Every user has one inbox, `hapticon/v1/inbox/<user>`, into which anyone may publish messages and
+ * receipts and which only its owner reads; and one retained capabilities message at
+ * `hapticon/v1/capabilities/<user>`, which only its owner writes and anyone reads.
+ */
+public object Topics {
+    /** The prefix of every topic of this protocol version. */
+    public const val ROOT: String = "hapticon/v1"
+
+    /** The filter that matches every user's capabilities topic. */
+    public const val ALL_CAPABILITIES: String = "$ROOT/capabilities/+"
+
+    /** Longest user name: short enough for MQTT client ids and file names. */
+    public const val MAX_USER_NAME_LENGTH: Int = 32
+
+    private const val INBOX_PREFIX = "$ROOT/inbox/"
+    private const val CAPABILITIES_PREFIX = "$ROOT/capabilities/"
+
+    // Letters, digits, '.', '_' and '-': no MQTT wildcards ('+', '#'), no level separator ('/'), nothing a
+    // terminal or a file system would interpret. Must start with a letter or digit (no "." or "..").
+    private val USER_NAME = Regex("[A-Za-z0-9][A-Za-z0-9._-]{0,${MAX_USER_NAME_LENGTH - 1}}")
+
+    /** True when [name] can be a user name: 1..[MAX_USER_NAME_LENGTH] of letters, digits, `.`, `_`, `-`, starting with a letter or digit. */
+    public fun isValidUserName(name: String): Boolean = USER_NAME.matches(name)
+
+    /** `hapticon/v1/inbox/<user>`. Throws [IllegalArgumentException] when [user] is not a valid user name. */
+    public fun inbox(user: String): String = INBOX_PREFIX + requireUserName(user)
+
+    /** `hapticon/v1/capabilities/<user>`. Throws [IllegalArgumentException] when [user] is not a valid user name. */
+    public fun capabilities(user: String): String = CAPABILITIES_PREFIX + requireUserName(user)
+
+    /** The user whose capabilities [topic] holds, or null when [topic] is not a capabilities topic of a valid user. */
+    public fun capabilitiesOwner(topic: String): String? =
+        topic.removePrefix(CAPABILITIES_PREFIX).takeIf { topic.startsWith(CAPABILITIES_PREFIX) && isValidUserName(it) }
+
+    /** Returns [name]; throws [IllegalArgumentException] when it is not a valid user name. */
+    public fun requireUserName(name: String): String {
+        require(isValidUserName(name)) {
+            "user name must be 1..$MAX_USER_NAME_LENGTH letters, digits, '.', '_' or '-', starting with a letter or digit; was \"$name\""
+        }
+        return name
+    }
+}

@@ -1,0 +1,243 @@
+package org.hapticon.messaging.mqtt
+
+import com.hivemq.client.mqtt.MqttClient
+import com.hivemq.client.mqtt.MqttClientState
+import com.hivemq.client.mqtt.MqttGlobalPublishFilter
+import com.hivemq.client.mqtt.datatypes.MqttQos
+import com.hivemq.client.mqtt.lifecycle.MqttClientDisconnectedContext
+import com.hivemq.client.mqtt.mqtt3.Mqtt3AsyncClient
+import com.hivemq.client.mqtt.mqtt3.exceptions.Mqtt3ConnAckException
+import com.hivemq.client.mqtt.mqtt3.lifecycle.Mqtt3ClientConnectedContext
+import com.hivemq.client.mqtt.mqtt3.message.connect.connack.Mqtt3ConnAckReturnCode
+import com.hivemq.client.mqtt.mqtt3.message.publish.Mqtt3Publish
+import com.hivemq.client.mqtt.mqtt3.message.subscribe.suback.Mqtt3SubAck
+import com.hivemq.client.mqtt.mqtt3.message.subscribe.suback.Mqtt3SubAckReturnCode
+import kotlinx.coroutines.CancellationException
+import kotlinx.coroutines.NonCancellable
+import kotlinx.coroutines.flow.MutableStateFlow
+import kotlinx.coroutines.flow.StateFlow
+import kotlinx.coroutines.flow.asStateFlow
+import kotlinx.coroutines.flow.first
+import kotlinx.coroutines.future.await
+import kotlinx.coroutines.withContext
+import org.hapticon.messaging.Capabilities
+import org.hapticon.messaging.ChatMessage
+import org.hapticon.messaging.ConnectionState
+import org.hapticon.messaging.InboxEvent
+import org.hapticon.messaging.InboxListener
+import org.hapticon.messaging.MessageCodec
+import org.hapticon.messaging.MessageLimits
+import org.hapticon.messaging.MessagingException
+import org.hapticon.messaging.Messenger
+import org.hapticon.messaging.Receipt
+import org.hapticon.messaging.Topics
+import java.nio.charset.StandardCharsets
+import java.util.concurrent.ExecutorService
+import java.util.concurrent.Executors
+import java.util.concurrent.TimeUnit
+import java.util.concurrent.atomic.AtomicBoolean
+import java.util.logging.Level
+import java.util.logging.Logger
+
+/**
+ * A [Messenger] over MQTT 3.1.1 with the HiveMQ client: QoS 1 everywhere, a persistent session
+ * (cleanSession=false) under the fixed client id of [MqttSettings.clientId], the inbox at
+ * `hapticon/v1/inbox/<user>` and everyone's capabilities at `hapticon/v1/capabilities/+`.
+ *
+ * Incoming payloads are decoded by [MessageCodec] on a delivery thread of this messenger (never on the
+ * network thread) and acknowledged to the broker only after the listener returned. One instance connects
+ * once; make a new one to connect again.
+ */
+public class MqttMessenger(private val settings: MqttSettings) : Messenger {
+    override val user: String = settings.user
+
+    private val mutableState = MutableStateFlow<ConnectionState>(ConnectionState.Disconnected)
+    override val state: StateFlow<ConnectionState> = mutableState.asStateFlow()
+
+    private val started = AtomicBoolean()
+    @Volatile private var closing = false
+    @Volatile private var client: Mqtt3AsyncClient? = null
+    @Volatile private var subscribedOnce = false
+    private val inboxTopic = Topics.inbox(settings.user)
+
+    // One thread, so events reach the listener in arrival order, and a blocking listener stalls only the
+    // inbox, never the network thread that also carries keep-alives and acknowledgements.
+    private val delivery: ExecutorService = Executors.newSingleThreadExecutor { task ->
+        Thread(task, "hapticon-inbox-${settings.user}").apply { isDaemon = true }
+    }
+
+    override suspend fun connect(listener: InboxListener) {
+        check(started.compareAndSet(false, true)) { "connect may be called once per MqttMessenger" }
+        val client = buildClient()
+        this.client = client
+        // Registered before connecting: a resumed session delivers queued messages before any SUBACK.
+        client.publishes(MqttGlobalPublishFilter.ALL, { publish -> deliver(publish, listener) }, delivery, true)
+        mutableState.value = ConnectionState.Connecting(lastFailure = null)
+        // A failed first attempt goes through the disconnected listener, which schedules the next one.
+        client.connectWith().cleanSession(false).keepAlive(settings.keepAliveSeconds).send()
+        try {
+            val settled = state.first { it == ConnectionState.Connected || it is ConnectionState.Failed }
+            if (settled is ConnectionState.Failed) {
+                disconnect()
+                throw MessagingException("cannot connect to ${settings.broker} as ${settings.user}: ${settled.reason}")
+            }
+        } catch (e: CancellationException) {
+            withContext(NonCancellable) { disconnect() }
+            throw e
+        }
+    }
+
+    override suspend fun disconnect() {
+        closing = true
+        val client = client
+        // Also while reconnecting: disconnecting then cancels the scheduled attempt.
+        if (client != null && client.state != MqttClientState.DISCONNECTED) {
+            try {
+                client.disconnect().await()
+            } catch (e: Exception) {
+                // Already gone (the broker closed it, say): nothing left to close.
+                LOG.log(Level.FINE, "disconnect of ${settings.clientId}", e)
+            }
+        }
+        if (mutableState.value !is ConnectionState.Failed) mutableState.value = ConnectionState.Disconnected
+        delivery.shutdown()
+    }
+
+    override suspend fun send(recipient: String, message: ChatMessage) {
+        publish(Topics.inbox(recipient), MessageCodec.encode(message), retain = false)
+    }
+
+    override suspend fun send(recipient: String, receipt: Receipt) {
+        publish(Topics.inbox(recipient), MessageCodec.encode(receipt), retain = false)
+    }
+
+    override suspend fun publishCapabilities(capabilities: Capabilities) {
+        require(capabilities.user == user) { "capabilities of ${capabilities.user} cannot be published by $user" }
+        publish(Topics.capabilities(user), MessageCodec.encode(capabilities), retain = true)
+    }
+
+    private suspend fun publish(topic: String, payload: ByteArray, retain: Boolean) {
+        val client = client
+        if (client == null || state.value != ConnectionState.Connected) {
+            throw MessagingException("not connected (${describe(state.value)})")
+        }
+        try {
+            client.publishWith().topic(topic).qos(MqttQos.AT_LEAST_ONCE).retain(retain).payload(payload).send().await()
+        } catch (e: CancellationException) {
+            throw e
+        } catch (e: Exception) {
+            throw MessagingException("publish to $topic failed: ${e.message ?: e.javaClass.simpleName}", e)
+        }
+    }
+
+    private fun buildClient(): Mqtt3AsyncClient {
+        var builder = MqttClient.builder()
+            .useMqttVersion3()
+            .identifier(settings.clientId)
+            .serverHost(settings.broker.host)
+            .serverPort(settings.broker.port)
+            .addConnectedListener { context -> onConnected((context as Mqtt3ClientConnectedContext).connAck.isSessionPresent) }
+            .addDisconnectedListener(::onDisconnected)
+        if (settings.broker.tls) builder = builder.sslWithDefaultConfig()
+        if (settings.password != null) {
+            builder = builder.simpleAuth()
+                .username(settings.user)
+                .password(settings.password.toByteArray(StandardCharsets.UTF_8))
+                .applySimpleAuth()
+        }
+        return builder.buildAsync()
+    }
+
+    private fun onConnected(sessionPresent: Boolean) {
+        val client = client ?: return
+        if (closing) {
+            client.disconnect()
+            return
+        }
+        // A resumed session still has our subscriptions, so a reconnection is ready at once (and does not
+        // make the broker resend every retained capabilities message). The first connection of a messenger
+        // always subscribes: one round trip, and it picks up subscriptions a newer version of this class
+        // added to an old session. A session the broker lost is subscribed again here.
+        if (sessionPresent && subscribedOnce) {
+            mutableState.value = ConnectionState.Connected
+            return
+        }
+        client.subscribeWith()
+            .addSubscription().topicFilter(inboxTopic).qos(MqttQos.AT_LEAST_ONCE).applySubscription()
+            .addSubscription().topicFilter(Topics.ALL_CAPABILITIES).qos(MqttQos.AT_LEAST_ONCE).applySubscription()
+            .send()
+            .whenComplete { subAck: Mqtt3SubAck?, error: Throwable? ->
+                when {
+                    // The connection dropped meanwhile; the disconnected listener has it in hand.
+                    error != null -> LOG.log(Level.FINE, "subscribe of ${settings.clientId} failed", error)
+                    subAck!!.returnCodes.any { it == Mqtt3SubAckReturnCode.FAILURE } -> {
+                        mutableState.value = ConnectionState.Failed(
+                            "the broker refused the subscription to $inboxTopic or ${Topics.ALL_CAPABILITIES} (check its ACL)",
+                        )
+                        closing = true
+                        client.disconnect()
+                    }
+                    !closing -> {
+                        subscribedOnce = true
+                        mutableState.value = ConnectionState.Connected
+                    }
+                }
+            }
+    }
+
+    private fun onDisconnected(context: MqttClientDisconnectedContext) {
+        if (closing) {
+            context.reconnector.reconnect(false)
+            return
+        }
+        val refusal = permanentRefusal(context.cause)
+        if (refusal != null) {
+            context.reconnector.reconnect(false)
+            mutableState.value = ConnectionState.Failed(refusal)
+            return
+        }
+        val delay = settings.reconnectPolicy.delayMillis(context.reconnector.attempts + 1)
+        context.reconnector.reconnect(true).delay(delay, TimeUnit.MILLISECONDS)
+        mutableState.value = ConnectionState.Connecting(lastFailure = context.cause.message ?: context.cause.javaClass.simpleName)
+    }
+
+    private fun deliver(publish: Mqtt3Publish, listener: InboxListener) {
+        try {
+            val size = publish.payload.map { it.remaining() }.orElse(0)
+            // The size is known before the bytes are copied out of the client's buffer.
+            val event = if (size > MessageLimits.MAX_PAYLOAD_BYTES) {
+                InboxDecoding.oversized(publish.topic.toString(), size)
+            } else {
+                InboxDecoding.decode(user, publish.topic.toString(), publish.payloadAsBytes)
+            }
+            listener.onInboxEvent(event)
+        } catch (e: Exception) {
+            LOG.log(Level.WARNING, "inbox listener of ${settings.clientId} failed; message acknowledged anyway", e)
+        } finally {
+            publish.acknowledge()
+        }
+    }
+
+    private companion object {
+        val LOG: Logger = Logger.getLogger(MqttMessenger::class.java.name)
+
+        /** Why the broker will never accept this client as configured, or null when trying again may help. */
+        fun permanentRefusal(cause: Throwable): String? {
+            if (cause !is Mqtt3ConnAckException) return null
+            return when (cause.mqttMessage.returnCode) {
+                Mqtt3ConnAckReturnCode.BAD_USER_NAME_OR_PASSWORD -> "bad user name or password"
+                Mqtt3ConnAckReturnCode.NOT_AUTHORIZED -> "not authorized"
+                Mqtt3ConnAckReturnCode.IDENTIFIER_REJECTED -> "client id rejected"
+                Mqtt3ConnAckReturnCode.UNSUPPORTED_PROTOCOL_VERSION -> "the broker does not speak MQTT 3.1.1"
+                else -> null
+            }
+        }
+
+        fun describe(state: ConnectionState): String = when (state) {
+            ConnectionState.Disconnected -> "disconnected"
+            ConnectionState.Connected -> "connected"
+            is ConnectionState.Connecting -> "connecting" + (state.lastFailure?.let { ": $it" } ?: "")
+            is ConnectionState.Failed -> "failed: ${state.reason}"
+        }
+    }
+}

@@ -1,0 +1,34 @@
+package org.hapticon.messaging
+
+import org.junit.Assert.assertEquals
+import org.junit.Assert.assertThrows
+import org.junit.Test
+
+class TopicsTest {
+    @Test
+    fun inboxAndCapabilities_validUser_areTheVersionOneTopics() {
+        assertEquals("hapticon/v1/inbox/alice", Topics.inbox("alice"))
+        assertEquals("hapticon/v1/capabilities/bob.k-2_x", Topics.capabilities("bob.k-2_x"))
+    }
+
+    @Test
+    fun isValidUserName_wildcardsSeparatorsAndOddNames_areInvalid() {
+        val invalid = listOf("", "+", "#", "a/b", "a+", ".", "..", "-a", "a b", "é", "a\u0000", "x".repeat(Topics.MAX_USER_NAME_LENGTH + 1))
+        assertEquals(emptyList<String>(), invalid.filter(Topics::isValidUserName))
+        val valid = listOf("a", "Alice", "bob.smith", "p_01", "x".repeat(Topics.MAX_USER_NAME_LENGTH))
+        assertEquals(valid, valid.filter(Topics::isValidUserName))
+    }
+
+    @Test
+    fun inbox_invalidUser_throws() {
+        assertThrows(IllegalArgumentException::class.java) { Topics.inbox("#") }
+    }
+
+    @Test
+    fun capabilitiesOwner_readsTheUserOnlyFromCapabilitiesTopics() {
+        assertEquals("bob", Topics.capabilitiesOwner("hapticon/v1/capabilities/bob"))
+        assertEquals(null, Topics.capabilitiesOwner("hapticon/v1/inbox/bob"))
+        assertEquals(null, Topics.capabilitiesOwner("hapticon/v1/capabilities/bob/extra"))
+        assertEquals(null, Topics.capabilitiesOwner("hapticon/v1/capabilities/"))
+    }
+}

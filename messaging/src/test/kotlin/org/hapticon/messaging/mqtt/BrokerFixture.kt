@@ -1,0 +1,74 @@
+package org.hapticon.messaging.mqtt
+
+import com.hivemq.client.mqtt.MqttClient
+import com.hivemq.client.mqtt.datatypes.MqttQos
+import com.hivemq.client.mqtt.mqtt3.Mqtt3BlockingClient
+import kotlinx.coroutines.runBlocking
+import org.hapticon.messaging.InboxListener
+import org.hapticon.messaging.RetryPolicy
+import org.hapticon.messaging.broker.EmbeddedBroker
+import org.junit.rules.ExternalResource
+import java.io.File
+import java.nio.file.Files
+import java.util.concurrent.atomic.AtomicInteger
+
+/**
+ * The embedded broker for a test, and the messengers and raw clients the test made (disconnected after
+ * it). A start costs a second or more (five in a cold JVM) and a stop 4.5 s, so the tests of this module
+ * share one broker ([SharedBroker]) and keep apart by using their own user names ([uniqueUser]). A test
+ * may restart it: the others reconnect.
+ */
+class BrokerFixture : ExternalResource() {
+    val broker: EmbeddedBroker get() = SharedBroker.instance
+    private val messengers = mutableListOf<MqttMessenger>()
+    private val rawClients = mutableListOf<Mqtt3BlockingClient>()
+
+    val address: BrokerAddress get() = BrokerAddress(EmbeddedBroker.HOST, broker.port)
+
+    override fun before() {
+        broker.start() // a test that stopped it may have failed before starting it again
+    }
+
+    override fun after() {
+        runBlocking { messengers.forEach { it.disconnect() } }
+        rawClients.forEach { runCatching { it.disconnect() } }
+    }
+
+    /** A messenger for [user] on [device], not yet connected. */
+    fun messenger(user: String, device: String = "test"): MqttMessenger =
+        MqttMessenger(MqttSettings(address, user, device, reconnectPolicy = FAST_RECONNECT)).also { messengers += it }
+
+    /** A messenger for [user], connected with [listener]. */
+    fun connected(user: String, listener: InboxListener, device: String = "test"): MqttMessenger =
+        messenger(user, device).also { runBlocking { it.connect(listener) } }
+
+    /** A bare MQTT client that can publish anything anywhere: the hostile sender. */
+    fun rawClient(id: String): Mqtt3BlockingClient {
+        val client = MqttClient.builder().useMqttVersion3().identifier(id).serverHost(EmbeddedBroker.HOST).serverPort(broker.port).buildBlocking()
+        client.connect()
+        rawClients += client
+        return client
+    }
+}
+
+/** One embedded broker for every test in this JVM, started on first use; its store is deleted at exit. */
+object SharedBroker {
+    val instance: EmbeddedBroker by lazy {
+        val store = Files.createTempDirectory("hapticon-test-broker").toFile()
+        Runtime.getRuntime().addShutdownHook(Thread { store.deleteRecursively() })
+        EmbeddedBroker(File(store, "store")).also { it.start() }
+    }
+}
+
+private val users = AtomicInteger()
+
+/** [base] with a suffix no other test of this JVM uses, e.g. `alice-7`: users of the shared broker stay apart. */
+fun uniqueUser(base: String): String = "$base-${users.incrementAndGet()}"
+
+/** Reconnection delays for tests: a restarted broker is back within seconds, so keep trying briskly. */
+val FAST_RECONNECT: RetryPolicy = RetryPolicy(initialDelayMillis = 100, maxDelayMillis = 500)
+
+/** Publishes [payload] at QoS 1 and waits for the broker's acknowledgement. */
+fun Mqtt3BlockingClient.publishQos1(topic: String, payload: ByteArray, retain: Boolean = false) {
+    publishWith().topic(topic).qos(MqttQos.AT_LEAST_ONCE).retain(retain).payload(payload).send()
+}

@@ -1,0 +1,126 @@
+package org.hapticon.messaging.mqtt
+
+import org.junit.Assert.fail
+import org.junit.Assume.assumeTrue
+import java.io.File
+import java.io.IOException
+import java.net.InetAddress
+import java.net.ServerSocket
+import java.net.Socket
+import java.util.concurrent.TimeUnit
+
+/**
+ * A real Mosquitto broker, started from the deployment files in companion/mosquitto with their paths
+ * rewritten into [dir] and its listener on a free loopback port. Missing Mosquitto skips the test, except
+ * on CI (env CI=true), which installs it and must run these tests.
+ */
+class MosquittoProcess(private val dir: File, users: Map<String, String>) {
+    val port: Int = ServerSocket(0, 1, InetAddress.getByName(HOST)).use { it.localPort }
+    private val config = File(dir, "mosquitto.conf")
+    private val log = File(dir, "mosquitto.log")
+    private var process: Process? = null
+
+    init {
+        val passwd = File(dir, "passwd")
+        for ((user, password) in users) {
+            run(listOf(tool("mosquitto_passwd"), "-b") + (if (passwd.exists()) emptyList() else listOf("-c")) + listOf(passwd.path, user, password))
+        }
+        File(dir, "data").mkdirs()
+        config.writeText(deploymentConfig(port, File(dir, "data"), passwd))
+    }
+
+    val address: BrokerAddress get() = BrokerAddress(HOST, port)
+
+    /** Starts Mosquitto and waits until it accepts connections. */
+    fun start() {
+        process = ProcessBuilder(tool("mosquitto"), "-c", config.path)
+            .redirectErrorStream(true)
+            .redirectOutput(ProcessBuilder.Redirect.appendTo(log))
+            .start()
+        val deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(20)
+        while (true) {
+            try {
+                Socket(HOST, port).close()
+                return
+            } catch (e: IOException) {
+                if (!process!!.isAlive) fail("mosquitto exited ${process!!.exitValue()}:\n${log.readText()}")
+                if (System.nanoTime() > deadline) fail("mosquitto did not listen on $port within 20 s:\n${log.readText()}")
+                Thread.sleep(20)
+            }
+        }
+    }
+
+    /** Stops Mosquitto with SIGTERM (it saves its persistence file on the way out) and waits for it. */
+    fun stop() {
+        val running = process ?: return
+        process = null
+        running.destroy()
+        if (!running.waitFor(20, TimeUnit.SECONDS)) {
+            running.destroyForcibly()
+            fail("mosquitto did not stop on SIGTERM:\n${log.readText()}")
+        }
+    }
+
+    fun restart() {
+        stop()
+        start()
+    }
+
+    /** What Mosquitto logged, for failure messages. */
+    fun log(): String = log.readText()
+
+    private fun run(command: List<String>) {
+        val p = ProcessBuilder(command).redirectErrorStream(true).start()
+        val output = p.inputStream.readBytes().decodeToString()
+        if (p.waitFor() != 0) fail("${command.joinToString(" ")} failed: $output")
+    }
+
+    companion object {
+        const val HOST = "127.0.0.1"
+
+        /** Skips the calling test when Mosquitto is not installed, or fails it on CI. */
+        fun assumeInstalled() {
+            val missing = listOf("mosquitto", "mosquitto_passwd").filter { find(it) == null }
+            if (missing.isEmpty()) return
+            val message = "${missing.joinToString(" and ")} not installed (apt-get install mosquitto)"
+            if (System.getenv("CI") == "true") fail("$message; CI must run the Mosquitto tests")
+            assumeTrue(message, false)
+        }
+
+        private fun tool(name: String): String = find(name)?.path ?: throw AssertionError("$name not installed")
+
+        // Debian installs the broker in /usr/sbin, which is not on every user's PATH.
+        private fun find(name: String): File? =
+            (System.getenv("PATH").orEmpty().split(File.pathSeparator) + listOf("/usr/sbin", "/usr/bin", "/usr/local/sbin"))
+                .map { File(it, name) }
+                .firstOrNull { it.isFile && it.canExecute() }
+
+        /** The repository's companion/mosquitto directory, found from the test's working directory upwards. */
+        fun deploymentDir(): File {
+            var dir: File? = File("").absoluteFile
+            while (dir != null && !File(dir, "settings.gradle.kts").isFile) dir = dir.parentFile
+            return File(dir ?: throw AssertionError("project root not found"), "companion/mosquitto")
+        }
+
+        /**
+         * companion/mosquitto/mosquitto.conf with the listener on [port] and its files in [data] and
+         * [passwd]; the ACL file is used as it is. Fails when a setting it rewrites is no longer there, so the
+         * test keeps exercising the shipped file.
+         */
+        fun deploymentConfig(port: Int, data: File, passwd: File): String {
+            val replacements = mapOf(
+                "listener 1883 127.0.0.1" to "listener $port $HOST",
+                "persistence_location " to "persistence_location ${data.absolutePath}/",
+                "password_file " to "password_file ${passwd.absolutePath}",
+                "acl_file " to "acl_file ${File(deploymentDir(), "aclfile").absolutePath}",
+            )
+            val lines = File(deploymentDir(), "mosquitto.conf").readLines()
+            for (key in replacements.keys) {
+                if (lines.none { it.startsWith(key) }) fail("mosquitto.conf no longer has a line starting with \"$key\"")
+            }
+            val rewritten = lines.map { line -> replacements.entries.firstOrNull { line.startsWith(it.key) }?.value ?: line }
+            // Run as ourselves: as root, Mosquitto would switch to the mosquitto user, who cannot read our temp files.
+            return (rewritten + "user ${System.getProperty("user.name")}").joinToString("\n", postfix = "\n")
+        }
+    }
+}

@@ -1,0 +1,249 @@
+package org.hapticon.messaging.mqtt
+
+import kotlinx.coroutines.async
+import kotlinx.coroutines.flow.first
+import kotlinx.coroutines.runBlocking
+import kotlinx.coroutines.withTimeout
+import org.hapticon.core.HapticIcon
+import org.hapticon.messaging.Capabilities
+import org.hapticon.messaging.ChatMessage
+import org.hapticon.messaging.CollectingListener
+import org.hapticon.messaging.ConnectionState
+import org.hapticon.messaging.Decoded
+import org.hapticon.messaging.ID_1
+import org.hapticon.messaging.ID_2
+import org.hapticon.messaging.InboxEvent
+import org.hapticon.messaging.MessageCodec
+import org.hapticon.messaging.MessageLimits
+import org.hapticon.messaging.MessagingException
+import org.hapticon.messaging.NEW_YEAR_2026
+import org.hapticon.messaging.Receipt
+import org.hapticon.messaging.ReceiptState
+import org.hapticon.messaging.RejectionReason
+import org.hapticon.messaging.RendererKind
+import org.hapticon.messaging.Topics
+import org.hapticon.messaging.broker.EmbeddedBroker
+import org.junit.Assert.assertEquals
+import org.junit.Assert.assertThrows
+import org.junit.Rule
+import org.junit.Test
+import org.junit.rules.TemporaryFolder
+import java.net.InetAddress
+import java.net.ServerSocket
+import java.util.concurrent.LinkedBlockingQueue
+import java.util.concurrent.TimeUnit
+import java.util.logging.Handler
+import java.util.logging.LogRecord
+import java.util.logging.Logger
+
+class MqttMessengerTest {
+    @get:Rule
+    val fixture = BrokerFixture()
+
+    @get:Rule
+    val temp = TemporaryFolder()
+
+    // The broker is shared; every test has its own users, so nothing carries over between tests.
+    private val alice = uniqueUser("alice")
+    private val bob = uniqueUser("bob")
+    private val hello = ChatMessage(ID_1, alice, NEW_YEAR_2026, "hello", sticker = "hug", icon = HapticIcon.KNOCK)
+
+    @Test
+    fun send_toAConnectedPeer_arrivesDecodedWithItsIcon() = runBlocking {
+        val aliceMessenger = fixture.connected(alice, CollectingListener())
+        val bobInbox = CollectingListener()
+        fixture.connected(bob, bobInbox)
+        aliceMessenger.send(bob, hello)
+        assertEquals(InboxEvent.MessageReceived(hello), bobInbox.awaitEvent())
+    }
+
+    @Test
+    fun receipts_deliveredThenRead_flowBackToTheSender() = runBlocking {
+        val aliceInbox = CollectingListener()
+        val aliceMessenger = fixture.connected(alice, aliceInbox)
+        val bobInbox = CollectingListener()
+        val bobMessenger = fixture.connected(bob, bobInbox)
+        aliceMessenger.send(bob, hello)
+        val received = (bobInbox.awaitEvent() as InboxEvent.MessageReceived).message
+        bobMessenger.send(received.sender, Receipt(received.id, bob, ReceiptState.DELIVERED, NEW_YEAR_2026 + 10))
+        bobMessenger.send(received.sender, Receipt(received.id, bob, ReceiptState.READ, NEW_YEAR_2026 + 20))
+        assertEquals(
+            listOf(
+                InboxEvent.ReceiptReceived(Receipt(ID_1, bob, ReceiptState.DELIVERED, NEW_YEAR_2026 + 10)),
+                InboxEvent.ReceiptReceived(Receipt(ID_1, bob, ReceiptState.READ, NEW_YEAR_2026 + 20)),
+            ),
+            aliceInbox.awaitEvents(2),
+        )
+    }
+
+    @Test
+    fun publishCapabilities_ofAnotherUser_throws() {
+        val bobMessenger = fixture.connected(bob, CollectingListener())
+        assertThrows(IllegalArgumentException::class.java) {
+            runBlocking { bobMessenger.publishCapabilities(Capabilities(alice, RendererKind.NONE, false)) }
+        }
+    }
+
+    @Test
+    fun hostilePayloads_areRejectedWithReasons_andTheInboxKeepsWorking() {
+        val bobInbox = CollectingListener()
+        fixture.connected(bob, bobInbox)
+        val mallory = fixture.rawClient(uniqueUser("mallory"))
+        val inbox = Topics.inbox(bob)
+        mallory.publishQos1(inbox, "{\"schema\":".toByteArray())
+        mallory.publishQos1(inbox, ByteArray(100_000) { 'x'.code.toByte() })
+        mallory.publishQos1(inbox, """{"schema":"hapticon.message","version":7}""".toByteArray())
+        mallory.publishQos1(inbox, String(MessageCodec.encode(hello), Charsets.UTF_8).replace("\"text\":\"hello\"", "\"text\":42").toByteArray())
+        // Someone else's capabilities on bob's topic: a forgery (the ACL of a real deployment forbids it).
+        mallory.publishQos1(Topics.capabilities(bob), MessageCodec.encode(Capabilities("mallory", RendererKind.NONE, false)))
+        mallory.publishQos1(inbox, MessageCodec.encode(hello))
+        val events = bobInbox.awaitEvents(6)
+        val rejections = events.take(5).map { (it as InboxEvent.Rejected).rejection.let { r -> r.reason to r.field } }
+        assertEquals(
+            listOf(
+                RejectionReason.MALFORMED_JSON to null,
+                RejectionReason.PAYLOAD_TOO_LARGE to null,
+                RejectionReason.UNSUPPORTED_VERSION to "version",
+                RejectionReason.WRONG_TYPE to "text",
+                RejectionReason.INVALID_VALUE to "user",
+            ),
+            rejections,
+        )
+        assertEquals(InboxEvent.MessageReceived(hello), events[5])
+    }
+
+    @Test
+    fun oversizedPayload_isRejectedFromItsSizeAlone() {
+        val bobInbox = CollectingListener()
+        fixture.connected(bob, bobInbox)
+        fixture.rawClient(uniqueUser("mallory")).publishQos1(Topics.inbox(bob), ByteArray(MessageLimits.MAX_PAYLOAD_BYTES + 1))
+        assertEquals(
+            InboxEvent.Rejected(
+                Topics.inbox(bob),
+                Decoded.Rejected(RejectionReason.PAYLOAD_TOO_LARGE, null, "65537 bytes exceed the limit of 65536"),
+            ),
+            bobInbox.awaitEvent(),
+        )
+    }
+
+    @Test
+    fun listenerThatThrows_isLoggedAndDoesNotStallTheInbox() = runBlocking {
+        val logged = mutableListOf<LogRecord>()
+        val logger = Logger.getLogger(MqttMessenger::class.java.name)
+        val capture = object : Handler() {
+            override fun publish(record: LogRecord) {
+                synchronized(logged) { logged += record }
+            }
+            override fun flush() = Unit
+            override fun close() = Unit
+        }
+        logger.addHandler(capture)
+        logger.useParentHandlers = false // keeps the expected stack trace out of the test output
+        try {
+            val delivered = LinkedBlockingQueue<InboxEvent>()
+            var first = true
+            fixture.connected(bob, { event ->
+                if (first) {
+                    first = false
+                    throw IllegalStateException("listener bug")
+                }
+                delivered.put(event)
+            })
+            val aliceMessenger = fixture.connected(alice, CollectingListener())
+            aliceMessenger.send(bob, hello)
+            aliceMessenger.send(bob, hello.copy(id = ID_2))
+            assertEquals(InboxEvent.MessageReceived(hello.copy(id = ID_2)), delivered.poll(CollectingListener.WAIT_SECONDS, TimeUnit.SECONDS))
+            val record = synchronized(logged) { logged.single() }
+            assertEquals("inbox listener of hapticon-$bob-test failed; message acknowledged anyway", record.message)
+            assertEquals("listener bug", record.thrown.message)
+        } finally {
+            logger.removeHandler(capture)
+            logger.useParentHandlers = true
+        }
+    }
+
+    @Test
+    fun publishCapabilities_isRetainedForUsersWhoConnectLater() = runBlocking {
+        val bobCapabilities = Capabilities(bob, RendererKind.AMPLITUDE_WAVEFORM, amplitudeControl = true, apiLevel = 34, resonantFrequencyHz = 170.0)
+        val bobInbox = CollectingListener()
+        val bobMessenger = fixture.connected(bob, bobInbox)
+        bobMessenger.publishCapabilities(bobCapabilities)
+        assertEquals(InboxEvent.CapabilitiesReceived(bobCapabilities), bobInbox.awaitEvent())
+        val aliceInbox = CollectingListener()
+        fixture.connected(alice, aliceInbox)
+        assertEquals(InboxEvent.CapabilitiesReceived(bobCapabilities), aliceInbox.awaitEvent())
+        // An empty retained message deletes it, so later tests on the shared broker do not receive it.
+        fixture.rawClient(uniqueUser("cleaner")).publishQos1(Topics.capabilities(bob), ByteArray(0), retain = true)
+    }
+
+    @Test
+    fun offlineRecipient_getsWhatWasSentMeanwhile_onItsNextConnection() = runBlocking {
+        val bobMessenger = fixture.connected(bob, CollectingListener(), device = "phone")
+        bobMessenger.disconnect()
+        val aliceMessenger = fixture.connected(alice, CollectingListener())
+        aliceMessenger.send(bob, hello)
+        aliceMessenger.send(bob, hello.copy(id = ID_2, text = "second"))
+        val bobAgain = CollectingListener()
+        fixture.connected(bob, bobAgain, device = "phone")
+        assertEquals(
+            listOf(InboxEvent.MessageReceived(hello), InboxEvent.MessageReceived(hello.copy(id = ID_2, text = "second"))),
+            bobAgain.awaitEvents(2),
+        )
+    }
+
+    @Test
+    fun connect_whileTheBrokerIsDown_waitsForItAndThenConnects() = runBlocking {
+        // A broker not started yet, on a port nobody listens on.
+        val port = ServerSocket(0, 1, InetAddress.getByName(EmbeddedBroker.HOST)).use { it.localPort }
+        val late = EmbeddedBroker(temp.newFolder(), port)
+        val aliceMessenger = MqttMessenger(MqttSettings(BrokerAddress(EmbeddedBroker.HOST, port), alice, "test", reconnectPolicy = FAST_RECONNECT))
+        try {
+            val connecting = async { aliceMessenger.connect(CollectingListener()) }
+            val retrying = withTimeout(20_000) { aliceMessenger.state.first { it is ConnectionState.Connecting && it.lastFailure != null } }
+            assertEquals(true, (retrying as ConnectionState.Connecting).lastFailure!!.contains("Connection refused"))
+            late.start()
+            withTimeout(20_000) { connecting.await() }
+            assertEquals(ConnectionState.Connected, aliceMessenger.state.value)
+        } finally {
+            aliceMessenger.disconnect()
+            Thread(late::stop).start()
+        }
+    }
+
+    @Test
+    fun connect_brokerRestarts_reconnectsByItself() = runBlocking {
+        val bobInbox = CollectingListener()
+        fixture.connected(bob, bobInbox)
+        val aliceMessenger = fixture.connected(alice, CollectingListener())
+        fixture.broker.restart()
+        // The state may still read Connected for a moment after the restart; send until alice is back.
+        withTimeout(20_000) {
+            while (true) {
+                try {
+                    aliceMessenger.send(bob, hello)
+                    break
+                } catch (e: MessagingException) {
+                    aliceMessenger.state.first { it == ConnectionState.Connected }
+                }
+            }
+        }
+        assertEquals(InboxEvent.MessageReceived(hello), bobInbox.awaitEvent())
+    }
+
+    @Test
+    fun send_whenNotConnected_throwsMessagingException() {
+        val aliceMessenger = fixture.messenger(alice)
+        val e = assertThrows(MessagingException::class.java) { runBlocking { aliceMessenger.send(bob, hello) } }
+        assertEquals("not connected (disconnected)", e.message)
+    }
+
+    @Test
+    fun disconnect_afterConnect_endsDisconnected() = runBlocking {
+        val aliceMessenger = fixture.connected(alice, CollectingListener())
+        assertEquals(ConnectionState.Connected, aliceMessenger.state.value)
+        aliceMessenger.disconnect()
+        assertEquals(ConnectionState.Disconnected, aliceMessenger.state.value)
+        assertThrows(IllegalStateException::class.java) { runBlocking { aliceMessenger.connect(CollectingListener()) } }
+        Unit
+    }
+}
