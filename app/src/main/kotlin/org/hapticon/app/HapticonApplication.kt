@@ -1,10 +1,23 @@
 package org.hapticon.app
 
 import android.app.Application
+import android.content.Context
 import org.hapticon.app.data.IconRepository
 import org.hapticon.app.data.PresetIconRepository
 import org.hapticon.app.playback.HapticPlayer
+import org.hapticon.app.playback.VibrationOutput
 import org.hapticon.app.playback.VibratorHapticPlayer
+import org.hapticon.app.playback.VibratorVibrationOutput
+import org.hapticon.app.sensors.AndroidUsbDevices
+import org.hapticon.app.sensors.CalibrationStore
+import org.hapticon.app.sensors.GrainEngine
+import org.hapticon.app.sensors.HubGloveSource
+import org.hapticon.app.sensors.PartnerHand
+import org.hapticon.app.sensors.SensorHub
+import org.hapticon.app.sensors.SharedPreferencesCalibrationStore
+import org.hapticon.app.sensors.SimulatedPartner
+import org.hapticon.app.sensors.UsbDevices
+import org.hapticon.app.sync.ChatComponent
 
 /** Holds the app's long-lived objects; tests replace them through [container]. */
 class HapticonApplication : Application() {
@@ -12,15 +25,53 @@ class HapticonApplication : Application() {
 
     override fun onCreate() {
         super.onCreate()
-        container = AppContainer(
-            iconRepository = PresetIconRepository(),
-            player = VibratorHapticPlayer.create(this),
-        )
+        container = AppContainer.create(this)
+        // The chat sync runs in the application's scope from start-up: it drains the outbox and receives.
+        container.chat?.sync?.start()
     }
 }
 
-/** The app's dependencies, built once per process (manual injection: small app, no framework). */
-data class AppContainer(
+/**
+ * The app's dependencies, built once per process (manual injection: small app, no framework).
+ *
+ * The sensor side is one live connection ([sensorHub]) shared by the Sensors screen, the FSR grain
+ * mode ([grainEngine]) and the glove screens ([glove]), which all listen to the same stream.
+ */
+class AppContainer(
     val iconRepository: IconRepository,
     val player: HapticPlayer,
-)
+    val vibration: VibrationOutput,
+    val usbDevices: UsbDevices,
+    val sensorHub: SensorHub,
+    val grainEngine: GrainEngine,
+    val glove: HubGloveSource,
+    val calibrations: CalibrationStore,
+    /** Makes the simulated partner of the handshake screen's toggle. */
+    val simulatedPartner: () -> PartnerHand = { SimulatedPartner() },
+    /** Chat: Room storage, settings, the background sync and adaptive playback; null in containers built without it. */
+    val chat: ChatComponent? = null,
+) {
+    companion object {
+        /** The production graph, with [usbDevices] and [vibration] replaceable for tests. */
+        fun create(
+            context: Context,
+            usbDevices: UsbDevices = AndroidUsbDevices(context),
+            vibration: VibrationOutput = VibratorVibrationOutput.create(context),
+            calibrations: CalibrationStore = SharedPreferencesCalibrationStore(context),
+        ): AppContainer {
+            val hub = SensorHub(usbDevices)
+            val grains = GrainEngine(vibration).also { hub.addFrameListener(it) }
+            return AppContainer(
+                iconRepository = PresetIconRepository(),
+                player = VibratorHapticPlayer.create(context),
+                vibration = vibration,
+                usbDevices = usbDevices,
+                sensorHub = hub,
+                grainEngine = grains,
+                glove = HubGloveSource(hub),
+                calibrations = calibrations,
+                chat = ChatComponent.create(context),
+            )
+        }
+    }
+}

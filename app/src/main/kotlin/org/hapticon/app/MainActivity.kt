@@ -1,22 +1,61 @@
 package org.hapticon.app
 
+import android.content.Intent
+import android.hardware.usb.UsbManager
 import android.os.Bundle
 import androidx.activity.ComponentActivity
 import androidx.activity.compose.setContent
 import androidx.activity.enableEdgeToEdge
+import androidx.compose.runtime.getValue
+import androidx.compose.runtime.mutableStateOf
+import androidx.compose.runtime.setValue
 import org.hapticon.app.designsystem.HapticonTheme
-import org.hapticon.app.feature.icons.IconsRoute
+import org.hapticon.app.navigation.HapticonApp
+import org.hapticon.app.navigation.TopLevelDestination
 
-/** The single activity: hosts the Compose UI. */
+/**
+ * The single activity: hosts the Compose UI. It is also what Android opens when a supported USB
+ * board is plugged in (`USB_DEVICE_ATTACHED`, filtered by sensor-bridge's `device_filter.xml`): then
+ * it shows the Sensors destination. `singleTop`, so a board plugged in while the app is open arrives
+ * in [onNewIntent] instead of starting a second activity.
+ */
 class MainActivity : ComponentActivity() {
+    private var destination by mutableStateOf(TopLevelDestination.ICONS)
+
     override fun onCreate(savedInstanceState: Bundle?) {
         super.onCreate(savedInstanceState)
         enableEdgeToEdge()
         val container = (application as HapticonApplication).container
+        destination = savedInstanceState?.getString(KEY_DESTINATION)
+            ?.let { name -> TopLevelDestination.entries.firstOrNull { it.name == name } }
+            ?: TopLevelDestination.ICONS
+        handleIntent(intent, container)
         setContent {
             HapticonTheme {
-                IconsRoute(container)
+                HapticonApp(container, selected = destination, onSelect = { destination = it })
             }
         }
+    }
+
+    override fun onNewIntent(intent: Intent) {
+        super.onNewIntent(intent)
+        setIntent(intent)
+        handleIntent(intent, (application as HapticonApplication).container)
+    }
+
+    override fun onSaveInstanceState(outState: Bundle) {
+        super.onSaveInstanceState(outState)
+        outState.putString(KEY_DESTINATION, destination.name)
+    }
+
+    private fun handleIntent(intent: Intent?, container: AppContainer) {
+        if (intent?.action == UsbManager.ACTION_USB_DEVICE_ATTACHED) {
+            container.usbDevices.refresh()
+            destination = TopLevelDestination.SENSORS
+        }
+    }
+
+    private companion object {
+        const val KEY_DESTINATION = "destination"
     }
 }

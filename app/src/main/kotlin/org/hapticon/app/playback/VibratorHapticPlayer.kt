@@ -4,7 +4,6 @@ import android.content.Context
 import android.os.Build
 import android.os.VibrationEffect
 import android.os.Vibrator
-import android.os.VibratorManager
 import org.hapticon.core.HapticIcon
 import org.hapticon.core.render.VibrationWaveform
 
@@ -38,15 +37,7 @@ class VibratorHapticPlayer(private val vibrator: Vibrator) : HapticPlayer {
 
     companion object {
         /** A player on the phone's default vibrator. */
-        fun create(context: Context): VibratorHapticPlayer {
-            val vibrator = if (Build.VERSION.SDK_INT >= Build.VERSION_CODES.S) {
-                context.getSystemService(VibratorManager::class.java).defaultVibrator
-            } else {
-                @Suppress("DEPRECATION")
-                context.getSystemService(Vibrator::class.java)
-            }
-            return VibratorHapticPlayer(vibrator)
-        }
+        fun create(context: Context): VibratorHapticPlayer = VibratorHapticPlayer(defaultVibrator(context))
     }
 }
 

@@ -1,0 +1,164 @@
+package org.hapticon.app.data
+
+import androidx.room.withTransaction
+import kotlinx.coroutines.flow.Flow
+import kotlinx.coroutines.flow.map
+import org.hapticon.app.data.database.ConversationEntity
+import org.hapticon.app.data.database.ConversationSummary
+import org.hapticon.app.data.database.HapticonDatabase
+import org.hapticon.app.data.database.MessageEntity
+import org.hapticon.app.data.database.MessageState
+import org.hapticon.app.data.database.OutboxEntity
+import org.hapticon.app.data.database.StoredMessage
+import org.hapticon.app.data.database.asExternalModel
+import org.hapticon.core.HapticIcon
+import org.hapticon.core.io.IconJson
+import org.hapticon.messaging.ChatMessage
+import org.hapticon.messaging.Clock
+import org.hapticon.messaging.Outbox
+import org.hapticon.messaging.OutboxEntry
+import org.hapticon.messaging.Receipt
+import org.hapticon.messaging.ReceiptState
+
+/**
+ * Conversations and messages, offline first: the UI reads Room, sending writes the message and its
+ * outbox entry to Room in one transaction before any network call, and the background sync
+ * ([org.hapticon.app.sync.ChatSync]) moves them over the network and records what comes back.
+ */
+interface ChatRepository {
+    /** Every conversation with its latest message, newest first. */
+    fun conversations(): Flow<List<ConversationSummary>>
+
+    /** The messages with [peer], oldest first. */
+    fun messages(peer: String): Flow<List<StoredMessage>>
+
+    /** Creates the conversation with [peer] unless it exists. */
+    suspend fun startConversation(peer: String)
+
+    /**
+     * Stores a new own message from [sender] to [peer] and queues it for sending. Throws
+     * [org.hapticon.messaging.InvalidMessageException] when the message is not valid (e.g. empty).
+     */
+    suspend fun send(sender: String, peer: String, text: String, sticker: String? = null, icon: HapticIcon? = null): StoredMessage
+
+    /** Stores a received [message] unless its id is known; returns true when it is new (first delivery). */
+    suspend fun receive(message: ChatMessage): Boolean
+
+    /** Records a receipt for an own message; states only move forward (a late DELIVERED never undoes READ). */
+    suspend fun applyReceipt(receipt: Receipt)
+
+    /** Marks the received messages of [peer] as read at [nowMillis]; returns those that were unread. */
+    suspend fun markRead(peer: String, nowMillis: Long): List<StoredMessage>
+}
+
+/** [ChatRepository] on Room. Also the [Outbox] that the sync's [org.hapticon.messaging.OutboxSender] drains. */
+class OfflineFirstChatRepository(
+    private val db: HapticonDatabase,
+    private val clock: Clock = Clock.SYSTEM,
+    /** After this many failed attempts an own message shows as failed (it is still retried). */
+    private val failedAfterAttempts: Int = 3,
+) : ChatRepository, Outbox {
+    private val conversations = db.conversationDao()
+    private val messages = db.messageDao()
+    private val outbox = db.outboxDao()
+
+    override fun conversations(): Flow<List<ConversationSummary>> = conversations.conversationSummaries()
+
+    override fun messages(peer: String): Flow<List<StoredMessage>> =
+        messages.messages(peer).map { rows -> rows.map { it.asExternalModel() } }
+
+    override suspend fun startConversation(peer: String) {
+        conversations.insertOrIgnore(ConversationEntity(peer, clock.nowMillis()))
+    }
+
+    override suspend fun send(sender: String, peer: String, text: String, sticker: String?, icon: HapticIcon?): StoredMessage {
+        val message = ChatMessage.compose(sender, text, sticker, icon, clock)
+        enqueue(peer, message)
+        return messages.message(message.id)!!.asExternalModel()
+    }
+
+    override suspend fun receive(message: ChatMessage): Boolean = db.withTransaction {
+        val inserted = messages.insertOrIgnore(message.asEntity(conversation = message.sender, outgoing = false, state = MessageState.RECEIVED))
+        if (inserted != -1L) conversations.insertOrIgnore(ConversationEntity(message.sender, clock.nowMillis()))
+        inserted != -1L
+    }
+
+    override suspend fun applyReceipt(receipt: Receipt) {
+        db.withTransaction {
+            val row = messages.message(receipt.messageId) ?: return@withTransaction
+            // Only the peer the message went to may acknowledge it.
+            if (!row.outgoing || row.conversation != receipt.from) return@withTransaction
+            when (receipt.state) {
+                ReceiptState.DELIVERED -> if (row.state in FORWARD_TO_DELIVERED) messages.updateState(row.id, MessageState.DELIVERED.name)
+                ReceiptState.READ -> if (row.state != MessageState.READ.name) {
+                    messages.updateStateAndReadAt(row.id, MessageState.READ.name, receipt.atMillis)
+                }
+            }
+        }
+    }
+
+    override suspend fun markRead(peer: String, nowMillis: Long): List<StoredMessage> = db.withTransaction {
+        val unread = messages.unread(peer)
+        for (row in unread) messages.updateStateAndReadAt(row.id, MessageState.READ.name, nowMillis)
+        unread.map { it.asExternalModel() }
+    }
+
+    // Outbox, for OutboxSender.
+
+    override suspend fun enqueue(recipient: String, message: ChatMessage) {
+        db.withTransaction {
+            conversations.insertOrIgnore(ConversationEntity(recipient, clock.nowMillis()))
+            messages.insertOrIgnore(message.asEntity(conversation = recipient, outgoing = true, state = MessageState.SENDING))
+            outbox.insertOrIgnore(OutboxEntity(message.id, recipient, enqueuedAtMillis = clock.nowMillis()))
+        }
+    }
+
+    override suspend fun due(nowMillis: Long, limit: Int): List<OutboxEntry> = outbox.due(nowMillis, limit).mapNotNull { it.asEntry() }
+
+    override suspend fun nextAttemptAt(): Long? = outbox.nextAttemptAt()
+
+    override suspend fun markSent(messageId: String) {
+        db.withTransaction {
+            outbox.deleteEntry(messageId)
+            val row = messages.message(messageId) ?: return@withTransaction
+            // A receipt can overtake the acknowledgement; never move a message backwards.
+            if (row.state == MessageState.SENDING.name || row.state == MessageState.FAILED.name) {
+                messages.updateState(messageId, MessageState.SENT.name)
+            }
+        }
+    }
+
+    override suspend fun markFailed(messageId: String, error: String, nextAttemptAtMillis: Long) {
+        db.withTransaction {
+            outbox.markFailed(messageId, error, nextAttemptAtMillis)
+            val entry = outbox.pending().firstOrNull { it.messageId == messageId } ?: return@withTransaction
+            if (entry.attempts >= failedAfterAttempts) messages.updateState(messageId, MessageState.FAILED.name)
+        }
+    }
+
+    override suspend fun pending(): List<OutboxEntry> = outbox.pending().mapNotNull { it.asEntry() }
+
+    private suspend fun OutboxEntity.asEntry(): OutboxEntry? {
+        val row = messages.message(messageId) ?: return null
+        return OutboxEntry(recipient, row.asChatMessage(), attempts, nextAttemptAtMillis, lastError)
+    }
+
+    private companion object {
+        val FORWARD_TO_DELIVERED = setOf(MessageState.SENDING.name, MessageState.SENT.name, MessageState.FAILED.name)
+    }
+}
+
+internal fun ChatMessage.asEntity(conversation: String, outgoing: Boolean, state: MessageState) = MessageEntity(
+    id = id,
+    conversation = conversation,
+    sender = sender,
+    sentAtMillis = sentAtMillis,
+    text = text,
+    sticker = sticker,
+    iconJson = icon?.let { IconJson.encode(it) },
+    outgoing = outgoing,
+    state = state.name,
+)
+
+internal fun MessageEntity.asChatMessage(): ChatMessage =
+    ChatMessage(id, sender, sentAtMillis, text, sticker, iconJson?.let { IconJson.decode(it) })

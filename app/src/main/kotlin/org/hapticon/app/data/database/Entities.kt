@@ -1,0 +1,105 @@
+package org.hapticon.app.data.database
+
+import androidx.room.ColumnInfo
+import androidx.room.Entity
+import androidx.room.Index
+import androidx.room.PrimaryKey
+import org.hapticon.core.HapticIcon
+import org.hapticon.core.io.IconJson
+
+/** A conversation with one peer, named by the peer's user name (one conversation per peer). */
+@Entity(tableName = "conversations")
+data class ConversationEntity(
+    @PrimaryKey val peer: String,
+    @ColumnInfo(name = "created_at") val createdAtMillis: Long,
+)
+
+/**
+ * One chat message, own or received. The message id is the primary key, so a message delivered twice
+ * (MQTT is at-least-once) is inserted once: inserts use IGNORE on conflict.
+ *
+ * The icon travels by value and is stored by value too (its JSON): a received custom icon stays playable
+ * even though it is not in this user's icon library.
+ */
+@Entity(
+    tableName = "messages",
+    indices = [Index("conversation", "sent_at")],
+)
+data class MessageEntity(
+    @PrimaryKey val id: String,
+    val conversation: String,
+    val sender: String,
+    @ColumnInfo(name = "sent_at") val sentAtMillis: Long,
+    val text: String,
+    val sticker: String?,
+    @ColumnInfo(name = "icon_json") val iconJson: String?,
+    val outgoing: Boolean,
+    /** A [MessageState] name. */
+    val state: String,
+    /** When the message was read: by the peer for own messages, by this user for received ones (added in v2). */
+    @ColumnInfo(name = "read_at") val readAtMillis: Long? = null,
+)
+
+/**
+ * A composed message not yet acknowledged by the broker; its content is the [MessageEntity] with the
+ * same id, written in the same transaction, so nothing composed is lost on process death.
+ */
+@Entity(tableName = "outbox")
+data class OutboxEntity(
+    @PrimaryKey @ColumnInfo(name = "message_id") val messageId: String,
+    val recipient: String,
+    /** Enqueue order, for equal due times (Outbox contract). */
+    @ColumnInfo(name = "enqueued_at") val enqueuedAtMillis: Long,
+    val attempts: Int = 0,
+    @ColumnInfo(name = "next_attempt_at") val nextAttemptAtMillis: Long = 0,
+    @ColumnInfo(name = "last_error") val lastError: String? = null,
+)
+
+/** A custom haptic icon the user made in the editor. */
+@Entity(tableName = "icons")
+data class IconEntity(
+    @PrimaryKey val name: String,
+    val attack: Double,
+    val sustain: Double,
+    val level: Double,
+    val release: Double,
+    val note: Double,
+    val period: Double,
+    val count: Int,
+)
+
+/** The icon; throws [org.hapticon.core.IconValidationException] for a row that is not a valid icon. */
+fun IconEntity.asExternalModel(): HapticIcon = HapticIcon(name, attack, sustain, level, release, note, period, count)
+
+fun HapticIcon.asEntity(): IconEntity = IconEntity(name, attack, sustain, level, release, note, period, count)
+
+/** How far a message got. Own messages go SENDING → SENT → DELIVERED → READ, or FAILED; received ones are RECEIVED. */
+enum class MessageState { SENDING, SENT, DELIVERED, READ, FAILED, RECEIVED }
+
+/** A message as the UI and sync see it. */
+data class StoredMessage(
+    val id: String,
+    val conversation: String,
+    val sender: String,
+    val sentAtMillis: Long,
+    val text: String,
+    val sticker: String?,
+    val icon: HapticIcon?,
+    val outgoing: Boolean,
+    val state: MessageState,
+    val readAtMillis: Long?,
+)
+
+fun MessageEntity.asExternalModel(): StoredMessage = StoredMessage(
+    id = id,
+    conversation = conversation,
+    sender = sender,
+    sentAtMillis = sentAtMillis,
+    text = text,
+    sticker = sticker,
+    // A row is written only from a valid icon; a bad one (corrupted storage) shows as a message without icon.
+    icon = iconJson?.let { runCatching { IconJson.decode(it) }.getOrNull() },
+    outgoing = outgoing,
+    state = runCatching { MessageState.valueOf(state) }.getOrDefault(MessageState.FAILED),
+    readAtMillis = readAtMillis,
+)

@@ -1,0 +1,160 @@
+package org.hapticon.app.feature.glove
+
+import androidx.compose.foundation.layout.Arrangement
+import androidx.compose.foundation.layout.Box
+import androidx.compose.foundation.layout.Column
+import androidx.compose.foundation.layout.Row
+import androidx.compose.foundation.layout.fillMaxSize
+import androidx.compose.foundation.layout.fillMaxWidth
+import androidx.compose.foundation.layout.padding
+import androidx.compose.foundation.rememberScrollState
+import androidx.compose.foundation.verticalScroll
+import androidx.compose.material3.Card
+import androidx.compose.material3.CardDefaults
+import androidx.compose.material3.CircularProgressIndicator
+import androidx.compose.material3.ExperimentalMaterial3Api
+import androidx.compose.material3.Icon
+import androidx.compose.material3.IconButton
+import androidx.compose.material3.LinearProgressIndicator
+import androidx.compose.material3.MaterialTheme
+import androidx.compose.material3.Scaffold
+import androidx.compose.material3.Text
+import androidx.compose.material3.TopAppBar
+import androidx.compose.runtime.Composable
+import androidx.compose.runtime.getValue
+import androidx.compose.ui.Alignment
+import androidx.compose.ui.Modifier
+import androidx.compose.ui.semantics.LiveRegionMode
+import androidx.compose.ui.semantics.contentDescription
+import androidx.compose.ui.semantics.heading
+import androidx.compose.ui.semantics.liveRegion
+import androidx.compose.ui.semantics.semantics
+import androidx.compose.ui.semantics.stateDescription
+import androidx.compose.ui.unit.dp
+import androidx.lifecycle.compose.collectAsStateWithLifecycle
+import androidx.lifecycle.viewmodel.compose.viewModel
+import androidx.lifecycle.viewmodel.initializer
+import androidx.lifecycle.viewmodel.viewModelFactory
+import java.util.Locale
+import org.hapticon.app.AppContainer
+import org.hapticon.app.designsystem.HapticonIcons
+import org.hapticon.app.ui.SwitchRow
+
+/** The handshake view wired to its [HandshakeViewModel]. */
+@Composable
+fun HandshakeRoute(container: AppContainer, onBack: () -> Unit) {
+    val viewModel: HandshakeViewModel = viewModel(
+        factory = viewModelFactory {
+            initializer { HandshakeViewModel(container.glove, container.calibrations, container.vibration, container.simulatedPartner()) }
+        },
+    )
+    val uiState by viewModel.uiState.collectAsStateWithLifecycle()
+    HandshakeScreen(uiState, onBack, viewModel::setSimulatedPartner, viewModel::setVibration)
+}
+
+/** Live angles of both hands, whether the handshake is on, and the pressure on each hand region. */
+@OptIn(ExperimentalMaterial3Api::class)
+@Composable
+fun HandshakeScreen(
+    uiState: HandshakeUiState,
+    onBack: () -> Unit,
+    onSimulatedPartner: (Boolean) -> Unit,
+    onVibration: (Boolean) -> Unit,
+) {
+    Scaffold(
+        topBar = {
+            TopAppBar(
+                title = { Text("Handshake") },
+                navigationIcon = { IconButton(onClick = onBack) { Icon(HapticonIcons.ArrowBack, contentDescription = "Back") } },
+            )
+        },
+    ) { padding ->
+        when (uiState) {
+            HandshakeUiState.Loading -> Box(Modifier.fillMaxSize().padding(padding), Alignment.Center) { CircularProgressIndicator() }
+            is HandshakeUiState.Ready -> Column(
+                Modifier.fillMaxSize().padding(padding).verticalScroll(rememberScrollState()).padding(16.dp),
+                verticalArrangement = Arrangement.spacedBy(12.dp),
+            ) {
+                if (!uiState.connected) {
+                    Card(colors = CardDefaults.cardColors(containerColor = MaterialTheme.colorScheme.surfaceVariant)) {
+                        Text(
+                            "No glove is streaming. Connect it on the Sensors screen first.",
+                            modifier = Modifier.padding(12.dp),
+                            style = MaterialTheme.typography.bodyMedium,
+                        )
+                    }
+                }
+                SwitchRow("Simulated partner", uiState.simulatedPartner, onSimulatedPartner)
+                SwitchRow("Phone vibration", uiState.vibrationEnabled, onVibration)
+                val status = if (uiState.active) "Handshake active" else "No handshake"
+                Card(
+                    colors = if (uiState.active) {
+                        CardDefaults.cardColors(containerColor = MaterialTheme.colorScheme.primaryContainer)
+                    } else {
+                        CardDefaults.cardColors(containerColor = MaterialTheme.colorScheme.surfaceVariant)
+                    },
+                    modifier = Modifier.fillMaxWidth().semantics { liveRegion = LiveRegionMode.Polite },
+                ) {
+                    Column(Modifier.padding(16.dp)) {
+                        Text(status, style = MaterialTheme.typography.headlineSmall)
+                        Text(
+                            if (uiState.phoneAmplitude > 0) "Phone vibrates at ${uiState.phoneAmplitude}/255" else "Phone vibrator still",
+                            style = MaterialTheme.typography.bodyMedium,
+                        )
+                    }
+                }
+                Hands(uiState)
+                Text("Pressure per region", style = MaterialTheme.typography.titleMedium, modifier = Modifier.semantics { heading() })
+                for (region in uiState.regions) RegionRow(region)
+                val calibration = when {
+                    uiState.thumbCalibrated && uiState.middleCalibrated -> "Angles use ${uiState.user}'s calibration."
+                    !uiState.thumbCalibrated && !uiState.middleCalibrated -> "Angles use the study's mean calibration: calibrate ${uiState.user}'s glove for accurate angles."
+                    else -> "Angles use ${uiState.user}'s calibration where there is one, the study's mean otherwise."
+                }
+                Text(calibration, style = MaterialTheme.typography.bodySmall)
+            }
+        }
+    }
+}
+
+@Composable
+private fun Hands(state: HandshakeUiState.Ready) {
+    Column(verticalArrangement = Arrangement.spacedBy(4.dp)) {
+        Text("Angles", style = MaterialTheme.typography.titleMedium, modifier = Modifier.semantics { heading() })
+        Row(Modifier.fillMaxWidth(), horizontalArrangement = Arrangement.SpaceBetween) {
+            Text("You", style = MaterialTheme.typography.labelLarge)
+            Text(
+                "thumb ${angle(state.selfThumbDegrees, state.thumbFault)} · middle ${angle(state.selfMiddleDegrees, state.middleFault)}",
+                style = MaterialTheme.typography.bodyMedium,
+            )
+        }
+        Row(Modifier.fillMaxWidth(), horizontalArrangement = Arrangement.SpaceBetween) {
+            Text(if (state.simulatedPartner) "Partner (simulated)" else "Partner", style = MaterialTheme.typography.labelLarge)
+            Text(
+                "thumb ${angle(state.partnerThumbDegrees, false)} · middle ${angle(state.partnerMiddleDegrees, false)}",
+                style = MaterialTheme.typography.bodyMedium,
+            )
+        }
+    }
+}
+
+@Composable
+private fun RegionRow(region: RegionUi) {
+    val name = region.region.label.replaceFirstChar { it.titlecase(Locale.ROOT) }
+    val pressure = "%.2f V".format(Locale.ROOT, region.pressureVolts)
+    Column(Modifier.fillMaxWidth().semantics(mergeDescendants = true) {}) {
+        Row(Modifier.fillMaxWidth(), horizontalArrangement = Arrangement.SpaceBetween) {
+            Text(name, style = MaterialTheme.typography.labelLarge)
+            Text(pressure, style = MaterialTheme.typography.labelLarge)
+        }
+        LinearProgressIndicator(
+            progress = { region.level },
+            modifier = Modifier.fillMaxWidth().semantics {
+                contentDescription = "$name pressure"
+                stateDescription = pressure
+            },
+        )
+    }
+}
+
+private fun angle(degrees: Double, fault: Boolean): String = if (fault) "fault" else "%.1f°".format(Locale.ROOT, degrees)

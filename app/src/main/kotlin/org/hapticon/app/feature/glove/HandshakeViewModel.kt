@@ -1,0 +1,212 @@
+package org.hapticon.app.feature.glove
+
+import androidx.lifecycle.ViewModel
+import androidx.lifecycle.viewModelScope
+import kotlinx.coroutines.ExperimentalCoroutinesApi
+import kotlinx.coroutines.delay
+import kotlinx.coroutines.flow.Flow
+import kotlinx.coroutines.flow.MutableStateFlow
+import kotlinx.coroutines.flow.SharingStarted
+import kotlinx.coroutines.flow.StateFlow
+import kotlinx.coroutines.flow.combine
+import kotlinx.coroutines.flow.flatMapLatest
+import kotlinx.coroutines.flow.flow
+import kotlinx.coroutines.flow.flowOf
+import kotlinx.coroutines.flow.launchIn
+import kotlinx.coroutines.flow.onEach
+import kotlinx.coroutines.flow.stateIn
+import org.hapticon.app.playback.ContinuousVibration
+import org.hapticon.app.playback.VibrationOutput
+import org.hapticon.app.sensors.CalibrationStore
+import org.hapticon.app.sensors.GloveListener
+import org.hapticon.app.sensors.GloveSource
+import org.hapticon.app.sensors.NoPartner
+import org.hapticon.app.sensors.PartnerHand
+import org.hapticon.sensor.glove.DividerReading
+import org.hapticon.sensor.glove.FlexCalibration
+import org.hapticon.sensor.glove.GloveFinger
+import org.hapticon.sensor.glove.HandRegion
+import org.hapticon.sensor.glove.HandshakeSession
+
+/**
+ * A tele-handshake for one glove: the wearer's thumb and middle angles (from the glove, through the
+ * current user's calibration), the partner's angles from a [PartnerHand] (the simulated one while
+ * the toggle is on; the messaging task plugs in a network partner through [setPartner]), and
+ * sensor-bridge's [HandshakeSession] turning both into per-region pressures.
+ *
+ * The phone has no force-feedback glove here, so the pressure drives the phone's vibrator instead:
+ * the largest region amplitude ([org.hapticon.sensor.glove.VibrationMapping]) through a
+ * [ContinuousVibration] (rate-limited to 20 updates/s, each update a 250 ms one-shot so it dies out
+ * by itself, capped by the safety limits). Everything per sample runs on the sensor's reading
+ * thread without allocating (the divider reading aside); the UI copies a snapshot every
+ * [refreshMillis].
+ */
+@OptIn(ExperimentalCoroutinesApi::class)
+class HandshakeViewModel(
+    private val glove: GloveSource,
+    private val store: CalibrationStore,
+    vibration: VibrationOutput,
+    private val simulatedPartner: PartnerHand,
+    private val clock: () -> Long = System::nanoTime,
+    private val refreshMillis: Long = 33,
+) : ViewModel() {
+    private val lock = Any()
+    private val session = HandshakeSession()
+    private val continuous = ContinuousVibration(vibration)
+    private val regions = HandRegion.entries.size
+
+    // Written on the reading thread under lock.
+    private val pressures = DoubleArray(regions)
+    private val actuatorAngles = DoubleArray(regions)
+    private val servos = IntArray(regions)
+    private val amplitudes = IntArray(regions)
+    private val partnerAngles = DoubleArray(2)
+    private var selfThumb = 0.0
+    private var selfMiddle = 0.0
+    private var thumbFault = false
+    private var middleFault = false
+    private var active = false
+    private var samples = 0L
+
+    @Volatile private var thumbCalibration = FlexCalibration.THUMB_DEFAULT
+    @Volatile private var middleCalibration = FlexCalibration.MIDDLE_DEFAULT
+    @Volatile private var partner: PartnerHand = NoPartner
+    @Volatile private var vibrate = true
+
+    private val simulated = MutableStateFlow(false)
+    private val vibrationOn = MutableStateFlow(true)
+    private val calibrationSource = MutableStateFlow(CalibrationSource(false, false))
+
+    private val listener = GloveListener { thumbVolts, middleVolts, _ -> onSample(thumbVolts, middleVolts, clock()) }
+    private val registration = glove.addListener(listener)
+
+    private val ticks: Flow<Unit> = glove.connected.flatMapLatest { if (it) ticker(refreshMillis) else flowOf(Unit) }
+
+    val uiState: StateFlow<HandshakeUiState> =
+        combine(glove.connected, simulated, vibrationOn, combine(store.currentUser, calibrationSource, ::Pair), ticks) {
+                connected, sim, vib, (user, source), _ ->
+            snapshot(connected, sim, vib, user, source)
+        }.stateIn(viewModelScope, SharingStarted.WhileSubscribed(5_000), HandshakeUiState.Loading)
+
+    init {
+        // The wearer's calibration: reloaded whenever the user changes or a calibration is saved.
+        combine(store.currentUser, store.revision, ::Pair).onEach { (user, _) ->
+            val thumb = store.load(user, GloveFinger.THUMB)
+            val middle = store.load(user, GloveFinger.MIDDLE)
+            thumbCalibration = thumb?.calibration ?: FlexCalibration.THUMB_DEFAULT
+            middleCalibration = middle?.calibration ?: FlexCalibration.MIDDLE_DEFAULT
+            calibrationSource.value = CalibrationSource(thumb != null, middle != null)
+        }.launchIn(viewModelScope)
+        // Nothing streams: nothing may keep vibrating.
+        glove.connected.onEach { if (!it) synchronized(lock) { continuous.stop() } }.launchIn(viewModelScope)
+    }
+
+    /** Plays against the simulated partner, or against nobody (an open hand). */
+    fun setSimulatedPartner(enabled: Boolean) {
+        simulated.value = enabled
+        setPartner(if (enabled) simulatedPartner else NoPartner)
+    }
+
+    /** Plays against [hand]; the messaging task's network partner comes in here. */
+    fun setPartner(hand: PartnerHand) {
+        partner = hand
+    }
+
+    /** Whether the pressure drives the phone's vibrator. */
+    fun setVibration(enabled: Boolean) {
+        vibrationOn.value = enabled
+        vibrate = enabled
+        if (!enabled) synchronized(lock) { continuous.stop() }
+    }
+
+    override fun onCleared() {
+        registration.close()
+        synchronized(lock) { continuous.stop() }
+    }
+
+    private fun onSample(thumbVolts: Double, middleVolts: Double, now: Long) {
+        synchronized(lock) {
+            val thumb = glove.divider.resistanceOf(thumbVolts)
+            val middle = glove.divider.resistanceOf(middleVolts)
+            // A faulty finger counts as open (0°): that releases the partner's actuators.
+            thumbFault = thumb is DividerReading.Fault
+            middleFault = middle is DividerReading.Fault
+            selfThumb = if (thumb is DividerReading.Resistance) thumbCalibration.angleOf(thumb.kiloohms) else 0.0
+            selfMiddle = if (middle is DividerReading.Resistance) middleCalibration.angleOf(middle.kiloohms) else 0.0
+            partner.readAngles(now, partnerAngles)
+            active = session.computeInto(
+                selfThumb, selfMiddle, partnerAngles[0], partnerAngles[1],
+                pressures, actuatorAngles, servos, amplitudes,
+            )
+            samples++
+            var phone = 0
+            for (a in amplitudes) if (a > phone) phone = a
+            continuous.update(if (active && vibrate) phone else 0, now)
+        }
+    }
+
+    private fun snapshot(connected: Boolean, sim: Boolean, vib: Boolean, user: String, source: CalibrationSource): HandshakeUiState.Ready =
+        synchronized(lock) {
+            HandshakeUiState.Ready(
+                connected = connected,
+                simulatedPartner = sim,
+                vibrationEnabled = vib,
+                user = user,
+                thumbCalibrated = source.thumb,
+                middleCalibrated = source.middle,
+                selfThumbDegrees = selfThumb,
+                selfMiddleDegrees = selfMiddle,
+                thumbFault = thumbFault,
+                middleFault = middleFault,
+                partnerThumbDegrees = partnerAngles[0],
+                partnerMiddleDegrees = partnerAngles[1],
+                active = active,
+                regions = HandRegion.entries.map { RegionUi(it, pressures[it.ordinal], amplitudes[it.ordinal]) },
+                phoneAmplitude = continuous.currentAmplitude,
+                samples = samples,
+            )
+        }
+
+    private data class CalibrationSource(val thumb: Boolean, val middle: Boolean)
+
+    private companion object {
+        fun ticker(periodMillis: Long): Flow<Unit> = flow {
+            while (true) {
+                emit(Unit)
+                delay(periodMillis)
+            }
+        }
+    }
+}
+
+/** One hand region's interaction pressure (V) and its vibration amplitude (0..255). */
+data class RegionUi(val region: HandRegion, val pressureVolts: Double, val amplitude: Int) {
+    /** Where the pressure lies in the region's range, 0..1 (0 outside a handshake). */
+    val level: Float
+        get() = if (pressureVolts <= 0.0) 0f else ((pressureVolts - region.minPressureVolts) / region.pressureRangeVolts).coerceIn(0.0, 1.0).toFloat()
+}
+
+/** What the handshake screen shows. */
+sealed interface HandshakeUiState {
+    data object Loading : HandshakeUiState
+
+    data class Ready(
+        val connected: Boolean,
+        val simulatedPartner: Boolean,
+        val vibrationEnabled: Boolean,
+        val user: String,
+        val thumbCalibrated: Boolean,
+        val middleCalibrated: Boolean,
+        val selfThumbDegrees: Double,
+        val selfMiddleDegrees: Double,
+        val thumbFault: Boolean,
+        val middleFault: Boolean,
+        val partnerThumbDegrees: Double,
+        val partnerMiddleDegrees: Double,
+        val active: Boolean,
+        val regions: List<RegionUi>,
+        /** What the phone's vibrator plays now, 0 when still. */
+        val phoneAmplitude: Int,
+        val samples: Long,
+    ) : HandshakeUiState
+}

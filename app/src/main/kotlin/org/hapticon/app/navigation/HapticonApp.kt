@@ -1,0 +1,58 @@
+package org.hapticon.app.navigation
+
+import androidx.compose.foundation.layout.Box
+import androidx.compose.foundation.layout.consumeWindowInsets
+import androidx.compose.foundation.layout.fillMaxSize
+import androidx.compose.foundation.layout.padding
+import androidx.compose.material3.Icon
+import androidx.compose.material3.NavigationBar
+import androidx.compose.material3.NavigationBarItem
+import androidx.compose.material3.Scaffold
+import androidx.compose.material3.Text
+import androidx.compose.runtime.Composable
+import androidx.compose.runtime.saveable.rememberSaveableStateHolder
+import androidx.compose.ui.Modifier
+import org.hapticon.app.AppContainer
+import org.hapticon.app.feature.chat.ChatsRoute
+import org.hapticon.app.feature.icons.IconsRoute
+import org.hapticon.app.feature.sensors.SensorsRoute
+
+/**
+ * The app's frame: the bottom navigation bar and the selected destination. State-based on purpose
+ * (two, soon three, flat destinations need no back stack); each destination keeps its saveable UI
+ * state while another is shown.
+ */
+@Composable
+fun HapticonApp(
+    container: AppContainer,
+    selected: TopLevelDestination,
+    onSelect: (TopLevelDestination) -> Unit,
+) {
+    val saveableStates = rememberSaveableStateHolder()
+    Scaffold(
+        bottomBar = {
+            NavigationBar {
+                for (destination in TopLevelDestination.entries) {
+                    NavigationBarItem(
+                        selected = destination == selected,
+                        onClick = { onSelect(destination) },
+                        // The label names the item for accessibility; the icon is decoration.
+                        icon = { Icon(destination.icon, contentDescription = null) },
+                        label = { Text(destination.label) },
+                    )
+                }
+            }
+        },
+    ) { padding ->
+        Box(Modifier.fillMaxSize().padding(padding).consumeWindowInsets(padding)) {
+            saveableStates.SaveableStateProvider(selected.name) {
+                when (selected) {
+                    // A container built without chat (some tests) shows an empty Chats destination.
+                    TopLevelDestination.CHATS -> container.chat?.let { ChatsRoute(it) }
+                    TopLevelDestination.ICONS -> IconsRoute(container)
+                    TopLevelDestination.SENSORS -> SensorsRoute(container)
+                }
+            }
+        }
+    }
+}

@@ -1,0 +1,88 @@
+package org.hapticon.app.sensors
+
+import android.app.PendingIntent
+import android.content.Context
+import android.hardware.usb.UsbDevice
+import android.hardware.usb.UsbManager
+import java.io.IOException
+import kotlinx.coroutines.flow.Flow
+import kotlinx.coroutines.flow.map
+import kotlinx.coroutines.flow.onStart
+import org.hapticon.sensor.port.LineSettings
+import org.hapticon.sensor.port.SerialPort
+import org.hapticon.sensor.usb.AttachedSerialDevice
+import org.hapticon.sensor.usb.UsbDeviceMonitor
+import org.hapticon.sensor.usb.UsbPermissionDeniedException
+import org.hapticon.sensor.usb.UsbPermissionRequester
+import org.hapticon.sensor.usb.UsbSensorOpener
+import org.hapticon.sensor.usb.hasUsbHost
+
+/**
+ * [UsbDevices] on the phone's USB host, through sensor-bridge's [UsbDeviceMonitor] (attach and detach),
+ * [UsbPermissionRequester] (the system dialog) and [UsbSensorOpener].
+ *
+ * The monitor starts when [devices] is first collected, so an app that never opens the Sensors screen
+ * registers no receiver.
+ *
+ * @param askSystem shows the permission dialog; [UsbManager.requestPermission] unless a test replaces it.
+ */
+class AndroidUsbDevices(
+    context: Context,
+    private val usbManager: UsbManager = context.getSystemService(UsbManager::class.java),
+    askSystem: ((UsbDevice, PendingIntent) -> Unit)? = null,
+) : UsbDevices {
+    private val appContext: Context = context.applicationContext ?: context
+    private val monitor = UsbDeviceMonitor(appContext, usbManager)
+    private val permissions = if (askSystem == null) {
+        UsbPermissionRequester(appContext, usbManager)
+    } else {
+        UsbPermissionRequester(appContext, usbManager, askSystem)
+    }
+    private val opener = UsbSensorOpener(usbManager, permissions, monitor)
+    private var started = false
+
+    override val hasUsbHost: Boolean get() = hasUsbHost(appContext)
+
+    override val devices: Flow<List<SensorDevice>> =
+        monitor.devices.onStart { start() }.map { list -> list.map { it.toSensorDevice() } }
+
+    override fun currentDevices(): List<SensorDevice> {
+        start()
+        return monitor.devices.value.map { it.toSensorDevice() }
+    }
+
+    override fun refresh() {
+        // UsbDeviceMonitor re-reads the system's list only in start() and on its own broadcasts; a
+        // restart re-reads it without losing detach listeners. (A public refresh() would be nicer.)
+        if (started) monitor.close()
+        started = false
+        start()
+    }
+
+    override suspend fun requestPermission(device: SensorDevice): Boolean =
+        permissions.awaitPermission(usbDevice(device))
+
+    override suspend fun open(device: SensorDevice, settings: LineSettings): SerialPort = try {
+        opener.open(usbDevice(device), settings)
+    } catch (e: UsbPermissionDeniedException) {
+        throw UsbAccessDeniedException(device)
+    }
+
+    private fun start() {
+        if (started) return
+        started = true
+        monitor.start()
+    }
+
+    private fun usbDevice(device: SensorDevice): UsbDevice =
+        monitor.devices.value.firstOrNull { it.device.deviceName == device.id }?.device
+            ?: throw IOException("USB device ${device.usbIds} is no longer plugged in")
+}
+
+private fun AttachedSerialDevice.toSensorDevice() = SensorDevice(
+    id = device.deviceName,
+    chipFamily = driver.chipFamily,
+    vendorId = device.vendorId,
+    productId = device.productId,
+    productName = device.productName,
+)

@@ -1,0 +1,116 @@
+package org.hapticon.app.sensors
+
+import java.io.Closeable
+import java.util.concurrent.CopyOnWriteArrayList
+import kotlinx.coroutines.flow.Flow
+import kotlinx.coroutines.flow.MutableStateFlow
+import kotlinx.coroutines.flow.StateFlow
+import kotlinx.coroutines.flow.asStateFlow
+import kotlinx.coroutines.flow.map
+import org.hapticon.sensor.glove.AdcScale
+import org.hapticon.sensor.glove.FlexDivider
+import org.hapticon.sensor.protocol.framed.ChannelUnit
+
+/** Hears the glove's thumb and middle flex sensors, on the sensor's reading thread. */
+fun interface GloveListener {
+    /**
+     * One sample: each finger's divider output in volts (see [FlexDivider]), or NaN when the sample
+     * carried no valid value for it (an ADC count out of range, a missing channel).
+     */
+    fun onGloveSample(thumbVolts: Double, middleVolts: Double, receivedNanos: Long)
+}
+
+/** A flex-sensor glove's thumb and middle finger, whatever board and protocol carry them. */
+interface GloveSource {
+    /** Whether a glove stream is running. */
+    val connected: Flow<Boolean>
+
+    /** The voltage divider the flex sensors sit in. */
+    val divider: FlexDivider
+
+    /** Calls [listener] with every sample from now on; close the handle to stop. */
+    fun addListener(listener: GloveListener): Closeable
+}
+
+/**
+ * Which channels carry the glove's thumb and middle finger, and the ADC resolution of counts. Null
+ * means the protocol's default: LucidGloves thumb A, middle C, 12 bit (ESP32); CSV and framed
+ * channels 0 and 1, 10 bit (framed boards announce their resolution).
+ */
+data class GloveChannels(val thumb: Int? = null, val middle: Int? = null, val adcBits: Int? = null) {
+    fun thumbFor(@Suppress("UNUSED_PARAMETER") protocol: SensorProtocol): Int = thumb ?: 0
+    fun middleFor(protocol: SensorProtocol): Int = middle ?: if (protocol == SensorProtocol.LUCID_GLOVES) 2 else 1
+    fun adcBitsFor(info: StreamInfo): Int = adcBits ?: info.adcBits ?: if (info.protocol == SensorProtocol.LUCID_GLOVES) 12 else 10
+}
+
+/**
+ * The glove as the [SensorHub]'s stream carries it: the chosen channels' ADC counts (or millivolts,
+ * for framed channels in mV) become divider voltages. Channels that already hold angles (framed
+ * centidegrees) are not flex-sensor voltages and read as NaN here.
+ */
+class HubGloveSource(
+    hub: SensorHub,
+    override val divider: FlexDivider = FlexDivider(),
+) : GloveSource, FrameListener {
+    private val listeners = CopyOnWriteArrayList<GloveListener>()
+    private val mutableChannels = MutableStateFlow(GloveChannels())
+    private val lastError = MutableStateFlow<String?>(null)
+    private var scaleBits = 0
+    private var scale: AdcScale? = null
+
+    init {
+        hub.addFrameListener(this)
+    }
+
+    override val connected: Flow<Boolean> = hub.state.map { it is ConnectionState.Streaming }
+
+    /** Why a glove listener was dropped, if one failed. */
+    val listenerError: StateFlow<String?> = lastError.asStateFlow()
+
+    /** The channel choice; see [GloveChannels]. */
+    val channels: StateFlow<GloveChannels> = mutableChannels.asStateFlow()
+
+    fun setChannels(channels: GloveChannels) {
+        mutableChannels.value = channels
+    }
+
+    override fun addListener(listener: GloveListener): Closeable {
+        listeners += listener
+        return Closeable { listeners -= listener }
+    }
+
+    override fun onFrame(frame: LiveFrame, info: StreamInfo) {
+        if (listeners.isEmpty()) return
+        val choice = mutableChannels.value
+        val bits = choice.adcBitsFor(info)
+        if (bits != scaleBits) {
+            scale = AdcScale(bits.coerceIn(AdcScale.MIN_BITS, AdcScale.MAX_BITS), divider.supplyVolts)
+            scaleBits = bits
+        }
+        val thumb = volts(frame, info, choice.thumbFor(info.protocol))
+        val middle = volts(frame, info, choice.middleFor(info.protocol))
+        for (listener in listeners) {
+            try {
+                listener.onGloveSample(thumb, middle, frame.receivedNanos)
+            } catch (e: RuntimeException) {
+                // One failing screen must not take the glove away from the others.
+                listeners -= listener
+                lastError.value = e.message ?: e.javaClass.simpleName
+            }
+        }
+    }
+
+    private fun volts(frame: LiveFrame, info: StreamInfo, channel: Int): Double {
+        if (channel !in 0 until frame.channelCount) return Double.NaN
+        val value = frame[channel]
+        return when (info.channelUnits?.getOrNull(channel)) {
+            ChannelUnit.MILLIVOLT -> value / 1000.0
+            ChannelUnit.CENTIDEGREE, ChannelUnit.GRAM, ChannelUnit.MILLINEWTON, ChannelUnit.UNKNOWN -> Double.NaN
+            ChannelUnit.RAW, null -> {
+                val adc = scale ?: return Double.NaN
+                val counts = value.toInt()
+                if (counts.toDouble() != value || !adc.isValid(counts)) Double.NaN else adc.voltsOf(counts)
+            }
+        }
+    }
+}

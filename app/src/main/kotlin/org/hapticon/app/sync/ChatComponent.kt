@@ -1,0 +1,76 @@
+package org.hapticon.app.sync
+
+import android.content.Context
+import kotlinx.coroutines.CoroutineScope
+import kotlinx.coroutines.Dispatchers
+import kotlinx.coroutines.SupervisorJob
+import org.hapticon.app.data.ChatRepository
+import org.hapticon.app.data.ChatSettingsRepository
+import org.hapticon.app.data.OfflineFirstChatRepository
+import org.hapticon.app.data.RoomIconRepository
+import org.hapticon.app.data.SharedPreferencesChatSettings
+import org.hapticon.app.data.database.HapticonDatabase
+import org.hapticon.app.playback.AdaptiveHapticPlayer
+import org.hapticon.app.playback.AdaptiveRenderer
+import org.hapticon.app.playback.DeviceCapabilities
+import org.hapticon.app.playback.RendererChoice
+import org.hapticon.app.playback.defaultVibrator
+import org.hapticon.core.HapticIcon
+import org.hapticon.messaging.Clock
+import org.hapticon.messaging.Messenger
+import org.hapticon.messaging.VibrationRateLimiter
+import org.hapticon.messaging.mqtt.BrokerAddress
+import org.hapticon.messaging.mqtt.MqttMessenger
+import org.hapticon.messaging.mqtt.MqttSettings
+
+/** Everything the chat feature needs, built once in the [org.hapticon.app.AppContainer]. */
+class ChatComponent(
+    val repository: ChatRepository,
+    val icons: RoomIconRepository,
+    val settings: ChatSettingsRepository,
+    val sync: ChatSync,
+    val player: AdaptiveHapticPlayer,
+    val device: DeviceCapabilities,
+) {
+    /** The renderer the user's override or the automatic choice gives [icon] here. */
+    fun localRenderer(icon: HapticIcon): AdaptiveRenderer = player.rendererFor(icon)
+
+    companion object {
+        fun create(context: Context, scope: CoroutineScope = CoroutineScope(SupervisorJob() + Dispatchers.Default)): ChatComponent {
+            val db = HapticonDatabase.create(context)
+            val repository = OfflineFirstChatRepository(db)
+            val settings = SharedPreferencesChatSettings(context)
+            val vibrator = defaultVibrator(context)
+            val device = DeviceCapabilities.detect(context, vibrator)
+            val override = { settings.preferences.value.rendererOverride?.let { name -> AdaptiveRenderer.entries.firstOrNull { it.name == name } } }
+            val player = AdaptiveHapticPlayer(vibrator, { device }, override)
+            val deviceId = deviceId(context)
+            val sync = ChatSync(
+                repository = repository,
+                outbox = repository,
+                settings = settings,
+                messengerFactory = { user, broker -> mqttMessenger(user, broker, deviceId) },
+                player = player,
+                rateLimiter = VibrationRateLimiter(Clock.MONOTONIC),
+                localCapabilities = { user -> RendererChoice.capabilitiesOf(user, device, override()) },
+                scope = scope,
+            )
+            return ChatComponent(repository, RoomIconRepository(db.iconDao()), settings, sync, player, device)
+        }
+
+        private fun mqttMessenger(user: String, broker: String, deviceId: String): Messenger? = try {
+            MqttMessenger(MqttSettings(BrokerAddress.parse(broker), user, deviceId))
+        } catch (e: IllegalArgumentException) {
+            android.util.Log.w("ChatComponent", "no messenger for $user at $broker: ${e.message}")
+            null
+        }
+
+        /** A stable id for this installation (the MQTT session is per user and device). */
+        private fun deviceId(context: Context): String {
+            val prefs = context.getSharedPreferences("device", Context.MODE_PRIVATE)
+            return prefs.getString("id", null) ?: ("android-" + java.util.UUID.randomUUID().toString().take(8)).also {
+                prefs.edit().putString("id", it).apply()
+            }
+        }
+    }
+}

@@ -1,0 +1,182 @@
+package org.hapticon.app.sync
+
+import android.util.Log
+import kotlinx.coroutines.CoroutineScope
+import kotlinx.coroutines.Job
+import kotlinx.coroutines.flow.MutableStateFlow
+import kotlinx.coroutines.flow.StateFlow
+import kotlinx.coroutines.flow.asStateFlow
+import kotlinx.coroutines.flow.collectLatest
+import kotlinx.coroutines.flow.distinctUntilChanged
+import kotlinx.coroutines.flow.map
+import kotlinx.coroutines.flow.update
+import kotlinx.coroutines.launch
+import kotlinx.coroutines.runBlocking
+import org.hapticon.app.data.ChatPreferences
+import org.hapticon.app.data.ChatRepository
+import org.hapticon.app.data.ChatSettingsRepository
+import org.hapticon.app.playback.HapticPlayer
+import org.hapticon.messaging.Capabilities
+import org.hapticon.messaging.ChatMessage
+import org.hapticon.messaging.Clock
+import org.hapticon.messaging.ConnectionState
+import org.hapticon.messaging.InboxEvent
+import org.hapticon.messaging.InboxListener
+import org.hapticon.messaging.Messenger
+import org.hapticon.messaging.Outbox
+import org.hapticon.messaging.OutboxSender
+import org.hapticon.messaging.Receipt
+import org.hapticon.messaging.ReceiptState
+import org.hapticon.messaging.RetryPolicy
+import org.hapticon.messaging.VibrationDecision
+import org.hapticon.messaging.VibrationRateLimiter
+import kotlinx.coroutines.coroutineScope
+
+/**
+ * The background sync: while the user has an account, keeps a [Messenger] connected, drains the Room
+ * outbox through an [OutboxSender] (retries with backoff), stores what arrives exactly once, answers with
+ * delivered receipts (and read receipts for the open conversation), records receipts for own messages,
+ * remembers peers' capabilities and, when the user enabled it, plays arriving icons within
+ * [rateLimiter]'s limits. Runs in the application scope from app start ([start]).
+ *
+ * Hostile input never gets past the messaging codec: a rejected payload is logged and has no effect.
+ */
+class ChatSync(
+    private val repository: ChatRepository,
+    private val outbox: Outbox,
+    private val settings: ChatSettingsRepository,
+    /** Makes the messenger for an account; null when the settings cannot make one (a bad broker URL). */
+    private val messengerFactory: (user: String, brokerUrl: String) -> Messenger?,
+    private val player: HapticPlayer,
+    private val rateLimiter: VibrationRateLimiter,
+    /** What this device can do, published as the user's retained capabilities. */
+    private val localCapabilities: (user: String) -> Capabilities,
+    private val scope: CoroutineScope,
+    private val clock: Clock = Clock.SYSTEM,
+    private val retryPolicy: RetryPolicy = RetryPolicy(),
+) {
+    private val connectionState = MutableStateFlow<ConnectionState>(ConnectionState.Disconnected)
+    private val peers = MutableStateFlow<Map<String, Capabilities>>(emptyMap())
+    private val openConversations = MutableStateFlow<Set<String>>(emptySet())
+    private var job: Job? = null
+
+    @Volatile
+    private var session: Session? = null
+
+    private class Session(val messenger: Messenger, val sender: OutboxSender)
+
+    /** The connection of the current account, Disconnected without one. */
+    val connection: StateFlow<ConnectionState> = connectionState.asStateFlow()
+
+    /** The latest capabilities each peer published (retained on the broker, so known soon after connecting). */
+    val peerCapabilities: StateFlow<Map<String, Capabilities>> = peers.asStateFlow()
+
+    /** Starts syncing; reconnects with a new messenger whenever the user name or broker changes. Idempotent. */
+    fun start() {
+        if (job != null) return
+        job = scope.launch {
+            settings.preferences
+                .map { it.userName to it.brokerUrl }
+                .distinctUntilChanged()
+                .collectLatest { (user, broker) ->
+                    if (user == null) return@collectLatest
+                    val messenger = messengerFactory(user, broker) ?: return@collectLatest
+                    runSession(messenger)
+                }
+        }
+    }
+
+    /** Makes the outbox sender look now, after something was composed. */
+    fun wake() {
+        session?.sender?.wake()
+    }
+
+    /** The conversation with [peer] is on screen: marks its messages read (with read receipts) until [closeConversation]. */
+    fun openConversation(peer: String) {
+        openConversations.update { it + peer }
+        scope.launch { markReadAndReceipt(peer) }
+    }
+
+    fun closeConversation(peer: String) {
+        openConversations.update { it - peer }
+    }
+
+    private suspend fun runSession(messenger: Messenger) = coroutineScope {
+        val sender = OutboxSender(outbox, messenger, retryPolicy, clock)
+        session = Session(messenger, sender)
+        try {
+            launch { messenger.state.collect { connectionState.value = it } }
+            launch {
+                messenger.state.collect { state ->
+                    if (state == ConnectionState.Connected) {
+                        runCatching { messenger.publishCapabilities(localCapabilities(messenger.user)) }
+                            .onFailure { Log.w(TAG, "publishing capabilities failed: ${it.message}") }
+                        for (peer in openConversations.value) markReadAndReceipt(peer)
+                    }
+                }
+            }
+            launch { sender.run() }
+            try {
+                // The listener runs on the messenger's delivery thread, which may block; the message is
+                // acknowledged to the broker only after it is stored, so a crash means redelivery, not loss.
+                messenger.connect(InboxListener { event -> runBlocking { handle(messenger, event) } })
+            } catch (e: Exception) {
+                if (e is kotlinx.coroutines.CancellationException) throw e
+                Log.w(TAG, "connection refused for good: ${e.message}")
+            }
+        } finally {
+            session = null
+        }
+    }
+
+    /** Handles one inbox [event]; never throws (a bad event must not stall the inbox). */
+    internal suspend fun handle(messenger: Messenger, event: InboxEvent) {
+        try {
+            when (event) {
+                is InboxEvent.MessageReceived -> onMessage(messenger, event.message)
+                is InboxEvent.ReceiptReceived -> repository.applyReceipt(event.receipt)
+                is InboxEvent.CapabilitiesReceived -> peers.update { it + (event.capabilities.user to event.capabilities) }
+                is InboxEvent.Rejected -> Log.w(TAG, "rejected payload on ${event.topic}: ${event.rejection.reason} ${event.rejection.field ?: ""} ${event.rejection.detail}")
+            }
+        } catch (e: Exception) {
+            if (e is kotlinx.coroutines.CancellationException) throw e
+            Log.e(TAG, "handling $event failed", e)
+        }
+    }
+
+    private suspend fun onMessage(messenger: Messenger, message: ChatMessage) {
+        val first = repository.receive(message)
+        // A repeat gets its receipt again (the first may have been lost) but never vibrates again.
+        sendReceipt(messenger, message.sender, Receipt(message.id, messenger.user, ReceiptState.DELIVERED, clock.nowMillis()))
+        if (!first) return
+        if (message.sender in openConversations.value) markReadAndReceipt(message.sender)
+        val icon = message.icon ?: return
+        if (!settings.preferences.value.autoPlay) return
+        val decision = rateLimiter.tryAcquire(message.sender, (icon.duration * 1000).toLong())
+        if (decision == VibrationDecision.VIBRATE) player.play(icon) else Log.i(TAG, "auto-play of ${message.id} skipped: $decision")
+    }
+
+    private suspend fun markReadAndReceipt(peer: String) {
+        val messenger = session?.messenger
+        val now = clock.nowMillis()
+        val read = repository.markRead(peer, now)
+        if (messenger != null) for (message in read) sendReceipt(messenger, peer, Receipt(message.id, messenger.user, ReceiptState.READ, now))
+    }
+
+    private suspend fun sendReceipt(messenger: Messenger, to: String, receipt: Receipt) {
+        try {
+            messenger.send(to, receipt)
+        } catch (e: Exception) {
+            if (e is kotlinx.coroutines.CancellationException) throw e
+            // Best effort: receipts are not queued; the peer's state stays one step behind.
+            Log.w(TAG, "receipt ${receipt.state} for ${receipt.messageId} not sent: ${e.message}")
+        }
+    }
+
+    private companion object {
+        const val TAG = "ChatSync"
+    }
+}
+
+/** The current preferences' account, for screens that need to know whether one is set up. */
+val ChatPreferences.hasAccount: Boolean get() = userName != null

@@ -1,0 +1,85 @@
+package org.hapticon.app.data
+
+import android.database.sqlite.SQLiteDatabase
+import androidx.room.Room
+import androidx.test.core.app.ApplicationProvider
+import java.io.File
+import kotlinx.coroutines.flow.first
+import kotlinx.coroutines.test.runTest
+import org.hapticon.app.data.database.HapticonDatabase
+import org.hapticon.app.data.database.MessageState
+import org.json.JSONObject
+import org.junit.Assert.assertEquals
+import org.junit.Assert.assertNull
+import org.junit.Test
+import org.junit.runner.RunWith
+import org.robolectric.RobolectricTestRunner
+
+/**
+ * Migrations, checked against the committed schema files. room-testing's MigrationTestHelper is not on
+ * Maven Central (only Google's Maven), so this does what it does at the SQLite level: create the v1
+ * database from the exported 1.json, fill it, and let Room open it at the current version.
+ */
+@RunWith(RobolectricTestRunner::class)
+class DatabaseMigrationTest {
+    private val context = ApplicationProvider.getApplicationContext<android.content.Context>()
+
+    @Test
+    fun migrate1To2_messageWritten_keptWithNullReadAt() = runTest {
+        val file = context.getDatabasePath("migration-test.db").also { it.parentFile!!.mkdirs(); it.delete() }
+        createFromSchema(file, version = 1)
+        SQLiteDatabase.openDatabase(file.path, null, SQLiteDatabase.OPEN_READWRITE).use { v1 ->
+            v1.execSQL("INSERT INTO conversations (peer, created_at) VALUES ('bob', 1)")
+            v1.execSQL(
+                "INSERT INTO messages (id, conversation, sender, sent_at, text, sticker, icon_json, outgoing, state) " +
+                    "VALUES ('0b7e7c1e-3f7b-4a57-9d3e-2f1c5a6b7c8d', 'bob', 'bob', 5, 'kept', 'hug', NULL, 0, 'RECEIVED')",
+            )
+        }
+
+        val db = Room.databaseBuilder(context, HapticonDatabase::class.java, file.path).allowMainThreadQueries().build()
+        try {
+            val message = db.messageDao().messages("bob").first().single()
+            assertEquals("kept", message.text)
+            assertEquals("hug", message.sticker)
+            assertEquals(MessageState.RECEIVED.name, message.state)
+            assertNull(message.readAtMillis)
+            db.messageDao().updateStateAndReadAt(message.id, MessageState.READ.name, 42)
+            assertEquals(42L, db.messageDao().message(message.id)!!.readAtMillis)
+        } finally {
+            db.close()
+        }
+    }
+
+    @Test
+    fun schema2_exported_matchesEntities() {
+        val tables = schema(2).getJSONObject("database").getJSONArray("entities")
+        val names = (0 until tables.length()).map { tables.getJSONObject(it).getString("tableName") }.sorted()
+        assertEquals(listOf("conversations", "icons", "messages", "outbox"), names)
+    }
+
+    private fun createFromSchema(file: File, version: Int) {
+        val database = schema(version).getJSONObject("database")
+        SQLiteDatabase.openOrCreateDatabase(file, null).use { db ->
+            val entities = database.getJSONArray("entities")
+            for (i in 0 until entities.length()) {
+                val entity = entities.getJSONObject(i)
+                val table = entity.getString("tableName")
+                db.execSQL(entity.getString("createSql").replace("\${TABLE_NAME}", table))
+                val indices = entity.optJSONArray("indices")
+                for (j in 0 until (indices?.length() ?: 0)) {
+                    db.execSQL(indices!!.getJSONObject(j).getString("createSql").replace("\${TABLE_NAME}", table))
+                }
+            }
+            val setup = database.getJSONArray("setupQueries")
+            for (i in 0 until setup.length()) db.execSQL(setup.getString(i))
+            db.version = version
+        }
+    }
+
+    private fun schema(version: Int): JSONObject {
+        // Tests run with the module directory or the repository root as working directory.
+        val relative = "schemas/org.hapticon.app.data.database.HapticonDatabase/$version.json"
+        val file = listOf(File(relative), File("app/$relative")).first { it.exists() }
+        return JSONObject(file.readText())
+    }
+}

@@ -1,0 +1,173 @@
+package org.hapticon.app.feature.glove
+
+import android.content.Context
+import android.os.Vibrator
+import androidx.test.core.app.ApplicationProvider
+import kotlinx.coroutines.Dispatchers
+import kotlinx.coroutines.ExperimentalCoroutinesApi
+import kotlinx.coroutines.launch
+import kotlinx.coroutines.test.StandardTestDispatcher
+import kotlinx.coroutines.test.TestScope
+import kotlinx.coroutines.test.advanceTimeBy
+import kotlinx.coroutines.test.resetMain
+import kotlinx.coroutines.test.runCurrent
+import kotlinx.coroutines.test.runTest
+import kotlinx.coroutines.test.setMain
+import org.hapticon.app.playback.RecordedVibration
+import org.hapticon.app.playback.VibratorVibrationOutput
+import org.hapticon.app.playback.defaultVibrator
+import org.hapticon.app.playback.lastVibration
+import org.hapticon.app.sensors.RecordingVibrationOutput
+import org.hapticon.app.sensors.SavedCalibration
+import org.hapticon.app.sensors.TestCalibrationStore
+import org.hapticon.app.sensors.TestClock
+import org.hapticon.app.sensors.TestGloveSource
+import org.hapticon.app.sensors.TestPartnerHand
+import org.hapticon.sensor.glove.FlexCalibration
+import org.hapticon.sensor.glove.GloveFinger
+import org.hapticon.sensor.glove.HandRegion
+import org.junit.After
+import org.junit.Assert.assertEquals
+import org.junit.Assert.assertFalse
+import org.junit.Assert.assertTrue
+import org.junit.Before
+import org.junit.Test
+import org.junit.runner.RunWith
+import org.robolectric.RobolectricTestRunner
+import org.robolectric.Shadows.shadowOf
+
+@OptIn(ExperimentalCoroutinesApi::class)
+@RunWith(RobolectricTestRunner::class)
+class HandshakeViewModelTest {
+    private val dispatcher = StandardTestDispatcher()
+    private val context = ApplicationProvider.getApplicationContext<Context>()
+    private val vibrator: Vibrator = defaultVibrator(context)
+    private val output = RecordingVibrationOutput(VibratorVibrationOutput(vibrator)) { lastVibration(vibrator) }
+    private val glove = TestGloveSource()
+    private val store = TestCalibrationStore()
+    private val partner = TestPartnerHand(thumbDegrees = 0.0, middleDegrees = 67.95)
+    private val clock = TestClock()
+    private lateinit var viewModel: HandshakeViewModel
+
+    @Before
+    fun setUp() {
+        Dispatchers.setMain(dispatcher)
+        shadowOf(vibrator).setHasAmplitudeControl(true)
+        viewModel = HandshakeViewModel(glove, store, output, simulatedPartner = partner, clock = clock)
+    }
+
+    @After
+    fun tearDown() = Dispatchers.resetMain()
+
+    private fun TestScope.grip(thumbDegrees: Double, middleDegrees: Double, thumb: FlexCalibration = FlexCalibration.THUMB_DEFAULT) {
+        glove.push(glove.voltsAt(thumbDegrees, thumb), glove.voltsAt(middleDegrees, FlexCalibration.MIDDLE_DEFAULT))
+        advanceTimeBy(40)
+        runCurrent()
+    }
+
+    private val ready get() = viewModel.uiState.value as HandshakeUiState.Ready
+
+    @Test
+    fun simulatedPartner_gripGivesTheDocumentedPressuresAndVibratesAtTheLargestRegionAmplitude() = runTest(dispatcher) {
+        backgroundScope.launch { viewModel.uiState.collect {} }
+        viewModel.setSimulatedPartner(true)
+        runCurrent()
+
+        // docs/sensor-models.md's worked example: self 50°/105°, partner 0°/67.95°.
+        grip(50.0, 105.0)
+
+        val state = ready
+        assertTrue(state.active)
+        assertEquals(50.0, state.selfThumbDegrees, 1e-9)
+        assertEquals(105.0, state.selfMiddleDegrees, 1e-9)
+        assertEquals(67.95, state.partnerMiddleDegrees, 0.0)
+        assertEquals(2.19145, state.regions[HandRegion.PALM.ordinal].pressureVolts, 1e-9)
+        assertEquals(1.9714, state.regions[HandRegion.THUMB.ordinal].pressureVolts, 1e-9)
+        // Middle: n = 0.66 → 40 + 215·0.66 = 181.9 → 182, the largest of the six regions.
+        assertEquals(182, state.phoneAmplitude)
+        assertEquals(listOf(RecordedVibration(listOf(250L), listOf(182))), output.played.toList())
+    }
+
+    @Test
+    fun amplitudeUpdates_areRateLimitedAndStopWhenTheHandshakeEnds() = runTest(dispatcher) {
+        backgroundScope.launch { viewModel.uiState.collect {} }
+        viewModel.setSimulatedPartner(true)
+        runCurrent()
+        grip(50.0, 105.0)
+
+        // 10 ms later the partner squeezes harder: too soon for another vibrator call.
+        clock.advanceMillis(10)
+        partner.middleDegrees = 105.0
+        grip(50.0, 105.0)
+        assertEquals(1, output.played.size)
+
+        // 50 ms after the first call the new level goes out.
+        clock.advanceMillis(40)
+        grip(50.0, 105.0)
+        assertEquals(2, output.played.size)
+        assertTrue(output.played.last()!!.amplitudes.single() > 182)
+
+        // Both hands open: the vibrator stops at once.
+        clock.advanceMillis(1)
+        partner.middleDegrees = 0.0
+        grip(0.0, 0.0)
+        assertFalse(ready.active)
+        assertEquals(0, ready.phoneAmplitude)
+        assertEquals(1, output.stops)
+        assertTrue(shadowOf(vibrator).isCancelled)
+    }
+
+    @Test
+    fun noPartner_isAnOpenHandAndOwnGripStillStartsTheHandshake() = runTest(dispatcher) {
+        backgroundScope.launch { viewModel.uiState.collect {} }
+        runCurrent()
+
+        grip(50.0, 40.0)
+
+        assertFalse(ready.simulatedPartner)
+        assertEquals(0.0, ready.partnerMiddleDegrees, 0.0)
+        assertTrue(ready.active)
+    }
+
+    @Test
+    fun usersSavedCalibration_turnsVoltagesIntoAngles() = runTest(dispatcher) {
+        val mine = FlexCalibration(0.02, 14.0)
+        store.save(store.currentUser.value, GloveFinger.THUMB, SavedCalibration(mine, 0.999, 0.5, 0))
+        backgroundScope.launch { viewModel.uiState.collect {} }
+        runCurrent()
+
+        grip(40.0, 0.0, thumb = mine)
+
+        assertEquals(40.0, ready.selfThumbDegrees, 1e-9)
+        assertTrue(ready.thumbCalibrated)
+        assertFalse(ready.middleCalibrated)
+    }
+
+    @Test
+    fun vibrationOff_neverVibrates() = runTest(dispatcher) {
+        backgroundScope.launch { viewModel.uiState.collect {} }
+        viewModel.setSimulatedPartner(true)
+        viewModel.setVibration(false)
+        runCurrent()
+
+        grip(50.0, 105.0)
+
+        assertTrue(ready.active)
+        assertTrue(output.played.isEmpty())
+    }
+
+    @Test
+    fun faultySensor_countsAsOpen() = runTest(dispatcher) {
+        backgroundScope.launch { viewModel.uiState.collect {} }
+        runCurrent()
+
+        glove.push(Double.NaN, glove.divider.supplyVolts)
+        advanceTimeBy(40)
+        runCurrent()
+
+        assertTrue(ready.thumbFault)
+        assertTrue(ready.middleFault)
+        assertEquals(0.0, ready.selfMiddleDegrees, 0.0)
+        assertFalse(ready.active)
+    }
+}

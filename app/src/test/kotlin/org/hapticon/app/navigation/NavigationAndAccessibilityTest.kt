@@ -1,0 +1,108 @@
+package org.hapticon.app.navigation
+
+import android.content.pm.PackageManager
+import androidx.compose.ui.semantics.SemanticsActions
+import androidx.compose.ui.semantics.SemanticsNode
+import androidx.compose.ui.semantics.SemanticsProperties
+import androidx.compose.ui.semantics.getOrNull
+import androidx.compose.ui.test.SemanticsMatcher
+import androidx.compose.ui.test.hasClickAction
+import androidx.compose.ui.test.hasScrollToNodeAction
+import androidx.compose.ui.test.hasText
+import androidx.compose.ui.test.isSelected
+import androidx.compose.ui.test.junit4.createAndroidComposeRule
+import androidx.compose.ui.test.onNodeWithContentDescription
+import androidx.compose.ui.test.onNodeWithText
+import androidx.compose.ui.test.performClick
+import androidx.compose.ui.test.performScrollToNode
+import org.hapticon.app.MainActivity
+import org.junit.Assert.assertTrue
+import org.junit.Rule
+import org.junit.Test
+import org.junit.runner.RunWith
+import org.robolectric.RobolectricTestRunner
+import org.robolectric.Shadows.shadowOf
+
+/** The bottom bar, the Sensors sub-screens and Back, and that every control has a name. */
+@RunWith(RobolectricTestRunner::class)
+class NavigationAndAccessibilityTest {
+    @get:Rule
+    val rule = createAndroidComposeRule<MainActivity>()
+
+    private fun openSensors() {
+        shadowOf(rule.activity.packageManager).setSystemFeature(PackageManager.FEATURE_USB_HOST, true)
+        rule.onNode(hasText("Sensors") and hasClickAction()).performClick()
+        rule.waitForIdle()
+    }
+
+    private fun scrollTo(matcher: SemanticsMatcher) {
+        rule.onNode(hasScrollToNodeAction()).performScrollToNode(matcher)
+    }
+
+    /** Every clickable, toggleable or adjustable node reads as something: text, a content description or both. */
+    private fun assertEveryControlIsNamed(screen: String) {
+        val controls = rule.onAllNodes(
+            hasClickAction() or SemanticsMatcher.keyIsDefined(SemanticsActions.SetProgress) or
+                SemanticsMatcher.keyIsDefined(SemanticsProperties.ToggleableState),
+        ).fetchSemanticsNodes()
+        assertTrue("$screen has no controls", controls.isNotEmpty())
+        val unnamed = controls.filter { !it.isNamed() }
+        assertTrue("$screen: unnamed controls ${unnamed.map { it.config }}", unnamed.isEmpty())
+    }
+
+    private fun SemanticsNode.isNamed(): Boolean {
+        val text = config.getOrNull(SemanticsProperties.Text)?.joinToString("").orEmpty()
+        val description = config.getOrNull(SemanticsProperties.ContentDescription)?.joinToString("").orEmpty()
+        return text.isNotBlank() || description.isNotBlank()
+    }
+
+    @Test
+    fun bottomBar_switchesBetweenIconsAndSensors() {
+        rule.onNode(hasText("Icons") and isSelected()).assertExists()
+        assertEveryControlIsNamed("Icons")
+
+        openSensors()
+
+        rule.onNode(hasText("Sensors") and isSelected()).assertExists()
+        rule.onNodeWithText("USB boards").assertExists()
+        assertEveryControlIsNamed("Sensors")
+
+        rule.onNode(hasText("Icons") and hasClickAction()).performClick()
+        rule.waitForIdle()
+        rule.onNodeWithText("Haptic icons").assertExists()
+    }
+
+    @Test
+    fun calibration_opensFromSensorsAndBackReturns() {
+        openSensors()
+        scrollTo(hasText("Calibrate glove"))
+        rule.onNodeWithText("Calibrate glove").performClick()
+        rule.waitForIdle()
+
+        rule.onNodeWithText("Glove calibration").assertExists()
+        rule.onNodeWithText("Hold 0°").assertExists()
+        rule.onNodeWithText("No glove is streaming", substring = true).assertExists()
+        assertEveryControlIsNamed("Calibration")
+
+        rule.onNodeWithContentDescription("Back").performClick()
+        rule.waitForIdle()
+        rule.onNodeWithText("USB boards").assertExists()
+    }
+
+    @Test
+    fun handshake_opensFromSensorsAndSystemBackReturns() {
+        openSensors()
+        scrollTo(hasText("Handshake"))
+        rule.onNode(hasText("Handshake") and hasClickAction()).performClick()
+        rule.waitForIdle()
+
+        rule.onNodeWithText("No handshake").assertExists()
+        rule.onNodeWithText("Simulated partner").assertExists()
+        rule.onNodeWithText("Palm").assertExists()
+        assertEveryControlIsNamed("Handshake")
+
+        rule.runOnUiThread { rule.activity.onBackPressedDispatcher.onBackPressed() }
+        rule.waitForIdle()
+        rule.onNodeWithText("USB boards").assertExists()
+    }
+}

@@ -1,0 +1,50 @@
+package org.hapticon.app.sensors
+
+import android.hardware.usb.UsbConfiguration
+import android.hardware.usb.UsbDevice
+import android.hardware.usb.UsbEndpoint
+import android.hardware.usb.UsbInterface
+import android.os.Parcelable
+import java.lang.reflect.Proxy
+
+/**
+ * Real [UsbDevice] objects for Robolectric, whose constructors are hidden from the public SDK (the
+ * same approach as sensor-bridge's usb tests; their helper is not visible from this module).
+ */
+object AndroidTestDevices {
+    private val int = Int::class.javaPrimitiveType!!
+    private val boolean = Boolean::class.javaPrimitiveType!!
+
+    private fun endpoint(address: Int, type: Int, maxPacketSize: Int): UsbEndpoint =
+        UsbEndpoint::class.java.getConstructor(int, int, int, int).newInstance(address, type, maxPacketSize, 0)
+
+    private fun usbInterface(id: Int, usbClass: Int, subclass: Int, protocol: Int, vararg endpoints: UsbEndpoint): UsbInterface {
+        val usbInterface = UsbInterface::class.java
+            .getConstructor(int, int, String::class.java, int, int, int)
+            .newInstance(id, 0, null, usbClass, subclass, protocol)
+        UsbInterface::class.java.getMethod("setEndpoints", Array<Parcelable>::class.java).invoke(usbInterface, arrayOf<Parcelable>(*endpoints))
+        return usbInterface
+    }
+
+    private fun device(name: String, vendorId: Int, productId: Int, deviceClass: Int, product: String, vararg interfaces: UsbInterface): UsbDevice {
+        val configuration = UsbConfiguration::class.java.getConstructor(int, String::class.java, int, int).newInstance(1, null, 0x80, 50)
+        UsbConfiguration::class.java.getMethod("setInterfaces", Array<Parcelable>::class.java).invoke(configuration, arrayOf<Parcelable>(*interfaces))
+        val builderClass = Class.forName("android.hardware.usb.UsbDevice\$Builder")
+        val builder = builderClass.getConstructor(
+            String::class.java, int, int, int, int, int, String::class.java, String::class.java, String::class.java,
+            Array<UsbConfiguration>::class.java, String::class.java, boolean, boolean, boolean, boolean, boolean,
+        ).newInstance(name, vendorId, productId, deviceClass, 0, 0, "Maker", product, "1.00", arrayOf(configuration), "SN1", false, false, false, false, false)
+        val readerClass = Class.forName("android.hardware.usb.IUsbSerialReader")
+        val reader = Proxy.newProxyInstance(readerClass.classLoader, arrayOf(readerClass)) { _, method, _ ->
+            if (method.name == "getSerial") "SN1" else null
+        }
+        return builderClass.getMethod("build", readerClass).invoke(builder, reader) as UsbDevice
+    }
+
+    /** Arduino Uno R3: CDC control at 0, data at 1 (OUT 0x04, IN 0x83). */
+    fun arduinoUno(name: String = "/dev/bus/usb/001/002") = device(
+        name, 0x2341, 0x0043, 0x02, "Arduino Uno",
+        usbInterface(0, 0x02, 0x02, 0x01, endpoint(0x82, 3, 8)),
+        usbInterface(1, 0x0A, 0x00, 0x00, endpoint(0x04, 2, 64), endpoint(0x83, 2, 64)),
+    )
+}

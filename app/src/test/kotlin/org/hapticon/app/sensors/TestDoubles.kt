@@ -1,0 +1,125 @@
+package org.hapticon.app.sensors
+
+import java.io.Closeable
+import java.io.IOException
+import java.util.concurrent.CopyOnWriteArrayList
+import kotlinx.coroutines.flow.Flow
+import kotlinx.coroutines.flow.MutableStateFlow
+import kotlinx.coroutines.flow.StateFlow
+import kotlinx.coroutines.flow.asStateFlow
+import org.hapticon.app.playback.PlaybackCapabilities
+import org.hapticon.app.playback.VibrationOutput
+import org.hapticon.core.render.VibrationWaveform
+import org.hapticon.sensor.glove.FlexCalibration
+import org.hapticon.sensor.glove.FlexDivider
+import org.hapticon.sensor.glove.GloveFinger
+import org.hapticon.sensor.port.LineSettings
+import org.hapticon.sensor.port.SerialPort
+
+/** An Arduino Uno as [SensorDevice]. */
+val TEST_UNO = SensorDevice("/dev/bus/usb/001/002", "CDC-ACM", 0x2341, 0x0043, "Uno")
+
+/** [UsbDevices] that lists [devices] and opens the ports a test put in [ports]. */
+class TestUsbDevices(devices: List<SensorDevice> = listOf(TEST_UNO), override val hasUsbHost: Boolean = true) : UsbDevices {
+    val deviceList = MutableStateFlow(devices)
+    val ports = mutableMapOf<String, SerialPort>()
+    var grantPermission = true
+    val opened = mutableListOf<Pair<SensorDevice, LineSettings>>()
+    var refreshes = 0
+
+    override val devices: Flow<List<SensorDevice>> = deviceList
+    override fun currentDevices(): List<SensorDevice> = deviceList.value
+    override fun refresh() {
+        refreshes++
+    }
+
+    override suspend fun requestPermission(device: SensorDevice): Boolean = grantPermission
+
+    override suspend fun open(device: SensorDevice, settings: LineSettings): SerialPort {
+        opened += device to settings
+        return ports[device.id] ?: throw IOException("no such test port")
+    }
+}
+
+/** A glove whose samples the test pushes with [push] (on the test's thread, as if it were the sensor's). */
+class TestGloveSource(connected: Boolean = true, override val divider: FlexDivider = FlexDivider()) : GloveSource {
+    val connectedFlow = MutableStateFlow(connected)
+    private val listeners = CopyOnWriteArrayList<GloveListener>()
+
+    override val connected: Flow<Boolean> = connectedFlow
+
+    override fun addListener(listener: GloveListener): Closeable {
+        listeners += listener
+        return Closeable { listeners -= listener }
+    }
+
+    fun push(thumbVolts: Double, middleVolts: Double, nanos: Long = 0) {
+        for (l in listeners) l.onGloveSample(thumbVolts, middleVolts, nanos)
+    }
+
+    /** The divider output of a flex sensor at [degrees] with [calibration]. */
+    fun voltsAt(degrees: Double, calibration: FlexCalibration): Double = divider.voltsFor(calibration.resistanceAt(degrees))
+}
+
+/** [CalibrationStore] in memory. */
+class TestCalibrationStore(user: String = CalibrationStore.DEFAULT_USER) : CalibrationStore {
+    private val users = MutableStateFlow(user)
+    private val saves = MutableStateFlow(0L)
+    val saved = mutableMapOf<Pair<String, GloveFinger>, SavedCalibration>()
+
+    override val currentUser: StateFlow<String> = users.asStateFlow()
+    override val revision: StateFlow<Long> = saves.asStateFlow()
+
+    override fun setCurrentUser(user: String) {
+        users.value = user.trim().ifEmpty { CalibrationStore.DEFAULT_USER }
+    }
+
+    override fun load(user: String, finger: GloveFinger): SavedCalibration? = synchronized(saved) { saved[user to finger] }
+
+    override fun save(user: String, finger: GloveFinger, calibration: SavedCalibration) {
+        synchronized(saved) { saved[user to finger] = calibration }
+        saves.value = saves.value + 1
+    }
+}
+
+/** A partner holding still at [thumbDegrees]/[middleDegrees]. */
+class TestPartnerHand(@Volatile var thumbDegrees: Double, @Volatile var middleDegrees: Double) : PartnerHand {
+    override val label = "Test partner"
+
+    override fun readAngles(nowNanos: Long, out: DoubleArray) {
+        out[0] = thumbDegrees
+        out[1] = middleDegrees
+    }
+}
+
+/** Passes everything to [delegate] (the Robolectric vibrator) and notes each call, with [record] reading what arrived. */
+class RecordingVibrationOutput<R>(private val delegate: VibrationOutput, private val record: () -> R) : VibrationOutput {
+    val played = CopyOnWriteArrayList<R>()
+    @Volatile var stops = 0
+
+    override val capabilities: PlaybackCapabilities get() = delegate.capabilities
+
+    override fun play(waveform: VibrationWaveform) {
+        delegate.play(waveform)
+        played += record()
+    }
+
+    override fun playLevel(amplitude: Int, durationMillis: Long) {
+        delegate.playLevel(amplitude, durationMillis)
+        played += record()
+    }
+
+    override fun stop() {
+        delegate.stop()
+        stops++
+    }
+}
+
+/** A nanosecond clock the test moves. */
+class TestClock(@Volatile var nanos: Long = 1_000_000_000L) : () -> Long {
+    override fun invoke(): Long = nanos
+
+    fun advanceMillis(millis: Long) {
+        nanos += millis * 1_000_000
+    }
+}

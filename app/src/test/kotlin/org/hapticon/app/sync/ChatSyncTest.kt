@@ -1,0 +1,202 @@
+package org.hapticon.app.sync
+
+import android.content.Context
+import android.os.Vibrator
+import androidx.room.Room
+import androidx.test.core.app.ApplicationProvider
+import kotlinx.coroutines.CoroutineScope
+import kotlinx.coroutines.Dispatchers
+import kotlinx.coroutines.SupervisorJob
+import kotlinx.coroutines.cancelAndJoin
+import kotlinx.coroutines.flow.Flow
+import kotlinx.coroutines.flow.first
+import kotlinx.coroutines.runBlocking
+import kotlinx.coroutines.withTimeout
+import org.hapticon.app.data.ChatPreferences
+import org.hapticon.app.data.InMemoryChatSettings
+import org.hapticon.app.data.OfflineFirstChatRepository
+import org.hapticon.app.data.database.HapticonDatabase
+import org.hapticon.app.data.database.MessageState
+import org.hapticon.app.data.database.OutboxEntity
+import org.hapticon.app.playback.AdaptiveHapticPlayer
+import org.hapticon.app.playback.DeviceCapabilities
+import org.hapticon.app.playback.RecordedVibration
+import org.hapticon.app.playback.RendererChoice
+import org.hapticon.app.playback.lastVibration
+import org.hapticon.core.HapticIcon
+import org.hapticon.core.io.IconJson
+import org.hapticon.messaging.ChatMessage
+import org.hapticon.messaging.Clock
+import org.hapticon.messaging.InboxEvent
+import org.hapticon.messaging.Receipt
+import org.hapticon.messaging.ReceiptState
+import org.hapticon.messaging.RetryPolicy
+import org.hapticon.messaging.VibrationRateLimiter
+import org.junit.After
+import org.junit.Assert.assertEquals
+import org.junit.Assert.assertNull
+import org.junit.Before
+import org.junit.Test
+import org.junit.runner.RunWith
+import org.robolectric.RobolectricTestRunner
+import org.robolectric.Shadows.shadowOf
+
+@RunWith(RobolectricTestRunner::class)
+class ChatSyncTest {
+    private val context = ApplicationProvider.getApplicationContext<Context>()
+    private val vibrator = context.getSystemService(Vibrator::class.java)
+    private lateinit var db: HapticonDatabase
+    private lateinit var repository: OfflineFirstChatRepository
+    private lateinit var settings: InMemoryChatSettings
+    private lateinit var messenger: TestMessenger
+    private lateinit var sync: ChatSync
+    private val scope = CoroutineScope(SupervisorJob() + Dispatchers.Default)
+    @Volatile private var now = 1_700_000_000_000L
+    private val device = DeviceCapabilities(hasVibrator = true, hasAmplitudeControl = true, apiLevel = 35)
+
+    @Before
+    fun setUp() {
+        shadowOf(vibrator).setHasAmplitudeControl(true)
+        db = Room.inMemoryDatabaseBuilder(context, HapticonDatabase::class.java).build()
+        repository = OfflineFirstChatRepository(db, clock = { now })
+        settings = InMemoryChatSettings(ChatPreferences(userName = "alice"))
+        messenger = TestMessenger("alice")
+        start(VibrationRateLimiter(Clock { now }))
+    }
+
+    private fun start(limiter: VibrationRateLimiter) {
+        sync = ChatSync(
+            repository, repository, settings, { _, _ -> messenger },
+            AdaptiveHapticPlayer(vibrator, { device }, { null }), limiter,
+            { user -> RendererChoice.capabilitiesOf(user, device, null) }, scope, clock = { now },
+            retryPolicy = RetryPolicy(initialDelayMillis = 10, maxDelayMillis = 10, jitter = 0.0),
+        )
+        sync.start()
+    }
+
+    @After
+    fun tearDown() {
+        // Stop the sync before closing the database it writes to.
+        runBlocking { scope.coroutineContext[kotlinx.coroutines.Job]!!.cancelAndJoin() }
+        db.close()
+    }
+
+    private fun <T> await(flow: Flow<T>, predicate: (T) -> Boolean): T = runBlocking { withTimeout(5_000) { flow.first(predicate) } }
+
+    @Test
+    fun send_textWithIcon_outboxDrainedAndJsonHandedToMessenger() = runBlocking {
+        await(messenger.state) { it == org.hapticon.messaging.ConnectionState.Connected }
+        val message = repository.send("alice", "bob", "feel this", icon = HapticIcon.KNOCK)
+        sync.wake()
+
+        val sent = await(messenger.sentMessages) { it.isNotEmpty() }.single()
+        assertEquals("bob", sent.first)
+        assertEquals(
+            """{"schema":"hapticon.message","version":1,"id":"${message.id}","sender":"alice","sentAt":$now,"text":"feel this","sticker":null,"icon":${IconJson.encode(HapticIcon.KNOCK)}}""",
+            sent.second,
+        )
+        await(repository.messages("bob")) { it.single().state == MessageState.SENT }
+        assertEquals(emptyList<OutboxEntity>(), db.outboxDao().pending())
+    }
+
+    @Test
+    fun send_stickerWithIcon_encodesStickerAndIcon() = runBlocking {
+        await(messenger.state) { it == org.hapticon.messaging.ConnectionState.Connected }
+        val message = repository.send("alice", "bob", "", sticker = "hug", icon = HapticIcon.HUG)
+        sync.wake()
+
+        val sent = await(messenger.sentMessages) { it.isNotEmpty() }.single()
+        assertEquals(
+            """{"schema":"hapticon.message","version":1,"id":"${message.id}","sender":"alice","sentAt":$now,"text":"","sticker":"hug","icon":${IconJson.encode(HapticIcon.HUG)}}""",
+            sent.second,
+        )
+    }
+
+    @Test
+    fun send_brokerUnreachable_staysInOutboxWithAttempts() = runBlocking {
+        messenger.failing = true
+        await(messenger.state) { it == org.hapticon.messaging.ConnectionState.Connected }
+        val message = repository.send("alice", "bob", "later")
+        sync.wake()
+
+        val entry = await(db.outboxDao().pendingStream()) { it.singleOrNull()?.attempts ?: 0 >= 1 }.single()
+        assertEquals(message.id, entry.messageId)
+        assertEquals("broker unreachable", entry.lastError)
+    }
+
+    @Test
+    fun receive_sameMessageTwice_appearsOnceAndDeliveredReceiptSent() = runBlocking {
+        await(messenger.state) { it == org.hapticon.messaging.ConnectionState.Connected }
+        val message = ChatMessage("0b7e7c1e-3f7b-4a57-9d3e-2f1c5a6b7c8d", "bob", now, "hi", icon = HapticIcon.HIT)
+
+        messenger.deliver(InboxEvent.MessageReceived(message))
+        messenger.deliver(InboxEvent.MessageReceived(message))
+
+        val stored = repository.messages("bob").first()
+        assertEquals(listOf(message.id), stored.map { it.id })
+        assertEquals(HapticIcon.HIT, stored.single().icon)
+        assertEquals(Receipt(message.id, "alice", ReceiptState.DELIVERED, now), messenger.sentReceipts.value.first().second)
+        // Auto-play is off by default: nothing vibrated.
+        assertNull(lastVibration(vibrator))
+    }
+
+    @Test
+    fun receive_conversationOpen_markedReadWithReadReceipt() = runBlocking {
+        await(messenger.state) { it == org.hapticon.messaging.ConnectionState.Connected }
+        sync.openConversation("bob")
+        val message = ChatMessage("0b7e7c1e-3f7b-4a57-9d3e-2f1c5a6b7c8d", "bob", now, "hi")
+
+        messenger.deliver(InboxEvent.MessageReceived(message))
+
+        await(messenger.sentReceipts) { receipts -> receipts.any { it.second.state == ReceiptState.READ } }
+        assertEquals(MessageState.READ, repository.messages("bob").first().single().state)
+    }
+
+    @Test
+    fun receipt_readForOwnMessage_updatesState() = runBlocking {
+        await(messenger.state) { it == org.hapticon.messaging.ConnectionState.Connected }
+        val own = repository.send("alice", "bob", "hi")
+        messenger.deliver(InboxEvent.ReceiptReceived(Receipt(own.id, "bob", ReceiptState.READ, now + 3)))
+        assertEquals(MessageState.READ, repository.messages("bob").first().single().state)
+    }
+
+    @Test
+    fun receive_hostilePayload_loggedNotStoredNoVibration() = runBlocking {
+        await(messenger.state) { it == org.hapticon.messaging.ConnectionState.Connected }
+        settings.update { it.copy(autoPlay = true) }
+
+        messenger.deliverRaw("hapticon/v1/inbox/alice", """{"schema":"hapticon.message","version":1,"id":"x"}""".toByteArray())
+        messenger.deliverRaw("hapticon/v1/inbox/alice", byteArrayOf(0xff.toByte(), 0x00))
+
+        assertEquals(emptyList<Any>(), repository.conversations().first())
+        assertNull(lastVibration(vibrator))
+    }
+
+    @Test
+    fun autoPlay_enabled_vibratesExactWaveform() = runBlocking {
+        await(messenger.state) { it == org.hapticon.messaging.ConnectionState.Connected }
+        settings.update { it.copy(autoPlay = true) }
+
+        messenger.deliver(InboxEvent.MessageReceived(ChatMessage("0b7e7c1e-3f7b-4a57-9d3e-2f1c5a6b7c8d", "bob", now, "", icon = HapticIcon.KNOCK)))
+
+        assertEquals(RecordedVibration(listOf(20L, 250L, 20L, 250L, 20L), listOf(96, 0, 96, 0, 96)), lastVibration(vibrator))
+    }
+
+    @Test
+    fun autoPlay_floodFromOneSender_vibratesOnlyBurst() = runBlocking {
+        await(messenger.state) { it == org.hapticon.messaging.ConnectionState.Connected }
+        settings.update { it.copy(autoPlay = true) }
+        var vibrations = 0
+
+        repeat(20) { i ->
+            val id = "0b7e7c1e-3f7b-4a57-9d3e-%012d".format(i)
+            vibrator.cancel()
+            messenger.deliver(InboxEvent.MessageReceived(ChatMessage(id, "mallory", now, "", icon = HapticIcon.KNOCK)))
+            if (shadowOf(vibrator).isVibrating) vibrations++
+        }
+
+        // The default limiter allows a burst of 3 per sender; the clock does not move, so no refill.
+        assertEquals(3, vibrations)
+        assertEquals(20, repository.messages("mallory").first().size)
+    }
+}
