@@ -9,7 +9,7 @@ internal class IconSampleStream(
     private val synthesizer: IconSynthesizer,
     override val sampleRate: Int,
 ) : DoubleSampleStream {
-    private val scratch = DoubleArray(SCRATCH_SAMPLES)
+    private val blocks = ScratchBlockReader(synthesizer)
 
     override val totalSamples: Long get() = synthesizer.totalSamples
     override val position: Long get() = synthesizer.position
@@ -17,24 +17,15 @@ internal class IconSampleStream(
     override fun read(destination: FloatArray, offset: Int, length: Int): Int {
         checkRange(destination.size, offset, length)
         if (position >= totalSamples) return -1
-        var written = 0
-        while (written < length) {
-            val made = synthesizer.fill(scratch, 0, minOf(SCRATCH_SAMPLES, length - written))
-            if (made == 0) break
+        return blocks.read(length) { scratch, written, made ->
             for (j in 0 until made) destination[offset + written + j] = scratch[j].toFloat()
-            written += made
         }
-        return written
     }
 
     override fun read(destination: DoubleArray, offset: Int, length: Int): Int {
         checkRange(destination.size, offset, length)
         if (position >= totalSamples) return -1
         return synthesizer.fill(destination, offset, length)
-    }
-
-    private companion object {
-        const val SCRATCH_SAMPLES = 1024
     }
 }
 

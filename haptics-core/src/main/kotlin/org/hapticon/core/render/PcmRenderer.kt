@@ -77,7 +77,7 @@ private class IconPcmStream(
     private val synthesizer: IconSynthesizer,
     override val sampleRate: Int,
 ) : PcmStream {
-    private val scratch = DoubleArray(SCRATCH_SAMPLES)
+    private val blocks = ScratchBlockReader(synthesizer)
 
     override val totalSamples: Long get() = synthesizer.totalSamples
     override val position: Long get() = synthesizer.position
@@ -85,17 +85,8 @@ private class IconPcmStream(
     override fun read(destination: ShortArray, offset: Int, length: Int): Int {
         checkRange(destination.size, offset, length)
         if (position >= totalSamples) return -1
-        var written = 0
-        while (written < length) {
-            val made = synthesizer.fill(scratch, 0, minOf(SCRATCH_SAMPLES, length - written))
-            if (made == 0) break
+        return blocks.read(length) { scratch, written, made ->
             Pcm16.convert(scratch, destination, 0, offset + written, made)
-            written += made
         }
-        return written
-    }
-
-    private companion object {
-        const val SCRATCH_SAMPLES = 1024
     }
 }
