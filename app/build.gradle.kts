@@ -31,6 +31,8 @@ dependencies {
     implementation(project(":haptics-core"))
     implementation(project(":sensor-bridge:usb"))
     implementation(project(":messaging"))
+    implementation(project(":study"))
+    implementation(project(":gesture"))
     implementation(libs.androidx.room.runtime)
     implementation(libs.androidx.room.ktx)
     ksp(libs.androidx.room.compiler)

@@ -16,6 +16,8 @@ dependencies {
     implementation(project(":sensor-bridge"))
     implementation(project(":messaging"))
     implementation(project(":messaging:broker"))
+    implementation(project(":study"))
+    implementation(project(":gesture"))
 
     testImplementation(project(":test-fixtures"))
     testImplementation(libs.junit4)

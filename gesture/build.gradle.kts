@@ -1,0 +1,16 @@
+// Touch gestures, pure Kotlin: recordings, icon extraction (envelope fit) and live recognition (random forest).
+plugins {
+    alias(libs.plugins.kotlin.jvm)
+}
+
+kotlin {
+    explicitApi()
+    jvmToolchain(libs.versions.jvmTarget.get().toInt())
+}
+
+dependencies {
+    api(project(":haptics-core"))
+
+    testImplementation(project(":test-fixtures"))
+    testImplementation(libs.junit4)
+}

@@ -1,0 +1,68 @@
+package org.hapticon.gesture
+
+/**
+ * A touch-gesture recording: equally long channels sampled together at [sampleRate] Hz. Everything the
+ * gesture module reads — a vibration-sensor WAV, an FSR or glove stream, the touchscreen and the
+ * accelerometer — becomes one of these. Samples are copied in and never change.
+ */
+public class Recording(
+    /** Samples per second of every channel; finite and positive. */
+    public val sampleRate: Double,
+    /** The channels, at least one, all of the same length. */
+    public val channels: List<Channel>,
+) {
+    init {
+        require(sampleRate.isFinite() && sampleRate > 0.0) { "sample rate must be finite and > 0 Hz, was $sampleRate" }
+        require(channels.isNotEmpty()) { "a recording needs at least one channel" }
+        val length = channels.first().size
+        require(channels.all { it.size == length }) {
+            "channels must be equally long, were ${channels.joinToString { "${it.name}=${it.size}" }}"
+        }
+        require(channels.map { it.name }.toSet().size == channels.size) { "channel names must be unique" }
+    }
+
+    /** Samples per channel. */
+    public val frameCount: Int get() = channels.first().size
+
+    /** Length in seconds. */
+    public val durationSeconds: Double get() = frameCount / sampleRate
+
+    /** The channel called [name], or null. */
+    public fun channel(name: String): Channel? = channels.firstOrNull { it.name == name }
+
+    /** The frames `[from, to)` as a new recording (trimming). */
+    public fun slice(from: Int, to: Int): Recording {
+        require(from in 0..to && to <= frameCount) { "slice [$from, $to) is outside 0..$frameCount" }
+        return Recording(sampleRate, channels.map { it.slice(from, to) })
+    }
+
+    override fun toString(): String =
+        "Recording(${channels.size} channels × $frameCount frames at $sampleRate Hz)"
+}
+
+/**
+ * One named series of a [Recording]. [unit] says what the numbers are ("N", "V", "deg", "g", "px", or
+ * "" for a normalised signal). Non-finite samples are allowed here — a CSV may hold a gap — and each
+ * consumer says how it treats them.
+ */
+public class Channel(public val name: String, public val unit: String, samples: DoubleArray) {
+    private val values: DoubleArray = samples.copyOf()
+
+    init {
+        require(name.isNotBlank()) { "a channel needs a name" }
+    }
+
+    /** Number of samples. */
+    public val size: Int get() = values.size
+
+    /** Sample [index]. */
+    public operator fun get(index: Int): Double = values[index]
+
+    /** A copy of the samples. */
+    public fun toDoubleArray(): DoubleArray = values.copyOf()
+
+    /** Samples `[from, to)` as a new channel. */
+    public fun slice(from: Int, to: Int): Channel = Channel(name, unit, values.copyOfRange(from, to))
+
+    override fun toString(): String = "Channel($name, $size samples${if (unit.isEmpty()) "" else " in $unit"})"
+}

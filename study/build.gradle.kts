@@ -1,0 +1,16 @@
+// User-study logic, pure Kotlin: protocols, counterbalancing, the hash-chained event log, export and analysis.
+plugins {
+    alias(libs.plugins.kotlin.jvm)
+}
+
+kotlin {
+    explicitApi()
+    jvmToolchain(libs.versions.jvmTarget.get().toInt())
+}
+
+dependencies {
+    api(project(":haptics-core"))
+
+    testImplementation(project(":test-fixtures"))
+    testImplementation(libs.junit4)
+}
