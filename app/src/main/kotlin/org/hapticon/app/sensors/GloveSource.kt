@@ -10,6 +10,7 @@ import kotlinx.coroutines.flow.map
 import org.hapticon.sensor.glove.AdcScale
 import org.hapticon.sensor.glove.FlexDivider
 import org.hapticon.sensor.protocol.framed.ChannelUnit
+import org.hapticon.sensor.protocol.lucid.LucidForceFeedback
 
 /** Hears the glove's thumb and middle flex sensors, on the sensor's reading thread. */
 fun interface GloveListener {
@@ -30,6 +31,15 @@ interface GloveSource {
 
     /** Calls [listener] with every sample from now on; close the handle to stop. */
     fun addListener(listener: GloveListener): Closeable
+
+    /** Whether the glove on the line takes force-feedback commands (a LucidGloves stream does). */
+    val acceptsForceFeedback: Flow<Boolean>
+
+    /**
+     * Where force-feedback servo values go: it sends them to the glove and answers true, or answers
+     * false when the glove on the line takes none. Callable from the reading thread; never blocks.
+     */
+    val forceFeedback: ForceFeedbackSink
 }
 
 /**
@@ -47,9 +57,12 @@ data class GloveChannels(val thumb: Int? = null, val middle: Int? = null, val ad
  * The glove as the [SensorHub]'s stream carries it: the chosen channels' ADC counts (or millivolts,
  * for framed channels in mV) become divider voltages. Channels that already hold angles (framed
  * centidegrees) are not flex-sensor voltages and read as NaN here.
+ *
+ * Force feedback goes back over the same line as LucidGloves commands (`A<n>B<n>C<n>D<n>E<n>`), and
+ * only while a LucidGloves stream runs: CSV and framed boards do not speak that encoding.
  */
 class HubGloveSource(
-    hub: SensorHub,
+    private val hub: SensorHub,
     override val divider: FlexDivider = FlexDivider(),
 ) : GloveSource, FrameListener {
     private val listeners = CopyOnWriteArrayList<GloveListener>()
@@ -63,6 +76,12 @@ class HubGloveSource(
     }
 
     override val connected: Flow<Boolean> = hub.state.map { it is ConnectionState.Streaming }
+
+    override val acceptsForceFeedback: Flow<Boolean> = hub.state.map(::takesForceFeedback)
+
+    override val forceFeedback: ForceFeedbackSink = ForceFeedbackSink { servoValues ->
+        takesForceFeedback(hub.state.value) && hub.send(LucidForceFeedback.encode(servoValues))
+    }
 
     /** Why a glove listener was dropped, if one failed. */
     val listenerError: StateFlow<String?> = lastError.asStateFlow()
@@ -114,3 +133,6 @@ class HubGloveSource(
         }
     }
 }
+
+private fun takesForceFeedback(state: ConnectionState): Boolean =
+    state is ConnectionState.Streaming && state.protocol == SensorProtocol.LUCID_GLOVES

@@ -3,6 +3,10 @@ package org.hapticon.app.sensors
 import java.io.Closeable
 import java.io.IOException
 import java.util.concurrent.CopyOnWriteArrayList
+import java.util.concurrent.Executor
+import java.util.concurrent.Executors
+import java.util.concurrent.atomic.AtomicLong
+import java.util.concurrent.atomic.AtomicReference
 import kotlinx.coroutines.CancellationException
 import kotlinx.coroutines.Dispatchers
 import kotlinx.coroutines.withContext
@@ -89,11 +93,15 @@ data class StreamSnapshot(
  *
  * When the stream stops (unplug, end, failure, [disconnect]) everything decoded so far stays until
  * the next [connect]. Per frame nothing is allocated here; the UI copies a [snapshot] at its own rate.
+ *
+ * Commands to the board ([send], e.g. force feedback) are written by [writer], off both the main
+ * thread and the reading thread, so a stalled USB write can neither freeze the UI nor stop the stream.
  */
 class SensorHub(
     private val usb: UsbDevices,
     private val clock: () -> Long = System::nanoTime,
     val history: ChannelHistory = ChannelHistory(),
+    private val writer: Executor = defaultWriter(),
 ) {
     private val connection = MutableStateFlow<ConnectionState>(ConnectionState.Idle)
     private val listeners = CopyOnWriteArrayList<FrameListener>()
@@ -120,12 +128,52 @@ class SensorHub(
     @Volatile private var port: SerialPort? = null
     @Volatile private var stopRequested = false
     private val outputError = MutableStateFlow<String?>(null)
+    private val pendingCommand = AtomicReference<ByteArray?>(null)
+    private val commandsWritten = AtomicLong()
+    private val commandsFailed = AtomicLong()
+    private val writeFailure = MutableStateFlow<String?>(null)
 
     /** Where the connection is. */
     val state: StateFlow<ConnectionState> = connection.asStateFlow()
 
     /** Set when a frame listener failed and was removed (e.g. a safety limit refused its output). */
     val listenerError: StateFlow<String?> = outputError.asStateFlow()
+
+    /** Why the last command to the board could not be written (a timeout, an unplug), or null. */
+    val writeError: StateFlow<String?> = writeFailure.asStateFlow()
+
+    /** Commands written to the board since the hub was made. */
+    val commandsSent: Long get() = commandsWritten.get()
+
+    /** Commands that could not be written (timeout, unplug, I/O error). */
+    val commandsLost: Long get() = commandsFailed.get()
+
+    /**
+     * Queues [command] for the board on the line and returns at once: false when no stream is running.
+     * Commands are state, not events (servo positions): if one is still waiting to be written, the
+     * newer replaces it, so a slow board gets the newest command rather than a growing backlog. Each
+     * write has [timeoutMillis]; a failure is counted in [commandsLost] and reported in [writeError].
+     */
+    fun send(command: ByteArray, timeoutMillis: Int = WRITE_TIMEOUT_MILLIS): Boolean {
+        val target = port ?: return false
+        if (connection.value !is ConnectionState.Streaming || !target.isOpen) return false
+        if (pendingCommand.getAndSet(command) == null) {
+            writer.execute { writePending(target, timeoutMillis) }
+        }
+        return true
+    }
+
+    private fun writePending(target: SerialPort, timeoutMillis: Int) {
+        val command = pendingCommand.getAndSet(null) ?: return
+        try {
+            target.write(command, 0, command.size, timeoutMillis)
+            commandsWritten.incrementAndGet()
+        } catch (e: IOException) {
+            // The board may be gone or stalled; the stream's own reader reports an unplug.
+            commandsFailed.incrementAndGet()
+            writeFailure.value = e.message ?: e.javaClass.simpleName
+        }
+    }
 
     /** What the stream has given so far. */
     fun snapshot(): StreamSnapshot = synchronized(lock) {
@@ -159,6 +207,7 @@ class SensorHub(
         }
         resetData()
         outputError.value = null
+        writeFailure.value = null
         connection.value = ConnectionState.RequestingPermission(device)
         val opened = try {
             if (!usb.requestPermission(device)) {
@@ -300,5 +349,12 @@ class SensorHub(
     private companion object {
         const val STOP_WAIT_MILLIS = 1_000L
         const val RATE_WINDOW_NANOS = 1_000_000_000L
+
+        /** Long enough for a 26-byte command at 9600 baud plus a busy board; short enough not to pile up. */
+        const val WRITE_TIMEOUT_MILLIS = 100
+
+        fun defaultWriter(): Executor = Executors.newSingleThreadExecutor { task ->
+            Thread(task, "hapticon-sensor-writer").apply { isDaemon = true }
+        }
     }
 }

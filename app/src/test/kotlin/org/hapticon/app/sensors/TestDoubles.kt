@@ -48,6 +48,16 @@ class TestGloveSource(connected: Boolean = true, override val divider: FlexDivid
 
     override val connected: Flow<Boolean> = connectedFlow
 
+    /** Whether the glove takes force feedback; [forceFeedbackSent] records what it got. */
+    val acceptsForceFeedbackFlow = MutableStateFlow(false)
+    val forceFeedbackSent = CopyOnWriteArrayList<List<Int>>()
+
+    override val acceptsForceFeedback: Flow<Boolean> = acceptsForceFeedbackFlow
+
+    override val forceFeedback: ForceFeedbackSink = ForceFeedbackSink { values ->
+        acceptsForceFeedbackFlow.value && forceFeedbackSent.add(values.toList())
+    }
+
     override fun addListener(listener: GloveListener): Closeable {
         listeners += listener
         return Closeable { listeners -= listener }

@@ -49,7 +49,7 @@ fun HandshakeRoute(container: AppContainer, onBack: () -> Unit) {
         },
     )
     val uiState by viewModel.uiState.collectAsStateWithLifecycle()
-    HandshakeScreen(uiState, onBack, viewModel::setSimulatedPartner, viewModel::setVibration)
+    HandshakeScreen(uiState, onBack, viewModel::setSimulatedPartner, viewModel::setVibration, viewModel::setForceFeedback)
 }
 
 /** Live angles of both hands, whether the handshake is on, and the pressure on each hand region. */
@@ -60,6 +60,7 @@ fun HandshakeScreen(
     onBack: () -> Unit,
     onSimulatedPartner: (Boolean) -> Unit,
     onVibration: (Boolean) -> Unit,
+    onForceFeedback: (Boolean) -> Unit = {},
 ) {
     Scaffold(
         topBar = {
@@ -86,6 +87,8 @@ fun HandshakeScreen(
                 }
                 SwitchRow("Simulated partner", uiState.simulatedPartner, onSimulatedPartner)
                 SwitchRow("Phone vibration", uiState.vibrationEnabled, onVibration)
+                SwitchRow("Glove force feedback", uiState.forceFeedbackEnabled, onForceFeedback)
+                Text(forceFeedbackStatus(uiState), style = MaterialTheme.typography.bodySmall)
                 val status = if (uiState.active) "Handshake active" else "No handshake"
                 Card(
                     colors = if (uiState.active) {
@@ -155,6 +158,13 @@ private fun RegionRow(region: RegionUi) {
             },
         )
     }
+}
+
+/** What the force-feedback glove gets, in words. */
+internal fun forceFeedbackStatus(state: HandshakeUiState.Ready): String = when {
+    !state.forceFeedbackAvailable -> "Force feedback needs a LucidGloves glove streaming on the Sensors screen."
+    !state.forceFeedbackEnabled -> "Force feedback off: the glove's servos are released."
+    else -> "Servos thumb…pinky ${state.servoValues.joinToString(" · ")} of 1000 (${state.forceFeedbackCommands} commands sent)"
 }
 
 private fun angle(degrees: Double, fault: Boolean): String = if (fault) "fault" else "%.1f°".format(Locale.ROOT, degrees)

@@ -18,6 +18,7 @@ import kotlinx.coroutines.flow.stateIn
 import org.hapticon.app.playback.ContinuousVibration
 import org.hapticon.app.playback.VibrationOutput
 import org.hapticon.app.sensors.CalibrationStore
+import org.hapticon.app.sensors.ForceFeedbackStream
 import org.hapticon.app.sensors.GloveListener
 import org.hapticon.app.sensors.GloveSource
 import org.hapticon.app.sensors.NoPartner
@@ -34,7 +35,9 @@ import org.hapticon.sensor.glove.HandshakeSession
  * the toggle is on; the messaging task plugs in a network partner through [setPartner]), and
  * sensor-bridge's [HandshakeSession] turning both into per-region pressures.
  *
- * The phone has no force-feedback glove here, so the pressure drives the phone's vibrator instead:
+ * A LucidGloves force-feedback glove on the line gets the five finger servo values
+ * ([ForceFeedbackStream]: changes only, at most 20 commands/s, released at once when the handshake
+ * ends). The pressure also drives the phone's vibrator, for a phone without such a glove:
  * the largest region amplitude ([org.hapticon.sensor.glove.VibrationMapping]) through a
  * [ContinuousVibration] (rate-limited to 20 updates/s, each update a 250 ms one-shot so it dies out
  * by itself, capped by the safety limits). Everything per sample runs on the sensor's reading
@@ -53,6 +56,7 @@ class HandshakeViewModel(
     private val lock = Any()
     private val session = HandshakeSession()
     private val continuous = ContinuousVibration(vibration)
+    private val feedback = ForceFeedbackStream()
     private val regions = HandRegion.entries.size
 
     // Written on the reading thread under lock.
@@ -72,9 +76,11 @@ class HandshakeViewModel(
     @Volatile private var middleCalibration = FlexCalibration.MIDDLE_DEFAULT
     @Volatile private var partner: PartnerHand = NoPartner
     @Volatile private var vibrate = true
+    @Volatile private var forceFeedbackOn = true
 
     private val simulated = MutableStateFlow(false)
     private val vibrationOn = MutableStateFlow(true)
+    private val forceFeedbackEnabled = MutableStateFlow(true)
     private val calibrationSource = MutableStateFlow(CalibrationSource(false, false))
 
     private val listener = GloveListener { thumbVolts, middleVolts, _ -> onSample(thumbVolts, middleVolts, clock()) }
@@ -83,9 +89,14 @@ class HandshakeViewModel(
     private val ticks: Flow<Unit> = glove.connected.flatMapLatest { if (it) ticker(refreshMillis) else flowOf(Unit) }
 
     val uiState: StateFlow<HandshakeUiState> =
-        combine(glove.connected, simulated, vibrationOn, combine(store.currentUser, calibrationSource, ::Pair), ticks) {
-                connected, sim, vib, (user, source), _ ->
-            snapshot(connected, sim, vib, user, source)
+        combine(
+            combine(glove.connected, glove.acceptsForceFeedback, ::Pair),
+            simulated,
+            combine(vibrationOn, forceFeedbackEnabled, ::Pair),
+            combine(store.currentUser, calibrationSource, ::Pair),
+            ticks,
+        ) { (connected, feedbackAvailable), sim, (vib, feedbackOn), (user, source), _ ->
+            snapshot(connected, feedbackAvailable, sim, vib, feedbackOn, user, source)
         }.stateIn(viewModelScope, SharingStarted.WhileSubscribed(5_000), HandshakeUiState.Loading)
 
     init {
@@ -119,9 +130,20 @@ class HandshakeViewModel(
         if (!enabled) synchronized(lock) { continuous.stop() }
     }
 
+    /** Whether a LucidGloves glove on the line gets force-feedback commands; off releases it at once. */
+    fun setForceFeedback(enabled: Boolean) {
+        forceFeedbackEnabled.value = enabled
+        forceFeedbackOn = enabled
+        if (!enabled) synchronized(lock) { feedback.release(clock(), glove.forceFeedback) }
+    }
+
     override fun onCleared() {
         registration.close()
-        synchronized(lock) { continuous.stop() }
+        synchronized(lock) {
+            continuous.stop()
+            // Leaving the screen must not leave the wearer's fingers held.
+            feedback.release(clock(), glove.forceFeedback)
+        }
     }
 
     private fun onSample(thumbVolts: Double, middleVolts: Double, now: Long) {
@@ -142,13 +164,26 @@ class HandshakeViewModel(
             var phone = 0
             for (a in amplitudes) if (a > phone) phone = a
             continuous.update(if (active && vibrate) phone else 0, now)
+            if (forceFeedbackOn) feedback.update(servos, now, glove.forceFeedback)
         }
     }
 
-    private fun snapshot(connected: Boolean, sim: Boolean, vib: Boolean, user: String, source: CalibrationSource): HandshakeUiState.Ready =
+    private fun snapshot(
+        connected: Boolean,
+        feedbackAvailable: Boolean,
+        sim: Boolean,
+        vib: Boolean,
+        feedbackOn: Boolean,
+        user: String,
+        source: CalibrationSource,
+    ): HandshakeUiState.Ready =
         synchronized(lock) {
             HandshakeUiState.Ready(
                 connected = connected,
+                forceFeedbackAvailable = feedbackAvailable,
+                forceFeedbackEnabled = feedbackOn,
+                forceFeedbackCommands = feedback.commands,
+                servoValues = feedback.lastSentValues().toList(),
                 simulatedPartner = sim,
                 vibrationEnabled = vib,
                 user = user,
@@ -192,6 +227,13 @@ sealed interface HandshakeUiState {
 
     data class Ready(
         val connected: Boolean,
+        /** Whether the glove on the line takes force-feedback commands (LucidGloves). */
+        val forceFeedbackAvailable: Boolean,
+        val forceFeedbackEnabled: Boolean,
+        /** Force-feedback commands sent to the glove so far. */
+        val forceFeedbackCommands: Long,
+        /** The servo values last sent, thumb … pinky (0 … 1000). */
+        val servoValues: List<Int>,
         val simulatedPartner: Boolean,
         val vibrationEnabled: Boolean,
         val user: String,

@@ -170,4 +170,70 @@ class HandshakeViewModelTest {
         assertEquals(0.0, ready.selfMiddleDegrees, 0.0)
         assertFalse(ready.active)
     }
+
+    @Test
+    fun lucidGlovesGlove_getsTheFingerServoValuesRateLimitedAndReleasedWhenTheHandshakeEnds() = runTest(dispatcher) {
+        glove.acceptsForceFeedbackFlow.value = true
+        backgroundScope.launch { viewModel.uiState.collect {} }
+        viewModel.setSimulatedPartner(true)
+        runCurrent()
+
+        grip(50.0, 105.0)
+        val first = glove.forceFeedbackSent.single()
+        assertEquals(SERVOS_AT_WORKED_EXAMPLE, first)
+        assertEquals(first, ready.servoValues)
+
+        // The partner squeezes harder 10 ms later: too soon; 50 ms after the first command it goes out.
+        clock.advanceMillis(10)
+        partner.middleDegrees = 105.0
+        grip(50.0, 105.0)
+        assertEquals(1, glove.forceFeedbackSent.size)
+        clock.advanceMillis(40)
+        grip(50.0, 105.0)
+        assertEquals(2, glove.forceFeedbackSent.size)
+        assertTrue(glove.forceFeedbackSent[1].zip(first).all { (harder, before) -> harder >= before })
+
+        // Both hands open 1 ms later: released at once.
+        clock.advanceMillis(1)
+        partner.middleDegrees = 0.0
+        grip(0.0, 0.0)
+        assertEquals(listOf(0, 0, 0, 0, 0), glove.forceFeedbackSent.last())
+        assertEquals(3L, ready.forceFeedbackCommands)
+        assertTrue(ready.forceFeedbackAvailable)
+    }
+
+    @Test
+    fun forceFeedbackOff_releasesTheGloveAndSendsNoMore() = runTest(dispatcher) {
+        glove.acceptsForceFeedbackFlow.value = true
+        backgroundScope.launch { viewModel.uiState.collect {} }
+        viewModel.setSimulatedPartner(true)
+        runCurrent()
+        grip(50.0, 105.0)
+
+        viewModel.setForceFeedback(false)
+        clock.advanceMillis(100)
+        grip(60.0, 105.0)
+
+        assertEquals(listOf(SERVOS_AT_WORKED_EXAMPLE, listOf(0, 0, 0, 0, 0)), glove.forceFeedbackSent.toList())
+        assertEquals("Force feedback off: the glove's servos are released.", forceFeedbackStatus(ready))
+    }
+
+    @Test
+    fun gloveWithoutForceFeedback_getsNothingAndTheScreenSaysWhy() = runTest(dispatcher) {
+        backgroundScope.launch { viewModel.uiState.collect {} }
+        viewModel.setSimulatedPartner(true)
+        runCurrent()
+
+        grip(50.0, 105.0)
+
+        assertTrue(ready.active)
+        assertTrue(glove.forceFeedbackSent.isEmpty())
+        assertEquals(0L, ready.forceFeedbackCommands)
+        assertEquals("Force feedback needs a LucidGloves glove streaming on the Sensors screen.", forceFeedbackStatus(ready))
+    }
+
+    private companion object {
+        /** docs/sensor-models.md's worked example (self 50°/105°, partner 0°/67.95°), thumb … pinky: the thumb's n = 0.635 of its travel. */
+        val SERVOS_AT_WORKED_EXAMPLE = listOf(635, 600, 660, 595, 585)
+    }
 }
