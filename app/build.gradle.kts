@@ -45,6 +45,7 @@ dependencies {
     implementation(libs.androidx.compose.foundation)
     implementation(libs.androidx.compose.material3)
     implementation(libs.kotlinx.coroutines.android)
+    implementation(libs.androidx.media3.exoplayer)
 
     testImplementation(project(":test-fixtures"))
     testImplementation(libs.junit4)

@@ -3,10 +3,8 @@ package org.hapticon.app
 import android.app.Application
 import android.content.Context
 import org.hapticon.app.data.IconRepository
-import org.hapticon.app.data.PresetIconRepository
 import org.hapticon.app.playback.HapticPlayer
 import org.hapticon.app.playback.VibrationOutput
-import org.hapticon.app.playback.VibratorHapticPlayer
 import org.hapticon.app.playback.VibratorVibrationOutput
 import org.hapticon.app.sensors.AndroidUsbDevices
 import org.hapticon.app.sensors.CalibrationStore
@@ -61,16 +59,19 @@ class AppContainer(
         ): AppContainer {
             val hub = SensorHub(usbDevices)
             val grains = GrainEngine(vibration).also { hub.addFrameListener(it) }
+            val chat = ChatComponent.create(context)
             return AppContainer(
-                iconRepository = PresetIconRepository(),
-                player = VibratorHapticPlayer.create(context),
+                // One icon list and one player for every screen: the presets plus the user's own icons,
+                // played with the best renderer this phone has.
+                iconRepository = chat.icons,
+                player = chat.player,
                 vibration = vibration,
                 usbDevices = usbDevices,
                 sensorHub = hub,
                 grainEngine = grains,
                 glove = HubGloveSource(hub),
                 calibrations = calibrations,
-                chat = ChatComponent.create(context),
+                chat = chat,
             )
         }
     }

@@ -45,6 +45,12 @@ public enum class RendererKind(
     /** The value of the capabilities' `renderer` member. */
     public val wireName: String,
 ) {
+    /** Audio with the haptic channel on (Android audio-coupled haptics): the icon's own carrier, on the audio clock. */
+    AUDIO_COUPLED("audio-coupled"),
+
+    /** Android 16 envelope effect: the envelope as smooth control points, played by the vibrator HAL. */
+    ENVELOPE("envelope"),
+
     /** A vibrator with amplitude control plays the icon's envelope as amplitude steps. */
     AMPLITUDE_WAVEFORM("amplitude-waveform"),
 

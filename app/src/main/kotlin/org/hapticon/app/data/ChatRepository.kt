@@ -9,6 +9,7 @@ import org.hapticon.app.data.database.HapticonDatabase
 import org.hapticon.app.data.database.MessageEntity
 import org.hapticon.app.data.database.MessageState
 import org.hapticon.app.data.database.OutboxEntity
+import org.hapticon.app.data.database.PendingReceiptEntity
 import org.hapticon.app.data.database.StoredMessage
 import org.hapticon.app.data.database.asExternalModel
 import org.hapticon.core.HapticIcon
@@ -49,7 +50,19 @@ interface ChatRepository {
 
     /** Marks the received messages of [peer] as read at [nowMillis]; returns those that were unread. */
     suspend fun markRead(peer: String, nowMillis: Long): List<StoredMessage>
+
+    /** Keeps [receipt] for [peer] until [receiptSent]: it could not be sent now. */
+    suspend fun queueReceipt(peer: String, receipt: Receipt)
+
+    /** The receipts still owed, oldest first. */
+    suspend fun pendingReceipts(): List<PendingReceipt>
+
+    /** Forgets a queued receipt once it went out. */
+    suspend fun receiptSent(receipt: Receipt)
 }
+
+/** A receipt owed to [peer]. */
+data class PendingReceipt(val peer: String, val receipt: Receipt)
 
 /** [ChatRepository] on Room. Also the [Outbox] that the sync's [org.hapticon.messaging.OutboxSender] drains. */
 class OfflineFirstChatRepository(
@@ -61,6 +74,7 @@ class OfflineFirstChatRepository(
     private val conversations = db.conversationDao()
     private val messages = db.messageDao()
     private val outbox = db.outboxDao()
+    private val receipts = db.pendingReceiptDao()
 
     override fun conversations(): Flow<List<ConversationSummary>> = conversations.conversationSummaries()
 
@@ -101,6 +115,19 @@ class OfflineFirstChatRepository(
         val unread = messages.unread(peer)
         for (row in unread) messages.updateStateAndReadAt(row.id, MessageState.READ.name, nowMillis)
         unread.map { it.asExternalModel() }
+    }
+
+    override suspend fun queueReceipt(peer: String, receipt: Receipt) {
+        receipts.upsert(PendingReceiptEntity(receipt.messageId, receipt.state.wireName, peer, receipt.from, receipt.atMillis))
+    }
+
+    override suspend fun pendingReceipts(): List<PendingReceipt> = receipts.pending().mapNotNull { row ->
+        val state = ReceiptState.entries.firstOrNull { it.wireName == row.state } ?: return@mapNotNull null
+        PendingReceipt(row.peer, Receipt(row.messageId, row.fromUser, state, row.atMillis))
+    }
+
+    override suspend fun receiptSent(receipt: Receipt) {
+        receipts.delete(receipt.messageId, receipt.state.wireName)
     }
 
     // Outbox, for OutboxSender.

@@ -1,16 +1,10 @@
 package org.hapticon.app.data
 
 import kotlinx.coroutines.flow.Flow
-import kotlinx.coroutines.flow.flowOf
 import org.hapticon.core.HapticIcon
 
 /** The haptic icons a user can pick from. */
 interface IconRepository {
     /** Every available icon, presets first; emits again when the set changes. */
     fun icons(): Flow<List<HapticIcon>>
-}
-
-/** The four presets of the originating study: stroke, hit, knock, hug. */
-class PresetIconRepository : IconRepository {
-    override fun icons(): Flow<List<HapticIcon>> = flowOf(HapticIcon.PRESETS)
 }

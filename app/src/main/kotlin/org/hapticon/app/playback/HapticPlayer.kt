@@ -35,6 +35,11 @@ data class PlaybackCapabilities(
 
 /** How an icon reaches the actuator, best first. */
 enum class Renderer(val label: String) {
+    /** The icon as audio with the haptic channel on. */
+    AUDIO_COUPLED("audio-coupled haptics"),
+
+    /** The API 36 envelope effect. */
+    ENVELOPE("envelope effect"),
     AMPLITUDE_WAVEFORM("amplitude waveform"),
     ON_OFF("on/off pattern"),
     NONE("no vibrator"),

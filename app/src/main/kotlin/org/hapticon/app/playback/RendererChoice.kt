@@ -5,9 +5,12 @@ import android.media.AudioManager
 import android.os.Build
 import android.os.VibrationEffect
 import android.os.Vibrator
+import android.util.Log
+import java.io.IOException
 import kotlin.math.roundToInt
 import org.hapticon.core.HapticIcon
 import org.hapticon.core.render.EnvelopeControlPoints
+import org.hapticon.core.render.PcmRenderer
 import org.hapticon.core.render.VibrationWaveform
 import org.hapticon.messaging.Capabilities
 import org.hapticon.messaging.RendererKind
@@ -23,10 +26,20 @@ data class DeviceCapabilities(
     val envelopeEffectsSupported: Boolean = false,
     /** API 31+ `AudioManager.isHapticPlaybackSupported()`: audio streams can carry a haptic channel. */
     val hapticPlaybackSupported: Boolean = false,
+    /** API 31+ `HapticGenerator.isAvailable()`: the platform can derive the haptic channel from audio. */
+    val hapticGeneratorAvailable: Boolean = false,
 ) {
     companion object {
-        /** Reads the capabilities of [vibrator], guarding each API-specific call by SDK level. */
-        fun detect(context: Context, vibrator: Vibrator): DeviceCapabilities {
+        /**
+         * Reads the capabilities of [vibrator], guarding each API-specific call by SDK level. The audio
+         * flags are asked for unless given ([hapticPlayback], [hapticGenerator]: known from an earlier call).
+         */
+        fun detect(
+            context: Context,
+            vibrator: Vibrator,
+            hapticPlayback: Boolean? = null,
+            hapticGenerator: Boolean? = null,
+        ): DeviceCapabilities {
             val api = Build.VERSION.SDK_INT
             val resonant = if (api >= 34) vibrator.resonantFrequency.toDouble().takeIf { it.isFinite() && it > 0 } else null
             return DeviceCapabilities(
@@ -35,7 +48,10 @@ data class DeviceCapabilities(
                 apiLevel = api,
                 resonantFrequencyHz = resonant,
                 envelopeEffectsSupported = api >= 36 && vibrator.areEnvelopeEffectsSupported(),
-                hapticPlaybackSupported = api >= 31 && AudioManager.isHapticPlaybackSupported(),
+                hapticPlaybackSupported = hapticPlayback ?: (api >= 31 && AudioManager.isHapticPlaybackSupported()),
+                // Some builds lack the effect library; asking must not take the app down.
+                hapticGeneratorAvailable = hapticGenerator
+                    ?: (api >= 31 && runCatching { android.media.audiofx.HapticGenerator.isAvailable() }.getOrDefault(false)),
             )
         }
     }
@@ -43,7 +59,7 @@ data class DeviceCapabilities(
 
 /** How an icon reaches the actuator, best first. */
 enum class AdaptiveRenderer(val label: String) {
-    /** PCM with a haptic channel played through the audio path (the icon's own carrier). */
+    /** The icon rendered as audio and played with the haptic channel on (the icon's own carrier, on the audio clock). */
     AUDIO_COUPLED("audio-coupled haptics"),
 
     /** API 36 envelope effect: amplitude and frequency control points, played smoothly by the vibrator HAL. */
@@ -60,16 +76,9 @@ enum class AdaptiveRenderer(val label: String) {
  * automatic choice stands (forcing an impossible renderer would play nothing).
  */
 object RendererChoice {
-    /**
-     * Whether this build can render audio-coupled haptics. False: the public API plays a haptic channel only
-     * from a media file carrying one (OGG with ANDROID_HAPTIC), and the AudioTrack haptic channel masks are
-     * system API; encoding such a file at runtime is not in this build yet.
-     */
-    const val AUDIO_COUPLED_IMPLEMENTED = false
-
     fun possible(device: DeviceCapabilities, icon: HapticIcon?): List<AdaptiveRenderer> = buildList {
         if (!device.hasVibrator) return@buildList
-        if (AUDIO_COUPLED_IMPLEMENTED && device.hapticPlaybackSupported) add(AdaptiveRenderer.AUDIO_COUPLED)
+        if (device.apiLevel >= 31 && device.hapticPlaybackSupported && device.hapticGeneratorAvailable) add(AdaptiveRenderer.AUDIO_COUPLED)
         if (device.apiLevel >= 36 && device.envelopeEffectsSupported && (icon == null || envelopeRepresentable(icon))) add(AdaptiveRenderer.ENVELOPE)
         if (device.hasAmplitudeControl) add(AdaptiveRenderer.AMPLITUDE_WAVEFORM)
         add(AdaptiveRenderer.ON_OFF)
@@ -86,11 +95,12 @@ object RendererChoice {
 
     /**
      * How faithfully [renderer] plays [icon], 0..100 (100 = the ideal envelope): 100 minus the renderer's
-     * RMS error in percent of full scale. Null when nothing plays.
+     * RMS error in percent of full scale (for audio-coupled haptics, the PCM16 rendering's against the ideal
+     * signal: the audio path carries the icon sample by sample). Null when nothing plays.
      */
     fun fidelityPercent(renderer: AdaptiveRenderer, icon: HapticIcon): Int? {
         val rms = when (renderer) {
-            AdaptiveRenderer.AUDIO_COUPLED -> 0.0
+            AdaptiveRenderer.AUDIO_COUPLED -> PcmRenderer(icon, IconAudioCache.SAMPLE_RATE).fidelity().rmsError
             AdaptiveRenderer.ENVELOPE -> EnvelopeControlPoints.render(icon).fidelity.rmsError
             AdaptiveRenderer.AMPLITUDE_WAVEFORM -> VibrationWaveform.render(icon).fidelity.rmsError
             AdaptiveRenderer.ON_OFF -> VibrationWaveform.onOff(icon).fidelity.rmsError
@@ -103,17 +113,16 @@ object RendererChoice {
     fun fromWire(kind: RendererKind): AdaptiveRenderer = when (kind) {
         RendererKind.AMPLITUDE_WAVEFORM -> AdaptiveRenderer.AMPLITUDE_WAVEFORM
         RendererKind.ON_OFF -> AdaptiveRenderer.ON_OFF
-        RendererKind.AUDIO -> AdaptiveRenderer.AUDIO_COUPLED
+        RendererKind.AUDIO_COUPLED, RendererKind.AUDIO -> AdaptiveRenderer.AUDIO_COUPLED
+        RendererKind.ENVELOPE -> AdaptiveRenderer.ENVELOPE
         RendererKind.NONE, RendererKind.UNKNOWN -> AdaptiveRenderer.NONE
     }
 
-    /**
-     * The wire name of [renderer]. The messaging protocol has no value for the envelope renderer yet, so an
-     * envelope phone announces amplitude-waveform (what it falls back to for icons the envelope cannot carry).
-     */
+    /** The wire name of [renderer]. */
     fun toWire(renderer: AdaptiveRenderer): RendererKind = when (renderer) {
-        AdaptiveRenderer.AUDIO_COUPLED -> RendererKind.AUDIO
-        AdaptiveRenderer.ENVELOPE, AdaptiveRenderer.AMPLITUDE_WAVEFORM -> RendererKind.AMPLITUDE_WAVEFORM
+        AdaptiveRenderer.AUDIO_COUPLED -> RendererKind.AUDIO_COUPLED
+        AdaptiveRenderer.ENVELOPE -> RendererKind.ENVELOPE
+        AdaptiveRenderer.AMPLITUDE_WAVEFORM -> RendererKind.AMPLITUDE_WAVEFORM
         AdaptiveRenderer.ON_OFF -> RendererKind.ON_OFF
         AdaptiveRenderer.NONE -> RendererKind.NONE
     }
@@ -129,32 +138,40 @@ object RendererChoice {
 }
 
 /**
- * Plays icons with the renderer [RendererChoice] picks for this phone and the user's override. The
- * envelope path is API 36 only; every other path is the step waveform of [VibrationWaveform].
+ * Plays icons with the renderer [RendererChoice] picks for this phone and the user's override:
+ * audio-coupled haptics through [audio] (the icon rendered by [audioCache]), the API 36 envelope, or the
+ * step waveform of [VibrationWaveform]. If the audio path fails (the cache cannot be written), the icon
+ * plays on the vibrator instead: a press is never silently lost.
  */
 class AdaptiveHapticPlayer(
     private val vibrator: Vibrator,
     private val device: () -> DeviceCapabilities,
     private val override: () -> AdaptiveRenderer?,
+    private val audio: AudioCoupledOutput? = null,
+    private val audioCache: IconAudioCache? = null,
 ) : HapticPlayer {
     override val capabilities: PlaybackCapabilities
         get() = device().let { PlaybackCapabilities(it.hasVibrator, it.hasAmplitudeControl, it.apiLevel) }
 
-    /** The renderer [icon] would get now. */
-    fun rendererFor(icon: HapticIcon): AdaptiveRenderer = RendererChoice.choose(device(), icon, override())
+    /** The renderer [icon] would get now: audio-coupled only with an [audio] output that is available. */
+    fun rendererFor(icon: HapticIcon): AdaptiveRenderer {
+        val capabilities = device()
+        val audioUsable = audio != null && audioCache != null && audio.isAvailable
+        return RendererChoice.choose(if (audioUsable) capabilities else capabilities.copy(hapticGeneratorAvailable = false), icon, override())
+    }
 
     override fun play(icon: HapticIcon): Playback {
         val waveform = when (rendererFor(icon)) {
             AdaptiveRenderer.NONE -> return Playback.Unsupported
+            AdaptiveRenderer.AUDIO_COUPLED -> playAudioCoupled(icon)?.let { return it } ?: VibrationWaveform.render(icon)
             AdaptiveRenderer.ENVELOPE -> if (Build.VERSION.SDK_INT >= 36) {
                 val points = EnvelopeControlPoints.render(icon)
                 vibrator.vibrate(points.toEnvelopeEffect())
-                return Playback.Playing(Renderer.AMPLITUDE_WAVEFORM, points.totalMillis, points.fidelity)
+                return Playback.Playing(Renderer.ENVELOPE, points.totalMillis, points.fidelity)
             } else {
                 VibrationWaveform.render(icon)
             }
-            // Audio-coupled is never chosen while AUDIO_COUPLED_IMPLEMENTED is false.
-            AdaptiveRenderer.AUDIO_COUPLED, AdaptiveRenderer.AMPLITUDE_WAVEFORM -> VibrationWaveform.render(icon)
+            AdaptiveRenderer.AMPLITUDE_WAVEFORM -> VibrationWaveform.render(icon)
             AdaptiveRenderer.ON_OFF -> VibrationWaveform.onOff(icon)
         }
         vibrator.vibrate(waveform.toVibrationEffect())
@@ -162,7 +179,25 @@ class AdaptiveHapticPlayer(
         return Playback.Playing(renderer, waveform.totalMillis, waveform.fidelity)
     }
 
-    override fun stop() = vibrator.cancel()
+    override fun stop() {
+        audio?.stop()
+        vibrator.cancel()
+    }
+
+    private fun playAudioCoupled(icon: HapticIcon): Playback? {
+        val output = audio ?: return null
+        val cache = audioCache ?: return null
+        val file = try {
+            cache.fileFor(icon)
+        } catch (e: IOException) {
+            Log.w("AdaptiveHapticPlayer", "audio-coupled ${icon.name} not rendered, vibrating instead: ${e.message}")
+            return null
+        }
+        vibrator.cancel()
+        output.play(file)
+        val renderer = PcmRenderer(icon, cache.sampleRate)
+        return Playback.Playing(Renderer.AUDIO_COUPLED, Math.round(renderer.sampleCount * 1000.0 / cache.sampleRate), renderer.fidelity())
+    }
 }
 
 /**

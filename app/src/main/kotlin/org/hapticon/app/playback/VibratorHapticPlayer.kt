@@ -27,6 +27,8 @@ class VibratorHapticPlayer(private val vibrator: Vibrator) : HapticPlayer {
         val waveform = when (renderer) {
             Renderer.AMPLITUDE_WAVEFORM -> VibrationWaveform.render(icon)
             Renderer.ON_OFF -> VibrationWaveform.onOff(icon)
+            // PlaybackCapabilities.renderer never names these; only the adaptive player plays them.
+            Renderer.AUDIO_COUPLED, Renderer.ENVELOPE -> VibrationWaveform.render(icon)
             Renderer.NONE -> return Playback.Unsupported
         }
         vibrator.vibrate(waveform.toVibrationEffect())

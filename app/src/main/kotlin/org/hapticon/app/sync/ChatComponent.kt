@@ -11,6 +11,8 @@ import org.hapticon.app.data.RoomIconRepository
 import org.hapticon.app.data.SharedPreferencesChatSettings
 import org.hapticon.app.data.database.HapticonDatabase
 import org.hapticon.app.playback.AdaptiveHapticPlayer
+import org.hapticon.app.playback.IconAudioCache
+import org.hapticon.app.playback.Media3AudioCoupledOutput
 import org.hapticon.app.playback.AdaptiveRenderer
 import org.hapticon.app.playback.DeviceCapabilities
 import org.hapticon.app.playback.RendererChoice
@@ -30,8 +32,11 @@ class ChatComponent(
     val settings: ChatSettingsRepository,
     val sync: ChatSync,
     val player: AdaptiveHapticPlayer,
-    val device: DeviceCapabilities,
+    private val detectDevice: () -> DeviceCapabilities,
 ) {
+    /** What this phone can do now (the vibrator is asked again each time: cheap, and a test may change it). */
+    val device: DeviceCapabilities get() = detectDevice()
+
     /** The renderer the user's override or the automatic choice gives [icon] here. */
     fun localRenderer(icon: HapticIcon): AdaptiveRenderer = player.rendererFor(icon)
 
@@ -41,9 +46,17 @@ class ChatComponent(
             val repository = OfflineFirstChatRepository(db)
             val settings = SharedPreferencesChatSettings(context)
             val vibrator = defaultVibrator(context)
-            val device = DeviceCapabilities.detect(context, vibrator)
+            // Audio support does not change while the app runs; asking for it costs an effect-library query.
+            val audio = DeviceCapabilities.detect(context, vibrator)
+            val device = {
+                DeviceCapabilities.detect(context, vibrator, audio.hapticPlaybackSupported, audio.hapticGeneratorAvailable)
+            }
             val override = { settings.preferences.value.rendererOverride?.let { name -> AdaptiveRenderer.entries.firstOrNull { it.name == name } } }
-            val player = AdaptiveHapticPlayer(vibrator, { device }, override)
+            val player = AdaptiveHapticPlayer(
+                vibrator, device, override,
+                audio = Media3AudioCoupledOutput(context),
+                audioCache = IconAudioCache(java.io.File(context.cacheDir, "icon-audio")),
+            )
             val deviceId = deviceId(context)
             val sync = ChatSync(
                 repository = repository,
@@ -52,7 +65,7 @@ class ChatComponent(
                 messengerFactory = { user, broker -> mqttMessenger(user, broker, deviceId) },
                 player = player,
                 rateLimiter = VibrationRateLimiter(Clock.MONOTONIC),
-                localCapabilities = { user -> RendererChoice.capabilitiesOf(user, device, override()) },
+                localCapabilities = { user -> RendererChoice.capabilitiesOf(user, device(), override()) },
                 scope = scope,
             )
             return ChatComponent(repository, RoomIconRepository(db.iconDao()), settings, sync, player, device)

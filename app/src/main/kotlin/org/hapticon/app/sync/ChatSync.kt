@@ -35,7 +35,8 @@ import kotlinx.coroutines.coroutineScope
 /**
  * The background sync: while the user has an account, keeps a [Messenger] connected, drains the Room
  * outbox through an [OutboxSender] (retries with backoff), stores what arrives exactly once, answers with
- * delivered receipts (and read receipts for the open conversation), records receipts for own messages,
+ * delivered receipts (and read receipts for the open conversation; a receipt that cannot go out now is
+ * kept in Room and sent when the connection returns), records receipts for own messages,
  * remembers peers' capabilities and, when the user enabled it, plays arriving icons within
  * [rateLimiter]'s limits. Runs in the application scope from app start ([start]).
  *
@@ -105,12 +106,14 @@ class ChatSync(
         val sender = OutboxSender(outbox, messenger, retryPolicy, clock)
         session = Session(messenger, sender)
         try {
-            launch { messenger.state.collect { connectionState.value = it } }
             launch {
+                // One collector, so every (re)connection the screens see is one that flushes what is owed.
                 messenger.state.collect { state ->
+                    connectionState.value = state
                     if (state == ConnectionState.Connected) {
                         runCatching { messenger.publishCapabilities(localCapabilities(messenger.user)) }
                             .onFailure { Log.w(TAG, "publishing capabilities failed: ${it.message}") }
+                        sendOwedReceipts(messenger)
                         for (peer in openConversations.value) markReadAndReceipt(peer)
                     }
                 }
@@ -160,16 +163,35 @@ class ChatSync(
         val messenger = session?.messenger
         val now = clock.nowMillis()
         val read = repository.markRead(peer, now)
-        if (messenger != null) for (message in read) sendReceipt(messenger, peer, Receipt(message.id, messenger.user, ReceiptState.READ, now))
+        val user = messenger?.user ?: settings.preferences.value.userName ?: return
+        for (message in read) {
+            val receipt = Receipt(message.id, user, ReceiptState.READ, now)
+            if (messenger != null) sendReceipt(messenger, peer, receipt) else repository.queueReceipt(peer, receipt)
+        }
     }
 
+    /** Sends [receipt] now, or keeps it in Room for [sendOwedReceipts] when that fails. */
     private suspend fun sendReceipt(messenger: Messenger, to: String, receipt: Receipt) {
         try {
             messenger.send(to, receipt)
         } catch (e: Exception) {
             if (e is kotlinx.coroutines.CancellationException) throw e
-            // Best effort: receipts are not queued; the peer's state stays one step behind.
-            Log.w(TAG, "receipt ${receipt.state} for ${receipt.messageId} not sent: ${e.message}")
+            Log.w(TAG, "receipt ${receipt.state} for ${receipt.messageId} not sent now, kept for later: ${e.message}")
+            repository.queueReceipt(to, receipt)
+        }
+    }
+
+    /** Sends the receipts owed from earlier, oldest first; stops at the first failure (the line is down again). */
+    private suspend fun sendOwedReceipts(messenger: Messenger) {
+        for (owed in repository.pendingReceipts()) {
+            try {
+                messenger.send(owed.peer, owed.receipt)
+            } catch (e: Exception) {
+                if (e is kotlinx.coroutines.CancellationException) throw e
+                Log.w(TAG, "owed receipts still not sent: ${e.message}")
+                return
+            }
+            repository.receiptSent(owed.receipt)
         }
     }
 

@@ -8,6 +8,7 @@ import kotlinx.coroutines.flow.first
 import kotlinx.coroutines.test.runTest
 import org.hapticon.app.data.database.HapticonDatabase
 import org.hapticon.app.data.database.MessageState
+import org.hapticon.app.data.database.PendingReceiptEntity
 import org.json.JSONObject
 import org.junit.Assert.assertEquals
 import org.junit.Assert.assertNull
@@ -48,6 +49,40 @@ class DatabaseMigrationTest {
         } finally {
             db.close()
         }
+    }
+
+    @Test
+    fun migrate2To3_messagesKeptAndReceiptsCanBeOwed() = runTest {
+        val file = context.getDatabasePath("migration-2-3.db").also { it.parentFile!!.mkdirs(); it.delete() }
+        createFromSchema(file, version = 2)
+        SQLiteDatabase.openDatabase(file.path, null, SQLiteDatabase.OPEN_READWRITE).use { v2 ->
+            v2.execSQL("INSERT INTO conversations (peer, created_at) VALUES ('bob', 1)")
+            v2.execSQL(
+                "INSERT INTO messages (id, conversation, sender, sent_at, text, sticker, icon_json, outgoing, state, read_at) " +
+                    "VALUES ('0b7e7c1e-3f7b-4a57-9d3e-2f1c5a6b7c8d', 'bob', 'bob', 5, 'kept', NULL, NULL, 0, 'READ', 9)",
+            )
+        }
+
+        val db = Room.databaseBuilder(context, HapticonDatabase::class.java, file.path).allowMainThreadQueries().build()
+        try {
+            val message = db.messageDao().messages("bob").first().single()
+            assertEquals("kept", message.text)
+            assertEquals(9L, message.readAtMillis)
+            assertEquals(emptyList<PendingReceiptEntity>(), db.pendingReceiptDao().pending())
+            val owed = PendingReceiptEntity(message.id, "read", "bob", "alice", 9)
+            db.pendingReceiptDao().upsert(owed)
+            db.pendingReceiptDao().upsert(owed.copy(atMillis = 10)) // the same receipt again replaces it
+            assertEquals(listOf(owed.copy(atMillis = 10)), db.pendingReceiptDao().pending())
+        } finally {
+            db.close()
+        }
+    }
+
+    @Test
+    fun schema3_exported_matchesEntities() {
+        val tables = schema(3).getJSONObject("database").getJSONArray("entities")
+        val names = (0 until tables.length()).map { tables.getJSONObject(it).getString("tableName") }.sorted()
+        assertEquals(listOf("conversations", "icons", "messages", "outbox", "pending_receipts"), names)
     }
 
     @Test

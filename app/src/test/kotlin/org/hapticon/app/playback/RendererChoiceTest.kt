@@ -8,6 +8,9 @@ import org.junit.Test
 class RendererChoiceTest {
     private val base = DeviceCapabilities(hasVibrator = true, hasAmplitudeControl = true, apiLevel = 35)
 
+    /** An Android 16 phone that does everything. */
+    private val AUDIO_PHONE = base.copy(apiLevel = 36, envelopeEffectsSupported = true, hapticPlaybackSupported = true, hapticGeneratorAvailable = true)
+
     @Test
     fun choose_noVibrator_none() =
         assertEquals(AdaptiveRenderer.NONE, RendererChoice.choose(base.copy(hasVibrator = false), HapticIcon.HUG))
@@ -33,10 +36,24 @@ class RendererChoiceTest {
         assertEquals(AdaptiveRenderer.AMPLITUDE_WAVEFORM, RendererChoice.choose(base.copy(envelopeEffectsSupported = true), HapticIcon.HUG))
 
     @Test
-    fun choose_hapticPlaybackSupported_notImplementedSoEnvelope() =
+    fun choose_hapticPlaybackAndGenerator_audioCoupledFirst() =
+        assertEquals(
+            AdaptiveRenderer.AUDIO_COUPLED,
+            RendererChoice.choose(AUDIO_PHONE, HapticIcon.HUG),
+        )
+
+    @Test
+    fun choose_hapticPlaybackWithoutGenerator_envelope() =
         assertEquals(
             AdaptiveRenderer.ENVELOPE,
-            RendererChoice.choose(base.copy(apiLevel = 36, envelopeEffectsSupported = true, hapticPlaybackSupported = true), HapticIcon.HUG),
+            RendererChoice.choose(AUDIO_PHONE.copy(hapticGeneratorAvailable = false), HapticIcon.HUG),
+        )
+
+    @Test
+    fun choose_audioFlagsBelowApi31_ignored() =
+        assertEquals(
+            AdaptiveRenderer.AMPLITUDE_WAVEFORM,
+            RendererChoice.choose(base.copy(apiLevel = 30, hapticPlaybackSupported = true, hapticGeneratorAvailable = true), HapticIcon.HUG),
         )
 
     @Test
@@ -48,10 +65,27 @@ class RendererChoiceTest {
         assertEquals(AdaptiveRenderer.AMPLITUDE_WAVEFORM, RendererChoice.choose(base, HapticIcon.HUG, override = AdaptiveRenderer.ENVELOPE))
 
     @Test
-    fun capabilitiesOf_envelopePhone_announcesAmplitudeWaveform() {
+    fun capabilitiesOf_envelopePhone_announcesEnvelope() {
         val caps = RendererChoice.capabilitiesOf("alice", base.copy(apiLevel = 36, envelopeEffectsSupported = true, resonantFrequencyHz = 170.0), null)
-        assertEquals(RendererKind.AMPLITUDE_WAVEFORM, caps.renderer)
+        assertEquals(RendererKind.ENVELOPE, caps.renderer)
         assertEquals(170.0, caps.resonantFrequencyHz!!, 0.0)
+    }
+
+    @Test
+    fun capabilitiesOf_audioPhone_announcesAudioCoupledAndTheOverrideWhenPossible() {
+        assertEquals(RendererKind.AUDIO_COUPLED, RendererChoice.capabilitiesOf("alice", AUDIO_PHONE, null).renderer)
+        assertEquals(RendererKind.ON_OFF, RendererChoice.capabilitiesOf("alice", AUDIO_PHONE, AdaptiveRenderer.ON_OFF).renderer)
+    }
+
+    @Test
+    fun wireNames_roundTripEveryRenderer() {
+        for (renderer in AdaptiveRenderer.entries) assertEquals(renderer, RendererChoice.fromWire(RendererChoice.toWire(renderer)))
+    }
+
+    @Test
+    fun fidelityPercent_audioCoupledIsThePcm16Rendering() {
+        // PCM16 rounding leaves ~1e-5 RMS of full scale: 100 % after rounding to whole percent.
+        assertEquals(100, RendererChoice.fidelityPercent(AdaptiveRenderer.AUDIO_COUPLED, HapticIcon.KNOCK))
     }
 
     @Test

@@ -153,6 +153,34 @@ class ChatSyncTest {
     }
 
     @Test
+    fun receipts_brokerDown_keptInRoomAndSentOnceWhenTheConnectionReturns() = runBlocking {
+        await(messenger.state) { it == org.hapticon.messaging.ConnectionState.Connected }
+        sync.openConversation("bob")
+        messenger.failing = true
+        val message = ChatMessage("0b7e7c1e-3f7b-4a57-9d3e-2f1c5a6b7c8d", "bob", now, "hi")
+
+        messenger.deliver(InboxEvent.MessageReceived(message))
+
+        // Both receipts are owed, oldest first, and nothing was sent.
+        val owed = db.pendingReceiptDao().pending()
+        assertEquals(listOf("delivered", "read"), owed.map { it.state })
+        assertEquals(listOf("bob", "bob"), owed.map { it.peer })
+        assertEquals(emptyList<Pair<String, Receipt>>(), messenger.sentReceipts.value)
+
+        messenger.failing = false
+        messenger.setConnection(org.hapticon.messaging.ConnectionState.Disconnected)
+        await(sync.connection) { it == org.hapticon.messaging.ConnectionState.Disconnected }
+        messenger.setConnection(org.hapticon.messaging.ConnectionState.Connected)
+
+        val sent = await(messenger.sentReceipts) { it.size == 2 }
+        assertEquals(
+            listOf("bob" to Receipt(message.id, "alice", ReceiptState.DELIVERED, now), "bob" to Receipt(message.id, "alice", ReceiptState.READ, now)),
+            sent,
+        )
+        assertEquals(emptyList<Any>(), db.pendingReceiptDao().pending())
+    }
+
+    @Test
     fun receipt_readForOwnMessage_updatesState() = runBlocking {
         await(messenger.state) { it == org.hapticon.messaging.ConnectionState.Connected }
         val own = repository.send("alice", "bob", "hi")

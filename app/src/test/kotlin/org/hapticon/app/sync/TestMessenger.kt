@@ -41,6 +41,11 @@ class TestMessenger(override val user: String) : Messenger {
         }
     }
 
+    /** Changes the connection as a dropped or restored link would, without ending [connect]. */
+    fun setConnection(state: ConnectionState) {
+        connection.value = state
+    }
+
     override suspend fun disconnect() {
         connection.value = ConnectionState.Disconnected
     }

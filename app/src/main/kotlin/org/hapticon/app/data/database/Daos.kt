@@ -105,3 +105,16 @@ interface IconDao {
     @Query("DELETE FROM icons WHERE name = :name")
     suspend fun deleteIcon(name: String)
 }
+
+/** Receipts waiting for a connection. */
+@Dao
+interface PendingReceiptDao {
+    @Query("SELECT * FROM pending_receipts ORDER BY at, rowid")
+    suspend fun pending(): List<PendingReceiptEntity>
+
+    @Insert(onConflict = OnConflictStrategy.REPLACE)
+    suspend fun upsert(receipt: PendingReceiptEntity)
+
+    @Query("DELETE FROM pending_receipts WHERE message_id = :messageId AND state = :state")
+    suspend fun delete(messageId: String, state: String)
+}

@@ -103,3 +103,19 @@ fun MessageEntity.asExternalModel(): StoredMessage = StoredMessage(
     state = runCatching { MessageState.valueOf(state) }.getOrDefault(MessageState.FAILED),
     readAtMillis = readAtMillis,
 )
+
+/**
+ * A delivered or read receipt this device owes a peer but could not send (offline, broker down); sent
+ * when the connection returns, then deleted (added in v3). One row per message and state.
+ */
+@Entity(tableName = "pending_receipts", primaryKeys = ["message_id", "state"])
+data class PendingReceiptEntity(
+    @ColumnInfo(name = "message_id") val messageId: String,
+    /** A [org.hapticon.messaging.ReceiptState] wire name. */
+    val state: String,
+    /** Who the receipt goes to: the message's sender. */
+    val peer: String,
+    /** Who sends it: this device's user when it was owed. */
+    @ColumnInfo(name = "from_user") val fromUser: String,
+    @ColumnInfo(name = "at") val atMillis: Long,
+)

@@ -30,6 +30,8 @@ class IconsScreenTest {
     private val vibrator get() = rule.activity.getSystemService(Vibrator::class.java)
 
     private fun scrollTo(matcher: SemanticsMatcher) {
+        // The list comes from Room (presets plus custom icons): wait until it is on screen.
+        rule.waitUntil(5_000) { rule.onAllNodes(hasScrollToNodeAction()).fetchSemanticsNodes().isNotEmpty() }
         rule.onNode(hasScrollToNodeAction()).performScrollToNode(matcher)
     }
 

@@ -1,0 +1,156 @@
+package org.hapticon.app.playback
+
+import android.content.Context
+import android.media.AudioManager
+import android.media.audiofx.HapticGenerator
+import android.net.Uri
+import android.os.Build
+import android.os.Handler
+import android.os.Looper
+import android.util.Log
+import androidx.annotation.OptIn
+import androidx.annotation.RequiresApi
+import androidx.media3.common.AudioAttributes
+import androidx.media3.common.C
+import androidx.media3.common.MediaItem
+import androidx.media3.common.util.UnstableApi
+import androidx.media3.exoplayer.ExoPlayer
+import java.io.File
+import java.io.IOException
+import java.security.MessageDigest
+import org.hapticon.core.HapticIcon
+import org.hapticon.core.io.IconJson
+import org.hapticon.core.io.WavWriter
+import org.hapticon.core.render.PcmRenderer
+
+/**
+ * Plays audio with the phone's haptic channel unmuted: the audio-coupled haptics path, on the audio clock.
+ * The originating study rendered its icons as audio that drove the LRA; this is the same on a phone whose
+ * audio HAL can feed the actuator.
+ */
+interface AudioCoupledOutput {
+    /** Whether this phone can play audio-coupled haptics now. */
+    val isAvailable: Boolean
+
+    /** Plays [wav] (a PCM16 WAV file), replacing whatever this output plays. */
+    fun play(wav: File)
+
+    /** Stops playback. */
+    fun stop()
+}
+
+/**
+ * Renders icons into PCM16 WAV files in [directory], once per distinct icon and rate: the name is a hash
+ * of the icon's JSON, so a repeat plays from disk at once. At most [maxFiles] are kept (oldest first out),
+ * because an icon is at most 30 s × 48 kHz × 2 bytes ≈ 2.9 MB.
+ */
+class IconAudioCache(
+    private val directory: File,
+    val sampleRate: Int = SAMPLE_RATE,
+    private val maxFiles: Int = 32,
+) {
+    /** The WAV file of [icon], rendered now if it is not cached. */
+    @Throws(IOException::class)
+    fun fileFor(icon: HapticIcon): File {
+        val file = File(directory, "${keyOf(icon)}.wav")
+        if (file.isFile) {
+            file.setLastModified(System.currentTimeMillis())
+            return file
+        }
+        if (!directory.isDirectory && !directory.mkdirs()) throw IOException("cannot create $directory")
+        // Written beside and renamed, so a half-written file is never played.
+        val partial = File(directory, "${file.name}.part")
+        partial.outputStream().buffered().use { WavWriter.write(PcmRenderer(icon, sampleRate).stream(), it) }
+        if (!partial.renameTo(file)) throw IOException("cannot rename $partial")
+        evict()
+        return file
+    }
+
+    private fun keyOf(icon: HapticIcon): String {
+        val digest = MessageDigest.getInstance("SHA-256").digest("$sampleRate:${IconJson.encode(icon)}".toByteArray())
+        return digest.take(12).joinToString("") { "%02x".format(it) }
+    }
+
+    private fun evict() {
+        val files = directory.listFiles { f -> f.name.endsWith(".wav") }?.sortedByDescending { it.lastModified() } ?: return
+        for (stale in files.drop(maxFiles)) stale.delete()
+    }
+
+    companion object {
+        /** The rate phone audio HALs run natively, so nothing is resampled on the way to the actuator. */
+        const val SAMPLE_RATE = 48_000
+    }
+}
+
+/**
+ * [AudioCoupledOutput] through Media3's ExoPlayer with haptic channels unmuted, on an audio session that
+ * carries the platform's [HapticGenerator] (API 31+), which derives the haptic channel from the audio.
+ * Available when the phone supports haptic playback ([AudioManager.isHapticPlaybackSupported]) and has a
+ * haptic generator. The player is made lazily and used only on the main thread, as ExoPlayer requires.
+ */
+@OptIn(UnstableApi::class)
+class Media3AudioCoupledOutput(private val context: Context) : AudioCoupledOutput {
+    private val main = Handler(Looper.getMainLooper())
+    private var player: ExoPlayer? = null
+    private var generator: Any? = null // HapticGenerator on API 31+; Any keeps the class loadable below.
+
+    override val isAvailable: Boolean
+        get() = Build.VERSION.SDK_INT >= 31 && hapticsAvailable()
+
+    override fun play(wav: File) {
+        onMain {
+            val exo = player ?: newPlayer().also { player = it }
+            exo.setMediaItem(MediaItem.fromUri(Uri.fromFile(wav)))
+            exo.prepare()
+            exo.play()
+        }
+    }
+
+    override fun stop() {
+        onMain { player?.stop() }
+    }
+
+    /** The file playing or last played, for the screens' diagnostics and tests; main thread only. */
+    val currentFile: File?
+        get() = player?.currentMediaItem?.localConfiguration?.uri?.path?.let(::File)
+
+    /** The audio attributes the player uses: sonification with haptic channels unmuted. */
+    val audioAttributes: AudioAttributes = AudioAttributes.Builder()
+        .setUsage(C.USAGE_ASSISTANCE_SONIFICATION)
+        .setContentType(C.AUDIO_CONTENT_TYPE_SONIFICATION)
+        .setHapticChannelsMuted(false)
+        .build()
+
+    private fun newPlayer(): ExoPlayer {
+        val exo = ExoPlayer.Builder(context).build()
+        exo.setAudioAttributes(audioAttributes, false)
+        if (Build.VERSION.SDK_INT >= 31) {
+            val audio = context.getSystemService(AudioManager::class.java)
+            val session = audio.generateAudioSessionId()
+            exo.audioSessionId = session
+            generator = attachGenerator(session)
+        }
+        return exo
+    }
+
+    @RequiresApi(31)
+    private fun hapticsAvailable(): Boolean =
+        runCatching { AudioManager.isHapticPlaybackSupported() && HapticGenerator.isAvailable() }.getOrDefault(false)
+
+    @RequiresApi(31)
+    private fun attachGenerator(session: Int): Any? = try {
+        HapticGenerator.create(session).apply { enabled = true }
+    } catch (e: RuntimeException) {
+        // Without the generator the audio still plays; the vibrator path is the caller's fallback next time.
+        Log.w(TAG, "no haptic generator on session $session: ${e.message}")
+        null
+    }
+
+    private fun onMain(block: () -> Unit) {
+        if (Looper.myLooper() == Looper.getMainLooper()) block() else main.post(block)
+    }
+
+    private companion object {
+        const val TAG = "AudioCoupled"
+    }
+}

@@ -1,0 +1,148 @@
+package org.hapticon.app.playback
+
+import android.content.Context
+import android.os.Looper
+import android.os.Vibrator
+import androidx.test.core.app.ApplicationProvider
+import java.io.File
+import org.hapticon.core.HapticIcon
+import org.hapticon.core.io.WavReader
+import org.hapticon.core.render.PcmRenderer
+import org.junit.Assert.assertEquals
+import org.junit.Assert.assertFalse
+import org.junit.Assert.assertNull
+import org.junit.Assert.assertSame
+import org.junit.Assert.assertTrue
+import org.junit.Before
+import org.junit.Rule
+import org.junit.Test
+import org.junit.rules.TemporaryFolder
+import org.junit.runner.RunWith
+import org.robolectric.RobolectricTestRunner
+import org.robolectric.Shadows.shadowOf
+
+/** An [AudioCoupledOutput] that records what it was asked to play. */
+private class RecordingAudioOutput(override var isAvailable: Boolean = true) : AudioCoupledOutput {
+    val played = ArrayList<File>()
+    var stops = 0
+
+    override fun play(wav: File) {
+        played += wav
+    }
+
+    override fun stop() {
+        stops++
+    }
+}
+
+@RunWith(RobolectricTestRunner::class)
+class AudioCoupledHapticsTest {
+    @get:Rule val folder = TemporaryFolder()
+
+    private val context = ApplicationProvider.getApplicationContext<Context>()
+    private val vibrator: Vibrator = defaultVibrator(context)
+    private val audio = RecordingAudioOutput()
+    private val audioPhone = DeviceCapabilities(
+        hasVibrator = true, hasAmplitudeControl = true, apiLevel = 35,
+        hapticPlaybackSupported = true, hapticGeneratorAvailable = true,
+    )
+    private lateinit var cache: IconAudioCache
+
+    @Before
+    fun setUp() {
+        shadowOf(vibrator).setHasAmplitudeControl(true)
+        cache = IconAudioCache(File(folder.root, "icon-audio"))
+    }
+
+    private fun player(output: AudioCoupledOutput = audio, audioCache: IconAudioCache = cache) =
+        AdaptiveHapticPlayer(vibrator, { audioPhone }, { null }, output, audioCache)
+
+    @Test
+    fun knock_playsItsPcm16RenderingAt48kHzThroughTheAudioPath() {
+        val playback = player().play(HapticIcon.KNOCK) as Playback.Playing
+
+        assertEquals(Renderer.AUDIO_COUPLED, playback.renderer)
+        // Knock lasts 2 · 0.27 + 0.02 = 0.56 s: 26 880 samples at 48 kHz.
+        assertEquals(560L, playback.durationMillis)
+        val wav = audio.played.single().inputStream().use { WavReader.read(it) }
+        val samples = wav.samples()
+        assertEquals(48_000, wav.sampleRate)
+        assertEquals(26_880, samples.size)
+        val expected = PcmRenderer(HapticIcon.KNOCK, 48_000).render()
+        // The reader scales PCM16 by 1/32767; scaling back gives the exact integers written.
+        for (i in expected.indices) assertEquals("sample $i", expected[i].toInt(), Math.round(samples[i] * 32767f))
+        // Nothing on the vibrator: the audio HAL drives the actuator.
+        assertNull(lastVibration(vibrator))
+    }
+
+    @Test
+    fun sameIconTwice_rendersOnceAndPlaysTheCachedFile() {
+        val player = player()
+        player.play(HapticIcon.HIT)
+        val first = audio.played.single()
+        val written = first.lastModified()
+        first.setLastModified(written - 10_000)
+
+        player.play(HapticIcon.HIT)
+
+        assertEquals(listOf(first, first), audio.played)
+        assertEquals(1, first.parentFile!!.listFiles()!!.count { it.name.endsWith(".wav") })
+    }
+
+    @Test
+    fun cache_keepsOnlyTheNewestFiles() {
+        val small = IconAudioCache(File(folder.root, "small"), maxFiles = 2)
+        val files = HapticIcon.PRESETS.map { small.fileFor(it) }
+
+        val kept = File(folder.root, "small").listFiles()!!.filter { it.name.endsWith(".wav") }.toSet()
+        assertEquals(2, kept.size)
+        assertTrue(files.last() in kept)
+        assertFalse(File(folder.root, "small").listFiles()!!.any { it.name.endsWith(".part") })
+    }
+
+    @Test
+    fun outputUnavailable_fallsBackToTheAmplitudeWaveformOnTheVibrator() {
+        val playback = player(RecordingAudioOutput(isAvailable = false)).play(HapticIcon.KNOCK) as Playback.Playing
+
+        assertEquals(Renderer.AMPLITUDE_WAVEFORM, playback.renderer)
+        assertEquals(RecordedVibration(listOf(20L, 250L, 20L, 250L, 20L), listOf(96, 0, 96, 0, 96)), lastVibration(vibrator))
+    }
+
+    @Test
+    fun cacheNotWritable_vibratesInsteadSoThePressIsNotLost() {
+        val blocked = File(folder.root, "blocked").apply { writeText("a file where the directory should be") }
+        val playback = player(audioCache = IconAudioCache(File(blocked, "icon-audio"))).play(HapticIcon.KNOCK) as Playback.Playing
+
+        assertTrue(audio.played.isEmpty())
+        assertEquals(Renderer.AMPLITUDE_WAVEFORM, playback.renderer)
+        assertEquals(listOf(96, 0, 96, 0, 96), lastVibration(vibrator)!!.amplitudes)
+    }
+
+    @Test
+    fun stop_stopsTheAudioAndTheVibrator() {
+        val player = player()
+        player.play(HapticIcon.HUG)
+        player.stop()
+        assertEquals(1, audio.stops)
+    }
+
+    @Test
+    fun media3Output_unmutesHapticChannelsAndPlaysTheFileOnTheMainThread() {
+        val output = Media3AudioCoupledOutput(context)
+        val file = cache.fileFor(HapticIcon.KNOCK)
+
+        output.play(file)
+        shadowOf(Looper.getMainLooper()).idle()
+
+        assertFalse(output.audioAttributes.hapticChannelsMuted)
+        assertEquals(file.path, output.currentFile!!.path)
+        output.stop()
+    }
+
+    @Test
+    fun media3Output_onAPhoneWithoutHapticPlayback_isUnavailable() {
+        // Robolectric's audio system reports no haptic playback, as most phones do.
+        assertFalse(Media3AudioCoupledOutput(context).isAvailable)
+        assertSame(AdaptiveRenderer.AMPLITUDE_WAVEFORM, AdaptiveHapticPlayer(vibrator, { audioPhone }, { null }, Media3AudioCoupledOutput(context), cache).rendererFor(HapticIcon.KNOCK))
+    }
+}
