@@ -1,0 +1,42 @@
+package org.hapticon.study
+
+import org.hapticon.study.design.ParticipantSchedule
+
+/**
+ * A participant's session as an ordered list of [steps]: for each task of their [schedule], its intro, one trial
+ * per stimulus in their order, its end; then [StudyStep.Done].
+ */
+public class StudyPlan private constructor(
+    /** The protocol the plan expands. */
+    public val protocol: StudyProtocol,
+    /** The task and stimulus orders of this participant. */
+    public val schedule: ParticipantSchedule,
+    /** The pseudonymous id of the participant. */
+    public val participantId: String,
+    /** Every step in order; the last is [StudyStep.Done]. */
+    public val steps: List<StudyStep>,
+) {
+    /** The trial steps only, in order. */
+    public val trials: List<StudyStep.Trial> get() = steps.filterIsInstance<StudyStep.Trial>()
+
+    public companion object {
+        /**
+         * The plan of participant [participantIndex] (0-based) under [protocol] with random-scheme [seed]. A pure
+         * function of its arguments. Throws [IllegalArgumentException] as [ParticipantSchedule.of] does.
+         */
+        public fun of(protocol: StudyProtocol, participantIndex: Int, seed: Long = 0L): StudyPlan {
+            val schedule = ParticipantSchedule.of(protocol, participantIndex, seed)
+            val steps = ArrayList<StudyStep>()
+            schedule.tasks.forEachIndexed { t, task ->
+                val position = t + 1
+                steps += StudyStep.TaskIntro(task, position)
+                schedule.stimuli.getValue(task.id).forEachIndexed { s, stimulus ->
+                    steps += StudyStep.Trial(task, position, s + 1, stimulus, QuestionTemplate.fill(task.question, stimulus, s + 1))
+                }
+                steps += StudyStep.TaskEnd(task, position)
+            }
+            steps += StudyStep.Done
+            return StudyPlan(protocol, schedule, ParticipantId.of(participantIndex), steps)
+        }
+    }
+}
