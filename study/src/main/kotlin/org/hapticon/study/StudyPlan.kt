@@ -1,6 +1,7 @@
 package org.hapticon.study
 
 import org.hapticon.study.design.ParticipantSchedule
+import org.hapticon.study.log.StudyEvent
 
 /**
  * A participant's session as an ordered list of [steps]: for each task of their [schedule], its intro, one trial
@@ -37,6 +38,20 @@ public class StudyPlan private constructor(
             }
             steps += StudyStep.Done
             return StudyPlan(protocol, schedule, ParticipantId.of(participantIndex), steps)
+        }
+
+        /**
+         * The plan of a recorded session: the participant index and seed of the first SessionStarted in [events],
+         * under [protocol]. This is how a restarted app, or an analysis, recovers the orders a participant saw.
+         * Throws [IllegalArgumentException] when [events] hold no SessionStarted or it names another protocol or revision.
+         */
+        public fun ofSession(protocol: StudyProtocol, events: List<StudyEvent>): StudyPlan {
+            val started = events.firstNotNullOfOrNull { it as? StudyEvent.SessionStarted }
+                ?: throw IllegalArgumentException("the log has no ${StudyEvent.SESSION_STARTED} event")
+            require(started.protocolId == protocol.id && started.revision == protocol.revision) {
+                "the session ran protocol ${started.protocolId} revision ${started.revision}, not ${protocol.id} revision ${protocol.revision}"
+            }
+            return of(protocol, started.participantIndex, started.seed)
         }
     }
 }

@@ -61,7 +61,8 @@ class StudySessionTest {
         val visited = ArrayList<StudyStep>()
         while (true) {
             // Every turn starts from the log alone, as after the app was killed and restarted.
-            val step = StudySession(plan).nextStep(EventLog.resume(plan.participantId, log.entries).events)
+            val resumed = EventLog.resume(plan.participantId, log.entries).events
+            val step = StudySession(StudyPlan.ofSession(protocol, resumed)).nextStep(resumed)
             visited += step
             now += 10
             when (step) {
@@ -98,6 +99,22 @@ class StudySessionTest {
         assertEquals(trials[1], StudySession(plan).nextStep(events))
         assertEquals(1, StudySession(plan).answeredTrials(events))
         assertEquals(plan.steps[0], StudySession(plan).nextStep(emptyList()))
+    }
+
+    @Test
+    fun ofSession_needsAMatchingSessionStarted() {
+        assertEquals(StudyPlan.of(protocol, 9, 4).steps, StudyPlan.ofSession(protocol, listOf(StudyEvent.SessionStarted(protocol.id, 1, 9, 4))).steps)
+        for ((events, message) in listOf(
+            emptyList<StudyEvent>() to "the log has no session_started event",
+            listOf(StudyEvent.SessionStarted(protocol.id, 2, 0, 0)) to "the session ran protocol hapticon-icons revision 2, not hapticon-icons revision 1",
+        )) {
+            try {
+                StudyPlan.ofSession(protocol, events)
+                org.junit.Assert.fail()
+            } catch (e: IllegalArgumentException) {
+                assertEquals(message, e.message)
+            }
+        }
     }
 
     @Test

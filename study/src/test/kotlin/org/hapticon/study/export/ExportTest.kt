@@ -81,9 +81,9 @@ class ExportTest {
     fun rows_badLogs_clearErrors() {
         val log = EventLog.start("P000-A")
         log.append(StudyEvent.Answer("icons", "knock", 5), 10)
-        expect("entry 0: an answer before SessionStarted") { ResponseRows.of(protocol, log.entries) }
+        expect("the log has no session_started event") { ResponseRows.of(protocol, log.entries) }
         val other = EventLog.start("P000-A").apply { append(StudyEvent.SessionStarted("other", 1, 0, 0L), 0) }
-        expect("entry 0: the session ran protocol other revision 1, not hapticon-icons revision 1") { ResponseRows.of(protocol, other.entries) }
+        expect("the session ran protocol other revision 1, not hapticon-icons revision 1") { ResponseRows.of(protocol, other.entries) }
         val unknown = EventLog.start("P000-A").apply {
             append(StudyEvent.SessionStarted(protocol.id, 1, 0, 0L), 0)
             append(StudyEvent.Answer("icons", "tickle", 3), 1)
