@@ -1,7 +1,7 @@
 package org.hapticon.study
 
 import org.junit.Assert.assertEquals
-import org.junit.Assert.fail
+import org.junit.Assert.assertThrows
 import org.junit.Test
 
 class ParticipantIdTest {
@@ -48,20 +48,9 @@ class ParticipantIdTest {
     }
 
     private fun rejects(id: String) {
-        try {
-            ParticipantId.parse(id)
-            fail("accepted $id")
-        } catch (e: IllegalArgumentException) {
-            // expected
-        }
+        assertThrows(id, IllegalArgumentException::class.java) { ParticipantId.parse(id) }
     }
 
-    private fun expect(message: String, block: () -> Unit) {
-        try {
-            block()
-            fail("no error: $message")
-        } catch (e: IllegalArgumentException) {
-            assertEquals(message, e.message)
-        }
-    }
+    private fun expect(message: String, block: () -> Unit) =
+        assertEquals(message, assertThrows(IllegalArgumentException::class.java) { block() }.message)
 }

@@ -5,7 +5,7 @@ import org.hapticon.core.io.JsonException
 import org.hapticon.study.design.OrderScheme
 import org.junit.Assert.assertEquals
 import org.junit.Assert.assertTrue
-import org.junit.Assert.fail
+import org.junit.Assert.assertThrows
 import org.junit.Test
 
 class ProtocolJsonTest {
@@ -74,8 +74,8 @@ class ProtocolJsonTest {
 
     @Test
     fun notAnObject_andNotJson() {
-        try { ProtocolJson.decode("[]"); fail() } catch (e: ProtocolException) { assertEquals("protocol: expected an object, got an array", e.message) }
-        try { ProtocolJson.decode("{"); fail() } catch (e: JsonException) { assertEquals(1, e.offset) }
+        assertEquals("protocol: expected an object, got an array", assertThrows(ProtocolException::class.java) { ProtocolJson.decode("[]") }.message)
+        assertEquals(1, assertThrows(JsonException::class.java) { ProtocolJson.decode("{") }.offset)
     }
 
     @Test
@@ -84,21 +84,15 @@ class ProtocolJsonTest {
         val p = StudyProtocol("big", "Big", LikertScale(7), (0 until 20).map { StudyTask("t$it", "T", "", stimuli, "Q {n}", OrderScheme.RANDOM) }, OrderScheme.FULL)
         assertEquals(p, ProtocolJson.decode(ProtocolJson.encode(p, "")))
         val tooBig = p.copy(tasks = p.tasks + (20 until 40).map { p.tasks[0].copy(id = "t$it") })
-        try { ProtocolJson.decode(ProtocolJson.encode(tooBig)); fail() } catch (e: JsonException) {
-            assertTrue(e.message, e.message!!.endsWith("exceeds the limit of 1048576 at offset 1048576"))
-        }
+        val e = assertThrows(JsonException::class.java) { ProtocolJson.decode(ProtocolJson.encode(tooBig)) }
+        assertTrue(e.message, e.message!!.endsWith("exceeds the limit of 1048576 at offset 1048576"))
     }
 
     private fun knock() = org.hapticon.core.io.IconJson.encode(HapticIcon.KNOCK)
 
     private fun expect(message: String, edit: (String) -> String) {
         val text = edit(VALID)
-        try {
-            ProtocolJson.decode(text)
-            fail("no error for $message in $text")
-        } catch (e: ProtocolException) {
-            assertEquals(text, message, e.message)
-        }
+        assertEquals(text, message, assertThrows(text, ProtocolException::class.java) { ProtocolJson.decode(text) }.message)
     }
 
     private companion object {

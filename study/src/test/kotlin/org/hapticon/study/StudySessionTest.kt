@@ -8,6 +8,7 @@ import org.hapticon.study.log.StudyEvent
 import org.junit.Assert.assertEquals
 import org.junit.Assert.assertFalse
 import org.junit.Assert.assertNotEquals
+import org.junit.Assert.assertThrows
 import org.junit.Assert.assertTrue
 import org.junit.Test
 
@@ -108,12 +109,7 @@ class StudySessionTest {
             emptyList<StudyEvent>() to "the log has no session_started event",
             listOf(StudyEvent.SessionStarted(protocol.id, 2, 0, 0)) to "the session ran protocol hapticon-icons revision 2, not hapticon-icons revision 1",
         )) {
-            try {
-                StudyPlan.ofSession(protocol, events)
-                org.junit.Assert.fail()
-            } catch (e: IllegalArgumentException) {
-                assertEquals(message, e.message)
-            }
+            assertEquals(message, assertThrows(IllegalArgumentException::class.java) { StudyPlan.ofSession(protocol, events) }.message)
         }
     }
 

@@ -4,7 +4,7 @@ import org.junit.Assert.assertEquals
 import org.junit.Assert.assertNotEquals
 import org.junit.Assert.assertNull
 import org.junit.Assert.assertTrue
-import org.junit.Assert.fail
+import org.junit.Assert.assertThrows
 import org.junit.Test
 
 class CounterbalancingTest {
@@ -79,12 +79,8 @@ class CounterbalancingTest {
 
     @Test
     fun full_twentyOneItems_rejected() {
-        try {
-            Counterbalancing.order(OrderScheme.FULL, 21, 0)
-            fail()
-        } catch (e: IllegalArgumentException) {
-            assertEquals("full counterbalancing of 21 items needs 21! participants; at most 20 items", e.message)
-        }
+        val e = assertThrows(IllegalArgumentException::class.java) { Counterbalancing.order(OrderScheme.FULL, 21, 0) }
+        assertEquals("full counterbalancing of 21 items needs 21! participants; at most 20 items", e.message)
     }
 
     @Test
@@ -132,12 +128,8 @@ class CounterbalancingTest {
             assertEquals(listOf(0), Counterbalancing.order(scheme, 1, 3))
         }
         assertEquals(listOf(listOf(0)), Counterbalancing.williamsSquare(1))
-        try { Counterbalancing.order(OrderScheme.PAPER, 3, -1); fail() } catch (e: IllegalArgumentException) {
-            assertEquals("participantIndex must be >= 0, was -1", e.message)
-        }
-        try { Counterbalancing.order(OrderScheme.PAPER, -1, 0); fail() } catch (e: IllegalArgumentException) {
-            assertEquals("itemCount must be >= 0, was -1", e.message)
-        }
+        assertEquals("participantIndex must be >= 0, was -1", assertThrows(IllegalArgumentException::class.java) { Counterbalancing.order(OrderScheme.PAPER, 3, -1) }.message)
+        assertEquals("itemCount must be >= 0, was -1", assertThrows(IllegalArgumentException::class.java) { Counterbalancing.order(OrderScheme.PAPER, -1, 0) }.message)
     }
 
     @Test

@@ -11,7 +11,7 @@ import org.hapticon.study.log.LogEntry
 import org.hapticon.study.log.StudyEvent
 import org.hapticon.study.log.verifyChain
 import org.junit.Assert.assertEquals
-import org.junit.Assert.fail
+import org.junit.Assert.assertThrows
 import org.junit.Test
 
 class ExportTest {
@@ -140,23 +140,14 @@ class ExportTest {
     @Test
     fun json_errorsNamePaths() {
         val text = StudyExport.encode(StudyExport(protocol, listOf(SessionLog("P000-A", session(0).take(3)))), "")
-        try { StudyExport.decode(text.replaceFirst("\"hash\":", "\"hesh\":")); fail() } catch (e: ProtocolException) {
-            assertEquals("participants[0].entries[0].hash: missing", e.message)
+        expect("participants[0].entries[0].hash: missing") { StudyExport.decode(text.replaceFirst("\"hash\":", "\"hesh\":")) }
+        expect("protocol.scale.points: must be in 2..11, was 0") { StudyExport.decode(text.replace("\"points\":5", "\"points\":0")) }
+        expect("schema: expected \"hapticon.study-export\", got \"hapticon.study\"") {
+            StudyExport.decode(text.replace("hapticon.study-export", "hapticon.study"))
         }
-        try { StudyExport.decode(text.replace("\"points\":5", "\"points\":0")); fail() } catch (e: ProtocolException) {
-            assertEquals("protocol.scale.points: must be in 2..11, was 0", e.message)
-        }
-        try { StudyExport.decode(text.replace("hapticon.study-export", "hapticon.study")); fail() } catch (e: ProtocolException) {
-            assertEquals("schema: expected \"hapticon.study-export\", got \"hapticon.study\"", e.message)
-        }
+        assertThrows(ProtocolException::class.java) { StudyExport.decode(text.replace("\"hash\":", "\"hesh\":")) }
     }
 
-    private fun expect(message: String, block: () -> Unit) {
-        try {
-            block()
-            fail("no error: $message")
-        } catch (e: IllegalArgumentException) {
-            assertEquals(message, e.message)
-        }
-    }
+    private fun expect(message: String, block: () -> Unit) =
+        assertEquals(message, assertThrows(IllegalArgumentException::class.java) { block() }.message)
 }

@@ -2,7 +2,7 @@ package org.hapticon.study.log
 
 import org.hapticon.core.io.Json
 import org.junit.Assert.assertEquals
-import org.junit.Assert.fail
+import org.junit.Assert.assertThrows
 import org.junit.Test
 
 class HashChainTest {
@@ -73,12 +73,8 @@ class HashChainTest {
     @Test
     fun resume_refusesBrokenChainAndOtherParticipant() {
         val entries = log(3)
-        try { EventLog.resume("P004-E", entries.drop(1)); fail() } catch (e: IllegalArgumentException) {
-            assertEquals("cannot resume a broken log: deleted at index 0: entries 0..0 are missing before entry 1", e.message)
-        }
-        try { EventLog.resume("P000-A", entries); fail() } catch (e: IllegalArgumentException) {
-            assertEquals("entry 0 belongs to P004-E, not P000-A", e.message)
-        }
+        expect("cannot resume a broken log: deleted at index 0: entries 0..0 are missing before entry 1") { EventLog.resume("P004-E", entries.drop(1)) }
+        expect("entry 0 belongs to P004-E, not P000-A") { EventLog.resume("P000-A", entries) }
         val resumed = EventLog.resume("P004-E", entries)
         resumed.append(StudyEvent.SessionEnded, 5)
         assertEquals(ChainVerification.Intact, resumed.entries.verifyChain())
@@ -93,9 +89,10 @@ class HashChainTest {
             StudyEvent.PlaybackFinished("t", "s"), StudyEvent.Answer("t", "s", 4),
         )
         for (event in events) assertEquals(event, StudyEvent.of(event.type, Json.decode(Json.encode(StudyEvent.payload(event)))))
-        try { StudyEvent.of("nap", Json.decode("{}")); fail() } catch (e: IllegalArgumentException) { assertEquals("unknown event type \"nap\"", e.message) }
-        try { StudyEvent.of("answer", Json.decode("""{"task":"t","stimulus":"s","value":"4"}""")); fail() } catch (e: IllegalArgumentException) {
-            assertEquals("payload.value: expected an integer, got \"4\"", e.message)
-        }
+        expect("unknown event type \"nap\"") { StudyEvent.of("nap", Json.decode("{}")) }
+        expect("payload.value: expected an integer, got \"4\"") { StudyEvent.of("answer", Json.decode("""{"task":"t","stimulus":"s","value":"4"}""")) }
     }
+
+    private fun expect(message: String, block: () -> Unit) =
+        assertEquals(message, assertThrows(IllegalArgumentException::class.java) { block() }.message)
 }
