@@ -18,13 +18,13 @@ public object OriginatingStudy {
     /** The protocol id. */
     public const val ID: String = "hapticon-icons"
 
-    /** The three tasks' ids in protocol order. */
+    /** Id of task 1: the icons alone. */
     public const val ICONS_TASK: String = "icons"
 
-    /** Text with icons. */
+    /** Id of task 2: text with icons. */
     public const val TEXT_TASK: String = "text"
 
-    /** Stickers with icons. */
+    /** Id of task 3: stickers with icons. */
     public const val STICKERS_TASK: String = "stickers"
 
     private val GESTURES = listOf(

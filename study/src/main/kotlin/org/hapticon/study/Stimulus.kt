@@ -6,7 +6,7 @@ import org.hapticon.core.HapticIcon
  * One thing a participant rates: a haptic [icon], shown alone or with a message [text] and/or a [sticker]
  * (a sticker id such as `sticker_stroke`). [label] is free text a question template can use as `{label}`.
  *
- * Checked when it becomes part of a [StudyTask] (ids, blank strings), so that the error can name its path.
+ * Checked by [StudyProtocol] (ids, blank strings), which knows the stimulus's place and so can name its path.
  */
 public data class Stimulus(
     val id: String,
