@@ -85,7 +85,8 @@ public sealed interface StudyEvent {
             when (event) {
                 is SessionStarted -> linkedMapOf(
                     "protocol" to JsonString(event.protocolId), "revision" to JsonNumber(event.revision),
-                    "participantIndex" to JsonNumber(event.participantIndex), // A string: a 64-bit seed does not survive a JSON number, which is a double.
+                    "participantIndex" to JsonNumber(event.participantIndex),
+                    // A string: a 64-bit seed does not survive a JSON number, which is a double.
                     "seed" to JsonString(event.seed.toString()),
                 )
                 SessionEnded -> linkedMapOf()
