@@ -37,6 +37,11 @@ val USAGE: String = """
     |  hapticon broker [--port N] [--data DIR]
     |      Run the embedded MQTT broker on 127.0.0.1 (default port 1883, store in ~/.hapticon/broker)
     |      until Ctrl-C.
+    |  hapticon schedule --participants N --design paper|williams|full|random|fixed [--seed S] [--protocol FILE]
+    |      Counterbalanced orders of a study (default: the originating study) as CSV participant,position,task,
+    |      a blank line, then participant,task,position,stimulus; participant is the pseudonymous id (P000-A).
+    |  hapticon study-protocol [--out FILE]
+    |      Print (or write) the default study protocol JSON, to edit and pass to --protocol. See docs/study.md.
     |  hapticon help
     |      Print this text.
     |

@@ -1,0 +1,82 @@
+package org.hapticon.study.export
+
+/**
+ * [ResponseRow]s as long-format CSV (RFC 4180: comma-separated, CRLF line ends, fields holding a comma, quote or line
+ * break quoted with `"` and inner quotes doubled), under exactly the header [HEADER]. Absent values (text, sticker,
+ * response time) are empty fields.
+ */
+public object ResponseCsv {
+    /** The header line, without its line end. */
+    public const val HEADER: String =
+        "study_id,protocol_version,participant,participant_index,task,task_position,trial,stimulus,icon,text,sticker," +
+            "question,response,response_time_ms,icon_presses,answered_at"
+
+    private val COLUMNS = HEADER.split(',')
+
+    /** [rows] as CSV text: the header, then one line per row, every line ending in CRLF. Does not throw. */
+    public fun write(rows: List<ResponseRow>): String {
+        val out = StringBuilder(HEADER).append("\r\n")
+        for (row in rows) {
+            val fields = listOf(
+                row.studyId, row.protocolVersion.toString(), row.participant, row.participantIndex.toString(), row.task,
+                row.taskPosition.toString(), row.trial.toString(), row.stimulus, row.icon, row.text.orEmpty(), row.sticker.orEmpty(),
+                row.question, row.response.toString(), row.responseTimeMillis?.toString().orEmpty(), row.iconPresses.toString(),
+                row.answeredAtMillis.toString(),
+            )
+            fields.joinTo(out, ",") { Csv.quote(it) }
+            out.append("\r\n")
+        }
+        return out.toString()
+    }
+
+    /**
+     * The rows of [csv], which may end lines in CRLF or LF and may lack the last line end. Throws
+     * [IllegalArgumentException] naming the line and column when the header is not exactly [HEADER], a record has the
+     * wrong number of fields, a number does not parse, a quote is unterminated, or the text is empty.
+     */
+    public fun read(csv: String): List<ResponseRow> {
+        val records = Csv.parse(csv)
+        require(records.isNotEmpty()) { "empty CSV: expected the header $HEADER" }
+        val (headerLine, header) = records[0]
+        require(header == COLUMNS) { "line $headerLine: header must be exactly $HEADER" }
+        return records.drop(1).map { (line, fields) ->
+            require(fields.size == COLUMNS.size) { "line $line: expected ${COLUMNS.size} fields, got ${fields.size}" }
+            val record = Record(line, fields)
+            ResponseRow(
+                studyId = record.text(0),
+                protocolVersion = record.int(1),
+                participant = record.text(2),
+                participantIndex = record.int(3),
+                task = record.text(4),
+                taskPosition = record.int(5),
+                trial = record.int(6),
+                stimulus = record.text(7),
+                icon = record.text(8),
+                text = record.optionalText(9),
+                sticker = record.optionalText(10),
+                question = record.text(11),
+                response = record.int(12),
+                responseTimeMillis = record.optionalLong(13),
+                iconPresses = record.int(14),
+                answeredAtMillis = record.long(15),
+            )
+        }
+    }
+
+    private class Record(val line: Int, val fields: List<String>) {
+        fun text(i: Int): String = fields[i].ifEmpty { fail(i, "must not be empty") }
+
+        fun optionalText(i: Int): String? = fields[i].ifEmpty { null }
+
+        fun int(i: Int): Int = fields[i].toIntOrNull() ?: fail(i, "expected an integer, got '${fields[i].take(40)}'")
+
+        fun long(i: Int): Long = optionalLong(i) ?: fail(i, "expected an integer, got ''")
+
+        fun optionalLong(i: Int): Long? {
+            if (fields[i].isEmpty()) return null
+            return fields[i].toLongOrNull() ?: fail(i, "expected an integer, got '${fields[i].take(40)}'")
+        }
+
+        private fun fail(i: Int, message: String): Nothing = throw IllegalArgumentException("line $line, column ${COLUMNS[i]}: $message")
+    }
+}
