@@ -5,6 +5,8 @@ import org.hapticon.companion.chat.runChat
 import org.hapticon.companion.sensors.runDecode
 import org.hapticon.companion.sensors.runGrains
 import org.hapticon.companion.sensors.runHandshake
+import org.hapticon.companion.study.runAnalyze
+import org.hapticon.companion.study.runCollect
 import java.io.PrintStream
 
 /** Exit status for success. */
@@ -76,6 +78,8 @@ private fun dispatch(args: List<String>, console: Console) {
         "handshake" -> runHandshake(rest, console)
         "chat" -> runChat(rest, console)
         "broker" -> runBroker(rest, console)
+        "analyze" -> runAnalyze(rest, console)
+        "collect" -> runCollect(rest, console)
         else -> throw UsageException("unknown command '$command'; try 'hapticon help'")
     }
 }
