@@ -42,10 +42,13 @@ object AnalysisTables {
         return listOf(
             c.task, c.iconA, c.iconB, c.participants.size.toString(),
             number(t?.t, digits), t?.df?.toString().orEmpty(), number(t?.p, digits), number(c.tHolm, digits), number(t?.cohensDz, digits),
-            number(w?.v, digits), number(w?.p, digits), number(c.wilcoxonHolm, digits),
+            w?.v?.let { rankSum(it) }.orEmpty(), number(w?.p, digits), number(c.wilcoxonHolm, digits),
             c.droppedParticipants.joinToString(";"),
         )
     }
+
+    /** V exactly: a sum of ranks is a whole number or, with ties, ends in .5; rounding it would misreport it. */
+    private fun rankSum(v: Double): String = if (v == Math.rint(v)) v.toLong().toString() else v.toString()
 
     /** [value] to [digits] significant digits, trailing zeros dropped; empty for null. */
     fun number(value: Double?, digits: Int): String {
