@@ -5,7 +5,6 @@ import org.hapticon.companion.Console
 import org.hapticon.companion.UsageException
 import java.io.File
 import java.io.IOException
-import java.net.BindException
 import java.sql.SQLException
 
 /** The port `hapticon collect` listens on unless told otherwise. */
@@ -44,8 +43,6 @@ fun runCollect(
     }
     val server = try {
         CollectorServer(store, host, port, token)
-    } catch (e: BindException) {
-        throw UsageException("cannot listen on $host:$port: ${e.message}")
     } catch (e: IOException) {
         throw UsageException("cannot listen on $host:$port: ${e.message}")
     }

@@ -60,7 +60,7 @@ class ResultStore(private val jdbcUrl: String) {
             s.setString(1, studyId)
             s.executeQuery().use { r ->
                 val rows = ArrayList<ResultRow>()
-                while (r.next()) rows += ResultRow(ResultRows.HEADER.indices.map { r.getString(it + 1) })
+                while (r.next()) rows += readRow(r)
                 rows
             }
         }
@@ -79,9 +79,12 @@ class ResultStore(private val jdbcUrl: String) {
         select.setString(3, row["task"])
         select.setInt(4, row["trial"].toInt())
         return select.executeQuery().use { r ->
-            if (r.next()) ResultRow(ResultRows.HEADER.indices.map { r.getString(it + 1) }) else null
+            if (r.next()) readRow(r) else null
         }
     }
+
+    /** The current row of [r], selected as [COLUMNS]. */
+    private fun readRow(r: java.sql.ResultSet): ResultRow = ResultRow(ResultRows.HEADER.indices.map { r.getString(it + 1) })
 
     private fun bind(insert: java.sql.PreparedStatement, fields: List<String>) {
         for ((i, name) in ResultRows.HEADER.withIndex()) {

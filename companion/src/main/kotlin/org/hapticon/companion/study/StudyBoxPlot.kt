@@ -76,19 +76,7 @@ object StudyBoxPlot {
     private fun drawAxes(g: Graphics2D, area: PlotArea, boxes: List<IconBox>) {
         // One tick per scale point (Likert values are whole numbers), fewer on long scales.
         val ticks = Ticks.between(area.minValue, area.maxValue, maxTicks = (area.maxValue - area.minValue).toInt().plus(1).coerceIn(2, 12))
-        val line = Line2D.Double()
-        g.stroke = PlotStyle.THIN
-        g.color = PlotStyle.GRID
-        for (v in ticks.values) g.draw(line.also { it.setLine(area.left.toDouble(), area.y(v), area.right.toDouble(), area.y(v)) })
-        g.color = PlotStyle.AXIS
-        g.drawRect(area.left, area.top, area.width, area.height)
-        g.font = PlotStyle.TICK_FONT
-        val metrics = g.fontMetrics
-        for (v in ticks.values) {
-            val label = ticks.label(v)
-            g.color = PlotStyle.MUTED_TEXT
-            g.drawString(label, area.left - 8 - metrics.stringWidth(label), (area.y(v) + metrics.ascent / 2.0 - 1).roundToInt())
-        }
+        Axes.valueAxis(g, area, ticks, "response")
         g.font = PlotStyle.LABEL_FONT
         val labelMetrics = g.fontMetrics
         g.color = PlotStyle.TEXT
@@ -96,12 +84,6 @@ object StudyBoxPlot {
             val label = "${box.icon} (n=${box.descriptives.n})"
             g.drawString(label, (area.x(i + 0.5) - labelMetrics.stringWidth(label) / 2.0).roundToInt(), area.bottom + 8 + labelMetrics.ascent)
         }
-        val saved = g.transform
-        val valueLabel = "response"
-        g.translate(area.left - 44.0, area.top + (area.height + labelMetrics.stringWidth(valueLabel)) / 2.0)
-        g.rotate(-Math.PI / 2)
-        g.drawString(valueLabel, 0, 0)
-        g.transform = saved
     }
 
     private fun drawBox(g: Graphics2D, area: PlotArea, index: Int, box: IconBox) {

@@ -11,6 +11,8 @@ import org.junit.rules.TemporaryFolder
 import java.io.ByteArrayOutputStream
 import java.io.File
 import java.io.PrintStream
+import java.net.InetAddress
+import java.net.ServerSocket
 import java.net.URI
 import java.net.http.HttpClient
 import java.net.http.HttpRequest
@@ -139,5 +141,12 @@ class CollectorTest {
         assertEquals(listOf("hapticon: --db must be sqlite:PATH or postgresql://HOST/DB?user=.., got 'mysql://x'"), cli("collect", "--db", "mysql://x").stderrLines)
         assertEquals(listOf("hapticon: --port must be in 0..65535, got 70000"), cli("collect", "--port", "70000").stderrLines)
         assertEquals(listOf("hapticon: --token-file: no such file: nope"), cli("collect", "--token-file", "nope").stderrLines)
+        val empty = temp.newFile("empty-token")
+        assertEquals(listOf("hapticon: --token-file: $empty is empty"), cli("collect", "--token-file", empty.path).stderrLines)
+        ServerSocket(0, 1, InetAddress.getByName("127.0.0.1")).use { taken ->
+            val busy = cli("collect", "--port", taken.localPort.toString(), "--db", "sqlite:" + File(temp.root, "busy.db").path)
+            assertEquals(2, busy.exitCode)
+            assertTrue(busy.stderr, busy.stderr.startsWith("hapticon: cannot listen on 127.0.0.1:${taken.localPort}: "))
+        }
     }
 }
