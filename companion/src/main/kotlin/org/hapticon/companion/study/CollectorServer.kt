@@ -53,6 +53,7 @@ class CollectorServer(private val store: ResultStore, host: String, port: Int, p
         if (line == null) json(status, "error" to JsonString(message)) else json(status, "error" to JsonString(message), "line" to JsonNumber(line.toDouble()))
 
     private fun health(exchange: HttpExchange): Reply {
+        if (exchange.requestURI.path != "/health") return error(404, "no such resource")
         if (exchange.requestMethod != "GET") return error(405, "use GET")
         return if (store.isHealthy()) json(200, "status" to JsonString("ok")) else error(503, "database unavailable")
     }

@@ -92,7 +92,12 @@ class ResultStore(private val jdbcUrl: String) {
         }
     }
 
-    private fun connect(): Connection = DriverManager.getConnection(jdbcUrl)
+    private fun connect(): Connection {
+        val connection = DriverManager.getConnection(jdbcUrl)
+        // Uploads run on several server threads: let a SQLite writer wait for the file lock instead of failing at once.
+        if (jdbcUrl.startsWith("jdbc:sqlite:")) connection.createStatement().use { it.execute("PRAGMA busy_timeout = $SQLITE_BUSY_TIMEOUT_MS") }
+        return connection
+    }
 
     companion object {
         /**
@@ -112,5 +117,6 @@ class ResultStore(private val jdbcUrl: String) {
         private val INSERT = "INSERT INTO study_results ($COLUMNS) VALUES (${ResultRows.HEADER.joinToString(", ") { "?" }})"
         private val SELECT_ONE = "SELECT $COLUMNS FROM study_results WHERE study_id = ? AND participant = ? AND task = ? AND trial = ?"
         private const val HEALTH_TIMEOUT_SECONDS = 2
+        private const val SQLITE_BUSY_TIMEOUT_MS = 10_000
     }
 }

@@ -97,6 +97,7 @@ class CollectorTest {
             assertEquals("{\"error\":\"line 2: participant_index '-1' is not a whole number ≥ 0\",\"line\":2}\n", count.body())
             assertEquals(404, h.get("/v1/studies/../results.csv").statusCode())
             assertEquals(405, h.get("/v1/results").statusCode())
+            assertEquals(404, h.get("/healthz").statusCode())
         }
     }
 
