@@ -18,6 +18,8 @@ dependencies {
     implementation(project(":messaging:broker"))
     implementation(project(":study"))
     implementation(project(":gesture"))
+    implementation(libs.sqlite.jdbc) // the study collector's default store
+    implementation(libs.postgresql) // the study collector's optional store
 
     testImplementation(project(":test-fixtures"))
     testImplementation(libs.junit4)

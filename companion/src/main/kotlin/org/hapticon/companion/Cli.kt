@@ -7,6 +7,8 @@ import org.hapticon.companion.sensors.runGrains
 import org.hapticon.companion.sensors.runHandshake
 import org.hapticon.companion.study.runSchedule
 import org.hapticon.companion.study.runStudyProtocol
+import org.hapticon.companion.study.runAnalyze
+import org.hapticon.companion.study.runCollect
 import java.io.PrintStream
 
 /** Exit status for success. */
@@ -80,6 +82,8 @@ private fun dispatch(args: List<String>, console: Console) {
         "broker" -> runBroker(rest, console)
         "schedule" -> runSchedule(rest, console)
         "study-protocol" -> runStudyProtocol(rest, console)
+        "analyze" -> runAnalyze(rest, console)
+        "collect" -> runCollect(rest, console)
         else -> throw UsageException("unknown command '$command'; try 'hapticon help'")
     }
 }

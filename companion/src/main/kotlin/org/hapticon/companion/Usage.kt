@@ -42,6 +42,15 @@ val USAGE: String = """
     |      a blank line, then participant,task,position,stimulus; participant is the pseudonymous id (P000-A).
     |  hapticon study-protocol [--out FILE]
     |      Print (or write) the default study protocol JSON, to edit and pass to --protocol. See docs/study.md.
+    |  hapticon analyze RESULTS.csv [--out DIR] [--holm] [--test t|wilcoxon|both]
+    |      Study statistics from a long-format results CSV (columns participant, task, icon, response):
+    |      descriptives per task and icon, paired t and/or Wilcoxon signed-rank tests for every icon pair
+    |      of a task (--holm adds Holm-adjusted p); Markdown to stdout, CSV/Markdown tables and one box
+    |      plot per task into DIR (default ./analysis).
+    |  hapticon collect [--port N] [--host H] [--db sqlite:PATH|postgresql://HOST/DB?user=..] [--token-file F]
+    |      Study collector: an HTTP service the app uploads results to (POST /v1/results, text/csv with
+    |      X-Study-Id); GET /v1/studies/ID/results.csv, GET /health. Defaults: 127.0.0.1:8080,
+    |      sqlite:hapticon-results.db. Runs until Ctrl-C.
     |  hapticon help
     |      Print this text.
     |

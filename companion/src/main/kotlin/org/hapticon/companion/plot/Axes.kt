@@ -20,13 +20,7 @@ object Axes {
         g.stroke = PlotStyle.THIN
         g.color = PlotStyle.GRID
         for (t in timeTicks.values) g.draw(line.also { it.setLine(area.x(t), area.top.toDouble(), area.x(t), area.bottom.toDouble()) })
-        for (v in valueTicks.values) g.draw(line.also { it.setLine(area.left.toDouble(), area.y(v), area.right.toDouble(), area.y(v)) })
-        if (area.minValue < 0.0 && area.maxValue > 0.0) {
-            g.color = PlotStyle.AXIS
-            g.draw(line.also { it.setLine(area.left.toDouble(), area.y(0.0), area.right.toDouble(), area.y(0.0)) })
-        }
-        g.color = PlotStyle.AXIS
-        g.drawRect(area.left, area.top, area.width, area.height)
+        valueAxis(g, area, valueTicks, valueLabel)
 
         g.font = PlotStyle.TICK_FONT
         val metrics = g.fontMetrics
@@ -38,6 +32,32 @@ object Axes {
             g.color = PlotStyle.MUTED_TEXT
             g.drawString(label, (x - metrics.stringWidth(label) / 2.0).roundToInt(), area.bottom + 7 + metrics.ascent)
         }
+        g.font = PlotStyle.LABEL_FONT
+        g.color = PlotStyle.TEXT
+        val timeLabel = "time (s)"
+        val labelMetrics = g.fontMetrics
+        g.drawString(timeLabel, area.left + (area.width - labelMetrics.stringWidth(timeLabel)) / 2, area.bottom + 26 + labelMetrics.ascent)
+    }
+
+    /**
+     * Draws the value side of [area]: horizontal grid lines at [valueTicks] (the zero line darker), the
+     * frame, tick marks and labels on the left and [valueLabel] rotated beside them. Plots whose x axis is
+     * not time (categories, say) draw their own x axis after this.
+     */
+    fun valueAxis(g: Graphics2D, area: PlotArea, valueTicks: Ticks, valueLabel: String) {
+        val line = Line2D.Double()
+        g.stroke = PlotStyle.THIN
+        g.color = PlotStyle.GRID
+        for (v in valueTicks.values) g.draw(line.also { it.setLine(area.left.toDouble(), area.y(v), area.right.toDouble(), area.y(v)) })
+        if (area.minValue < 0.0 && area.maxValue > 0.0) {
+            g.color = PlotStyle.AXIS
+            g.draw(line.also { it.setLine(area.left.toDouble(), area.y(0.0), area.right.toDouble(), area.y(0.0)) })
+        }
+        g.color = PlotStyle.AXIS
+        g.drawRect(area.left, area.top, area.width, area.height)
+
+        g.font = PlotStyle.TICK_FONT
+        val metrics = g.fontMetrics
         for (v in valueTicks.values) {
             val y = area.y(v)
             g.color = PlotStyle.AXIS
@@ -49,9 +69,7 @@ object Axes {
 
         g.font = PlotStyle.LABEL_FONT
         g.color = PlotStyle.TEXT
-        val timeLabel = "time (s)"
         val labelMetrics = g.fontMetrics
-        g.drawString(timeLabel, area.left + (area.width - labelMetrics.stringWidth(timeLabel)) / 2, area.bottom + 26 + labelMetrics.ascent)
         val saved = g.transform
         g.translate(area.left - 52.0, area.top + (area.height + labelMetrics.stringWidth(valueLabel)) / 2.0)
         g.rotate(-Math.PI / 2)

@@ -1,0 +1,153 @@
+package org.hapticon.companion.study
+
+import org.hapticon.companion.Console
+import org.hapticon.companion.cli
+import org.hapticon.testing.StudyResults
+import org.junit.Assert.assertEquals
+import org.junit.Assert.assertTrue
+import org.junit.Rule
+import org.junit.Test
+import org.junit.rules.TemporaryFolder
+import java.io.ByteArrayOutputStream
+import java.io.File
+import java.io.PrintStream
+import java.net.InetAddress
+import java.net.ServerSocket
+import java.net.URI
+import java.net.http.HttpClient
+import java.net.http.HttpRequest
+import java.net.http.HttpResponse
+
+/** The collector over SQLite in a temporary file. */
+class CollectorTest {
+    @get:Rule val temp = TemporaryFolder()
+
+    private val upload = StudyResults.exampleCsv()
+
+    private fun sqlite(): ResultStore = ResultStore(ResultStore.jdbcUrl("sqlite:" + File(temp.root, "results.db").path))
+
+    /** The example with line [line] (1-based, header = 1) changed by [edit]. */
+    private fun editLine(line: Int, edit: (String) -> String): String =
+        upload.lines().mapIndexed { i, text -> if (i == line - 1) edit(text) else text }.joinToString("\n")
+
+    @Test fun uploadReUploadAndDownload() {
+        CollectorHarness(sqlite()).use { h ->
+            val first = h.upload(upload)
+            assertEquals(first.body(), 200, first.statusCode())
+            assertEquals("{\"study_id\":\"demo-study\",\"rows\":29,\"inserted\":29,\"unchanged\":0}\n", first.body())
+            val again = h.upload(upload)
+            assertEquals("{\"study_id\":\"demo-study\",\"rows\":29,\"inserted\":0,\"unchanged\":29}\n", again.body())
+            assertEquals(29, h.store.rows("demo-study").size)
+            val download = h.get("/v1/studies/demo-study/results.csv")
+            assertEquals(200, download.statusCode())
+            assertEquals("text/csv; charset=utf-8", download.headers().firstValue("Content-Type").get())
+            assertEquals(upload, download.body())
+            assertEquals("{\"status\":\"ok\"}\n", h.get("/health").body())
+        }
+    }
+
+    @Test fun partialThenFullUploadInsertsOnlyTheNewRows() {
+        CollectorHarness(sqlite()).use { h ->
+            val firstHalf = upload.lines().take(11).joinToString("\n", postfix = "\n")
+            assertEquals(200, h.upload(firstHalf).statusCode())
+            assertEquals("{\"study_id\":\"demo-study\",\"rows\":29,\"inserted\":19,\"unchanged\":10}\n", h.upload(upload).body())
+        }
+    }
+
+    @Test fun malformedRowIsRejectedAndNothingStored() {
+        CollectorHarness(sqlite()).use { h ->
+            val body = editLine(5) { it.replace("1-5?\",5,", "1-5?\",high,") }
+            val response = h.upload(body)
+            assertEquals(400, response.statusCode())
+            assertEquals("{\"error\":\"line 5: response 'high' is not a finite number\",\"line\":5}\n", response.body())
+            assertEquals(0, h.store.rows("demo-study").size)
+            assertEquals(404, h.get("/v1/studies/demo-study/results.csv").statusCode())
+        }
+    }
+
+    @Test fun conflictingReUploadRollsBackTheWholeUpload() {
+        CollectorHarness(sqlite()).use { h ->
+            val firstTwo = upload.lines().take(3).joinToString("\n", postfix = "\n")
+            assertEquals(200, h.upload(firstTwo).statusCode())
+            // Line 3 (P01 calm trial 1) now says 3 instead of 5; line 30 is new but must not be stored either.
+            val changed = editLine(3) { it.replace("1-5?\",5,", "1-5?\",3,") }
+            val response = h.upload(changed)
+            assertEquals(400, response.statusCode())
+            assertEquals(
+                "{\"error\":\"line 3: participant 'P01' task 'calm' trial 1 is already stored with different values\",\"line\":3}\n",
+                response.body(),
+            )
+            assertEquals(2, h.store.rows("demo-study").size)
+        }
+    }
+
+    @Test fun requestProblemsAreJsonErrors() {
+        CollectorHarness(sqlite()).use { h ->
+            assertEquals("{\"error\":\"missing X-Study-Id header\"}\n", h.upload(upload, studyId = null).body())
+            val other = h.upload(upload, studyId = "other")
+            assertEquals("{\"error\":\"line 2: study_id 'demo-study' does not match X-Study-Id 'other'\",\"line\":2}\n", other.body())
+            assertEquals(415, h.upload(upload, contentType = "application/json").statusCode())
+            assertEquals(200, h.upload(upload, contentType = "text/csv; charset=utf-8").statusCode())
+            val header = h.upload("participant,task\nP1,t\n")
+            assertTrue(header.body(), header.body().startsWith("{\"error\":\"line 1: header must be exactly study_id,protocol_version,"))
+            assertEquals("{\"error\":\"line 1: no rows after the header\",\"line\":1}\n", h.upload(upload.lines().first() + "\n").body())
+            val time = h.upload(editLine(2) { it.replace("2026-11-20T10:00:00Z", "yesterday") })
+            assertEquals("{\"error\":\"line 2: answered_at 'yesterday' is not an ISO-8601 time such as 2026-11-22T02:00:00Z\",\"line\":2}\n", time.body())
+            val count = h.upload(editLine(2) { it.replace("demo-study,1,P01,0,", "demo-study,1,P01,-1,") })
+            assertEquals("{\"error\":\"line 2: participant_index '-1' is not a whole number ≥ 0\",\"line\":2}\n", count.body())
+            assertEquals(404, h.get("/v1/studies/../results.csv").statusCode())
+            assertEquals(405, h.get("/v1/results").statusCode())
+            assertEquals(404, h.get("/healthz").statusCode())
+        }
+    }
+
+    @Test fun bearerTokenIsRequiredWhenConfigured() {
+        CollectorHarness(sqlite(), token = "s3cret").use { h ->
+            assertEquals(401, h.upload(upload).statusCode())
+            assertEquals(401, h.upload(upload, "demo-study", "text/csv", "Authorization", "Bearer wrong").statusCode())
+            assertEquals(200, h.upload(upload, "demo-study", "text/csv", "Authorization", "Bearer s3cret").statusCode())
+            assertEquals(401, h.get("/v1/studies/demo-study/results.csv").statusCode())
+            assertEquals(200, h.get("/v1/studies/demo-study/results.csv", "Authorization", "Bearer s3cret").statusCode())
+            assertEquals(200, h.get("/health").statusCode()) // health stays open for monitoring
+        }
+    }
+
+    @Test fun collectCommandServesUntilStoppedAndAnalyzeReadsTheDownload() {
+        val tokenFile = temp.newFile("token").apply { writeText("tok\n") }
+        val out = ByteArrayOutputStream()
+        val db = File(temp.root, "cli.db")
+        var downloaded = ""
+        runCollect(
+            listOf("--port", "0", "--db", "sqlite:${db.path}", "--token-file", tokenFile.path),
+            Console(PrintStream(out, true, "UTF-8"), PrintStream(ByteArrayOutputStream())),
+            started = { server ->
+                val client = HttpClient.newHttpClient()
+                val base = "http://127.0.0.1:${server.port}"
+                val post = HttpRequest.newBuilder(URI("$base/v1/results")).POST(HttpRequest.BodyPublishers.ofString(upload))
+                    .header("Content-Type", "text/csv").header("X-Study-Id", "demo-study").header("Authorization", "Bearer tok").build()
+                assertEquals(200, client.send(post, HttpResponse.BodyHandlers.ofString()).statusCode())
+                val get = HttpRequest.newBuilder(URI("$base/v1/studies/demo-study/results.csv")).header("Authorization", "Bearer tok").build()
+                downloaded = client.send(get, HttpResponse.BodyHandlers.ofString()).body()
+            },
+            waitForStop = {},
+        )
+        assertTrue(out.toString("UTF-8"), out.toString("UTF-8").matches(Regex("collect: listening on http://127\\.0\\.0\\.1:\\d+ \\(sqlite:.*cli\\.db, bearer token required\\); Ctrl-C stops it\n")))
+        assertEquals(upload, downloaded)
+        val results = temp.newFile("downloaded.csv").apply { writeText(downloaded) }
+        val analysis = cli("analyze", results.path, "--out", File(temp.root, "analysis").path)
+        assertEquals(analysis.toString(), 0, analysis.exitCode)
+    }
+
+    @Test fun collectUsageErrors() {
+        assertEquals(listOf("hapticon: --db must be sqlite:PATH or postgresql://HOST/DB?user=.., got 'mysql://x'"), cli("collect", "--db", "mysql://x").stderrLines)
+        assertEquals(listOf("hapticon: --port must be in 0..65535, got 70000"), cli("collect", "--port", "70000").stderrLines)
+        assertEquals(listOf("hapticon: --token-file: no such file: nope"), cli("collect", "--token-file", "nope").stderrLines)
+        val empty = temp.newFile("empty-token")
+        assertEquals(listOf("hapticon: --token-file: $empty is empty"), cli("collect", "--token-file", empty.path).stderrLines)
+        ServerSocket(0, 1, InetAddress.getByName("127.0.0.1")).use { taken ->
+            val busy = cli("collect", "--port", taken.localPort.toString(), "--db", "sqlite:" + File(temp.root, "busy.db").path)
+            assertEquals(2, busy.exitCode)
+            assertTrue(busy.stderr, busy.stderr.startsWith("hapticon: cannot listen on 127.0.0.1:${taken.localPort}: "))
+        }
+    }
+}

@@ -1,0 +1,38 @@
+package org.hapticon.companion.study
+
+import org.junit.Assert.assertEquals
+import org.junit.Assert.assertThrows
+import org.junit.Test
+
+class CsvTest {
+    @Test fun parsesQuotesEscapesCrlfAndMultilineFields() {
+        val records = Csv.parse("a,b,c\r\n\"x, y\",\"say \"\"hi\"\"\",\r\n\"two\nlines\",2,3\n\n4,5,6", "f.csv")
+        assertEquals(listOf(1, 2, 3, 6), records.map { it.line })
+        assertEquals(listOf("x, y", "say \"hi\"", ""), records[1].fields)
+        assertEquals(listOf("two\nlines", "2", "3"), records[2].fields)
+        assertEquals(listOf("4", "5", "6"), records[3].fields)
+    }
+
+    @Test fun skipsByteOrderMark() {
+        assertEquals(listOf("a", "b"), Csv.parse("\uFEFFa,b\n", "f").single().fields)
+    }
+
+    @Test fun errorsNameSourceAndLine() {
+        val open = assertThrows(CsvFormatException::class.java) { Csv.parse("a\n\"b\n", "f.csv") }
+        assertEquals("f.csv:2: unterminated quoted field", open.message)
+        val after = assertThrows(CsvFormatException::class.java) { Csv.parse("a,b\n\"x\"y,1\n", "f.csv") }
+        assertEquals("f.csv:2: unexpected character 'y' after a closing quote", after.message)
+        val stray = assertThrows(CsvFormatException::class.java) { Csv.parse("a\nb\"c\n", "f.csv") }
+        assertEquals("f.csv:2: quote inside an unquoted field", stray.message)
+    }
+
+    @Test fun writesFieldsThatParseBack() {
+        val values = listOf("plain", "a,b", "q\"uote", "line\nbreak", "")
+        assertEquals("plain,\"a,b\",\"q\"\"uote\",\"line\nbreak\",\n", Csv.line(values))
+        assertEquals(values, Csv.parse(Csv.line(values), "f").single().fields)
+    }
+
+    @Test fun emptyTextHasNoRecords() {
+        assertEquals(0, Csv.parse("", "f").size)
+    }
+}
