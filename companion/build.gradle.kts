@@ -18,6 +18,7 @@ dependencies {
     implementation(project(":messaging:broker"))
     implementation(project(":study"))
     implementation(project(":gesture"))
+    implementation(project(":test-fixtures")) // synthetic gestures for classify-bench
 
     testImplementation(project(":test-fixtures"))
     testImplementation(libs.junit4)
