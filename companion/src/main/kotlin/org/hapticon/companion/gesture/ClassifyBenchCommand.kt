@@ -5,6 +5,7 @@ import org.hapticon.companion.Console
 import org.hapticon.companion.OutputFiles
 import org.hapticon.companion.UsageException
 import org.hapticon.companion.plot.PngExport
+import org.hapticon.gesture.recognition.WindowConfig
 import java.io.File
 import java.util.Locale
 
@@ -32,6 +33,13 @@ fun runClassifyBench(args: List<String>, console: Console) {
     )
     val results = RecognitionBench.run(config) { console.err.println("classify-bench: $it") }
     console.out.print(formatTable(results, config))
+    val personal = RecognitionBench.personal(config, DEFAULT_TREES)
+    console.out.println(
+        String.format(
+            Locale.ROOT, "personal model (%d takes per label, %.2f s window, %d trees): accuracy %.3f ± %.3f on 2 further takes, trained in %.0f ms",
+            personal.examples, WindowConfig.DEFAULT_WINDOW_SECONDS, personal.trees, personal.accuracyMean, personal.accuracySd, personal.trainMillis,
+        ),
+    )
     if (out != null) console.err.println(PngExport.write(RecognitionPlot.draw(results, config), File(out, "classify-bench.png")))
 }
 

@@ -36,6 +36,9 @@ class RecognitionResult(
     val microsPerWindow: Double,
 )
 
+/** A personal model's accuracy (mean ± SD over people) from [examples] takes per label, and its training time. */
+class PersonalResult(val examples: Int, val trees: Int, val accuracyMean: Double, val accuracySd: Double, val trainMillis: Double)
+
 /** Leave-one-participant-out evaluation of window length × tree count on [SyntheticGestures] people. */
 object RecognitionBench {
     /** Runs every cell of [config]; [progress] gets one line per window length. */
@@ -63,6 +66,32 @@ object RecognitionBench {
         return results
     }
 
+    /**
+     * Personal models with the default window and [trees]: for each person, train on [examples] takes per label
+     * and score the windows of two further takes. Returns accuracy mean, SD and mean training time (ms).
+     */
+    fun personal(config: RecognitionBenchConfig, trees: Int, examples: Int = 5): PersonalResult {
+        val accuracies = ArrayList<Double>()
+        var millis = 0.0
+        for (person in SyntheticGestures.people(config.people, config.seed)) {
+            // Takes 100+ are new to the person, unlike the 0.. takes of the leave-one-out runs.
+            val training = GestureLabel.ALL.flatMap { label -> (0 until examples).map { SyntheticGestures.perform(person, label, take = 100 + it) } }
+            val test = GestureLabel.ALL.flatMap { label -> (examples until examples + 2).map { SyntheticGestures.perform(person, label, take = 100 + it) } }
+            val started = System.nanoTime()
+            val model = PersonalTrainer(WindowConfig(), ForestParams(trees = trees, seed = config.seed)).train(training.map { it.labelled })
+            millis += (System.nanoTime() - started) / 1e6
+            val cell = Cell()
+            cell.add(model, person, test, live = false)
+            accuracies += cell.accuracies.single()
+        }
+        return PersonalResult(examples, trees, accuracies.average(), sd(accuracies), millis / config.people)
+    }
+
+    private fun sd(values: List<Double>): Double {
+        val mean = values.average()
+        return sqrt(values.sumOf { (it - mean) * (it - mean) } / maxOf(1, values.size - 1))
+    }
+
     private class Cell {
         val accuracies = ArrayList<Double>()
         val latencies = ArrayList<Double>()
@@ -71,7 +100,7 @@ object RecognitionBench {
         var nanos = 0L
         var classified = 0L
 
-        fun add(model: GestureModel, person: SimulatedPerson, takes: List<SyntheticTake>) {
+        fun add(model: GestureModel, person: SimulatedPerson, takes: List<SyntheticTake>, live: Boolean = true) {
             val classifier = model.classifier()
             var correct = 0
             var total = 0
@@ -92,6 +121,7 @@ object RecognitionBench {
             nanos += System.nanoTime() - start
             classified += total
             accuracies += correct.toDouble() / total
+            if (!live) return
             // Live: each gesture take after 3 s of the same person's rest, so the first window is full.
             val rest = SyntheticGestures.perform(person, GestureLabel.NONE, take = 999)
             for (take in takes.filter { !it.label.isNone }) {
@@ -114,10 +144,8 @@ object RecognitionBench {
         }
 
         fun result(seconds: Double, trees: Int): RecognitionResult {
-            val mean = accuracies.average()
-            val sd = sqrt(accuracies.sumOf { (it - mean) * (it - mean) } / maxOf(1, accuracies.size - 1))
             return RecognitionResult(
-                seconds, trees, mean, sd,
+                seconds, trees, accuracies.average(), sd(accuracies),
                 latencyMs = if (latencies.isEmpty()) Double.NaN else latencies.average(),
                 liveHitRate = liveHits.toDouble() / maxOf(1, liveTakes),
                 microsPerWindow = nanos / 1000.0 / maxOf(1L, classified),

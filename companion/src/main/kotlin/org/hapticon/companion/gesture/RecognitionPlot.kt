@@ -28,7 +28,9 @@ object RecognitionPlot {
             Axes.title(g, LEFT, 30, "Gesture recognition: window length vs accuracy and latency",
                 "leave-one-participant-out, ${config.people} simulated people, 9 labels, hop 0.1 s")
             val latencies = results.map { it.latencyMs }.filter { !it.isNaN() }
-            panel(g, 0, results, config, "accuracy", 0.0, 1.0) { it.accuracyMean to it.accuracySd }
+            // Start the accuracy axis at a round tenth below the worst mean − SD, so differences stay visible.
+            val lowest = results.minOf { it.accuracyMean - it.accuracySd }
+            panel(g, 0, results, config, "accuracy", (Math.floor(lowest * 10) / 10).coerceIn(0.0, 0.9), 1.0) { it.accuracyMean to it.accuracySd }
             panel(g, 1, results, config, "latency (ms)", 0.0, maxOf(100.0, (latencies.maxOrNull() ?: 0.0) * 1.1)) { it.latencyMs to 0.0 }
             Axes.legend(g, WIDTH - 32, 28, config.treeCounts.mapIndexed { i, t -> LegendEntry("$t trees", COLORS[i % COLORS.size]) })
         } finally {

@@ -17,7 +17,8 @@ import kotlin.math.sqrt
  * One simulated person's style: [forceScale] multiplies every force, [tempo] every speed (> 1 is quicker),
  * [forceNoise] (N) and [accelNoise] (g) are the white-noise levels of the sensors, and a physiological tremor
  * of [tremorHz] Hz and [tremorNewtons] N rides on every touch. [tilt] is how the device lies in their hand
- * (the gravity direction, x and y components in g). [seed] makes their recordings repeatable.
+ * (the gravity direction, x and y components in g). Their habits: strokes swell at [strokeHz] and taps
+ * (hit, knock) last [tapSeconds] at their own tempo. [seed] makes their recordings repeatable.
  */
 class SimulatedPerson(
     val id: Int,
@@ -28,6 +29,8 @@ class SimulatedPerson(
     val tremorHz: Double,
     val tremorNewtons: Double,
     val tilt: Pair<Double, Double>,
+    val strokeHz: Double,
+    val tapSeconds: Double,
     val seed: Long,
 ) {
     override fun toString(): String = "person $id (force ×%.2f, tempo ×%.2f)".format(forceScale, tempo)
@@ -39,20 +42,30 @@ class SyntheticTake(val labelled: LabelledRecording, val label: GestureLabel, va
 /**
  * Deterministic touch gestures of simulated people, sampled at [SAMPLE_RATE] Hz as [CHANNELS]: an FSR force
  * in N (never negative, saturating at [FSR_MAX_NEWTONS]) and a three-axis accelerometer in g (gravity plus
- * motion). How each label is modelled (times are divided by the person's tempo and by 1.6 when energetic;
- * forces are multiplied by the person's force scale and by 2.2 when energetic; every take varies both by
- * about ±12 %):
- * - **stroke**: ~2.4 s of moderate force (2.5 N) that rises and falls over 0.3 s and swells ±30 % at a slow
- *   0.8 Hz, while the hand slides back and forth (0.15 g sinusoid on x at the same rate);
- * - **hit**: one short, high peak (half-sine of 60 ms, 12 N) with a hard jolt on z (−0.8 g) ringing at 15 Hz;
- * - **knock**: 2–4 sharp taps (half-sines of 30 ms, 4 N) 0.25 s apart, each with a small z jolt (0.3 g);
+ * motion). How each label is modelled (times are divided by the person's tempo and by [ENERGETIC_SPEED]
+ * when energetic; forces are multiplied by the person's force scale and by [ENERGETIC_FORCE] when energetic;
+ * every take varies force by −20..+25 % and speed by −15..+20 %, so a strong person's gentle gesture can
+ * be as forceful as a weak person's energetic one):
+ * - **stroke**: ~2.4 s of moderate force (2.5 N) that rises and falls over 0.3 s and swells ±30 % at the
+ *   person's slow stroke rate (0.5–1.2 Hz), while the hand slides back and forth (0.15 g sinusoid on x);
+ * - **hit**: one or two short, high peaks (half-sines of 1.5 × the person's tap length, 12 N) 0.2 s apart,
+ *   each with a hard jolt on z (−0.8 g) ringing at 15 Hz;
+ * - **knock**: 2–4 sharp taps (half-sines of the person's tap length, 30–80 ms, 4 N) 0.25 s apart, each
+ *   with a small z jolt (0.3 g);
  * - **hug**: a long high plateau (10 N for ~2.2 s, 0.4 s rise and fall) with a slow sway (0.04 g on y);
- * - **none**: sensor noise and a slow random drift of the force baseline (< 0.5 N) and of the tilt.
+ * - **none**: 3 s of the hand resting: sensor noise, a slow random drift of the force baseline (< 0.5 N)
+ *   and of the tilt, handling sway (0.03 g) and 0–2 soft grip adjustments (0.3–1.5 N over 0.3–0.8 s).
  * Tremor (force) and sensor noise are added to every take, rest included.
  */
 object SyntheticGestures {
     const val SAMPLE_RATE: Double = 100.0
     const val FSR_MAX_NEWTONS: Double = 40.0
+
+    /** Energetic gestures are this much stronger than gentle ones... */
+    const val ENERGETIC_FORCE: Double = 1.8
+
+    /** ...and this much quicker. */
+    const val ENERGETIC_SPEED: Double = 1.4
     val CHANNELS: List<String> = listOf("force", "accel_x", "accel_y", "accel_z")
 
     /** [count] people with styles drawn from [seed]. */
@@ -62,13 +75,15 @@ object SyntheticGestures {
         return List(count) { id ->
             SimulatedPerson(
                 id = id,
-                forceScale = random.nextDouble(0.8, 1.25),
-                tempo = random.nextDouble(0.8, 1.25),
-                forceNoise = random.nextDouble(0.03, 0.15),
-                accelNoise = random.nextDouble(0.005, 0.02),
+                forceScale = random.nextDouble(0.7, 1.4),
+                tempo = random.nextDouble(0.7, 1.4),
+                forceNoise = random.nextDouble(0.05, 0.3),
+                accelNoise = random.nextDouble(0.01, 0.04),
                 tremorHz = random.nextDouble(4.0, 9.0),
-                tremorNewtons = random.nextDouble(0.05, 0.3),
+                tremorNewtons = random.nextDouble(0.05, 0.5),
                 tilt = random.nextDouble(-0.3, 0.3) to random.nextDouble(-0.3, 0.3),
+                strokeHz = random.nextDouble(0.5, 1.2),
+                tapSeconds = random.nextDouble(0.03, 0.08),
                 seed = random.nextLong(),
             )
         }
@@ -83,16 +98,16 @@ object SyntheticGestures {
         val before = random.nextDouble(0.6, 1.0)
         val gesture = label.gesture
         val energetic = label.intensity == Intensity.ENERGETIC
-        val speed = person.tempo * (if (energetic) 1.6 else 1.0) * random.nextDouble(0.88, 1.12)
-        val force = person.forceScale * (if (energetic) 2.2 else 1.0) * random.nextDouble(0.88, 1.12)
-        val shape = if (gesture == null) null else GestureShape.of(gesture, speed, force, random)
-        val active = shape?.seconds ?: 0.0
+        val speed = person.tempo * (if (energetic) ENERGETIC_SPEED else 1.0) * random.nextDouble(0.85, 1.2)
+        val force = person.forceScale * (if (energetic) ENERGETIC_FORCE else 1.0) * random.nextDouble(0.8, 1.25)
+        val shape = if (gesture == null) GripAdjustments(3.0, person.forceScale, random) else GestureShape.of(gesture, person, speed, force, random)
+        val active = if (gesture == null) 0.0 else shape.seconds
         val total = if (gesture == null) 3.0 else before + active + minRestAfterSeconds + random.nextDouble(0.0, 0.4)
         val frames = (total * SAMPLE_RATE).toInt()
-        val onset = if (gesture == null) null else (before * SAMPLE_RATE).toInt()
+        val onset = if (gesture == null) 0 else (before * SAMPLE_RATE).toInt()
         val recording = render(person, frames, onset, shape, random)
-        val spans = if (onset == null) emptyList() else listOf(LabelledSpan(onset, minOf(frames, onset + maxOf(1, (active * SAMPLE_RATE).toInt())), label))
-        return SyntheticTake(LabelledRecording(recording, spans), label, onset)
+        val spans = if (gesture == null) emptyList() else listOf(LabelledSpan(onset, minOf(frames, onset + maxOf(1, (active * SAMPLE_RATE).toInt())), label))
+        return SyntheticTake(LabelledRecording(recording, spans), label, onset.takeIf { gesture != null })
     }
 
     /** [takes] takes of every one of the nine labels by [person]. */
@@ -115,7 +130,7 @@ object SyntheticGestures {
         return LabelledRecording(Recording(SAMPLE_RATE, channels), spans)
     }
 
-    private fun render(person: SimulatedPerson, frames: Int, onset: Int?, shape: GestureShape?, random: SplittableRandom): Recording {
+    private fun render(person: SimulatedPerson, frames: Int, onset: Int, shape: GestureShape, random: SplittableRandom): Recording {
         val force = DoubleArray(frames)
         val ax = DoubleArray(frames)
         val ay = DoubleArray(frames)
@@ -127,8 +142,8 @@ object SyntheticGestures {
             val t = i / SAMPLE_RATE
             drift = (drift + gaussian(random) * 0.01).coerceIn(0.0, 0.5)
             tiltDrift = (tiltDrift + gaussian(random) * 0.002).coerceIn(-0.05, 0.05)
-            val local = if (onset == null || shape == null) -1.0 else (i - onset) / SAMPLE_RATE
-            val motion = if (local >= 0.0 && local < shape!!.seconds) shape.at(local) else Sample.REST
+            val local = (i - onset) / SAMPLE_RATE
+            val motion = if (local >= 0.0 && local < shape.seconds) shape.at(local) else Sample.REST
             val touching = motion.force > 0.05
             val tremor = if (touching) person.tremorNewtons * sin(2 * PI * person.tremorHz * t + tremorPhase) else 0.0
             force[i] = (drift + motion.force + tremor + gaussian(random) * person.forceNoise).coerceIn(0.0, FSR_MAX_NEWTONS)
@@ -162,10 +177,10 @@ internal abstract class GestureShape(val seconds: Double) {
     abstract fun at(t: Double): Sample
 
     companion object {
-        fun of(gesture: Gesture, speed: Double, force: Double, random: SplittableRandom): GestureShape = when (gesture) {
-            Gesture.STROKE -> Stroke(2.4 / speed, speed, force)
-            Gesture.HIT -> Taps(count = 1, spacing = 0.0, width = 0.06 / speed, peak = 12.0 * force, jolt = -0.8 * force, ring = 15.0)
-            Gesture.KNOCK -> Taps(count = 2 + random.nextInt(3), spacing = 0.25 / speed, width = 0.03 / speed, peak = 4.0 * force, jolt = -0.3 * force, ring = 25.0)
+        fun of(gesture: Gesture, person: SimulatedPerson, speed: Double, force: Double, random: SplittableRandom): GestureShape = when (gesture) {
+            Gesture.STROKE -> Stroke(2.4 / speed, person.strokeHz * speed, force)
+            Gesture.HIT -> Taps(count = 1 + random.nextInt(2), spacing = 0.2 / speed, width = 1.5 * person.tapSeconds / speed, peak = 12.0 * force, jolt = -0.8 * force, ring = 15.0)
+            Gesture.KNOCK -> Taps(count = 2 + random.nextInt(3), spacing = 0.25 / speed, width = person.tapSeconds / speed, peak = 4.0 * force, jolt = -0.3 * force, ring = 25.0)
             Gesture.HUG -> Hug(rise = 0.4 / speed, plateau = 2.2 / speed, force = 10.0 * force, speed = speed)
         }
     }
@@ -177,9 +192,9 @@ private fun ramp(t: Double, seconds: Double, rise: Double): Double = when {
     else -> 1.0
 }
 
-private class Stroke(seconds: Double, private val speed: Double, private val force: Double) : GestureShape(seconds) {
+private class Stroke(seconds: Double, private val hz: Double, private val force: Double) : GestureShape(seconds) {
     override fun at(t: Double): Sample {
-        val phase = 2 * PI * 0.8 * speed * t
+        val phase = 2 * PI * hz * t
         val envelope = ramp(t, seconds, 0.3)
         return Sample(2.5 * force * envelope * (1 + 0.3 * sin(phase)), 0.15 * force * envelope * sin(phase), 0.0, 0.0)
     }
@@ -203,6 +218,23 @@ private class Taps(
             z += jolt * exp(-local / 0.04) * kotlin.math.cos(2 * PI * ring * local)
         }
         return Sample(force, 0.0, 0.0, z)
+    }
+}
+
+/** The hand resting on the device: 0–2 soft grip adjustments (0.3–1.5 N for 0.3–0.8 s) and slight handling motion. */
+private class GripAdjustments(seconds: Double, forceScale: Double, random: SplittableRandom) : GestureShape(seconds) {
+    private val starts = DoubleArray(random.nextInt(3)) { random.nextDouble(0.0, seconds - 0.8) }
+    private val lengths = DoubleArray(starts.size) { random.nextDouble(0.3, 0.8) }
+    private val forces = DoubleArray(starts.size) { random.nextDouble(0.3, 1.5) * forceScale }
+    private val swayHz = random.nextDouble(0.2, 1.0)
+
+    override fun at(t: Double): Sample {
+        var force = 0.0
+        for (k in starts.indices) {
+            val local = t - starts[k]
+            if (local >= 0.0 && local < lengths[k]) force += forces[k] * sin(PI * local / lengths[k])
+        }
+        return Sample(force, 0.03 * sin(2 * PI * swayHz * t), 0.02 * sin(2 * PI * swayHz * 0.7 * t + 1.0), 0.0)
     }
 }
 
