@@ -59,8 +59,11 @@ class GestureCommandsTest {
     fun trainThenClassifyFindsTheGesture() {
         val dir = temp.newFolder("takes")
         for (person in SyntheticGestures.people(2, seed = 3)) {
-            for (take in SyntheticGestures.takesOf(person, 3)) {
-                File(dir, "p${person.id}-${take.label.id}-${take.labelled.recording.frameCount}.csv").writeText(csv(take.labelled.recording))
+            for ((i, take) in SyntheticGestures.takesOf(person, 3).withIndex()) {
+                // Takes have rest around the gesture, so they carry a label column rather than a label in the name.
+                val span = take.labelled.spans.singleOrNull()
+                val label = { frame: Int -> if (span != null && frame >= span.from && frame < span.to) span.label.id else "none" }
+                File(dir, "p${person.id}-take-$i.csv").writeText(csv(take.labelled.recording, label))
             }
         }
         val model = File(temp.root, "model.json")

@@ -1,6 +1,7 @@
 package org.hapticon.gesture.recognition
 
 import org.hapticon.gesture.Recording
+import kotlin.math.abs
 
 /** Frames `[from, to)` of a recording show [label]. */
 public class LabelledSpan(public val from: Int, public val to: Int, public val label: GestureLabel) {
@@ -69,7 +70,8 @@ public class LabelledWindows(public val features: List<DoubleArray>, public val 
     public companion object {
         /**
          * Every window of [window] (stepping by its hop) of each example whose [LabelledRecording.windowLabel]
-         * is not ambiguous. [IllegalArgumentException] when the examples differ in channels or sample rate.
+         * is not ambiguous. [IllegalArgumentException] when the examples differ in channels or in sample rate
+         * by more than 0.1 %.
          */
         public fun of(examples: List<LabelledRecording>, window: WindowConfig): LabelledWindows {
             require(examples.isNotEmpty()) { "no examples" }
@@ -78,7 +80,8 @@ public class LabelledWindows(public val features: List<DoubleArray>, public val 
             for (example in examples) {
                 val r = example.recording
                 require(r.channels.map { it.name } == names) { "examples must share channels: $names vs ${r.channels.map { it.name }}" }
-                require(r.sampleRate == first.sampleRate) { "examples must share a sample rate: ${first.sampleRate} vs ${r.sampleRate} Hz" }
+                // Rates measured from CSV time stamps differ in the last digits; 0.1 % is far below any real mismatch.
+                require(abs(r.sampleRate - first.sampleRate) <= first.sampleRate * 1e-3) { "examples must share a sample rate: ${first.sampleRate} vs ${r.sampleRate} Hz" }
             }
             val frames = window.windowFrames(first.sampleRate)
             val hop = window.hopFrames(first.sampleRate)
