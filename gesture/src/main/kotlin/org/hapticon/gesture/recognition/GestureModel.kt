@@ -164,7 +164,7 @@ public class WindowClassifier(public val model: GestureModel) {
     public fun classify(channels: List<DoubleArray>, from: Int): GestureLabel {
         require(channels.size == model.channels.size) { "expected ${model.channels.size} channels, got ${channels.size}" }
         val frames = model.windowFrames
-        for ((i, samples) in channels.withIndex()) extractor.extract(samples, from, frames, features, i * WindowFeatures.PER_CHANNEL)
+        for (i in channels.indices) extractor.extract(channels[i], from, frames, features, i * WindowFeatures.PER_CHANNEL)
         return model.labels[model.forest.predict(features, probabilities)]
     }
 }

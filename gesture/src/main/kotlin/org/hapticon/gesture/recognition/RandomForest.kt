@@ -59,7 +59,7 @@ public class RandomForest private constructor(
         require(features.size == featureCount) { "expected $featureCount features, got ${features.size}" }
         require(probabilities.size == classCount) { "expected room for $classCount probabilities, got ${probabilities.size}" }
         probabilities.fill(0.0)
-        for (tree in trees) probabilities[tree.vote(features)] += 1.0
+        for (t in trees.indices) probabilities[trees[t].vote(features)] += 1.0 // indexed: no iterator per call
         var best = 0
         for (c in 0 until classCount) {
             probabilities[c] /= trees.size
