@@ -20,6 +20,7 @@ dependencies {
     implementation(project(":gesture"))
     implementation(libs.sqlite.jdbc) // the study collector's default store
     implementation(libs.postgresql) // the study collector's optional store
+    implementation(project(":test-fixtures")) // synthetic gestures for classify-bench
 
     testImplementation(project(":test-fixtures"))
     testImplementation(libs.junit4)

@@ -10,4 +10,5 @@ kotlin {
 dependencies {
     api(project(":haptics-core"))
     api(libs.junit4)
+    implementation(project(":gesture")) // the gesture label types of the synthetic gestures
 }

@@ -2,6 +2,9 @@ package org.hapticon.companion
 
 import org.hapticon.companion.chat.runBroker
 import org.hapticon.companion.chat.runChat
+import org.hapticon.companion.gesture.runClassify
+import org.hapticon.companion.gesture.runClassifyBench
+import org.hapticon.companion.gesture.runTrain
 import org.hapticon.companion.sensors.runDecode
 import org.hapticon.companion.sensors.runGrains
 import org.hapticon.companion.sensors.runHandshake
@@ -84,6 +87,9 @@ private fun dispatch(args: List<String>, console: Console) {
         "study-protocol" -> runStudyProtocol(rest, console)
         "analyze" -> runAnalyze(rest, console)
         "collect" -> runCollect(rest, console)
+        "classify-bench" -> runClassifyBench(rest, console)
+        "train" -> runTrain(rest, console)
+        "classify" -> runClassify(rest, console)
         else -> throw UsageException("unknown command '$command'; try 'hapticon help'")
     }
 }

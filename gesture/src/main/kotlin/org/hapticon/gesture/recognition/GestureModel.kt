@@ -1,0 +1,170 @@
+package org.hapticon.gesture.recognition
+
+import org.hapticon.core.io.Json
+import org.hapticon.core.io.JsonArray
+import org.hapticon.core.io.JsonException
+import org.hapticon.core.io.JsonNumber
+import org.hapticon.core.io.JsonObject
+import org.hapticon.core.io.JsonString
+import org.hapticon.gesture.Recording
+import kotlin.math.abs
+import kotlin.math.roundToInt
+
+/** The sliding window a model classifies: [windowSeconds] long, a new decision every [hopSeconds]. */
+public class WindowConfig(
+    public val windowSeconds: Double = DEFAULT_WINDOW_SECONDS,
+    public val hopSeconds: Double = DEFAULT_HOP_SECONDS,
+) {
+    init {
+        require(windowSeconds.isFinite() && windowSeconds > 0.0 && windowSeconds <= MAX_WINDOW_SECONDS) {
+            "window must be in (0, $MAX_WINDOW_SECONDS] s, was $windowSeconds"
+        }
+        require(hopSeconds.isFinite() && hopSeconds > 0.0 && hopSeconds <= windowSeconds) { "hop must be in (0, window] s, was $hopSeconds" }
+    }
+
+    /** Window length in frames at [sampleRate] (at least 1). */
+    public fun windowFrames(sampleRate: Double): Int = (windowSeconds * sampleRate).roundToInt().coerceAtLeast(1)
+
+    /** Hop in frames at [sampleRate] (at least 1). */
+    public fun hopFrames(sampleRate: Double): Int = (hopSeconds * sampleRate).roundToInt().coerceAtLeast(1)
+
+    override fun toString(): String = "WindowConfig(window=${windowSeconds}s, hop=${hopSeconds}s)"
+
+    public companion object {
+        /** The default window, chosen from `hapticon classify-bench` (docs/gesture-recognition.md). */
+        public const val DEFAULT_WINDOW_SECONDS: Double = 1.0
+
+        /** The default hop: ten decisions a second. */
+        public const val DEFAULT_HOP_SECONDS: Double = 0.1
+
+        /** Longest window accepted: longer ones only add latency. */
+        public const val MAX_WINDOW_SECONDS: Double = 10.0
+    }
+}
+
+/**
+ * A trained gesture recogniser: a [forest] over the [WindowFeatures] of [channels] (in this order) sampled at
+ * [sampleRate] Hz in windows of [window], whose classes are [labels]. It carries its configuration so that a
+ * model trained on a laptop and loaded on a phone classifies exactly the same way, and [requireMatches]
+ * refuses data it was not trained for.
+ */
+public class GestureModel(
+    public val sampleRate: Double,
+    public val channels: List<String>,
+    public val window: WindowConfig,
+    public val labels: List<GestureLabel>,
+    public val forest: RandomForest,
+) {
+    init {
+        require(sampleRate.isFinite() && sampleRate > 0.0) { "sample rate must be finite and > 0 Hz, was $sampleRate" }
+        require(channels.isNotEmpty() && channels.toSet().size == channels.size) { "channels must be non-empty and unique, were $channels" }
+        require(labels.isNotEmpty() && labels.toSet().size == labels.size) { "labels must be non-empty and unique, were $labels" }
+        require(forest.classCount == labels.size) { "forest has ${forest.classCount} classes for ${labels.size} labels" }
+        require(forest.featureCount == channels.size * WindowFeatures.PER_CHANNEL) {
+            "forest expects ${forest.featureCount} features, ${channels.size} channels give ${channels.size * WindowFeatures.PER_CHANNEL}"
+        }
+    }
+
+    /** Frames per window. */
+    public val windowFrames: Int get() = window.windowFrames(sampleRate)
+
+    /** Frames per hop. */
+    public val hopFrames: Int get() = window.hopFrames(sampleRate)
+
+    /**
+     * Throws [IllegalArgumentException] saying what differs unless [recording] has this model's channels
+     * (same names, same order; extra channels are not allowed) and sample rate (within 0.1 %).
+     */
+    public fun requireMatches(recording: Recording) {
+        requireMatches(recording.channels.map { it.name }, recording.sampleRate)
+    }
+
+    /** As [requireMatches] for a stream of [channelNames] at [rate] Hz. */
+    public fun requireMatches(channelNames: List<String>, rate: Double) {
+        require(channelNames == channels) { "model expects channels $channels, got $channelNames" }
+        require(abs(rate - sampleRate) <= sampleRate * 1e-3) { "model expects $sampleRate Hz, got $rate Hz" }
+    }
+
+    /** A new [WindowClassifier] (with its own scratch arrays) for this model. */
+    public fun classifier(): WindowClassifier = WindowClassifier(this)
+
+    /** This model as JSON text in schema [SCHEMA] version [VERSION]. */
+    public fun encode(): String = Json.encode(
+        JsonObject(
+            linkedMapOf(
+                "schema" to JsonString(SCHEMA),
+                "version" to JsonNumber(VERSION),
+                "features" to JsonString(FEATURE_SET),
+                "sampleRate" to JsonNumber(sampleRate, isIntegral = false),
+                "channels" to JsonArray(channels.map { JsonString(it) }),
+                "windowSeconds" to JsonNumber(window.windowSeconds, isIntegral = false),
+                "hopSeconds" to JsonNumber(window.hopSeconds, isIntegral = false),
+                "labels" to JsonArray(labels.map { JsonString(it.id) }),
+                "forest" to forest.toJson(),
+            ),
+        ),
+    )
+
+    override fun toString(): String =
+        "GestureModel($channels at $sampleRate Hz, $window, ${labels.size} labels, ${forest.treeCount} trees)"
+
+    public companion object {
+        /** The `schema` member of a model file. */
+        public const val SCHEMA: String = "hapticon.gesture-model"
+
+        /** The version this build writes and reads. */
+        public const val VERSION: Int = 1
+
+        /** Names the feature definition ([WindowFeatures]); a model with another set is refused. */
+        public const val FEATURE_SET: String = "stats33-v1"
+
+        /** Largest model text accepted by [decode]: 64 MiB (a 100-tree forest is a few MiB). */
+        public const val MAX_MODEL_CHARS: Int = 64 shl 20
+
+        /**
+         * The model [text] (written by [encode]) describes. [IllegalArgumentException] naming the problem when
+         * it is not JSON, another schema, version or feature set, or malformed.
+         */
+        public fun decode(text: String): GestureModel {
+            val json = try {
+                Json.decode(text, maxLength = MAX_MODEL_CHARS)
+            } catch (e: JsonException) {
+                throw IllegalArgumentException("model is not valid JSON: ${e.message}")
+            }
+            val obj = json as? JsonObject ?: throw IllegalArgumentException("model: expected a JSON object")
+            val schema = JsonFields.string(obj, "schema")
+            require(schema == SCHEMA) { "model: schema must be \"$SCHEMA\", was \"$schema\"" }
+            val version = JsonFields.int(obj, "version")
+            require(version == VERSION) { "model: unsupported version $version (this build reads $VERSION)" }
+            val features = JsonFields.string(obj, "features")
+            require(features == FEATURE_SET) { "model: feature set \"$features\" is not \"$FEATURE_SET\"" }
+            val window = WindowConfig(JsonFields.number(obj, "windowSeconds"), JsonFields.number(obj, "hopSeconds"))
+            val labels = JsonFields.strings(obj, "labels").map { GestureLabel.parse(it) }
+            val forest = RandomForest.fromJson(obj["forest"] ?: throw IllegalArgumentException("model: 'forest' is missing"))
+            return GestureModel(JsonFields.number(obj, "sampleRate"), JsonFields.strings(obj, "channels"), window, labels, forest)
+        }
+    }
+}
+
+/**
+ * Classifies windows for one [model], reusing its feature and probability arrays: after [classify],
+ * [probabilities] holds the vote share of each of the model's labels. Not thread-safe; allocates nothing per call.
+ */
+public class WindowClassifier(public val model: GestureModel) {
+    private val extractor = WindowFeatures(model.sampleRate, model.windowFrames)
+    private val features = DoubleArray(model.forest.featureCount)
+
+    /** Vote share per label of the last [classify], in [GestureModel.labels] order. */
+    public val probabilities: DoubleArray = DoubleArray(model.labels.size)
+
+    /**
+     * The label of the window of [GestureModel.windowFrames] frames starting at [from] in [channels] (one array
+     * per model channel, in model order).
+     */
+    public fun classify(channels: List<DoubleArray>, from: Int): GestureLabel {
+        require(channels.size == model.channels.size) { "expected ${model.channels.size} channels, got ${channels.size}" }
+        val frames = model.windowFrames
+        for (i in channels.indices) extractor.extract(channels[i], from, frames, features, i * WindowFeatures.PER_CHANNEL)
+        return model.labels[model.forest.predict(features, probabilities)]
+    }
+}
