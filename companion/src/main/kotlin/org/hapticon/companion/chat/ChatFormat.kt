@@ -34,6 +34,8 @@ object ChatFormat {
         append(capabilities.user).append("'s device: ")
         append(
             when (capabilities.renderer) {
+                RendererKind.AUDIO_COUPLED -> "audio-coupled haptics"
+                RendererKind.ENVELOPE -> "envelope effect"
                 RendererKind.AMPLITUDE_WAVEFORM -> "amplitude waveform"
                 RendererKind.ON_OFF -> "on/off vibration"
                 RendererKind.AUDIO -> "audio only"
