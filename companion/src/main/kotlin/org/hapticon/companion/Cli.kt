@@ -2,6 +2,8 @@ package org.hapticon.companion
 
 import org.hapticon.companion.chat.runBroker
 import org.hapticon.companion.chat.runChat
+import org.hapticon.companion.gesture.runFit
+import org.hapticon.companion.gesture.runFitBench
 import org.hapticon.companion.sensors.runDecode
 import org.hapticon.companion.sensors.runGrains
 import org.hapticon.companion.sensors.runHandshake
@@ -76,6 +78,8 @@ private fun dispatch(args: List<String>, console: Console) {
         "handshake" -> runHandshake(rest, console)
         "chat" -> runChat(rest, console)
         "broker" -> runBroker(rest, console)
+        "fit" -> runFit(rest, console)
+        "fit-bench" -> runFitBench(rest, console)
         else -> throw UsageException("unknown command '$command'; try 'hapticon help'")
     }
 }

@@ -37,6 +37,12 @@ val USAGE: String = """
     |  hapticon broker [--port N] [--data DIR]
     |      Run the embedded MQTT broker on 127.0.0.1 (default port 1883, store in ~/.hapticon/broker)
     |      until Ctrl-C.
+    |  hapticon fit --in REC.wav|REC.csv [--channel NAME] [--envelope lowpass|rms] [--level peak|full-scale]
+    |               [--name NAME] --out ICON.json [--json]
+    |      Fit a haptic icon to a gesture recording (vibration WAV, or CSV time_s,<channel>..); write it as
+    |      icon JSON and print the icon and its fit report (--json: one JSON object). See docs/gesture-extraction.md.
+    |  hapticon fit-bench [--trials N] [--seed S]
+    |      Parameter recovery of the fit on random synthetic icons at SNR 10-40 dB, per envelope method.
     |  hapticon help
     |      Print this text.
     |
