@@ -378,7 +378,7 @@ internal class RepetitionWindow(val before: Int, val length: Int) {
     companion object {
         /**
          * Reaches back from each crossing to where its envelope leaves [START_FRACTION] of the peak (plus a
-         * margin), so the whole attack is in every window; the windows end at the next onset (the shortest
+         * quarter and a margin), so the whole attack is in every window; the windows end at the next onset (the shortest
          * spacing), or at the end of the recording for a single repetition.
          */
         fun of(envelope: DoubleArray, anchors: List<Int>, peak: Double): RepetitionWindow {
@@ -390,7 +390,9 @@ internal class RepetitionWindow(val before: Int, val length: Int) {
                 before = maxOf(before, anchor - i)
             }
             val spacing = anchors.zipWithNext { a, b -> b - a }.minOrNull()
-            before = minOf(before + MARGIN_SAMPLES, anchors.first(), spacing?.let { it / 2 } ?: Int.MAX_VALUE)
+            // The walk stops at 1 % of the peak, not at the attack's start: reach a quarter further (the
+            // attack's foot below 1 %, smeared by the filter) so the fit sees where the ramp begins.
+            before = minOf(before + before / 4 + MARGIN_SAMPLES, anchors.first(), spacing?.let { it / 2 } ?: Int.MAX_VALUE)
             val length = spacing ?: (envelope.size - anchors.first() + before)
             return RepetitionWindow(before, maxOf(2, length))
         }

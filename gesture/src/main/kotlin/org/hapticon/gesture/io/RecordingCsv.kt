@@ -10,7 +10,7 @@ import kotlin.math.abs
  *
  * A channel name may end in a unit, `force_N` → channel `force` in `N`; the units recognised are listed in
  * [UNITS] (anything else is part of the name and the unit is ""). The sample rate comes from the time
- * column: rows must be evenly spaced, each step within [TIMING_TOLERANCE] of the mean step, or the file is
+ * column: rows must be evenly spaced, each step within [TIMING_TOLERANCE] of the median step, or the file is
  * rejected naming the first late or early row. Non-finite or blank cells are handled by [GapPolicy].
  */
 public object RecordingCsv {
@@ -62,8 +62,9 @@ public object RecordingCsv {
             if (time == null || !time.isFinite()) fail(source, line, "time_s '${cells[0].trim()}' is not a finite number")
             times[r] = time
             for (c in names.indices) {
-                val value = cells[c + 1].trim().toDoubleOrNull()
-                if (value == null && cells[c + 1].isNotBlank() && !cells[c + 1].trim().equals("nan", ignoreCase = true)) {
+                val cell = cells[c + 1].trim()
+                val value = cell.toDoubleOrNull()
+                if (value == null && cell.isNotEmpty() && cell.lowercase() !in NON_FINITE) {
                     fail(source, line, "${names[c]} '${cells[c + 1].trim()}' is not a number")
                 }
                 val sample = value ?: Double.NaN
@@ -112,15 +113,20 @@ public object RecordingCsv {
         return if (unit in UNITS) name.substring(0, cut) to unit else name to ""
     }
 
+    /** Spellings of a non-finite cell, which are gaps rather than typos. */
+    private val NON_FINITE = setOf("nan", "inf", "+inf", "-inf", "infinity", "+infinity", "-infinity")
+
     private fun sampleRate(times: DoubleArray, lines: IntArray, source: String): Double {
         val meanStep = (times.last() - times.first()) / (times.size - 1)
         if (!(meanStep > 0.0)) fail(source, lines[1], "time_s must increase, ${times.first()} to ${times.last()} does not")
-        for (i in 1 until times.size) {
-            val step = times[i] - times[i - 1]
-            if (abs(step - meanStep) > TIMING_TOLERANCE * meanStep) {
+        // Steps are compared with the median, not the mean, so the row reported is the odd one out.
+        val steps = DoubleArray(times.size - 1) { times[it + 1] - times[it] }
+        val typical = steps.sortedArray()[steps.size / 2]
+        for (i in steps.indices) {
+            if (abs(steps[i] - typical) > TIMING_TOLERANCE * typical) {
                 fail(
-                    source, lines[i],
-                    String.format(Locale.ROOT, "irregular timing: step %.6g s from the previous row, the mean step is %.6g s", step, meanStep),
+                    source, lines[i + 1],
+                    String.format(Locale.ROOT, "irregular timing: step %.6g s from the previous row, the typical (median) step is %.6g s", steps[i], typical),
                 )
             }
         }
