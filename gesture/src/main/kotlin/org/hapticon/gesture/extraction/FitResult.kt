@@ -58,7 +58,11 @@ public class FitReport(
     public val envelopeMethod: EnvelopeMethod,
     /** Its setting in words, e.g. "2nd-order Butterworth at 110.0 Hz, forward-backward". */
     public val envelopeSetting: String,
-    /** Peak of the envelope, in the channel's units (amplitude for a vibration, force above rest for a force). */
+    /**
+     * The gesture's peak in the channel's units (amplitude for a vibration, force above rest for a force):
+     * the 99th percentile of the averaged repetition's envelope over the fitted span, at least the fitted
+     * sustain amplitude — robust to single noise excursions.
+     */
     public val envelopePeak: Double,
     /** The seven icon parameters in icon order: attack, sustain, level, release, note, period, count. */
     public val parameters: List<ParameterFit>,

@@ -140,8 +140,9 @@ public object IconFitter {
         val sustain = (trapezoid.sustainEnd - trapezoid.attackEnd) / rate
         val release = (trapezoid.releaseEnd - trapezoid.sustainEnd) / rate
         val period = if (anchors.size > 1) median(anchors.zipWithNext { a, b -> (b - a).toDouble() }) / rate else 0.0
+        val gesturePeak = robustPeak(average, trapezoid)
         val reference = when (options.levelReference) {
-            LevelReference.GESTURE_PEAK -> peak
+            LevelReference.GESTURE_PEAK -> gesturePeak
             LevelReference.FULL_SCALE -> 1.0
         }
         val level = trapezoid.level / reference
@@ -151,7 +152,7 @@ public object IconFitter {
             note = Spectrum.noteOf(frequency, rate)
             noteHow = "carrier ${format(frequency)} Hz (Hann FFT, parabolic peak) → round(69 + 12·log2(f/440))"
         } else {
-            val firmness = ForceNote.firmnessOf(peak, channel.unit) ?: 0.5.also {
+            val firmness = ForceNote.firmnessOf(gesturePeak, channel.unit) ?: 0.5.also {
                 warnings += "force scale of unit '${channel.unit}' unknown: firmness taken as 0.5 for the note"
             }
             note = ForceNote.note(firmness, attack + sustain + release)
@@ -168,10 +169,10 @@ public object IconFitter {
             dominantFrequencyHz = frequency,
             envelopeMethod = options.envelope,
             envelopeSetting = setting,
-            envelopePeak = peak,
+            envelopePeak = gesturePeak,
             parameters = parameters,
             onsets = onsets,
-            fitRmsError = trapezoid.rmsError / peak,
+            fitRmsError = trapezoid.rmsError / gesturePeak,
             rSquared = trapezoid.rSquared,
             snrDb = snr(x, kind, envelope, peak, onsets, attack + sustain + release, rate),
             warnings = warnings,
@@ -188,6 +189,20 @@ public object IconFitter {
         "period" to if (count > 1) "median onset-to-onset time" else "one repetition: 0",
         "count" to "onsets (rise through ${options.onThreshold} of peak after falling below ${options.offThreshold}, ≥ ${options.minGapSeconds} s apart)",
     )
+
+    /**
+     * The gesture's peak: the [PEAK_PERCENTILE] of the averaged repetition over the fitted span, at least the
+     * fitted level. A plain maximum would be the largest noise excursion; this keeps any peak lasting 1 % of
+     * the repetition (a tap's impact before a hold) and reads a flat noisy sustain only ~2σ high.
+     */
+    private fun robustPeak(average: DoubleArray, trapezoid: Trapezoid): Double {
+        val from = trapezoid.start
+        val to = maxOf(trapezoid.releaseEnd, from + 1).coerceAtMost(average.size)
+        val span = average.copyOfRange(minOf(from, to - 1), to)
+        return maxOf(trapezoid.level, percentile(span, PEAK_PERCENTILE))
+    }
+
+    private const val PEAK_PERCENTILE = 0.99
 
     /** The span the FFT reads: the whole channel, or [MAX_FFT_SPAN] samples centred on the largest deviation from the first sample. */
     private fun fftSpan(x: DoubleArray): Pair<Int, Int> {
@@ -216,30 +231,47 @@ public object IconFitter {
                 // One carrier period holds two whole ripple cycles of x², so the moving mean cancels them.
                 val seconds = options.rmsWindowSeconds ?: if (vibration) 1.0 / frequency else FitOptions.FORCE_RMS_WINDOW_S
                 val samples = (seconds * rate).roundToInt().coerceIn(1, x.size)
-                envelope = if (vibration) Envelopes.rms(x, samples) else Envelopes.rms(x.copyOf().also { centre(it) }, samples)
+                envelope = if (vibration) Envelopes.rms(x, samples) else Envelopes.rms(x.copyOf().also { centre(it, rate) }, samples)
                 if (vibration) for (i in envelope.indices) envelope[i] *= sqrt(2.0)
                 setting = "moving RMS over $samples samples (${format(samples / rate)} s)"
             }
         }
+        val floor = quietest(envelope, rate)
         if (vibration) {
             // Noise adds power: take the quiet floor's power off every sample (never below 0).
-            val floor = percentile(envelope, NOISE_PERCENTILE)
             for (i in envelope.indices) envelope[i] = sqrt(maxOf(0.0, envelope[i] * envelope[i] - floor * floor))
         } else {
-            val rest = percentile(envelope, NOISE_PERCENTILE)
-            for (i in envelope.indices) envelope[i] = maxOf(0.0, envelope[i] - rest)
+            for (i in envelope.indices) envelope[i] = maxOf(0.0, envelope[i] - floor)
         }
         return envelope to setting
     }
 
     // A force RMS around the rest value, not around zero: a resting FSR reads a small offset.
-    private fun centre(x: DoubleArray) {
-        val rest = percentile(x, NOISE_PERCENTILE)
+    private fun centre(x: DoubleArray, rate: Double) {
+        val rest = quietest(x, rate)
         for (i in x.indices) x[i] = maxOf(0.0, x[i] - rest)
     }
 
-    /** Fraction of the envelope taken as noise floor or rest: a gesture leaves at least this much quiet. */
-    private const val NOISE_PERCENTILE = 0.05
+    /**
+     * The noise floor (vibration) or rest value (force): the lowest mean over [QUIET_BLOCK_S] blocks. Any one
+     * quiet moment of the recording is enough, however short the silence is relative to the gesture; a
+     * recording with none gets its gesture's lowest level, which is then treated as rest.
+     */
+    private fun quietest(values: DoubleArray, rate: Double): Double {
+        val block = (QUIET_BLOCK_S * rate).roundToInt().coerceIn(1, maxOf(1, values.size / 8))
+        var lowest = Double.MAX_VALUE
+        var from = 0
+        while (from + block <= values.size) {
+            var sum = 0.0
+            for (i in from until from + block) sum += values[i]
+            lowest = minOf(lowest, sum / block)
+            from += block
+        }
+        return lowest
+    }
+
+    /** Block length of [quietest]. */
+    private const val QUIET_BLOCK_S = 0.02
 
     /** Envelope indices where a repetition rises through the on-threshold after falling below the off-threshold. */
     private fun onsetCrossings(envelope: DoubleArray, peak: Double, options: FitOptions, rate: Double): List<Int> {
@@ -261,7 +293,7 @@ public object IconFitter {
     }
 
     private fun snr(x: DoubleArray, kind: SignalKind, envelope: DoubleArray, peak: Double, onsets: List<Double>, length: Double, rate: Double): Double? {
-        val offset = if (kind == SignalKind.VIBRATION) x.average() else percentile(x, NOISE_PERCENTILE)
+        val offset = if (kind == SignalKind.VIBRATION) x.average() else quietest(x, rate)
         var quietPower = 0.0
         var quiet = 0L
         val active = BooleanArray(x.size)
@@ -293,12 +325,16 @@ public object IconFitter {
     /** Envelope below this fraction of the peak is quiet (noise only) for the SNR estimate. */
     private const val QUIET_FRACTION = 0.02
 
+    /**
+     * A clipped signal sits on full scale for runs of equal samples; a full-scale sine only touches it, so
+     * count samples at |x| >= [CLIP_LEVEL] equal to their predecessor.
+     */
     private fun clipping(x: DoubleArray, unit: String, warnings: MutableList<String>) {
         if (unit.isNotEmpty()) return
         var clipped = 0
-        for (v in x) if (abs(v) >= CLIP_LEVEL) clipped++
-        if (clipped >= maxOf(3, x.size / 1000)) {
-            warnings += "saturated: $clipped samples at full scale (|x| >= $CLIP_LEVEL); level and shape are underestimated"
+        for (i in 1 until x.size) if (abs(x[i]) >= CLIP_LEVEL && x[i] == x[i - 1]) clipped++
+        if (clipped >= maxOf(10, x.size / 1000)) {
+            warnings += "saturated: $clipped samples held at full scale (|x| >= $CLIP_LEVEL); level and shape are underestimated"
         }
     }
 
@@ -315,7 +351,8 @@ internal class Measured(
 internal object SafeIcon {
     fun build(m: Measured, name: String, warnings: MutableList<String>, how: Map<String, String>): Pair<HapticIcon, List<ParameterFit>> {
         val level = m.level.coerceIn(0.0, 1.0)
-        if (level != m.level) warnings += "level ${format(m.level)} clamped to ${format(level)}"
+        // A level a hair above 1 is filter ripple on a full-scale sustain, not worth a warning.
+        if (abs(level - m.level) > LEVEL_ROUNDING) warnings += "level ${format(m.level)} clamped to ${format(level)}"
         var count = minOf(m.count, HapticIcon.MAX_COUNT)
         if (count != m.count) warnings += "count ${m.count} clamped to ${HapticIcon.MAX_COUNT}"
         var attack = m.attack
@@ -351,22 +388,32 @@ internal object SafeIcon {
         )
         return icon to parameters
     }
+
+    private const val LEVEL_ROUNDING = 0.005
 }
 
 /**
- * Where the repetitions are cut out for averaging: [before] samples before each onset crossing and
- * [length] samples in all.
+ * Where the repetitions are cut out for averaging: from [before] samples before each onset crossing, each
+ * up to the next repetition's window (the last one up to the end of the recording), [length] samples at most.
+ * [cleanFrom] is, per repetition, the window index from which it is its own (0, or later when it starts
+ * inside the previous one's release).
  */
-internal class RepetitionWindow(val before: Int, val length: Int) {
-    /** The mean of the windows over [envelope] at each anchor; indices a window lacks (recording ends) are left out. */
+internal class RepetitionWindow(val before: Int, val length: Int, private val cleanFrom: IntArray) {
+    /**
+     * The mean over the repetitions of [envelope] at each window index. Repetitions that overlap (combined by
+     * maximum) are their own only between the trough before them and the next one's window, so each adds just
+     * that part: a release longer than the period comes from the last repetition alone, an attack hidden under
+     * the previous release from the first.
+     */
     fun average(envelope: DoubleArray, anchors: List<Int>): DoubleArray {
         val sum = DoubleArray(length)
         val count = IntArray(length)
-        for (anchor in anchors) {
+        for ((k, anchor) in anchors.withIndex()) {
             val from = anchor - before
-            for (j in 0 until length) {
+            val until = if (k + 1 < anchors.size) anchors[k + 1] - before else envelope.size
+            for (j in cleanFrom[k] until minOf(length, until - from)) {
                 val i = from + j
-                if (i < 0 || i >= envelope.size) continue
+                if (i < 0) continue
                 sum[j] += envelope[i]
                 count[j]++
             }
@@ -377,27 +424,37 @@ internal class RepetitionWindow(val before: Int, val length: Int) {
 
     companion object {
         /**
-         * Reaches back from each crossing to where its envelope leaves [START_FRACTION] of the peak (plus a
-         * quarter and a margin), so the whole attack is in every window; the windows end at the next onset (the shortest
-         * spacing), or at the end of the recording for a single repetition.
+         * Reaches back from each crossing while the envelope keeps falling, to where it leaves [START_FRACTION]
+         * of the peak (plus a quarter and a margin, for the attack's foot) or to the trough where it starts
+         * rising again into the previous repetition's release. The window runs to the end of the recording from
+         * the last repetition's start.
          */
         fun of(envelope: DoubleArray, anchors: List<Int>, peak: Double): RepetitionWindow {
             val start = START_FRACTION * peak
+            val rise = TROUGH_RISE * peak
             var before = 0
-            for (anchor in anchors) {
+            val troughs = IntArray(anchors.size) { -1 }
+            for ((k, anchor) in anchors.withIndex()) {
                 var i = anchor
-                while (i > 0 && envelope[i - 1] > start) i--
-                before = maxOf(before, anchor - i)
+                var lowest = envelope[anchor]
+                while (i > 0 && envelope[i - 1] > start && envelope[i - 1] <= lowest + rise) {
+                    i--
+                    lowest = minOf(lowest, envelope[i])
+                }
+                if (i > 0 && envelope[i - 1] > start) troughs[k] = i else before = maxOf(before, anchor - i)
             }
             val spacing = anchors.zipWithNext { a, b -> b - a }.minOrNull()
             // The walk stops at 1 % of the peak, not at the attack's start: reach a quarter further (the
             // attack's foot below 1 %, smeared by the filter) so the fit sees where the ramp begins.
             before = minOf(before + before / 4 + MARGIN_SAMPLES, anchors.first(), spacing?.let { it / 2 } ?: Int.MAX_VALUE)
-            val length = spacing ?: (envelope.size - anchors.first() + before)
-            return RepetitionWindow(before, maxOf(2, length))
+            val cleanFrom = IntArray(anchors.size) { k -> if (troughs[k] < 0) 0 else maxOf(0, troughs[k] - (anchors[k] - before)) }
+            val length = maxOf(spacing ?: 0, envelope.size - anchors.last() + before)
+            return RepetitionWindow(before, maxOf(2, length), cleanFrom)
         }
 
         private const val START_FRACTION = 0.01
+        /** A backward walk that climbs this fraction of the peak above its lowest point has passed a trough. */
+        private const val TROUGH_RISE = 0.03
         private const val MARGIN_SAMPLES = 16
     }
 }
