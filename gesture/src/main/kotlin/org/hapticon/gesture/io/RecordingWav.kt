@@ -1,10 +1,14 @@
 package org.hapticon.gesture.io
 
+import org.hapticon.core.io.WavEncoding
 import org.hapticon.core.io.WavFormatException
 import org.hapticon.core.io.WavReader
+import org.hapticon.core.io.WavWriter
+import org.hapticon.core.render.SampleStream
 import org.hapticon.gesture.Channel
 import org.hapticon.gesture.Recording
 import java.io.InputStream
+import java.io.OutputStream
 
 /** Reads a vibration-sensor WAV (PCM16 or float, via haptics-core [WavReader]) as a one-channel [Recording]. */
 public object RecordingWav {
@@ -25,5 +29,35 @@ public object RecordingWav {
         val first = audio.channel(0)
         val samples = DoubleArray(first.size) { first[it].toDouble() }
         return Recording(audio.sampleRate.toDouble(), listOf(Channel(CHANNEL_NAME, "", samples)))
+    }
+
+    /**
+     * Writes channel [channelName] (default: the first) of [recording] to [out] as a mono WAV via haptics-core
+     * [WavWriter]. The sample rate must be a whole number of Hz; samples should be in [-1, 1] (PCM16 clips
+     * beyond). Throws [IllegalArgumentException] for a missing channel, a fractional rate or a non-finite sample.
+     */
+    public fun write(recording: Recording, out: OutputStream, channelName: String? = null, encoding: WavEncoding = WavEncoding.PCM16) {
+        val channel = if (channelName == null) recording.channels.first() else recording.channel(channelName)
+            ?: throw IllegalArgumentException("no channel '$channelName'; the recording has ${recording.channels.joinToString { it.name }}")
+        val rate = recording.sampleRate
+        require(rate == Math.rint(rate) && rate <= Int.MAX_VALUE) { "a WAV needs a whole number of Hz, the recording has $rate" }
+        val samples = channel.toDoubleArray()
+        val bad = samples.indexOfFirst { !it.isFinite() }
+        require(bad < 0) { "channel ${channel.name} has a non-finite sample at index $bad" }
+        WavWriter.write(ChannelStream(samples, rate.toInt()), out, encoding)
+    }
+
+    private class ChannelStream(private val samples: DoubleArray, override val sampleRate: Int) : SampleStream {
+        override val totalSamples: Long get() = samples.size.toLong()
+        override var position: Long = 0
+            private set
+
+        override fun read(destination: FloatArray, offset: Int, length: Int): Int {
+            if (position >= samples.size) return -1
+            val count = minOf(length.toLong(), samples.size - position).toInt()
+            for (j in 0 until count) destination[offset + j] = samples[(position + j).toInt()].toFloat()
+            position += count
+            return count
+        }
     }
 }
