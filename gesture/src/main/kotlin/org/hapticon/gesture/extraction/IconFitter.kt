@@ -425,7 +425,7 @@ internal class RepetitionWindow(val before: Int, val length: Int, private val cl
     companion object {
         /**
          * Reaches back from each crossing while the envelope keeps falling, to where it leaves [START_FRACTION]
-         * of the peak (plus a quarter and a margin, for the attack's foot) or to the trough where it starts
+         * of the peak (plus 40 % and a margin, for the attack's foot) or to the trough where it starts
          * rising again into the previous repetition's release. The window runs to the end of the recording from
          * the last repetition's start.
          */
@@ -436,25 +436,34 @@ internal class RepetitionWindow(val before: Int, val length: Int, private val cl
             val troughs = IntArray(anchors.size) { -1 }
             for ((k, anchor) in anchors.withIndex()) {
                 var i = anchor
-                var lowest = envelope[anchor]
-                while (i > 0 && envelope[i - 1] > start && envelope[i - 1] <= lowest + rise) {
+                var lowestAt = anchor
+                while (i > 0 && envelope[i - 1] > start && envelope[i - 1] <= envelope[lowestAt] + rise) {
                     i--
-                    lowest = minOf(lowest, envelope[i])
+                    if (envelope[i] < envelope[lowestAt]) lowestAt = i
                 }
-                if (i > 0 && envelope[i - 1] > start) troughs[k] = i else before = maxOf(before, anchor - i)
+                if (i > 0 && envelope[i - 1] > start) troughs[k] = lowestAt else before = maxOf(before, anchor - i)
+            }
+            // Every walk ended in a trough (a recording that starts mid-release): reach back to the nearest.
+            if (troughs.all { it >= 0 }) {
+                before = anchors.indices.minOf { anchors[it] - troughs[it] }
+                troughs.fill(-1)
             }
             val spacing = anchors.zipWithNext { a, b -> b - a }.minOrNull()
-            // The walk stops at 1 % of the peak, not at the attack's start: reach a quarter further (the
-            // attack's foot below 1 %, smeared by the filter) so the fit sees where the ramp begins.
-            before = minOf(before + before / 4 + MARGIN_SAMPLES, anchors.first(), spacing?.let { it / 2 } ?: Int.MAX_VALUE)
+            // The walk stops at 10 % of the peak (lower, noise can end it early on the ramp), not at the
+            // attack's start: the foot below is a quarter of the walk on a 50 % crossing, so reach 40 % further.
+            before = minOf(before + before * 2 / 5 + MARGIN_SAMPLES, anchors.first(), spacing?.let { it / 2 } ?: Int.MAX_VALUE)
             val cleanFrom = IntArray(anchors.size) { k -> if (troughs[k] < 0) 0 else maxOf(0, troughs[k] - (anchors[k] - before)) }
             val length = maxOf(spacing ?: 0, envelope.size - anchors.last() + before)
             return RepetitionWindow(before, maxOf(2, length), cleanFrom)
         }
 
-        private const val START_FRACTION = 0.01
-        /** A backward walk that climbs this fraction of the peak above its lowest point has passed a trough. */
-        private const val TROUGH_RISE = 0.03
+        private const val START_FRACTION = 0.1
+        /**
+         * A backward walk that climbs this fraction of the peak above its lowest point has passed a trough:
+         * well above the envelope's noise at 10 dB SNR (~4 % RMS), well below the rise into an overlapping
+         * release (stroke's trough is at 20 % of its level).
+         */
+        private const val TROUGH_RISE = 0.15
         private const val MARGIN_SAMPLES = 16
     }
 }
