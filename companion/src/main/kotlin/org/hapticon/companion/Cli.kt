@@ -5,6 +5,8 @@ import org.hapticon.companion.chat.runChat
 import org.hapticon.companion.gesture.runClassify
 import org.hapticon.companion.gesture.runClassifyBench
 import org.hapticon.companion.gesture.runTrain
+import org.hapticon.companion.gesture.runFit
+import org.hapticon.companion.gesture.runFitBench
 import org.hapticon.companion.sensors.runDecode
 import org.hapticon.companion.sensors.runGrains
 import org.hapticon.companion.sensors.runHandshake
@@ -90,6 +92,8 @@ private fun dispatch(args: List<String>, console: Console) {
         "classify-bench" -> runClassifyBench(rest, console)
         "train" -> runTrain(rest, console)
         "classify" -> runClassify(rest, console)
+        "fit" -> runFit(rest, console)
+        "fit-bench" -> runFitBench(rest, console)
         else -> throw UsageException("unknown command '$command'; try 'hapticon help'")
     }
 }

@@ -61,6 +61,12 @@ val USAGE: String = """
     |  hapticon classify --model MODEL.json --in REC.csv
     |      Classify a recording (same channels and rate as the model) live: CSV time_s,label,probability,event
     |      per decision, event 1 where a gesture is reported.
+    |  hapticon fit --in REC.wav|REC.csv [--channel NAME] [--envelope lowpass|rms] [--level peak|full-scale]
+    |               [--name NAME] --out ICON.json [--json]
+    |      Fit a haptic icon to a gesture recording (vibration WAV, or CSV time_s,<channel>..); write it as
+    |      icon JSON and print the icon and its fit report (--json: one JSON object). See docs/gesture-extraction.md.
+    |  hapticon fit-bench [--trials N] [--seed S]
+    |      Parameter recovery of the fit on random synthetic icons at SNR 10-40 dB, per envelope method.
     |  hapticon help
     |      Print this text.
     |

@@ -1,0 +1,134 @@
+package org.hapticon.companion.gesture
+
+import org.hapticon.companion.Arguments
+import org.hapticon.companion.Console
+import org.hapticon.companion.OutputFiles
+import org.hapticon.companion.UsageException
+import org.hapticon.core.io.IconJson
+import org.hapticon.core.io.Json
+import org.hapticon.core.io.JsonArray
+import org.hapticon.core.io.JsonNull
+import org.hapticon.core.io.JsonNumber
+import org.hapticon.core.io.JsonObject
+import org.hapticon.core.io.JsonString
+import org.hapticon.core.io.JsonValue
+import org.hapticon.gesture.Recording
+import org.hapticon.gesture.extraction.EnvelopeMethod
+import org.hapticon.gesture.extraction.FitBenchmark
+import org.hapticon.gesture.extraction.FitOptions
+import org.hapticon.gesture.extraction.IconFit
+import org.hapticon.gesture.extraction.IconFitter
+import org.hapticon.gesture.extraction.LevelReference
+import org.hapticon.gesture.io.RecordingCsv
+import org.hapticon.gesture.io.RecordingFormatException
+import org.hapticon.gesture.io.RecordingWav
+import java.io.File
+import java.io.IOException
+import java.util.Locale
+
+/** `--envelope` values. */
+val ENVELOPE_CHOICES: Map<String, EnvelopeMethod> = linkedMapOf("lowpass" to EnvelopeMethod.LOWPASS, "rms" to EnvelopeMethod.RMS)
+
+/** `--level` values. */
+val LEVEL_CHOICES: Map<String, LevelReference> = linkedMapOf("peak" to LevelReference.GESTURE_PEAK, "full-scale" to LevelReference.FULL_SCALE)
+
+/**
+ * `hapticon fit --in REC.wav|REC.csv [--channel NAME] [--envelope lowpass|rms] [--level peak|full-scale]
+ * [--name NAME] --out ICON.json [--json]`: fits an icon to the recording, writes it as icon JSON, and prints
+ * the icon and its fit report (text, or one JSON object with `--json`).
+ */
+fun runFit(args: List<String>, console: Console) {
+    val arguments = Arguments.parse("fit", args, valueOptions = setOf("in", "channel", "envelope", "level", "name", "out"), flagOptions = setOf("json"))
+    arguments.requireNoPositionals()
+    val path = arguments.required("in")
+    val out = File(arguments.required("out"))
+    val input = File(path)
+    val options = try {
+        FitOptions(
+            envelope = arguments.choice("envelope", ENVELOPE_CHOICES, EnvelopeMethod.LOWPASS),
+            levelReference = arguments.choice("level", LEVEL_CHOICES, LevelReference.GESTURE_PEAK),
+            name = arguments.value("name") ?: input.nameWithoutExtension.take(64).ifBlank { "gesture" },
+        )
+    } catch (e: IllegalArgumentException) {
+        throw UsageException("--name: ${e.message}")
+    }
+    val recording = readRecording(input)
+    val fit = try {
+        IconFitter.fit(recording, arguments.value("channel"), options)
+    } catch (e: IllegalArgumentException) {
+        throw UsageException("$path: ${e.message}")
+    }
+    OutputFiles.write(out) { it.write((IconJson.encode(fit.icon, "  ") + "\n").toByteArray(Charsets.UTF_8)) }
+    if (arguments.flag("json")) console.out.println(Json.encode(fitJson(fit), "  ")) else console.out.print(describeFit(fit))
+}
+
+/** `hapticon fit-bench [--trials N] [--seed S]`: the synthetic parameter-recovery table. */
+fun runFitBench(args: List<String>, console: Console) {
+    val arguments = Arguments.parse("fit-bench", args, valueOptions = setOf("trials", "seed"))
+    arguments.requireNoPositionals()
+    val trials = arguments.int("trials", 20)
+    if (trials !in 1..10_000) throw UsageException("--trials must be in 1..10000, got $trials")
+    val seedText = arguments.value("seed") ?: "1"
+    val seed = seedText.toLongOrNull() ?: throw UsageException("--seed must be a whole number, got '$seedText'")
+    console.out.println("fit-bench: $trials random icons per row, seed $seed, 44.1 kHz, white Gaussian noise; mean |error|")
+    console.out.print(FitBenchmark.format(FitBenchmark.run(trials, seed)))
+}
+
+/** Reads a `.wav` or `.csv` recording; every problem becomes a one-line [UsageException]. */
+private fun readRecording(file: File): Recording {
+    if (file.isDirectory) throw UsageException("--in: $file is a directory, not a file")
+    if (!file.isFile) throw UsageException("--in: no such file: $file")
+    return try {
+        when (file.extension.lowercase()) {
+            "wav" -> file.inputStream().buffered().use { RecordingWav.read(it, file.path) }
+            "csv" -> RecordingCsv.read(file.readText(Charsets.UTF_8), file.path)
+            else -> throw UsageException("--in: $file must be a .wav or .csv recording")
+        }
+    } catch (e: RecordingFormatException) {
+        throw UsageException(e.message.orEmpty())
+    } catch (e: IOException) {
+        throw UsageException("cannot read $file: ${e.message}")
+    }
+}
+
+/** The human-readable fit: icon line, then one line per parameter and the report figures. */
+internal fun describeFit(fit: IconFit): String {
+    val r = fit.report
+    val icon = fit.icon
+    val out = StringBuilder()
+    out.append(String.format(Locale.ROOT, "icon %s: attack %.4f s, sustain %.4f s, level %.3f, release %.4f s, note %.0f, period %.4f s, count %d%n",
+        icon.name, icon.attack, icon.sustain, icon.level, icon.release, icon.note, icon.period, icon.count))
+    out.append(String.format(Locale.ROOT, "channel %s at %.1f Hz: %s, dominant %.2f Hz%n", r.channel, r.sampleRate, r.kind.name.lowercase(), r.dominantFrequencyHz))
+    out.append("envelope: ${r.envelopeMethod.name.lowercase()}, ${r.envelopeSetting}\n")
+    for (p in r.parameters) {
+        out.append(String.format(Locale.ROOT, "  %-8s %10.4f%s  %s%n", p.name, p.value, if (p.clamped) String.format(Locale.ROOT, " (measured %.4f)", p.measured) else "", p.how))
+    }
+    out.append(String.format(Locale.ROOT, "fit: RMS error %.4f of peak, R² %.4f; SNR %s%n", r.fitRmsError, r.rSquared,
+        r.snrDb?.let { String.format(Locale.ROOT, "%.1f dB", it) } ?: "not measurable (no quiet part)"))
+    out.append("onsets (s): ${r.onsets.joinToString(" ") { String.format(Locale.ROOT, "%.4f", it) }}\n")
+    for (w in r.warnings) out.append("warning: $w\n")
+    return out.toString()
+}
+
+/** The fit as one JSON object: the icon (IconJson) and the report. */
+internal fun fitJson(fit: IconFit): JsonObject {
+    val r = fit.report
+    val report = linkedMapOf<String, JsonValue>(
+        "channel" to JsonString(r.channel),
+        "sample_rate" to JsonNumber(r.sampleRate),
+        "kind" to JsonString(r.kind.name.lowercase()),
+        "dominant_frequency_hz" to JsonNumber(r.dominantFrequencyHz),
+        "envelope" to JsonString(r.envelopeMethod.name.lowercase()),
+        "envelope_setting" to JsonString(r.envelopeSetting),
+        "envelope_peak" to JsonNumber(r.envelopePeak),
+        "parameters" to JsonArray(r.parameters.map {
+            JsonObject(linkedMapOf("name" to JsonString(it.name), "value" to JsonNumber(it.value), "measured" to JsonNumber(it.measured), "how" to JsonString(it.how)))
+        }),
+        "onsets_s" to JsonArray(r.onsets.map { JsonNumber(it) }),
+        "fit_rms_error" to JsonNumber(r.fitRmsError),
+        "r_squared" to JsonNumber(r.rSquared),
+        "snr_db" to (r.snrDb?.let { JsonNumber(it) } ?: JsonNull),
+        "warnings" to JsonArray(r.warnings.map { JsonString(it) }),
+    )
+    return JsonObject(linkedMapOf("icon" to IconJson.toJsonValue(fit.icon), "report" to JsonObject(report)))
+}
