@@ -1,10 +1,12 @@
 package org.hapticon.companion
 
 import org.hapticon.companion.chat.MessagingDemo
+import org.hapticon.companion.gesture.GestureDemo
 import org.hapticon.companion.plot.IconPlot
 import org.hapticon.companion.plot.ModelComparisonPlot
 import org.hapticon.companion.plot.PngExport
 import org.hapticon.companion.sensors.SensorDemo
+import org.hapticon.companion.study.StudyDemo
 import org.hapticon.core.HapticIcon
 import org.hapticon.core.render.IconRenderer
 import java.io.File
@@ -23,7 +25,8 @@ fun runDemo(args: List<String>, console: Console) {
 /**
  * Writes the demo into [dir]: each preset as `<name>.wav` (float32, 44.1 kHz, paper model) and
  * `<name>.png`, then `envelope-models.png`, then the [SensorDemo] files, then the [MessagingDemo] exchange
- * and `received-knock.wav`; reports each file and the [apk]
+ * and `received-knock.wav`, then the [StudyDemo] (`study/`) and the [GestureDemo] (`gesture/`); reports each
+ * file and the [apk]
  * (with its size) through [report].
  * One step per line so that later demo parts (broker, chat) slot in as further steps.
  */
@@ -38,5 +41,7 @@ fun writeDemo(dir: File, apk: File?, report: (String) -> Unit) {
     report(PngExport.write(comparison, File(dir, "envelope-models.png")))
     SensorDemo.write(dir, report)
     MessagingDemo.write(dir, report)
+    StudyDemo.write(dir, report)
+    GestureDemo.write(dir, report)
     if (apk != null) report(String.format(Locale.ROOT, "APK: %s (%d bytes, %.1f MB)", apk, apk.length(), apk.length() / 1e6))
 }

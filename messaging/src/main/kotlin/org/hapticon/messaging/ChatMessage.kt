@@ -4,7 +4,7 @@ import org.hapticon.core.HapticIcon
 import java.util.Locale
 import java.util.UUID
 
-/** What arrives in a user's inbox: a [ChatMessage] or a [Receipt]. */
+/** What arrives in a user's inbox: a [ChatMessage], a [Receipt] or a [HandPose]. */
 public sealed interface InboxPayload
 
 /**

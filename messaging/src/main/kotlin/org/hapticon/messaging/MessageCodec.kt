@@ -18,6 +18,7 @@ import org.hapticon.core.io.JsonValue
  * {"schema":"hapticon.message","version":1,"id":"<uuid>","sender":"alice","sentAt":<epoch ms>,
  *  "text":"…","sticker":"hug"|null,"icon":{icon JSON}|null}
  * {"schema":"hapticon.receipt","version":1,"messageId":"<uuid>","from":"bob","state":"delivered"|"read","at":<epoch ms>}
+ * {"schema":"hapticon.hand","version":1,"from":"bob","thumb":12.5,"middle":48.0,"at":<epoch ms>}
  * {"schema":"hapticon.capabilities","version":1,"user":"bob","renderer":"amplitude-waveform","amplitudeControl":true,
  *  "apiLevel":34|null,"resonantFrequencyHz":170.0|null}
  * ```
@@ -32,6 +33,9 @@ public object MessageCodec {
 
     /** `schema` of a receipt. */
     public const val RECEIPT_SCHEMA: String = "hapticon.receipt"
+
+    /** `schema` of a tele-handshake sample. */
+    public const val HAND_SCHEMA: String = "hapticon.hand"
 
     /** `schema` of a capabilities document. */
     public const val CAPABILITIES_SCHEMA: String = "hapticon.capabilities"
@@ -61,6 +65,16 @@ public object MessageCodec {
         "at" to JsonNumber(receipt.atMillis),
     )
 
+    /** [pose] as UTF-8 JSON. Does not throw. */
+    public fun encode(pose: HandPose): ByteArray = encodeObject(
+        "schema" to JsonString(HAND_SCHEMA),
+        "version" to JsonNumber(VERSION),
+        "from" to JsonString(pose.from),
+        "thumb" to JsonNumber(pose.thumbDegrees),
+        "middle" to JsonNumber(pose.middleDegrees),
+        "at" to JsonNumber(pose.atMillis),
+    )
+
     /** [capabilities] as UTF-8 JSON. Does not throw. */
     public fun encode(capabilities: Capabilities): ByteArray = encodeObject(
         "schema" to JsonString(CAPABILITIES_SCHEMA),
@@ -72,10 +86,16 @@ public object MessageCodec {
         "resonantFrequencyHz" to (capabilities.resonantFrequencyHz?.let { JsonNumber(it) } ?: JsonNull),
     )
 
-    /** Decodes what arrives in an inbox: a [ChatMessage] or a [Receipt]. Never throws. */
+    /** Decodes what arrives in an inbox: a [ChatMessage], a [Receipt] or a [HandPose]. Never throws. */
     public fun decodeInbox(payload: ByteArray): Decoded<InboxPayload> = decodeWith(payload) { fields ->
-        when (fields.schema(MESSAGE_SCHEMA, RECEIPT_SCHEMA)) {
+        when (fields.schema(MESSAGE_SCHEMA, RECEIPT_SCHEMA, HAND_SCHEMA)) {
             MESSAGE_SCHEMA -> decodeMessage(fields)
+            HAND_SCHEMA -> HandPose(
+                from = fields.requiredString("from"),
+                thumbDegrees = fields.optionalNumber("thumb") ?: throw InvalidMessageException(RejectionReason.MISSING_FIELD, "thumb", "missing"),
+                middleDegrees = fields.optionalNumber("middle") ?: throw InvalidMessageException(RejectionReason.MISSING_FIELD, "middle", "missing"),
+                atMillis = fields.requiredWhole("at"),
+            )
             else -> decodeReceipt(fields)
         }
     }

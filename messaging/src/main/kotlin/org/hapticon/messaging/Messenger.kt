@@ -47,6 +47,13 @@ public interface Messenger {
     public suspend fun send(recipient: String, receipt: Receipt)
 
     /**
+     * Publishes [pose] into [recipient]'s inbox with QoS 0 (at most once, no acknowledgement): a live
+     * stream where the next sample replaces a lost one. Throws [MessagingException] when
+     * not connected, [IllegalArgumentException] when [recipient] is not a valid user name.
+     */
+    public suspend fun send(recipient: String, pose: HandPose)
+
+    /**
      * Publishes this device's [capabilities] as the retained message of [user], replacing the previous one.
      * Throws [MessagingException] as [send] does, [IllegalArgumentException] when they describe another user.
      */
@@ -86,6 +93,9 @@ public sealed interface InboxEvent {
 
     /** A receipt for a message this user sent. */
     public data class ReceiptReceived(val receipt: Receipt) : InboxEvent
+
+    /** A tele-handshake partner's hand. */
+    public data class HandPoseReceived(val pose: HandPose) : InboxEvent
 
     /** A user's capabilities (retained, so also on every connection). */
     public data class CapabilitiesReceived(val capabilities: Capabilities) : InboxEvent

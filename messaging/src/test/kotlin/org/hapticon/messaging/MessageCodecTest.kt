@@ -47,6 +47,26 @@ class MessageCodecTest {
     }
 
     @Test
+    fun handPose_encodesTheVersionOneWireFormatAndRoundTrips() {
+        val pose = HandPose("bob", 12.5, 48.25, 42)
+        assertEquals(
+            """{"schema":"hapticon.hand","version":1,"from":"bob","thumb":12.5,"middle":48.25,"at":42}""",
+            String(MessageCodec.encode(pose), Charsets.UTF_8),
+        )
+        assertEquals(Decoded.Accepted(pose), MessageCodec.decodeInbox(MessageCodec.encode(pose)))
+    }
+
+    @Test
+    fun handPose_anglesOutOfRangeOrMissing_areRejectedNamingTheField() {
+        assertRejected(RejectionReason.INVALID_VALUE, "thumb", """{"schema":"hapticon.hand","version":1,"from":"bob","thumb":1e9,"middle":0,"at":1}""")
+        assertRejected(RejectionReason.INVALID_VALUE, "middle", """{"schema":"hapticon.hand","version":1,"from":"bob","thumb":0,"middle":-31,"at":1}""")
+        assertRejected(RejectionReason.INVALID_VALUE, "middle", """{"schema":"hapticon.hand","version":1,"from":"bob","thumb":0,"middle":1e400,"at":1}""")
+        assertRejected(RejectionReason.MISSING_FIELD, "thumb", """{"schema":"hapticon.hand","version":1,"from":"bob","middle":0,"at":1}""")
+        assertRejected(RejectionReason.INVALID_VALUE, "from", """{"schema":"hapticon.hand","version":1,"from":"bob/x","thumb":0,"middle":0,"at":1}""")
+        assertEquals(180.0, HandPose("bob", 180.0, -30.0, 0).thumbDegrees, 0.0)
+    }
+
+    @Test
     fun encode_readReceipt_writesTheVersionOneWireFormat() {
         val receipt = Receipt(ID_1, "bob", ReceiptState.READ, 42)
         assertEquals(

@@ -52,6 +52,12 @@ class RecordingMessenger(override val user: String = "alice") : Messenger {
         sentReceipts += recipient to receipt
     }
 
+    override suspend fun send(recipient: String, pose: HandPose) {
+        sentPoses += recipient to pose
+    }
+
+    val sentPoses = mutableListOf<Pair<String, HandPose>>()
+
     override suspend fun publishCapabilities(capabilities: Capabilities) = Unit
 }
 

@@ -4,10 +4,9 @@ import kotlin.math.PI
 import kotlin.math.cos
 
 /**
- * The other person's hand in a tele-handshake: their thumb and middle-finger angles. The messaging
- * task adds one that receives them over the network; for now there is [NoPartner] and
- * [SimulatedPartner]. Read on the sensor's reading thread: implementations must be thread-safe,
- * non-blocking and allocation-free.
+ * The other person's hand in a tele-handshake: their thumb and middle-finger angles: [NoPartner],
+ * [SimulatedPartner], or a [NetworkPartnerHand] receiving them through the chat's broker. Read on the
+ * sensor's reading thread: implementations must be thread-safe, non-blocking and allocation-free.
  */
 interface PartnerHand {
     /** Shown in the UI. */

@@ -16,7 +16,11 @@ import org.hapticon.app.data.ChatPreferences
 import org.hapticon.app.data.ChatRepository
 import org.hapticon.app.data.ChatSettingsRepository
 import org.hapticon.app.playback.HapticPlayer
+import kotlinx.coroutines.flow.Flow
+import org.hapticon.app.sensors.HandshakeLink
+import org.hapticon.app.sensors.NetworkPartnerHand
 import org.hapticon.messaging.Capabilities
+import org.hapticon.messaging.HandPose
 import org.hapticon.messaging.ChatMessage
 import org.hapticon.messaging.Clock
 import org.hapticon.messaging.ConnectionState
@@ -55,10 +59,12 @@ class ChatSync(
     private val scope: CoroutineScope,
     private val clock: Clock = Clock.SYSTEM,
     private val retryPolicy: RetryPolicy = RetryPolicy(),
-) {
+    private val nanoClock: () -> Long = System::nanoTime,
+) : HandshakeLink {
     private val connectionState = MutableStateFlow<ConnectionState>(ConnectionState.Disconnected)
     private val peers = MutableStateFlow<Map<String, Capabilities>>(emptyMap())
     private val openConversations = MutableStateFlow<Set<String>>(emptySet())
+    private val hands = java.util.concurrent.ConcurrentHashMap<String, NetworkPartnerHand>()
     private var job: Job? = null
 
     @Volatile
@@ -84,6 +90,25 @@ class ChatSync(
                     val messenger = messengerFactory(user, broker) ?: return@collectLatest
                     runSession(messenger)
                 }
+        }
+    }
+
+    override val handshakePeers: Flow<List<String>> = repository.conversations().map { list -> list.map { it.peer } }
+
+    /** The hand of [peer]; poses from anyone nobody asked for are dropped on arrival. */
+    override fun partner(peer: String): NetworkPartnerHand = hands.getOrPut(peer) { NetworkPartnerHand(peer) }
+
+    override fun sendOwnHand(peer: String, thumbDegrees: Double, middleDegrees: Double) {
+        val messenger = session?.messenger ?: return
+        if (messenger.state.value != ConnectionState.Connected) return
+        val pose = try {
+            HandPose(messenger.user, thumbDegrees, middleDegrees, clock.nowMillis())
+        } catch (e: org.hapticon.messaging.InvalidMessageException) {
+            return // an angle outside what a hand can do (an uncalibrated sensor) is not worth sending
+        }
+        scope.launch {
+            // QoS 0: a lost sample is replaced by the next one; failures are expected while reconnecting.
+            runCatching { messenger.send(peer, pose) }
         }
     }
 
@@ -139,6 +164,7 @@ class ChatSync(
                 is InboxEvent.MessageReceived -> onMessage(messenger, event.message)
                 is InboxEvent.ReceiptReceived -> repository.applyReceipt(event.receipt)
                 is InboxEvent.CapabilitiesReceived -> peers.update { it + (event.capabilities.user to event.capabilities) }
+                is InboxEvent.HandPoseReceived -> hands[event.pose.from]?.offer(event.pose, nanoClock())
                 is InboxEvent.Rejected -> Log.w(TAG, "rejected payload on ${event.topic}: ${event.rejection.reason} ${event.rejection.field ?: ""} ${event.rejection.detail}")
             }
         } catch (e: Exception) {

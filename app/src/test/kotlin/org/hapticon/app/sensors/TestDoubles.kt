@@ -133,3 +133,18 @@ class TestClock(@Volatile var nanos: Long = 1_000_000_000L) : () -> Long {
         nanos += millis * 1_000_000
     }
 }
+
+/** A [HandshakeLink] in memory: [peersFlow] to offer, [sent] records the wearer's angles per peer. */
+class TestHandshakeLink(peers: List<String> = listOf("bob")) : HandshakeLink {
+    val peersFlow = MutableStateFlow(peers)
+    val sent = CopyOnWriteArrayList<Triple<String, Double, Double>>()
+    private val hands = mutableMapOf<String, NetworkPartnerHand>()
+
+    override val handshakePeers: Flow<List<String>> = peersFlow
+
+    override fun partner(peer: String): NetworkPartnerHand = synchronized(hands) { hands.getOrPut(peer) { NetworkPartnerHand(peer) } }
+
+    override fun sendOwnHand(peer: String, thumbDegrees: Double, middleDegrees: Double) {
+        sent += Triple(peer, thumbDegrees, middleDegrees)
+    }
+}

@@ -181,6 +181,23 @@ class ChatSyncTest {
     }
 
     @Test
+    fun handshake_posesFromThePartnerReachTheirHandAndOursGoOutThroughTheMessenger() = runBlocking {
+        await(messenger.state) { it == org.hapticon.messaging.ConnectionState.Connected }
+        val bob = sync.partner("bob")
+
+        messenger.deliver(InboxEvent.HandPoseReceived(org.hapticon.messaging.HandPose("bob", 20.0, 45.0, now)))
+        // Nobody asked for carol's hand: her poses are dropped.
+        messenger.deliver(InboxEvent.HandPoseReceived(org.hapticon.messaging.HandPose("carol", 90.0, 90.0, now)))
+        sync.sendOwnHand("bob", 50.0, 105.0)
+
+        val angles = DoubleArray(2)
+        bob.readAngles(System.nanoTime(), angles)
+        assertEquals(listOf(20.0, 45.0), angles.toList())
+        val sent = await(messenger.sentPoses) { it.isNotEmpty() }.single()
+        assertEquals("bob" to org.hapticon.messaging.HandPose("alice", 50.0, 105.0, now), sent)
+    }
+
+    @Test
     fun receipt_readForOwnMessage_updatesState() = runBlocking {
         await(messenger.state) { it == org.hapticon.messaging.ConnectionState.Connected }
         val own = repository.send("alice", "bob", "hi")

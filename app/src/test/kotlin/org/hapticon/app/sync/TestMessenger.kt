@@ -7,6 +7,7 @@ import kotlinx.coroutines.flow.update
 import org.hapticon.messaging.Capabilities
 import org.hapticon.messaging.ChatMessage
 import org.hapticon.messaging.ConnectionState
+import org.hapticon.messaging.HandPose
 import org.hapticon.messaging.InboxEvent
 import org.hapticon.messaging.InboxListener
 import org.hapticon.messaging.MessageCodec
@@ -60,6 +61,13 @@ class TestMessenger(override val user: String) : Messenger {
         sentReceipts.update { it + (recipient to receipt) }
     }
 
+    val sentPoses = MutableStateFlow<List<Pair<String, HandPose>>>(emptyList())
+
+    override suspend fun send(recipient: String, pose: HandPose) {
+        if (failing) throw MessagingException("broker unreachable")
+        sentPoses.update { it + (recipient to pose) }
+    }
+
     override suspend fun publishCapabilities(capabilities: Capabilities) {
         published.update { it + capabilities }
     }
@@ -73,6 +81,7 @@ class TestMessenger(override val user: String) : Messenger {
             is org.hapticon.messaging.Decoded.Accepted -> when (val value = decoded.value) {
                 is ChatMessage -> InboxEvent.MessageReceived(value)
                 is Receipt -> InboxEvent.ReceiptReceived(value)
+                is HandPose -> InboxEvent.HandPoseReceived(value)
             }
             is org.hapticon.messaging.Decoded.Rejected -> InboxEvent.Rejected(topic, decoded)
         },

@@ -194,6 +194,8 @@ class ChatSession(
                 synchronized(capabilities) { capabilities[owner] = event.capabilities }
                 if (owner == peer) say(ChatFormat.capabilities(event.capabilities))
             }
+            // The terminal has no glove: a partner's handshake stream (30 samples/s) is not for printing.
+            is InboxEvent.HandPoseReceived -> Unit
             is InboxEvent.Rejected -> {
                 val r = event.rejection
                 err.println("chat: rejected a payload on ${event.topic}: ${r.reason}${r.field?.let { " ($it)" } ?: ""}: ${r.detail}")

@@ -2,6 +2,7 @@ package org.hapticon.messaging.mqtt
 
 import org.hapticon.messaging.ChatMessage
 import org.hapticon.messaging.Decoded
+import org.hapticon.messaging.HandPose
 import org.hapticon.messaging.InboxEvent
 import org.hapticon.messaging.MessageCodec
 import org.hapticon.messaging.MessageLimits
@@ -17,6 +18,7 @@ internal object InboxDecoding {
                 is Decoded.Accepted -> when (val value = decoded.value) {
                     is ChatMessage -> InboxEvent.MessageReceived(value)
                     is Receipt -> InboxEvent.ReceiptReceived(value)
+                    is HandPose -> InboxEvent.HandPoseReceived(value)
                 }
                 is Decoded.Rejected -> InboxEvent.Rejected(topic, decoded)
             }

@@ -23,6 +23,7 @@ import kotlinx.coroutines.withContext
 import org.hapticon.messaging.Capabilities
 import org.hapticon.messaging.ChatMessage
 import org.hapticon.messaging.ConnectionState
+import org.hapticon.messaging.HandPose
 import org.hapticon.messaging.InboxEvent
 import org.hapticon.messaging.InboxListener
 import org.hapticon.messaging.MessageCodec
@@ -111,18 +112,22 @@ public class MqttMessenger(private val settings: MqttSettings) : Messenger {
         publish(Topics.inbox(recipient), MessageCodec.encode(receipt), retain = false)
     }
 
+    override suspend fun send(recipient: String, pose: HandPose) {
+        publish(Topics.inbox(recipient), MessageCodec.encode(pose), retain = false, qos = MqttQos.AT_MOST_ONCE)
+    }
+
     override suspend fun publishCapabilities(capabilities: Capabilities) {
         require(capabilities.user == user) { "capabilities of ${capabilities.user} cannot be published by $user" }
         publish(Topics.capabilities(user), MessageCodec.encode(capabilities), retain = true)
     }
 
-    private suspend fun publish(topic: String, payload: ByteArray, retain: Boolean) {
+    private suspend fun publish(topic: String, payload: ByteArray, retain: Boolean, qos: MqttQos = MqttQos.AT_LEAST_ONCE) {
         val client = client
         if (client == null || state.value != ConnectionState.Connected) {
             throw MessagingException("not connected (${describe(state.value)})")
         }
         try {
-            client.publishWith().topic(topic).qos(MqttQos.AT_LEAST_ONCE).retain(retain).payload(payload).send().await()
+            client.publishWith().topic(topic).qos(qos).retain(retain).payload(payload).send().await()
         } catch (e: CancellationException) {
             throw e
         } catch (e: Exception) {

@@ -8,6 +8,7 @@ import org.hapticon.core.HapticIcon
 import org.hapticon.messaging.Capabilities
 import org.hapticon.messaging.ChatMessage
 import org.hapticon.messaging.CollectingListener
+import org.hapticon.messaging.HandPose
 import org.hapticon.messaging.ConnectionState
 import org.hapticon.messaging.Decoded
 import org.hapticon.messaging.ID_1
@@ -55,6 +56,18 @@ class MqttMessengerTest {
         fixture.connected(bob, bobInbox)
         aliceMessenger.send(bob, hello)
         assertEquals(InboxEvent.MessageReceived(hello), bobInbox.awaitEvent())
+    }
+
+    @Test
+    fun handPoses_streamIntoThePartnersInboxInOrder() = runBlocking {
+        val aliceMessenger = fixture.connected(alice, CollectingListener())
+        val bobInbox = CollectingListener()
+        fixture.connected(bob, bobInbox)
+        val poses = (0 until 3).map { HandPose(alice, 10.0 * it, 30.9 + it, NEW_YEAR_2026 + 33L * it) }
+
+        for (pose in poses) aliceMessenger.send(bob, pose)
+
+        assertEquals(poses.map { InboxEvent.HandPoseReceived(it) }, bobInbox.awaitEvents(3))
     }
 
     @Test

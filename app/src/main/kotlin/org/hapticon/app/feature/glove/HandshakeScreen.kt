@@ -21,6 +21,10 @@ import androidx.compose.material3.Scaffold
 import androidx.compose.material3.Text
 import androidx.compose.material3.TopAppBar
 import androidx.compose.runtime.Composable
+import org.hapticon.app.sensors.NoHandshakeLink
+import androidx.compose.material3.FilterChip
+import androidx.compose.foundation.layout.FlowRow
+import androidx.compose.foundation.layout.ExperimentalLayoutApi
 import androidx.compose.runtime.getValue
 import androidx.compose.ui.Alignment
 import androidx.compose.ui.Modifier
@@ -45,11 +49,16 @@ import org.hapticon.app.ui.SwitchRow
 fun HandshakeRoute(container: AppContainer, onBack: () -> Unit) {
     val viewModel: HandshakeViewModel = viewModel(
         factory = viewModelFactory {
-            initializer { HandshakeViewModel(container.glove, container.calibrations, container.vibration, container.simulatedPartner()) }
+            initializer {
+                HandshakeViewModel(
+                    container.glove, container.calibrations, container.vibration, container.simulatedPartner(),
+                    link = container.chat?.sync ?: NoHandshakeLink,
+                )
+            }
         },
     )
     val uiState by viewModel.uiState.collectAsStateWithLifecycle()
-    HandshakeScreen(uiState, onBack, viewModel::setSimulatedPartner, viewModel::setVibration, viewModel::setForceFeedback)
+    HandshakeScreen(uiState, onBack, viewModel::setSimulatedPartner, viewModel::setVibration, viewModel::setForceFeedback, viewModel::setNetworkPartner)
 }
 
 /** Live angles of both hands, whether the handshake is on, and the pressure on each hand region. */
@@ -61,6 +70,7 @@ fun HandshakeScreen(
     onSimulatedPartner: (Boolean) -> Unit,
     onVibration: (Boolean) -> Unit,
     onForceFeedback: (Boolean) -> Unit = {},
+    onNetworkPartner: (String?) -> Unit = {},
 ) {
     Scaffold(
         topBar = {
@@ -86,6 +96,7 @@ fun HandshakeScreen(
                     }
                 }
                 SwitchRow("Simulated partner", uiState.simulatedPartner, onSimulatedPartner)
+                NetworkPartners(uiState, onNetworkPartner)
                 SwitchRow("Phone vibration", uiState.vibrationEnabled, onVibration)
                 SwitchRow("Glove force feedback", uiState.forceFeedbackEnabled, onForceFeedback)
                 Text(forceFeedbackStatus(uiState), style = MaterialTheme.typography.bodySmall)
@@ -157,6 +168,36 @@ private fun RegionRow(region: RegionUi) {
                 stateDescription = pressure
             },
         )
+    }
+}
+
+/** One chip per chat peer: pressing one shakes hands with them through the broker, pressing it again stops. */
+@OptIn(ExperimentalLayoutApi::class)
+@Composable
+private fun NetworkPartners(state: HandshakeUiState.Ready, onNetworkPartner: (String?) -> Unit) {
+    Column(verticalArrangement = Arrangement.spacedBy(4.dp)) {
+        Text("Partner over the network", style = MaterialTheme.typography.titleMedium, modifier = Modifier.semantics { heading() })
+        if (state.peers.isEmpty()) {
+            Text("Start a chat first: the people you chat with can shake hands with you.", style = MaterialTheme.typography.bodySmall)
+        }
+        FlowRow(horizontalArrangement = Arrangement.spacedBy(8.dp)) {
+            for (peer in state.peers) {
+                val selected = peer == state.networkPeer
+                FilterChip(
+                    selected = selected,
+                    onClick = { onNetworkPartner(if (selected) null else peer) },
+                    label = { Text(peer) },
+                    modifier = Modifier.semantics { contentDescription = "Shake hands with $peer" },
+                )
+            }
+        }
+        state.networkPeer?.let { peer ->
+            Text(
+                if (state.networkPartnerLive) "$peer's hand is arriving" else "Waiting for $peer's hand (they open the handshake screen with you)",
+                style = MaterialTheme.typography.bodySmall,
+                modifier = Modifier.semantics { liveRegion = LiveRegionMode.Polite },
+            )
+        }
     }
 }
 

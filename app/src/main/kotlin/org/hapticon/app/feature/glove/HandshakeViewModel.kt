@@ -21,6 +21,9 @@ import org.hapticon.app.sensors.CalibrationStore
 import org.hapticon.app.sensors.ForceFeedbackStream
 import org.hapticon.app.sensors.GloveListener
 import org.hapticon.app.sensors.GloveSource
+import org.hapticon.app.sensors.HandshakeLink
+import org.hapticon.app.sensors.NetworkPartnerHand
+import org.hapticon.app.sensors.NoHandshakeLink
 import org.hapticon.app.sensors.NoPartner
 import org.hapticon.app.sensors.PartnerHand
 import org.hapticon.sensor.glove.DividerReading
@@ -32,7 +35,8 @@ import org.hapticon.sensor.glove.HandshakeSession
 /**
  * A tele-handshake for one glove: the wearer's thumb and middle angles (from the glove, through the
  * current user's calibration), the partner's angles from a [PartnerHand] (the simulated one while
- * the toggle is on; the messaging task plugs in a network partner through [setPartner]), and
+ * the toggle is on, or a chat peer's hand arriving through the broker ([setNetworkPartner], which also
+ * streams the wearer's angles to them at 30 samples/s), and
  * sensor-bridge's [HandshakeSession] turning both into per-region pressures.
  *
  * A LucidGloves force-feedback glove on the line gets the five finger servo values
@@ -52,6 +56,7 @@ class HandshakeViewModel(
     private val simulatedPartner: PartnerHand,
     private val clock: () -> Long = System::nanoTime,
     private val refreshMillis: Long = 33,
+    private val link: HandshakeLink = NoHandshakeLink,
 ) : ViewModel() {
     private val lock = Any()
     private val session = HandshakeSession()
@@ -77,10 +82,13 @@ class HandshakeViewModel(
     @Volatile private var partner: PartnerHand = NoPartner
     @Volatile private var vibrate = true
     @Volatile private var forceFeedbackOn = true
+    @Volatile private var networkPartner: NetworkPartnerHand? = null
+    private var lastPoseSentNanos = Long.MIN_VALUE / 2
 
     private val simulated = MutableStateFlow(false)
     private val vibrationOn = MutableStateFlow(true)
     private val forceFeedbackEnabled = MutableStateFlow(true)
+    private val networkPeer = MutableStateFlow<String?>(null)
     private val calibrationSource = MutableStateFlow(CalibrationSource(false, false))
 
     private val listener = GloveListener { thumbVolts, middleVolts, _ -> onSample(thumbVolts, middleVolts, clock()) }
@@ -93,10 +101,10 @@ class HandshakeViewModel(
             combine(glove.connected, glove.acceptsForceFeedback, ::Pair),
             simulated,
             combine(vibrationOn, forceFeedbackEnabled, ::Pair),
-            combine(store.currentUser, calibrationSource, ::Pair),
+            combine(store.currentUser, calibrationSource, link.handshakePeers, networkPeer, ::PartnerChoice),
             ticks,
-        ) { (connected, feedbackAvailable), sim, (vib, feedbackOn), (user, source), _ ->
-            snapshot(connected, feedbackAvailable, sim, vib, feedbackOn, user, source)
+        ) { (connected, feedbackAvailable), sim, (vib, feedbackOn), choice, _ ->
+            snapshot(connected, feedbackAvailable, sim, vib, feedbackOn, choice)
         }.stateIn(viewModelScope, SharingStarted.WhileSubscribed(5_000), HandshakeUiState.Loading)
 
     init {
@@ -114,8 +122,31 @@ class HandshakeViewModel(
 
     /** Plays against the simulated partner, or against nobody (an open hand). */
     fun setSimulatedPartner(enabled: Boolean) {
+        if (enabled) stopNetwork()
         simulated.value = enabled
         setPartner(if (enabled) simulatedPartner else NoPartner)
+    }
+
+    /**
+     * Shakes hands with [peer] over the chat's broker: their hand as it arrives, the wearer's sent to them
+     * at most every [POSE_INTERVAL_NANOS]; null ends it (an open hand).
+     */
+    fun setNetworkPartner(peer: String?) {
+        if (peer == null) {
+            stopNetwork()
+            setPartner(NoPartner)
+            return
+        }
+        simulated.value = false
+        val hand = link.partner(peer)
+        networkPartner = hand
+        networkPeer.value = peer
+        setPartner(hand)
+    }
+
+    private fun stopNetwork() {
+        networkPartner = null
+        networkPeer.value = null
     }
 
     /** Plays against [hand]; the messaging task's network partner comes in here. */
@@ -165,6 +196,11 @@ class HandshakeViewModel(
             for (a in amplitudes) if (a > phone) phone = a
             continuous.update(if (active && vibrate) phone else 0, now)
             if (forceFeedbackOn) feedback.update(servos, now, glove.forceFeedback)
+            val remote = networkPartner
+            if (remote != null && now - lastPoseSentNanos >= POSE_INTERVAL_NANOS) {
+                link.sendOwnHand(remote.peer, selfThumb, selfMiddle)
+                lastPoseSentNanos = now
+            }
         }
     }
 
@@ -174,12 +210,15 @@ class HandshakeViewModel(
         sim: Boolean,
         vib: Boolean,
         feedbackOn: Boolean,
-        user: String,
-        source: CalibrationSource,
+        choice: PartnerChoice,
     ): HandshakeUiState.Ready =
         synchronized(lock) {
+            val (user, source) = choice.user to choice.source
             HandshakeUiState.Ready(
                 connected = connected,
+                peers = choice.peers,
+                networkPeer = choice.networkPeer,
+                networkPartnerLive = networkPartner?.isLive(clock()) ?: false,
                 forceFeedbackAvailable = feedbackAvailable,
                 forceFeedbackEnabled = feedbackOn,
                 forceFeedbackCommands = feedback.commands,
@@ -204,7 +243,17 @@ class HandshakeViewModel(
 
     private data class CalibrationSource(val thumb: Boolean, val middle: Boolean)
 
+    private data class PartnerChoice(
+        val user: String,
+        val source: CalibrationSource,
+        val peers: List<String>,
+        val networkPeer: String?,
+    )
+
     private companion object {
+        /** 30 samples/s: smooth enough for a grip, light enough for a phone's uplink. */
+        const val POSE_INTERVAL_NANOS = 33_000_000L
+
         fun ticker(periodMillis: Long): Flow<Unit> = flow {
             while (true) {
                 emit(Unit)
@@ -227,6 +276,12 @@ sealed interface HandshakeUiState {
 
     data class Ready(
         val connected: Boolean,
+        /** Chat peers one can shake hands with over the network. */
+        val peers: List<String>,
+        /** The peer shaking hands over the network, or null. */
+        val networkPeer: String?,
+        /** Whether that peer's hand is arriving (a sample within the last half second). */
+        val networkPartnerLive: Boolean,
         /** Whether the glove on the line takes force-feedback commands (LucidGloves). */
         val forceFeedbackAvailable: Boolean,
         val forceFeedbackEnabled: Boolean,

@@ -22,6 +22,8 @@ import org.hapticon.app.sensors.SavedCalibration
 import org.hapticon.app.sensors.TestCalibrationStore
 import org.hapticon.app.sensors.TestClock
 import org.hapticon.app.sensors.TestGloveSource
+import org.hapticon.app.sensors.TestHandshakeLink
+import org.hapticon.messaging.HandPose
 import org.hapticon.app.sensors.TestPartnerHand
 import org.hapticon.sensor.glove.FlexCalibration
 import org.hapticon.sensor.glove.GloveFinger
@@ -47,13 +49,14 @@ class HandshakeViewModelTest {
     private val store = TestCalibrationStore()
     private val partner = TestPartnerHand(thumbDegrees = 0.0, middleDegrees = 67.95)
     private val clock = TestClock()
+    private val link = TestHandshakeLink()
     private lateinit var viewModel: HandshakeViewModel
 
     @Before
     fun setUp() {
         Dispatchers.setMain(dispatcher)
         shadowOf(vibrator).setHasAmplitudeControl(true)
-        viewModel = HandshakeViewModel(glove, store, output, simulatedPartner = partner, clock = clock)
+        viewModel = HandshakeViewModel(glove, store, output, simulatedPartner = partner, clock = clock, link = link)
     }
 
     @After
@@ -230,6 +233,52 @@ class HandshakeViewModelTest {
         assertTrue(glove.forceFeedbackSent.isEmpty())
         assertEquals(0L, ready.forceFeedbackCommands)
         assertEquals("Force feedback needs a LucidGloves glove streaming on the Sensors screen.", forceFeedbackStatus(ready))
+    }
+
+    @Test
+    fun networkPartner_theirArrivingHandDrivesThePressureAndOursGoesOutAt30PerSecond() = runTest(dispatcher) {
+        backgroundScope.launch { viewModel.uiState.collect {} }
+        runCurrent()
+        assertEquals(listOf("bob"), ready.peers)
+
+        viewModel.setNetworkPartner("bob")
+        // Bob's hand arrives: the worked example's partner, 0° / 67.95°.
+        link.partner("bob").offer(HandPose("bob", 0.0, 67.95, 1), clock.nanos)
+        grip(50.0, 105.0)
+
+        assertEquals("bob", ready.networkPeer)
+        assertTrue(ready.networkPartnerLive)
+        assertEquals(1.9714, ready.regions[HandRegion.THUMB.ordinal].pressureVolts, 1e-9)
+        assertEquals(listOf(Triple("bob", 50.0, 105.0)), link.sent.map { Triple(it.first, Math.round(it.second * 1e6) / 1e6, Math.round(it.third * 1e6) / 1e6) })
+
+        // 10 ms later: too soon for another sample; 33 ms after the first, the next goes out.
+        clock.advanceMillis(10)
+        grip(50.0, 105.0)
+        assertEquals(1, link.sent.size)
+        clock.advanceMillis(23)
+        grip(50.0, 105.0)
+        assertEquals(2, link.sent.size)
+
+        // Bob goes quiet for more than half a second: his hand opens, and so does the handshake on his side.
+        clock.advanceMillis(600)
+        grip(0.0, 0.0)
+        assertFalse(ready.networkPartnerLive)
+        assertEquals(0.0, ready.partnerMiddleDegrees, 0.0)
+        assertFalse(ready.active)
+    }
+
+    @Test
+    fun networkPartnerOff_stopsSending() = runTest(dispatcher) {
+        backgroundScope.launch { viewModel.uiState.collect {} }
+        runCurrent()
+        viewModel.setNetworkPartner("bob")
+        grip(10.0, 10.0)
+        viewModel.setNetworkPartner(null)
+        clock.advanceMillis(100)
+        grip(10.0, 10.0)
+
+        assertEquals(1, link.sent.size)
+        assertEquals(null, ready.networkPeer)
     }
 
     private companion object {
