@@ -30,6 +30,14 @@ public class Recording(
     /** The channel called [name], or null. */
     public fun channel(name: String): Channel? = channels.firstOrNull { it.name == name }
 
+    /**
+     * The channel called [name], or the first channel when [name] is null; throws [IllegalArgumentException]
+     * naming the channels there are when there is no such channel.
+     */
+    public fun requireChannel(name: String?): Channel =
+        if (name == null) channels.first() else channel(name)
+            ?: throw IllegalArgumentException("no channel '$name'; the recording has ${channels.joinToString { it.name }}")
+
     /** The frames `[from, to)` as a new recording (trimming). */
     public fun slice(from: Int, to: Int): Recording {
         require(from in 0..to && to <= frameCount) { "slice [$from, $to) is outside 0..$frameCount" }

@@ -32,8 +32,8 @@ public class RecoveryRow(
     public val noteExact: Double,
     /** Fraction of icons whose count came out exactly. */
     public val countExact: Double,
-    /** Mean estimated SNR in dB. */
-    public val estimatedSnrDb: Double,
+    /** Mean estimated SNR in dB; null when no fit could estimate it. */
+    public val estimatedSnrDb: Double?,
     /** Largest |attack error| in seconds. */
     public val attackWorst: Double,
     /** Fits that threw. */
@@ -84,10 +84,10 @@ public object FitBenchmark {
         out.append(String.format(Locale.ROOT, "%-8s %4s %6s %8s %8s %8s %8s %8s %7s %7s %8s %8s %5s%n",
             "", "dB", "%", "ms", "ms", "ms", "abs", "ms", "%", "%", "dB", "ms", ""))
         for (r in rows) {
-            out.append(String.format(Locale.ROOT, "%-8s %4.0f %6.2f %8.2f %8.2f %8.2f %8.4f %8.3f %7.1f %7.1f %8.1f %8.2f %5d%n",
+            out.append(String.format(Locale.ROOT, "%-8s %4.0f %6.2f %8.2f %8.2f %8.2f %8.4f %8.3f %7.1f %7.1f %8s %8.2f %5d%n",
                 r.method.name.lowercase(), r.snrDb, 100 * r.envelopeError, 1000 * r.attackError, 1000 * r.sustainError,
                 1000 * r.releaseError, r.levelError, 1000 * r.periodError, 100 * r.noteExact, 100 * r.countExact,
-                r.estimatedSnrDb, 1000 * r.attackWorst, r.failures))
+                r.estimatedSnrDb?.let { String.format(Locale.ROOT, "%.1f", it) } ?: "-", 1000 * r.attackWorst, r.failures))
         }
         return out.toString()
     }
@@ -137,7 +137,7 @@ public object FitBenchmark {
             return RecoveryRow(
                 method, snrDb, trials, envelope / n, attack / n, sustain / n, release / n, level / n,
                 if (periodCount > 0) period / periodCount else 0.0, notes / n, counts / n,
-                if (snrCount > 0) snr / snrCount else Double.NaN, attackWorst, failures,
+                if (snrCount > 0) snr / snrCount else null, attackWorst, failures,
             )
         }
     }

@@ -84,9 +84,7 @@ public object IconFitter {
      * non-finite sample.
      */
     public fun fit(recording: Recording, channelName: String? = null, options: FitOptions = FitOptions()): IconFit {
-        val channel = if (channelName == null) recording.channels.first() else recording.channel(channelName)
-            ?: throw IllegalArgumentException("no channel '$channelName'; the recording has ${recording.channels.joinToString { it.name }}")
-        return fit(channel, recording.sampleRate, options)
+        return fit(recording.requireChannel(channelName), recording.sampleRate, options)
     }
 
     /**

@@ -37,8 +37,7 @@ public object RecordingWav {
      * beyond). Throws [IllegalArgumentException] for a missing channel, a fractional rate or a non-finite sample.
      */
     public fun write(recording: Recording, out: OutputStream, channelName: String? = null, encoding: WavEncoding = WavEncoding.PCM16) {
-        val channel = if (channelName == null) recording.channels.first() else recording.channel(channelName)
-            ?: throw IllegalArgumentException("no channel '$channelName'; the recording has ${recording.channels.joinToString { it.name }}")
+        val channel = recording.requireChannel(channelName)
         val rate = recording.sampleRate
         require(rate == Math.rint(rate) && rate <= Int.MAX_VALUE) { "a WAV needs a whole number of Hz, the recording has $rate" }
         val samples = channel.toDoubleArray()

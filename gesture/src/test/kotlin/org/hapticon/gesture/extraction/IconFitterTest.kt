@@ -51,7 +51,7 @@ class IconFitterTest {
         assertTrue("mean release error ${row.releaseError}", row.releaseError < 0.0005)
         assertTrue("mean level error ${row.levelError}", row.levelError < 0.001)
         assertTrue("mean period error ${row.periodError}", row.periodError < 0.001)
-        assertEquals(30.0, row.estimatedSnrDb, 1.0)
+        assertEquals(30.0, row.estimatedSnrDb!!, 1.0)
     }
 
     @Test fun levelIsRelativeToTheGesturePeakByDefault() {
