@@ -52,11 +52,8 @@ class AndroidUsbDevices(
     }
 
     override fun refresh() {
-        // UsbDeviceMonitor re-reads the system's list only in start() and on its own broadcasts; a
-        // restart re-reads it without losing detach listeners. (A public refresh() would be nicer.)
-        if (started) monitor.close()
-        started = false
-        start()
+        started = true
+        monitor.refresh()
     }
 
     override suspend fun requestPermission(device: SensorDevice): Boolean =

@@ -6,7 +6,6 @@ import kotlinx.coroutines.flow.asStateFlow
 import org.hapticon.app.playback.VibrationOutput
 import org.hapticon.core.render.VibrationWaveform
 import org.hapticon.sensor.grains.FsrForceConverter
-import org.hapticon.sensor.grains.FsrReading
 import org.hapticon.sensor.grains.GrainDecider
 import org.hapticon.sensor.grains.GrainSettings
 import org.hapticon.sensor.grains.LraGrain
@@ -161,10 +160,8 @@ class GrainEngine(private val output: VibrationOutput) : FrameListener {
         }
     }
 
-    private fun fsrNewtons(volts: Double): Double = when (val reading = fsr.forceOf(volts)) {
-        is FsrReading.Force -> reading.newtons
-        is FsrReading.Fault -> Double.NaN // skipped and counted by the decider
-    }
+    // A fault is NaN: skipped and counted by the decider.
+    private fun fsrNewtons(volts: Double): Double = fsr.newtonsOrNaN(volts)
 
     private companion object {
         const val NEWTONS_PER_GRAM = 0.00980665

@@ -29,12 +29,21 @@ public data class FlexDivider(
     public fun resistanceOf(volts: Double): DividerReading {
         val fault = faultOf(volts)
         if (fault != null) return DividerReading.Fault(fault, volts)
-        val kiloohms = volts / (supplyVolts - volts) * fixedKiloohms
-        // A subnormal Vout underflows R to 0 (ln R = −∞ downstream): that is a short in all but name.
-        if (kiloohms <= 0.0) return DividerReading.Fault(SensorFault.SHORT_CIRCUIT, volts)
-        // Vout one ulp below Vin still gives a finite R with the bounded Rfix; stay defensive anyway.
-        if (!kiloohms.isFinite()) return DividerReading.Fault(SensorFault.OPEN_CIRCUIT, volts)
+        val kiloohms = resistanceOrNaN(volts)
+        // A subnormal Vout underflows R to 0 (ln R = −∞ downstream): that is a short in all but name;
+        // Vout one ulp below Vin still gives a finite R with the bounded Rfix, so ∞ is defensive only.
+        if (kiloohms.isNaN()) return DividerReading.Fault(if (volts < supplyVolts / 2) SensorFault.SHORT_CIRCUIT else SensorFault.OPEN_CIRCUIT, volts)
         return DividerReading.Resistance(kiloohms)
+    }
+
+    /**
+     * The resistance for [volts] in kΩ as [resistanceOf] gives it, or NaN for any fault: the allocation-free
+     * form for per-sample paths, which only need to know that there is no value ([resistanceOf] says why).
+     */
+    public fun resistanceOrNaN(volts: Double): Double {
+        if (faultOf(volts) != null) return Double.NaN
+        val kiloohms = volts / (supplyVolts - volts) * fixedKiloohms
+        return if (kiloohms > 0.0 && kiloohms.isFinite()) kiloohms else Double.NaN
     }
 
     /** The output voltage the divider gives for a sensor of [kiloohms] (> 0, finite): Vin·R/(R + Rfix). */

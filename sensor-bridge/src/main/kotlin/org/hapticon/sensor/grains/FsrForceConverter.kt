@@ -34,6 +34,17 @@ public data class FsrForceConverter(
         return FsrReading.Force(microsiemens / microsiemensPerNewton, microsiemens)
     }
 
+    /**
+     * The force in N for [volts] as [forceOf] gives it, or NaN for a fault: the allocation-free form for
+     * per-sample paths ([forceOf] says why there is no value).
+     */
+    public fun newtonsOrNaN(volts: Double): Double {
+        if (volts.isNaN() || volts >= supplyVolts) return Double.NaN
+        if (volts <= 0.0) return 0.0
+        val microsiemens = 1000.0 * volts / (measuringKiloohms * (supplyVolts - volts))
+        return if (microsiemens.isFinite()) microsiemens / microsiemensPerNewton else Double.NaN
+    }
+
     public companion object {
         /** Interlink's suggested measuring resistor. */
         public const val DEFAULT_MEASURING_KILOOHMS: Double = 10.0

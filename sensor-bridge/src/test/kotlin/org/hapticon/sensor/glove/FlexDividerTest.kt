@@ -136,4 +136,16 @@ class FlexDividerTest {
             assertTrue("at $degrees°: $measured", kotlin.math.abs(measured - degrees) <= bound)
         }
     }
+
+    @Test
+    fun resistanceOrNaN_isResistanceOfsValueOrNaNForEveryFault() {
+        val divider = FlexDivider()
+        val inputs = doubleArrayOf(0.001, 1.0, 2.5, 4.999, Double.MIN_VALUE, 0.0, -1.0, 5.0, 7.0, Double.NaN, Double.POSITIVE_INFINITY, Double.NEGATIVE_INFINITY)
+        for (volts in inputs) {
+            val expected = (divider.resistanceOf(volts) as? DividerReading.Resistance)?.kiloohms ?: Double.NaN
+            org.junit.Assert.assertEquals("at $volts V", expected, divider.resistanceOrNaN(volts), 0.0)
+        }
+        // Vout = Vin/2 puts R equal to Rfix.
+        org.junit.Assert.assertEquals(divider.fixedKiloohms, divider.resistanceOrNaN(2.5), 1e-12)
+    }
 }

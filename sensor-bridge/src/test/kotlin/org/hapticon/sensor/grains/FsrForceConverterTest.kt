@@ -53,4 +53,14 @@ class FsrForceConverterTest {
             }
         }
     }
+
+    @Test
+    fun newtonsOrNaN_isForceOfsValueOrNaNForEveryFault() {
+        val converter = FsrForceConverter()
+        val inputs = doubleArrayOf(-1.0, 0.0, 0.5, 2.5, 4.99, 5.0, 9.0, Double.NaN, Double.POSITIVE_INFINITY, Double.NEGATIVE_INFINITY)
+        for (volts in inputs) {
+            val expected = (converter.forceOf(volts) as? FsrReading.Force)?.newtons ?: Double.NaN
+            org.junit.Assert.assertEquals("at $volts V", expected, converter.newtonsOrNaN(volts), 0.0)
+        }
+    }
 }

@@ -26,7 +26,6 @@ import org.hapticon.app.sensors.NetworkPartnerHand
 import org.hapticon.app.sensors.NoHandshakeLink
 import org.hapticon.app.sensors.NoPartner
 import org.hapticon.app.sensors.PartnerHand
-import org.hapticon.sensor.glove.DividerReading
 import org.hapticon.sensor.glove.FlexCalibration
 import org.hapticon.sensor.glove.GloveFinger
 import org.hapticon.sensor.glove.HandRegion
@@ -179,13 +178,13 @@ class HandshakeViewModel(
 
     private fun onSample(thumbVolts: Double, middleVolts: Double, now: Long) {
         synchronized(lock) {
-            val thumb = glove.divider.resistanceOf(thumbVolts)
-            val middle = glove.divider.resistanceOf(middleVolts)
+            val thumb = glove.divider.resistanceOrNaN(thumbVolts)
+            val middle = glove.divider.resistanceOrNaN(middleVolts)
             // A faulty finger counts as open (0°): that releases the partner's actuators.
-            thumbFault = thumb is DividerReading.Fault
-            middleFault = middle is DividerReading.Fault
-            selfThumb = if (thumb is DividerReading.Resistance) thumbCalibration.angleOf(thumb.kiloohms) else 0.0
-            selfMiddle = if (middle is DividerReading.Resistance) middleCalibration.angleOf(middle.kiloohms) else 0.0
+            thumbFault = thumb.isNaN()
+            middleFault = middle.isNaN()
+            selfThumb = if (thumbFault) 0.0 else thumbCalibration.angleOf(thumb)
+            selfMiddle = if (middleFault) 0.0 else middleCalibration.angleOf(middle)
             partner.readAngles(now, partnerAngles)
             active = session.computeInto(
                 selfThumb, selfMiddle, partnerAngles[0], partnerAngles[1],

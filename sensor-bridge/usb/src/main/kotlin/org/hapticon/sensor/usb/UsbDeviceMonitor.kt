@@ -64,7 +64,7 @@ class UsbDeviceMonitor(
         }
         // Not exported: these broadcasts come from the system, which reaches unexported receivers too.
         ContextCompat.registerReceiver(context, receiver, filter, ContextCompat.RECEIVER_NOT_EXPORTED)
-        refresh()
+        refresh(gone = null)
     }
 
     /**
@@ -83,8 +83,16 @@ class UsbDeviceMonitor(
         context.unregisterReceiver(receiver)
     }
 
+    /**
+     * Re-reads the system's device list now (a "rescan" button: some hubs announce a board late), starting
+     * the monitor if it is not running. Call on the main thread.
+     */
+    fun refresh() {
+        if (!started) start() else refresh(gone = null)
+    }
+
     /** Re-reads the system's device list; [gone] is left out even if the list still has it (detach races). */
-    private fun refresh(gone: String? = null) {
+    private fun refresh(gone: String?) {
         attached.value = usbManager.deviceList.values
             .filter { it.deviceName != gone }
             .mapNotNull { device -> prober.probe(device.toDescription())?.let { AttachedSerialDevice(device, it) } }

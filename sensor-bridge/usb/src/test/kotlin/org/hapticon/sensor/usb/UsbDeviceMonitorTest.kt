@@ -50,6 +50,22 @@ class UsbDeviceMonitorTest {
     }
 
     @Test
+    fun refresh_findsABoardThatCameWithoutABroadcast_andStartsTheMonitor() {
+        monitor.start()
+        // Some hubs announce a board late: it is in the system's list, but no broadcast said so.
+        shadowOf(usbManager).addOrUpdateUsbDevice(AndroidTestDevices.arduinoUno(), false)
+        assertEquals(emptyList<Pair<String, String>>(), listed())
+
+        monitor.refresh()
+
+        assertEquals(listOf("/dev/bus/usb/001/002" to "CDC-ACM"), listed())
+        val fresh = UsbDeviceMonitor(context, usbManager)
+        fresh.refresh()
+        assertEquals(1, fresh.devices.value.size)
+        fresh.close()
+    }
+
+    @Test
     fun attachThenDetach_updatesTheList() {
         monitor.start()
         val ftdi = AndroidTestDevices.ft232r()
