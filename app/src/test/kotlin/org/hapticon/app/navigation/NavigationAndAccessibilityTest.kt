@@ -95,6 +95,8 @@ class NavigationAndAccessibilityTest {
         scrollTo(hasText("Handshake"))
         rule.onNode(hasText("Handshake") and hasClickAction()).performClick()
         rule.waitForIdle()
+        // The partner list comes from Room (the chat's conversations): wait for the screen to be ready.
+        rule.waitUntil(5_000) { rule.onAllNodes(hasText("No handshake")).fetchSemanticsNodes().isNotEmpty() }
 
         rule.onNodeWithText("No handshake").assertExists()
         rule.onNodeWithText("Simulated partner").assertExists()
