@@ -1,0 +1,104 @@
+package org.hapticon.app.feature.chat
+
+import android.content.Context
+import android.os.Vibrator
+import androidx.compose.runtime.collectAsState
+import androidx.compose.runtime.getValue
+import androidx.compose.ui.test.hasSetTextAction
+import androidx.compose.ui.test.junit4.createComposeRule
+import androidx.compose.ui.test.onNodeWithContentDescription
+import androidx.compose.ui.test.onNodeWithText
+import androidx.compose.ui.test.performClick
+import androidx.compose.ui.test.performTextInput
+import androidx.room.Room
+import androidx.test.core.app.ApplicationProvider
+import kotlinx.coroutines.flow.MutableStateFlow
+import kotlinx.coroutines.flow.first
+import kotlinx.coroutines.runBlocking
+import org.hapticon.app.data.OfflineFirstChatRepository
+import org.hapticon.app.data.RoomIconRepository
+import org.hapticon.app.data.database.HapticonDatabase
+import org.hapticon.app.data.database.MessageState
+import org.hapticon.app.playback.AdaptiveHapticPlayer
+import org.hapticon.app.playback.DeviceCapabilities
+import org.hapticon.app.playback.RecordedVibration
+import org.hapticon.app.playback.lastVibration
+import org.hapticon.core.HapticIcon
+import org.hapticon.messaging.Capabilities
+import org.junit.After
+import org.junit.Assert.assertEquals
+import org.junit.Before
+import org.junit.Rule
+import org.junit.Test
+import org.junit.runner.RunWith
+import org.robolectric.RobolectricTestRunner
+import org.robolectric.Shadows.shadowOf
+import org.robolectric.annotation.Config
+
+/** The composer through its ViewModel into Room and the outbox: what a user's tap actually stores. */
+@RunWith(RobolectricTestRunner::class)
+@Config(qualifiers = "w400dp-h1600dp")
+class ComposerSendTest {
+    @get:Rule
+    val compose = createComposeRule()
+
+    private val context = ApplicationProvider.getApplicationContext<Context>()
+    private val vibrator = context.getSystemService(Vibrator::class.java)
+    private lateinit var db: HapticonDatabase
+    private lateinit var repository: OfflineFirstChatRepository
+    @Volatile private var wakes = 0
+
+    @Before
+    fun setUp() {
+        shadowOf(vibrator).setHasAmplitudeControl(true)
+        db = Room.inMemoryDatabaseBuilder(context, HapticonDatabase::class.java).allowMainThreadQueries().build()
+        repository = OfflineFirstChatRepository(db, clock = { 1_767_225_600_000 })
+        val viewModel = ConversationViewModel(
+            "bob", { "alice" }, repository, RoomIconRepository(db.iconDao()),
+            AdaptiveHapticPlayer(vibrator, { DeviceCapabilities(true, true, 35) }, { null }),
+            MutableStateFlow<Map<String, Capabilities>>(emptyMap()), { wakes++ },
+        )
+        compose.setContent {
+            val state by viewModel.uiState.collectAsState()
+            ConversationScreen(state, {}, viewModel::send, viewModel::selectIcon, viewModel::selectSticker, viewModel::play, {})
+        }
+        compose.waitUntil(5_000) { compose.onAllNodes(hasSetTextAction()).fetchSemanticsNodes().isNotEmpty() }
+    }
+
+    @After
+    fun tearDown() = db.close()
+
+    private fun stored() = runBlocking { repository.messages("bob").first() }
+
+    @Test
+    fun textWithIcon_pressingTheIconLetsYouFeelItAndSendStoresBothAndQueuesIt() {
+        compose.onNodeWithContentDescription("Icon knock").performClick()
+        // Choosing is also feeling: the knock went to the vibrator.
+        assertEquals(RecordedVibration(listOf(20L, 250L, 20L, 250L, 20L), listOf(96, 0, 96, 0, 96)), lastVibration(vibrator))
+        compose.onNode(hasSetTextAction()).performTextInput("feel this")
+        compose.onNodeWithText("Send").performClick()
+        compose.waitUntil(5_000) { stored().isNotEmpty() }
+
+        val message = stored().single()
+        assertEquals("feel this", message.text)
+        assertEquals(HapticIcon.KNOCK, message.icon)
+        assertEquals(null, message.sticker)
+        assertEquals(MessageState.SENDING, message.state)
+        assertEquals(listOf(message.id), runBlocking { db.outboxDao().pending() }.map { it.messageId })
+        // The outbox sender is woken once the message is stored.
+        compose.waitUntil(5_000) { wakes == 1 }
+    }
+
+    @Test
+    fun stickerWithIcon_sendStoresTheStickerAndTheIcon() {
+        compose.onNodeWithContentDescription("Sticker Hug").performClick()
+        compose.onNodeWithContentDescription("Icon hug").performClick()
+        compose.onNodeWithText("Send").performClick()
+        compose.waitUntil(5_000) { stored().isNotEmpty() }
+
+        val message = stored().single()
+        assertEquals("", message.text)
+        assertEquals("hug", message.sticker)
+        assertEquals(HapticIcon.HUG, message.icon)
+    }
+}
