@@ -121,7 +121,7 @@ class HttpResultUploader(
                 val status = connection.responseCode
                 val text = (if (status < 400) connection.inputStream else connection.errorStream)?.use { it.readBytes().decodeToString() }.orEmpty()
                 when (status) {
-                    200 -> UploadResult.Uploaded("uploaded ${csv.count { it == '\n' } - 1} rows to ${endpoint.host}")
+                    200 -> UploadResult.Uploaded("uploaded to ${endpoint.host}")
                     else -> UploadResult.Failed("collector answered $status: ${errorOf(text)}")
                 }
             } finally {

@@ -4,7 +4,7 @@ import kotlin.math.PI
 import kotlin.math.abs
 import kotlin.math.cos
 import kotlin.math.log10
-import kotlin.math.sin
+import org.hapticon.gesture.extraction.Spectrum
 import org.junit.Assert.assertArrayEquals
 import org.junit.Assert.assertEquals
 import org.junit.Assert.assertFalse
@@ -104,7 +104,7 @@ class NoiseGeneratorTest {
         while (start + n <= x.size) {
             val re = DoubleArray(n) { x[start + it] * window[it] }
             val im = DoubleArray(n)
-            fft(re, im)
+            Spectrum.fft(re, im)
             for (k in psd.indices) psd[k] += re[k] * re[k] + im[k] * im[k]
             start += n / 2
         }
@@ -115,42 +115,5 @@ class NoiseGeneratorTest {
             10 * log10(bins.sumOf { psd[it] } / bins.size)
         }
         return bands.zipWithNext { a, b -> b - a }
-    }
-
-    /** In-place iterative radix-2 FFT. */
-    private fun fft(re: DoubleArray, im: DoubleArray) {
-        val n = re.size
-        var j = 0
-        for (i in 1 until n) {
-            var bit = n shr 1
-            while (j and bit != 0) {
-                j = j xor bit
-                bit = bit shr 1
-            }
-            j = j xor bit
-            if (i < j) {
-                re[i] = re[j].also { re[j] = re[i] }
-                im[i] = im[j].also { im[j] = im[i] }
-            }
-        }
-        var len = 2
-        while (len <= n) {
-            val angle = -2 * PI / len
-            for (i in 0 until n step len) {
-                for (k in 0 until len / 2) {
-                    val wr = cos(angle * k)
-                    val wi = sin(angle * k)
-                    val ur = re[i + k]
-                    val ui = im[i + k]
-                    val vr = re[i + k + len / 2] * wr - im[i + k + len / 2] * wi
-                    val vi = re[i + k + len / 2] * wi + im[i + k + len / 2] * wr
-                    re[i + k] = ur + vr
-                    im[i + k] = ui + vi
-                    re[i + k + len / 2] = ur - vr
-                    im[i + k + len / 2] = ui - vi
-                }
-            }
-            len = len shl 1
-        }
     }
 }

@@ -154,7 +154,8 @@ class ResearcherViewModel(private val study: StudyComponent) : ViewModel() {
     /** Stores a copy of [protocol] under a free id ("…-copy", "…-copy2", …), editable, and selects it. Returns the new id. */
     fun duplicate(protocol: StoredProtocol): Job = viewModelScope.launch {
         val taken = study.repository.protocols().first().map { it.protocol.id }.toSet()
-        val base = protocol.protocol.id.take(58) + "-copy"
+        // Ids are at most 64 characters: room for "-copy" and a two-digit number.
+        val base = protocol.protocol.id.take(57) + "-copy"
         val id = generateSequence(1) { it + 1 }.map { if (it == 1) base else "$base$it" }.first { it !in taken }
         study.repository.saveProtocol(protocol.copy(protocol = protocol.protocol.copy(id = id, revision = 1), readOnly = false))
         select(id)
@@ -196,7 +197,7 @@ class ResearcherViewModel(private val study: StudyComponent) : ViewModel() {
         local.update {
             it.copy(
                 upload = when (result) {
-                    is UploadResult.Uploaded -> UploadState.Done(result.message)
+                    is UploadResult.Uploaded -> UploadState.Done("${export.rows} rows ${result.message}")
                     is UploadResult.Failed -> UploadState.Failed(result.message)
                 },
             )

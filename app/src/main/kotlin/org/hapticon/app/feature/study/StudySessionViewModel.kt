@@ -68,12 +68,7 @@ class StudySessionViewModel(
     }
 
     /** Leaves the current task intro: logs TaskStarted and shows the first trial. */
-    fun startTask(): Job = act { step ->
-        if (step is StudyStep.TaskIntro) {
-            append(StudyEvent.TaskStarted(step.task.id))
-            enter()
-        }
-    }
+    fun startTask(): Job = leave { step -> (step as? StudyStep.TaskIntro)?.let { StudyEvent.TaskStarted(it.task.id) } }
 
     /**
      * Plays the trial's icon: logs IconPressed, PlaybackStarted when the actuator starts, and PlaybackFinished when it
@@ -121,12 +116,7 @@ class StudySessionViewModel(
     }
 
     /** Leaves the task end: logs TaskEnded and shows the next task's intro, or the end of the session. */
-    fun finishTask(): Job = act { step ->
-        if (step is StudyStep.TaskEnd) {
-            append(StudyEvent.TaskEnded(step.task.id))
-            enter()
-        }
-    }
+    fun finishTask(): Job = leave { step -> (step as? StudyStep.TaskEnd)?.let { StudyEvent.TaskEnded(it.task.id) } }
 
     /** The app went to the background: the noise stops. */
     fun pause(): Job = act {
@@ -143,6 +133,14 @@ class StudySessionViewModel(
     override fun onCleared() {
         noise.stop()
         player.stop()
+    }
+
+    // Logs the event that completes the current step, when [eventFor] has one for it, and shows the next step.
+    private fun leave(eventFor: (StudyStep) -> StudyEvent?): Job = act { step ->
+        eventFor(step)?.let {
+            append(it)
+            enter()
+        }
     }
 
     private fun act(block: suspend (StudyStep) -> Unit): Job = viewModelScope.launch {

@@ -179,7 +179,7 @@ class StudyResearcherTest {
         val uploader = HttpResultUploader(2_000, 2_000)
         val csv = "${ResponseCsv.HEADER}\r\nrow\r\n"
 
-        assertEquals(UploadResult.Uploaded("uploaded 1 rows to 127.0.0.1"), uploader.upload(url, "s3cret", "hapticon-icons", csv))
+        assertEquals(UploadResult.Uploaded("uploaded to 127.0.0.1"), uploader.upload(url, "s3cret", "hapticon-icons", csv))
         assertEquals(UploadResult.Failed("collector answered 400: line 1: header must be exactly study_id..."), uploader.upload(url, "", "hapticon-icons", "bad\r\n"))
         assertEquals(
             listOf("POST text/csv; charset=utf-8 hapticon-icons Bearer s3cret ${csv.length}", "POST text/csv; charset=utf-8 hapticon-icons null 5"),
@@ -207,7 +207,7 @@ class StudyResearcherTest {
 
         vm.setCollector(startCollector(), "")
         vm.upload().join()
-        assertEquals(UploadState.Done("uploaded 0 rows to 127.0.0.1"), vm.uiState.first { it.upload is UploadState.Done }.upload)
+        assertEquals(UploadState.Done("0 rows uploaded to 127.0.0.1"), vm.uiState.first { it.upload is UploadState.Done }.upload)
         assertEquals(export, vm.uiState.value.export)
         assertEquals(listOf("POST text/csv; charset=utf-8 hapticon-icons null ${export.csv.length}"), uploads)
     }

@@ -13,6 +13,7 @@ import org.hapticon.app.data.database.HapticonDatabase
 import org.hapticon.app.study.MaskingSetting
 import org.hapticon.app.study.NoiseColor
 import org.hapticon.app.study.RoomStudyRepository
+import org.hapticon.app.study.SessionRecord
 import org.hapticon.app.study.StoredProtocol
 import org.hapticon.app.study.StudyExporter
 import org.hapticon.app.study.TestHapticPlayer
@@ -70,6 +71,15 @@ class StudySessionWalkTest {
 
     private fun viewModel(repository: RoomStudyRepository, sessionId: Long) =
         StudySessionViewModel(sessionId, repository, player, noise, clock)
+
+    /** Participant 0's session of [repository], loaded, with its first task started. */
+    private suspend fun startFirstTask(repository: RoomStudyRepository): Pair<SessionRecord, StudySessionViewModel> {
+        val record = repository.startSession(protocol, clock())
+        val vm = viewModel(repository, record.id)
+        vm.loaded.join()
+        vm.startTask().join()
+        return record to vm
+    }
 
     private fun StudySessionViewModel.active() = uiState.value as SessionUiState.Active
 
@@ -179,10 +189,7 @@ class StudySessionWalkTest {
     @Test
     fun killedMidTask_newViewModelOnTheSameFile_resumesAtTheNextTrialWithNothingLost() = runTest(dispatcher) {
         val first = open()
-        val record = first.startSession(protocol, clock())
-        val vm = viewModel(first, record.id)
-        vm.loaded.join()
-        vm.startTask().join()
+        val (record, vm) = startFirstTask(first)
         // Participant 0's Williams row: stroke, hit, hug, knock.
         vm.rate(5) // stroke
         vm.rate(4) // hit
@@ -219,12 +226,23 @@ class StudySessionWalkTest {
     }
 
     @Test
+    fun appInTheBackground_stopsTheNoise_andBackMidTaskRestartsIt() = runTest(dispatcher) {
+        val (_, vm) = startFirstTask(open())
+        vm.pause().join()
+        vm.rate(3) // answering while paused does not start the noise
+        vm.resume().join()
+        assertEquals(listOf("start PINK -30.0", "stop", "start PINK -30.0"), noise.calls)
+        repeat(3) { vm.rate(3) }
+        assertTrue(vm.active().step is StudyStep.TaskEnd)
+        vm.pause().join()
+        vm.resume().join()
+        assertEquals("no noise between tasks", listOf("start PINK -30.0", "stop", "start PINK -30.0", "stop"), noise.calls)
+    }
+
+    @Test
     fun rowEditedWithRawSql_exportSaysWhereAndTheSessionRefusesToContinue() = runTest(dispatcher) {
         val repository = open()
-        val record = repository.startSession(protocol, clock())
-        val vm = viewModel(repository, record.id)
-        vm.loaded.join()
-        vm.startTask().join()
+        val (record, vm) = startFirstTask(repository)
         vm.rate(2)
         val answer = repository.entries(record.id).single { it.type == "answer" }
         assertEquals(6L, answer.sequence)
