@@ -15,7 +15,9 @@ import org.hapticon.app.sensors.SensorHub
 import org.hapticon.app.sensors.SharedPreferencesCalibrationStore
 import org.hapticon.app.sensors.SimulatedPartner
 import org.hapticon.app.sensors.UsbDevices
+import org.hapticon.app.study.StudyComponent
 import org.hapticon.app.sync.ChatComponent
+import org.hapticon.app.data.database.HapticonDatabase
 
 /** Holds the app's long-lived objects; tests replace them through [container]. */
 class HapticonApplication : Application() {
@@ -48,6 +50,8 @@ class AppContainer(
     val simulatedPartner: () -> PartnerHand = { SimulatedPartner() },
     /** Chat: Room storage, settings, the background sync and adaptive playback; null in containers built without it. */
     val chat: ChatComponent? = null,
+    /** The user-study mode: protocols, sessions, masking noise, export; null in containers built without it. */
+    val study: StudyComponent? = null,
 ) {
     companion object {
         /** The production graph, with [usbDevices] and [vibration] replaceable for tests. */
@@ -59,7 +63,9 @@ class AppContainer(
         ): AppContainer {
             val hub = SensorHub(usbDevices)
             val grains = GrainEngine(vibration).also { hub.addFrameListener(it) }
-            val chat = ChatComponent.create(context)
+            // One database for chat and study: two Room instances on one file would not see each other's writes.
+            val db = HapticonDatabase.create(context)
+            val chat = ChatComponent.create(context, db = db)
             return AppContainer(
                 // One icon list and one player for every screen: the presets plus the user's own icons,
                 // played with the best renderer this phone has.
@@ -72,6 +78,7 @@ class AppContainer(
                 glove = HubGloveSource(hub),
                 calibrations = calibrations,
                 chat = chat,
+                study = StudyComponent.create(context, db),
             )
         }
     }

@@ -28,7 +28,8 @@ class MainActivity : ComponentActivity() {
         val container = (application as HapticonApplication).container
         destination = savedInstanceState?.getString(KEY_DESTINATION)
             ?.let { name -> TopLevelDestination.entries.firstOrNull { it.name == name } }
-            ?: TopLevelDestination.ICONS
+            // A study session still running (the app was killed mid-session) reopens in front of the participant.
+            ?: if (container.study?.settings?.preferences?.value?.activeSessionId != null) TopLevelDestination.STUDY else TopLevelDestination.ICONS
         handleIntent(intent, container)
         setContent {
             HapticonTheme {

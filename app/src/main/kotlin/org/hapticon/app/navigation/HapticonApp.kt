@@ -16,6 +16,10 @@ import org.hapticon.app.AppContainer
 import org.hapticon.app.feature.chat.ChatsRoute
 import org.hapticon.app.feature.icons.IconsRoute
 import org.hapticon.app.feature.sensors.SensorsRoute
+import org.hapticon.app.feature.study.StudyRoute
+import androidx.compose.runtime.getValue
+import androidx.lifecycle.compose.collectAsStateWithLifecycle
+import kotlinx.coroutines.flow.MutableStateFlow
 
 /**
  * The app's frame: the bottom navigation bar and the selected destination. State-based on purpose
@@ -29,9 +33,12 @@ fun HapticonApp(
     onSelect: (TopLevelDestination) -> Unit,
 ) {
     val saveableStates = rememberSaveableStateHolder()
+    // During a participant's session the bar is hidden: the participant sees the session and nothing else.
+    val studyPreferences by (container.study?.settings?.preferences ?: NO_STUDY).collectAsStateWithLifecycle()
+    val inSession = selected == TopLevelDestination.STUDY && studyPreferences?.activeSessionId != null
     Scaffold(
         bottomBar = {
-            NavigationBar {
+            if (!inSession) NavigationBar {
                 for (destination in TopLevelDestination.entries) {
                     NavigationBarItem(
                         selected = destination == selected,
@@ -51,8 +58,11 @@ fun HapticonApp(
                     TopLevelDestination.CHATS -> container.chat?.let { ChatsRoute(it) }
                     TopLevelDestination.ICONS -> IconsRoute(container)
                     TopLevelDestination.SENSORS -> SensorsRoute(container)
+                    TopLevelDestination.STUDY -> StudyRoute(container)
                 }
             }
         }
     }
 }
+
+private val NO_STUDY = MutableStateFlow<org.hapticon.app.study.StudyPreferences?>(null)

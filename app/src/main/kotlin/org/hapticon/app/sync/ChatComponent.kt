@@ -41,8 +41,11 @@ class ChatComponent(
     fun localRenderer(icon: HapticIcon): AdaptiveRenderer = player.rendererFor(icon)
 
     companion object {
-        fun create(context: Context, scope: CoroutineScope = CoroutineScope(SupervisorJob() + Dispatchers.Default)): ChatComponent {
-            val db = HapticonDatabase.create(context)
+        fun create(
+            context: Context,
+            scope: CoroutineScope = CoroutineScope(SupervisorJob() + Dispatchers.Default),
+            db: HapticonDatabase = HapticonDatabase.create(context),
+        ): ChatComponent {
             val repository = OfflineFirstChatRepository(db)
             val settings = SharedPreferencesChatSettings(context)
             val vibrator = defaultVibrator(context)

@@ -9,6 +9,11 @@ import kotlinx.coroutines.test.runTest
 import org.hapticon.app.data.database.HapticonDatabase
 import org.hapticon.app.data.database.MessageState
 import org.hapticon.app.data.database.PendingReceiptEntity
+import org.hapticon.app.study.MaskingSetting
+import org.hapticon.app.study.NoiseColor
+import org.hapticon.app.study.RoomStudyRepository
+import org.hapticon.app.study.StoredProtocol
+import org.hapticon.study.OriginatingStudy
 import org.json.JSONObject
 import org.junit.Assert.assertEquals
 import org.junit.Assert.assertNull
@@ -76,6 +81,49 @@ class DatabaseMigrationTest {
         } finally {
             db.close()
         }
+    }
+
+    @Test
+    fun migrate3To4_chatRowsKeptAndStudyTablesWork() = runTest {
+        val file = context.getDatabasePath("migration-3-4.db").also { it.parentFile!!.mkdirs(); it.delete() }
+        createFromSchema(file, version = 3)
+        SQLiteDatabase.openDatabase(file.path, null, SQLiteDatabase.OPEN_READWRITE).use { v3 ->
+            v3.execSQL("INSERT INTO conversations (peer, created_at) VALUES ('bob', 1)")
+            v3.execSQL(
+                "INSERT INTO messages (id, conversation, sender, sent_at, text, sticker, icon_json, outgoing, state, read_at) " +
+                    "VALUES ('0b7e7c1e-3f7b-4a57-9d3e-2f1c5a6b7c8d', 'bob', 'bob', 5, 'kept', 'hug', NULL, 0, 'READ', 9)",
+            )
+            v3.execSQL("INSERT INTO pending_receipts (message_id, state, peer, from_user, at) VALUES ('0b7e7c1e-3f7b-4a57-9d3e-2f1c5a6b7c8d', 'read', 'bob', 'alice', 9)")
+        }
+
+        val db = Room.databaseBuilder(context, HapticonDatabase::class.java, file.path).allowMainThreadQueries().build()
+        try {
+            val message = db.messageDao().messages("bob").first().single()
+            assertEquals("kept", message.text)
+            assertEquals(9L, message.readAtMillis)
+            assertEquals(listOf("read"), db.pendingReceiptDao().pending().map { it.state })
+
+            val study = RoomStudyRepository(db)
+            val own = StoredProtocol(OriginatingStudy.PROTOCOL.copy(id = "mine"), seed = 7, masking = MaskingSetting(NoiseColor.WHITE, -40.0))
+            study.saveProtocol(own)
+            assertEquals(listOf(StoredProtocol.DEFAULT, own), study.protocols().first())
+            val session = study.startSession(own, 1_700_000_000_000L)
+            assertEquals("P000-A", session.participant)
+            assertEquals(listOf("session_started"), study.entries(session.id).map { it.type })
+            assertEquals("P001-D", study.startSession(own, 1_700_000_001_000L).participant)
+        } finally {
+            db.close()
+        }
+    }
+
+    @Test
+    fun schema4_exported_addsTheStudyTables() {
+        val tables = schema(4).getJSONObject("database").getJSONArray("entities")
+        val names = (0 until tables.length()).map { tables.getJSONObject(it).getString("tableName") }.sorted()
+        assertEquals(
+            listOf("conversations", "icons", "messages", "outbox", "pending_receipts", "study_events", "study_protocols", "study_sessions"),
+            names,
+        )
     }
 
     @Test

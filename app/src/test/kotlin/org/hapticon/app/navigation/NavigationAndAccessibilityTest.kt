@@ -11,10 +11,13 @@ import androidx.compose.ui.test.hasScrollToNodeAction
 import androidx.compose.ui.test.hasText
 import androidx.compose.ui.test.isSelected
 import androidx.compose.ui.test.junit4.createAndroidComposeRule
+import androidx.compose.ui.test.onAllNodesWithContentDescription
+import androidx.compose.ui.test.onAllNodesWithText
 import androidx.compose.ui.test.onNodeWithContentDescription
 import androidx.compose.ui.test.onNodeWithText
 import androidx.compose.ui.test.performClick
 import androidx.compose.ui.test.performScrollToNode
+import androidx.compose.ui.test.performTextInput
 import org.hapticon.app.MainActivity
 import org.junit.Assert.assertTrue
 import org.junit.Rule
@@ -23,7 +26,7 @@ import org.junit.runner.RunWith
 import org.robolectric.RobolectricTestRunner
 import org.robolectric.Shadows.shadowOf
 
-/** The bottom bar, the Sensors sub-screens and Back, and that every control has a name. */
+/** The bottom bar, the Sensors sub-screens and Back, the Study tab's screens, and that every control has a name. */
 @RunWith(RobolectricTestRunner::class)
 class NavigationAndAccessibilityTest {
     @get:Rule
@@ -54,6 +57,28 @@ class NavigationAndAccessibilityTest {
         val text = config.getOrNull(SemanticsProperties.Text)?.joinToString("").orEmpty()
         val description = config.getOrNull(SemanticsProperties.ContentDescription)?.joinToString("").orEmpty()
         return text.isNotBlank() || description.isNotBlank()
+    }
+
+    @Test
+    fun studyTab_pinThenResearcherThenParticipantScreensWithoutTheBar() {
+        rule.onNode(hasText("Study") and hasClickAction()).performClick()
+        rule.waitForIdle()
+        rule.onNodeWithText("Set a researcher PIN").assertExists()
+        assertEveryControlIsNamed("Study PIN")
+        rule.onNodeWithContentDescription("PIN").performTextInput("2580")
+        rule.onNodeWithContentDescription("Repeat PIN").performTextInput("2580")
+        rule.onNodeWithText("Set PIN").performClick()
+
+        rule.waitUntil(5_000) { rule.onAllNodesWithText("Start session for P000-A").fetchSemanticsNodes().isNotEmpty() }
+        assertEveryControlIsNamed("Study researcher")
+        rule.onNodeWithText("Start session for P000-A").performClick()
+
+        rule.waitUntil(5_000) { rule.onAllNodesWithText("Task 1: Haptic icons").fetchSemanticsNodes().isNotEmpty() }
+        rule.onNode(hasText("Icons") and hasClickAction()).assertDoesNotExist()
+        rule.onNodeWithText("Start").performClick()
+        rule.waitUntil(5_000) { rule.onAllNodesWithContentDescription("Play haptic icon 1").fetchSemanticsNodes().isNotEmpty() }
+        rule.onNodeWithText("Haptic icon 1 feels like stroking").assertExists()
+        assertEveryControlIsNamed("Study trial")
     }
 
     @Test

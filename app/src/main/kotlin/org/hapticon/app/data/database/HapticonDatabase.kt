@@ -5,17 +5,28 @@ import androidx.room.AutoMigration
 import androidx.room.Database
 import androidx.room.Room
 import androidx.room.RoomDatabase
+import org.hapticon.app.study.StudyEventDao
+import org.hapticon.app.study.StudyEventEntity
+import org.hapticon.app.study.StudyProtocolDao
+import org.hapticon.app.study.StudyProtocolEntity
+import org.hapticon.app.study.StudySessionDao
+import org.hapticon.app.study.StudySessionEntity
 
 /**
- * The app's database: conversations, messages, the outbox of unsent messages and custom icons.
+ * The app's database: conversations, messages, the outbox of unsent messages, custom icons, and the
+ * user-study protocols, sessions and their append-only event logs.
  * Schemas are exported to app/schemas and committed; every version change needs a migration there.
  */
 @Database(
-    entities = [ConversationEntity::class, MessageEntity::class, OutboxEntity::class, IconEntity::class, PendingReceiptEntity::class],
-    // v2: messages.read_at (when a message was read); v3: pending_receipts. Both automatic migrations.
-    version = 3,
+    entities = [
+        ConversationEntity::class, MessageEntity::class, OutboxEntity::class, IconEntity::class, PendingReceiptEntity::class,
+        StudyProtocolEntity::class, StudySessionEntity::class, StudyEventEntity::class,
+    ],
+    // v2: messages.read_at (when a message was read); v3: pending_receipts; v4: the user-study tables.
+    // All automatic migrations (new tables and a nullable column).
+    version = 4,
     exportSchema = true,
-    autoMigrations = [AutoMigration(from = 1, to = 2), AutoMigration(from = 2, to = 3)],
+    autoMigrations = [AutoMigration(from = 1, to = 2), AutoMigration(from = 2, to = 3), AutoMigration(from = 3, to = 4)],
 )
 abstract class HapticonDatabase : RoomDatabase() {
     abstract fun conversationDao(): ConversationDao
@@ -23,6 +34,9 @@ abstract class HapticonDatabase : RoomDatabase() {
     abstract fun outboxDao(): OutboxDao
     abstract fun iconDao(): IconDao
     abstract fun pendingReceiptDao(): PendingReceiptDao
+    abstract fun studyProtocolDao(): StudyProtocolDao
+    abstract fun studySessionDao(): StudySessionDao
+    abstract fun studyEventDao(): StudyEventDao
 
     companion object {
         const val NAME = "hapticon.db"

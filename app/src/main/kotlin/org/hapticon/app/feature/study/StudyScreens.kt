@@ -1,0 +1,319 @@
+package org.hapticon.app.feature.study
+
+import androidx.compose.foundation.Image
+import androidx.compose.foundation.layout.Arrangement
+import androidx.compose.foundation.layout.Box
+import androidx.compose.foundation.layout.Column
+import androidx.compose.foundation.layout.Row
+import androidx.compose.foundation.layout.fillMaxSize
+import androidx.compose.foundation.layout.fillMaxWidth
+import androidx.compose.foundation.layout.padding
+import androidx.compose.foundation.layout.size
+import androidx.compose.foundation.layout.widthIn
+import androidx.compose.foundation.rememberScrollState
+import androidx.compose.foundation.selection.selectable
+import androidx.compose.foundation.selection.selectableGroup
+import androidx.compose.foundation.shape.RoundedCornerShape
+import androidx.compose.foundation.text.KeyboardOptions
+import androidx.compose.foundation.verticalScroll
+import androidx.compose.material3.AlertDialog
+import androidx.compose.material3.AssistChip
+import androidx.compose.material3.Button
+import androidx.compose.material3.Card
+import androidx.compose.material3.CardDefaults
+import androidx.compose.material3.CircularProgressIndicator
+import androidx.compose.material3.Icon
+import androidx.compose.material3.LinearProgressIndicator
+import androidx.compose.material3.MaterialTheme
+import androidx.compose.material3.OutlinedTextField
+import androidx.compose.material3.RadioButton
+import androidx.compose.material3.Text
+import androidx.compose.material3.TextButton
+import androidx.compose.runtime.Composable
+import androidx.compose.runtime.getValue
+import androidx.compose.runtime.mutableStateOf
+import androidx.compose.runtime.saveable.rememberSaveable
+import androidx.compose.runtime.setValue
+import androidx.compose.ui.Alignment
+import androidx.compose.ui.Modifier
+import androidx.compose.ui.res.painterResource
+import androidx.compose.ui.semantics.LiveRegionMode
+import androidx.compose.ui.semantics.Role
+import androidx.compose.ui.semantics.contentDescription
+import androidx.compose.ui.semantics.heading
+import androidx.compose.ui.semantics.liveRegion
+import androidx.compose.ui.semantics.semantics
+import androidx.compose.ui.semantics.stateDescription
+import androidx.compose.ui.text.input.KeyboardType
+import androidx.compose.ui.text.input.PasswordVisualTransformation
+import androidx.compose.ui.unit.dp
+import androidx.lifecycle.Lifecycle
+import androidx.lifecycle.compose.LifecycleEventEffect
+import androidx.lifecycle.compose.collectAsStateWithLifecycle
+import androidx.lifecycle.viewmodel.compose.viewModel
+import androidx.lifecycle.viewmodel.initializer
+import androidx.lifecycle.viewmodel.viewModelFactory
+import org.hapticon.app.AppContainer
+import org.hapticon.app.designsystem.HapticonIcons
+import org.hapticon.app.feature.chat.Sticker
+import org.hapticon.study.LikertScale
+import org.hapticon.study.Stimulus
+import org.hapticon.study.StudyStep
+
+/**
+ * The Study destination: the running session when there is one (the app reopens into it), else the PIN gate, the
+ * researcher screen or the protocol editor.
+ */
+@Composable
+fun StudyRoute(container: AppContainer) {
+    val study = container.study ?: return
+    val researcher: ResearcherViewModel = viewModel(factory = viewModelFactory { initializer { ResearcherViewModel(study) } })
+    val state by researcher.uiState.collectAsStateWithLifecycle()
+    var editing by rememberSaveable { mutableStateOf<String?>(null) }
+    val active = state.activeSessionId
+    when {
+        active != null -> {
+            val session: StudySessionViewModel = viewModel(
+                key = "study-session-$active",
+                factory = viewModelFactory { initializer { StudySessionViewModel(active, study.repository, container.player, study.noise, study.clock) } },
+            )
+            LifecycleEventEffect(Lifecycle.Event.ON_PAUSE) { session.pause() }
+            LifecycleEventEffect(Lifecycle.Event.ON_RESUME) { session.resume() }
+            val sessionState by session.uiState.collectAsStateWithLifecycle()
+            SessionScreen(
+                sessionState,
+                onStartTask = { session.startTask() },
+                onPressIcon = { session.pressIcon() },
+                onSelect = { session.select(it) },
+                onNext = { session.next() },
+                onFinishTask = { session.finishTask() },
+                onExit = researcher::exitSession,
+                pinError = state.pinError,
+            )
+        }
+        state.lock != LockState.UNLOCKED -> PinScreen(state.lock, state.pinError, onSetPin = researcher::setPin, onUnlock = { researcher.unlock(it) })
+        editing != null -> {
+            val id = editing!!
+            val editor: ProtocolEditorViewModel = viewModel(
+                key = "protocol-editor-$id",
+                factory = viewModelFactory { initializer { ProtocolEditorViewModel(id, study.repository, container.iconRepository) } },
+            )
+            val editorState by editor.uiState.collectAsStateWithLifecycle()
+            ProtocolEditorScreen(editorState, editor, onBack = { editing = null })
+        }
+        else -> ResearcherScreen(state, researcher, onEdit = { editing = it })
+    }
+}
+
+/** First use: set the researcher PIN (twice); afterwards: enter it. A wrong PIN shows "wrong PIN". */
+@Composable
+fun PinScreen(lock: LockState, error: String?, onSetPin: (String, String) -> Unit, onUnlock: (String) -> Unit) {
+    var pin by rememberSaveable { mutableStateOf("") }
+    var confirm by rememberSaveable { mutableStateOf("") }
+    val setting = lock == LockState.SET_PIN
+    Column(
+        Modifier.fillMaxSize().padding(24.dp),
+        verticalArrangement = Arrangement.spacedBy(16.dp, Alignment.CenterVertically),
+        horizontalAlignment = Alignment.CenterHorizontally,
+    ) {
+        Text(
+            if (setting) "Set a researcher PIN" else "Researcher mode",
+            style = MaterialTheme.typography.headlineSmall,
+            modifier = Modifier.semantics { heading() },
+        )
+        Text(
+            if (setting) "4 to 12 digits. Participants need it to leave a session, so keep it to yourself." else "Enter the PIN to open the researcher screen.",
+            style = MaterialTheme.typography.bodyMedium,
+        )
+        PinField("PIN", pin) { pin = it }
+        if (setting) PinField("Repeat PIN", confirm) { confirm = it }
+        error?.let { ErrorText(it) }
+        Button(
+            onClick = {
+                if (setting) onSetPin(pin, confirm) else onUnlock(pin)
+                pin = ""
+                confirm = ""
+            },
+            enabled = pin.isNotEmpty(),
+        ) { Text(if (setting) "Set PIN" else "Unlock") }
+    }
+}
+
+@Composable
+private fun PinField(label: String, value: String, onChange: (String) -> Unit) {
+    OutlinedTextField(
+        value = value,
+        onValueChange = { text -> onChange(text.filter(Char::isDigit).take(12)) },
+        label = { Text(label) },
+        singleLine = true,
+        visualTransformation = PasswordVisualTransformation(),
+        keyboardOptions = KeyboardOptions(keyboardType = KeyboardType.NumberPassword),
+        modifier = Modifier.semantics { contentDescription = label },
+    )
+}
+
+@Composable
+internal fun ErrorText(message: String) {
+    Text(
+        message,
+        color = MaterialTheme.colorScheme.error,
+        style = MaterialTheme.typography.bodyMedium,
+        modifier = Modifier.semantics { liveRegion = LiveRegionMode.Polite },
+    )
+}
+
+/**
+ * The participant's screens: task intro, trials (the partner's message as a chat bubble, the icon chip, the statement
+ * and the rating scale), task end, done. The only way out is the "Researcher" button, which asks for the PIN.
+ */
+@Composable
+fun SessionScreen(
+    state: SessionUiState,
+    onStartTask: () -> Unit,
+    onPressIcon: () -> Unit,
+    onSelect: (Int) -> Unit,
+    onNext: () -> Unit,
+    onFinishTask: () -> Unit,
+    onExit: (String) -> Boolean,
+    pinError: String?,
+) {
+    var asking by rememberSaveable { mutableStateOf(false) }
+    Column(Modifier.fillMaxSize().padding(16.dp).verticalScroll(rememberScrollState()), verticalArrangement = Arrangement.spacedBy(16.dp)) {
+        Row(Modifier.fillMaxWidth(), horizontalArrangement = Arrangement.SpaceBetween, verticalAlignment = Alignment.CenterVertically) {
+            Text((state as? SessionUiState.Active)?.participant.orEmpty(), style = MaterialTheme.typography.labelMedium)
+            TextButton(onClick = { asking = true }, modifier = Modifier.semantics { contentDescription = "Researcher: leave the session with the PIN" }) {
+                Text("Researcher")
+            }
+        }
+        when (state) {
+            SessionUiState.Loading -> CircularProgressIndicator(Modifier.semantics { contentDescription = "Loading the session" })
+            is SessionUiState.Failed -> ErrorText(state.message)
+            is SessionUiState.Active -> {
+                LinearProgressIndicator(
+                    progress = { if (state.trials == 0) 0f else state.answered.toFloat() / state.trials },
+                    modifier = Modifier.fillMaxWidth().semantics { contentDescription = "Progress: ${state.answered} of ${state.trials} rated" },
+                )
+                when (val step = state.step) {
+                    is StudyStep.TaskIntro -> StepText("Task ${step.taskPosition}: ${step.task.title}", step.task.instructions, "Start", onStartTask)
+                    is StudyStep.Trial -> TrialContent(state, step, onPressIcon, onSelect, onNext)
+                    is StudyStep.TaskEnd -> StepText("Task ${step.taskPosition} done", "Thank you. Take a short break if you like.", "Continue", onFinishTask)
+                    StudyStep.Done -> StepText("All done", "Thank you for taking part! Please hand the phone back to the researcher.", null) {}
+                }
+            }
+        }
+    }
+    if (asking) {
+        var pin by rememberSaveable { mutableStateOf("") }
+        AlertDialog(
+            onDismissRequest = { asking = false },
+            title = { Text("Researcher PIN") },
+            text = {
+                Column(verticalArrangement = Arrangement.spacedBy(8.dp)) {
+                    PinField("PIN", pin) { pin = it }
+                    pinError?.let { ErrorText(it) }
+                }
+            },
+            confirmButton = { TextButton(onClick = { if (onExit(pin)) asking = false; pin = "" }) { Text("Leave session") } },
+            dismissButton = { TextButton(onClick = { asking = false }) { Text("Cancel") } },
+        )
+    }
+}
+
+@Composable
+private fun StepText(title: String, body: String, button: String?, onClick: () -> Unit) {
+    Text(title, style = MaterialTheme.typography.headlineSmall, modifier = Modifier.semantics { heading() })
+    if (body.isNotBlank()) Text(body, style = MaterialTheme.typography.bodyLarge)
+    if (button != null) Button(onClick = onClick, modifier = Modifier.fillMaxWidth()) { Text(button) }
+}
+
+@Composable
+private fun TrialContent(state: SessionUiState.Active, step: StudyStep.Trial, onPressIcon: () -> Unit, onSelect: (Int) -> Unit, onNext: () -> Unit) {
+    Text("${step.task.title} · ${step.trial} of ${step.task.stimuli.size}", style = MaterialTheme.typography.titleMedium)
+    PartnerMessage(step.stimulus, step.trial, state.playing, state.iconPressed, onPressIcon)
+    Text(step.question, style = MaterialTheme.typography.titleLarge)
+    LikertScaleControl(state.scale, state.selected, onSelect)
+    if (!state.iconPressed) Text("Press the haptic icon to feel it first.", style = MaterialTheme.typography.bodyMedium)
+    Button(onClick = onNext, enabled = state.canContinue, modifier = Modifier.fillMaxWidth()) { Text("Next") }
+}
+
+/** The virtual partner's message: a received chat bubble with its text and/or sticker, and the icon chip. */
+@Composable
+private fun PartnerMessage(stimulus: Stimulus, trial: Int, playing: Boolean, pressed: Boolean, onPressIcon: () -> Unit) {
+    Card(
+        shape = RoundedCornerShape(topStart = 4.dp, topEnd = 16.dp, bottomEnd = 16.dp, bottomStart = 16.dp),
+        colors = CardDefaults.cardColors(containerColor = MaterialTheme.colorScheme.secondaryContainer),
+        modifier = Modifier.widthIn(max = 320.dp),
+    ) {
+        Column(Modifier.padding(12.dp), verticalArrangement = Arrangement.spacedBy(8.dp)) {
+            Text("Partner", style = MaterialTheme.typography.labelMedium)
+            stimulus.text?.let { Text(it, style = MaterialTheme.typography.bodyLarge) }
+            stimulus.sticker?.let { id ->
+                val sticker = stickerOf(id)
+                if (sticker != null) {
+                    Image(painterResource(sticker.drawable), contentDescription = "${sticker.label} sticker", modifier = Modifier.size(96.dp))
+                } else {
+                    Text("[$id]", style = MaterialTheme.typography.bodyLarge)
+                }
+            }
+            AssistChip(
+                onClick = onPressIcon,
+                label = { Text("Haptic icon $trial") },
+                leadingIcon = { Icon(HapticonIcons.Vibration, contentDescription = null) },
+                modifier = Modifier.semantics {
+                    contentDescription = "Play haptic icon $trial"
+                    stateDescription = when {
+                        playing -> "playing"
+                        pressed -> "felt"
+                        else -> "not felt yet"
+                    }
+                },
+            )
+        }
+    }
+}
+
+/** The app's sticker for a protocol sticker id: `sticker_hug` or `hug`; null for one this build does not have. */
+internal fun stickerOf(id: String): Sticker? = Sticker.of(id.removePrefix("sticker_"))
+
+/**
+ * A Likert item: one radio button per point (1..points) in a selectable group, each read as "N of points" with its
+ * label when the scale has one per point, and the end anchors written under the ends.
+ */
+@Composable
+fun LikertScaleControl(scale: LikertScale, selected: Int?, onSelect: (Int) -> Unit, modifier: Modifier = Modifier) {
+    Column(modifier.fillMaxWidth()) {
+        Row(Modifier.fillMaxWidth().selectableGroup(), horizontalArrangement = Arrangement.SpaceBetween) {
+            for (value in 1..scale.points) {
+                val label = pointLabel(scale, value)
+                Column(
+                    Modifier
+                        .weight(1f)
+                        .selectable(selected = selected == value, onClick = { onSelect(value) }, role = Role.RadioButton)
+                        .semantics { contentDescription = "$value of ${scale.points}" + (label?.let { ": $it" } ?: "") },
+                    horizontalAlignment = Alignment.CenterHorizontally,
+                ) {
+                    RadioButton(selected = selected == value, onClick = null)
+                    Text("$value", style = MaterialTheme.typography.labelLarge)
+                }
+            }
+        }
+        if (scale.labels.isNotEmpty()) {
+            Row(Modifier.fillMaxWidth(), horizontalArrangement = Arrangement.SpaceBetween) {
+                Text(scale.labels.first(), style = MaterialTheme.typography.bodySmall, modifier = Modifier.weight(1f))
+                Box(Modifier.weight(1f), contentAlignment = Alignment.CenterEnd) {
+                    Text(scale.labels.last(), style = MaterialTheme.typography.bodySmall)
+                }
+            }
+        }
+    }
+}
+
+private fun pointLabel(scale: LikertScale, value: Int): String? = when (scale.labels.size) {
+    scale.points -> scale.labels[value - 1]
+    2 -> when (value) {
+        1 -> scale.labels[0]
+        scale.points -> scale.labels[1]
+        else -> null
+    }
+    else -> null
+}

@@ -1,0 +1,152 @@
+package org.hapticon.app.study
+
+import android.content.Context
+import android.content.Intent
+import androidx.core.content.FileProvider
+import java.io.File
+import java.io.IOException
+import java.net.HttpURLConnection
+import java.net.URI
+import kotlinx.coroutines.Dispatchers
+import kotlinx.coroutines.withContext
+import org.hapticon.core.io.Json
+import org.hapticon.core.io.JsonObject
+import org.hapticon.core.io.JsonString
+import org.hapticon.study.StudyProtocol
+import org.hapticon.study.export.ResponseCsv
+import org.hapticon.study.export.ResponseRow
+import org.hapticon.study.export.ResponseRows
+import org.hapticon.study.export.SessionLog
+import org.hapticon.study.export.StudyExport
+import org.hapticon.study.log.ChainVerification
+import org.hapticon.study.log.HashChain
+import org.hapticon.study.log.LogEntry
+
+/** A session's chain check, in the researcher's words: "log intact" or "log edited at row N". */
+data class SessionCheck(val participant: String, val verification: ChainVerification) {
+    /** "log intact", or what broke and at which row (0-based, as the log's sequence numbers). */
+    val summary: String
+        get() = when (verification) {
+            ChainVerification.Intact -> "log intact"
+            is ChainVerification.Broken -> "log ${verification.problem.name.lowercase()} at row ${verification.index}"
+        }
+}
+
+/** What [StudyExporter.export] wrote: the two files, the CSV text (for upload) and every session's chain check. */
+data class ExportResult(val csvFile: File, val jsonFile: File, val csv: String, val rows: Int, val checks: List<SessionCheck>)
+
+/**
+ * Writes a protocol's results into [directory] (cacheDir/exports): the long-format CSV and the full JSON record of
+ * the study module, named after the study id and [clock]'s time.
+ */
+class StudyExporter(private val directory: File, private val clock: () -> Long = System::currentTimeMillis) {
+    /**
+     * Exports [sessions] (each with its log, oldest first) of [protocol]. A session whose protocol revision differs
+     * from [protocol]'s is skipped from the CSV rows (its answers would not match the plan) but kept in the JSON.
+     * Throws [IOException] when the files cannot be written.
+     */
+    @Throws(IOException::class)
+    fun export(protocol: StudyProtocol, sessions: List<Pair<SessionRecord, List<LogEntry>>>): ExportResult {
+        if (!directory.isDirectory && !directory.mkdirs()) throw IOException("cannot create $directory")
+        val rows = ArrayList<ResponseRow>()
+        for ((record, entries) in sessions) {
+            if (record.protocol.revision == protocol.revision) rows += ResponseRows.of(record.protocol, entries)
+        }
+        val csv = ResponseCsv.write(rows)
+        val json = StudyExport.encode(StudyExport(protocol, sessions.map { (record, entries) -> SessionLog(record.participant, entries) }))
+        val stem = "${protocol.id}-r${protocol.revision}-${clock()}"
+        val csvFile = File(directory, "$stem.csv").apply { writeText(csv) }
+        val jsonFile = File(directory, "$stem.json").apply { writeText(json) }
+        val checks = sessions.map { (record, entries) -> SessionCheck(record.participant, HashChain.verify(entries)) }
+        return ExportResult(csvFile, jsonFile, csv, rows.size, checks)
+    }
+
+    companion object {
+        /** The FileProvider authority of the exports (see the manifest and res/xml/file_paths.xml). */
+        const val AUTHORITY: String = "org.hapticon.app.exports"
+
+        /** An ACTION_SEND intent for [file] as a content URI the receiving app may read, with [mimeType]. */
+        fun shareIntent(context: Context, file: File, mimeType: String): Intent = Intent(Intent.ACTION_SEND).apply {
+            type = mimeType
+            putExtra(Intent.EXTRA_STREAM, FileProvider.getUriForFile(context, AUTHORITY, file))
+            putExtra(Intent.EXTRA_SUBJECT, file.name)
+            addFlags(Intent.FLAG_GRANT_READ_URI_PERMISSION)
+        }
+    }
+}
+
+/** The outcome of an upload. */
+sealed interface UploadResult {
+    /** The collector took the CSV. */
+    data class Uploaded(val message: String) : UploadResult
+
+    /** It did not: [message] says why (the collector's error, the HTTP status, or the network failure). */
+    data class Failed(val message: String) : UploadResult
+}
+
+/** Sends results to the study collector service. */
+fun interface ResultUploader {
+    /** POSTs [csv] for [studyId] to [url]; never throws. */
+    suspend fun upload(url: String, token: String, studyId: String, csv: String): UploadResult
+}
+
+/**
+ * [ResultUploader] for `hapticon collect`: `POST {url}/v1/results` with the long-format CSV as `text/csv`, the study
+ * id in `X-Study-Id` and an optional bearer token; 200 is success, 400 carries `{"error": "..."}`. Runs on
+ * Dispatchers.IO with [connectTimeoutMillis] and [readTimeoutMillis].
+ */
+class HttpResultUploader(
+    private val connectTimeoutMillis: Int = 10_000,
+    private val readTimeoutMillis: Int = 30_000,
+) : ResultUploader {
+    override suspend fun upload(url: String, token: String, studyId: String, csv: String): UploadResult = withContext(Dispatchers.IO) {
+        val endpoint = try {
+            resultsUrl(url)
+        } catch (e: IllegalArgumentException) {
+            return@withContext UploadResult.Failed(e.message.orEmpty())
+        }
+        try {
+            val connection = endpoint.openConnection() as HttpURLConnection
+            try {
+                connection.requestMethod = "POST"
+                connection.connectTimeout = connectTimeoutMillis
+                connection.readTimeout = readTimeoutMillis
+                connection.doOutput = true
+                connection.setRequestProperty("Content-Type", "text/csv; charset=utf-8")
+                connection.setRequestProperty("X-Study-Id", studyId)
+                if (token.isNotBlank()) connection.setRequestProperty("Authorization", "Bearer ${token.trim()}")
+                val body = csv.toByteArray(Charsets.UTF_8)
+                connection.setFixedLengthStreamingMode(body.size)
+                connection.outputStream.use { it.write(body) }
+                val status = connection.responseCode
+                val text = (if (status < 400) connection.inputStream else connection.errorStream)?.use { it.readBytes().decodeToString() }.orEmpty()
+                when (status) {
+                    200 -> UploadResult.Uploaded("uploaded to ${endpoint.host}")
+                    else -> UploadResult.Failed("collector answered $status: ${errorOf(text)}")
+                }
+            } finally {
+                connection.disconnect()
+            }
+        } catch (e: IOException) {
+            UploadResult.Failed("upload failed: ${e.message ?: e.javaClass.simpleName}")
+        }
+    }
+
+    companion object {
+        /** `{url}/v1/results` for a collector base URL. Throws [IllegalArgumentException] for a URL that is not http(s). */
+        fun resultsUrl(url: String): java.net.URL {
+            val base = url.trim().trimEnd('/')
+            require(base.startsWith("http://") || base.startsWith("https://")) { "the collector URL must start with http:// or https://, got \"${url.take(80)}\"" }
+            return try {
+                URI("$base/v1/results").toURL()
+            } catch (e: Exception) {
+                throw IllegalArgumentException("not a valid collector URL: \"${url.take(80)}\"")
+            }
+        }
+
+        private fun errorOf(body: String): String {
+            val error = runCatching { ((Json.decode(body) as JsonObject).members["error"] as JsonString).value }.getOrNull()
+            return error ?: body.take(200).ifBlank { "no details" }
+        }
+    }
+}

@@ -1,0 +1,62 @@
+package org.hapticon.app.study
+
+import kotlinx.coroutines.flow.MutableStateFlow
+import kotlinx.coroutines.flow.StateFlow
+import kotlinx.coroutines.flow.asStateFlow
+import org.hapticon.app.playback.HapticPlayer
+import org.hapticon.app.playback.Playback
+import org.hapticon.app.playback.PlaybackCapabilities
+import org.hapticon.app.playback.Renderer
+import org.hapticon.core.HapticIcon
+import org.hapticon.core.render.Fidelity
+
+/** A [HapticPlayer] that records the icons it was asked to play and "plays" each for [durationMillis]. */
+class TestHapticPlayer(private val durationMillis: Long = 560) : HapticPlayer {
+    val played = ArrayList<HapticIcon>()
+    var stops = 0
+
+    override val capabilities = PlaybackCapabilities(hasVibrator = true, hasAmplitudeControl = true, apiLevel = 35)
+
+    override fun play(icon: HapticIcon): Playback {
+        played += icon
+        return Playback.Playing(Renderer.AMPLITUDE_WAVEFORM, durationMillis, Fidelity(0.0, 0.0, "exact"))
+    }
+
+    override fun stop() {
+        stops++
+    }
+}
+
+/** A [MaskingNoisePlayer] that records starts and stops, in order. */
+class TestMaskingNoise : MaskingNoisePlayer {
+    val calls = ArrayList<String>()
+    var playing: MaskingSetting? = null
+        private set
+
+    override fun start(setting: MaskingSetting) {
+        calls += "start ${setting.color} ${setting.levelDbfs}"
+        playing = setting
+    }
+
+    override fun stop() {
+        if (playing != null) calls += "stop"
+        playing = null
+    }
+}
+
+/** In-memory [StudySettingsRepository]. */
+class TestStudySettings(initial: StudyPreferences = StudyPreferences()) : StudySettingsRepository {
+    private val state = MutableStateFlow(initial)
+    override val preferences: StateFlow<StudyPreferences> = state.asStateFlow()
+    override fun update(transform: (StudyPreferences) -> StudyPreferences) {
+        state.value = transform(state.value)
+    }
+}
+
+/** A clock that returns 1 700 000 000 000 ms, then one second more on every call. */
+class TickingClock(private val startMillis: Long = 1_700_000_000_000L, private val stepMillis: Long = 1_000L) : () -> Long {
+    var calls = 0L
+        private set
+
+    override fun invoke(): Long = startMillis + stepMillis * calls++
+}
