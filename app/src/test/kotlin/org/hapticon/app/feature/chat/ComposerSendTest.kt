@@ -86,7 +86,11 @@ class ComposerSendTest {
         assertEquals(MessageState.SENDING, message.state)
         assertEquals(listOf(message.id), runBlocking { db.outboxDao().pending() }.map { it.messageId })
         // The outbox sender is woken once the message is stored.
-        compose.waitUntil(5_000) { wakes == 1 }
+        compose.waitUntil(5_000) {
+            // The ViewModel resumes on the main looper once Room's transaction is done.
+            shadowOf(android.os.Looper.getMainLooper()).idle()
+            wakes == 1
+        }
     }
 
     @Test
