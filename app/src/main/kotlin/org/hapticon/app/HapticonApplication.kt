@@ -3,6 +3,7 @@ package org.hapticon.app
 import android.app.Application
 import android.content.Context
 import org.hapticon.app.data.IconRepository
+import org.hapticon.app.gesture.GestureComponent
 import org.hapticon.app.playback.HapticPlayer
 import org.hapticon.app.playback.VibrationOutput
 import org.hapticon.app.playback.VibratorVibrationOutput
@@ -48,6 +49,8 @@ class AppContainer(
     val simulatedPartner: () -> PartnerHand = { SimulatedPartner() },
     /** Chat: Room storage, settings, the background sync and adaptive playback; null in containers built without it. */
     val chat: ChatComponent? = null,
+    /** Gesture recording, recognition and their files; null in containers built without it. */
+    val gestures: GestureComponent? = null,
 ) {
     companion object {
         /** The production graph, with [usbDevices] and [vibration] replaceable for tests. */
@@ -72,6 +75,7 @@ class AppContainer(
                 glove = HubGloveSource(hub),
                 calibrations = calibrations,
                 chat = chat,
+                gestures = GestureComponent.create(context, hub),
             )
         }
     }

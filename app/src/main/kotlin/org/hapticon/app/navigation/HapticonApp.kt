@@ -14,6 +14,7 @@ import androidx.compose.runtime.saveable.rememberSaveableStateHolder
 import androidx.compose.ui.Modifier
 import org.hapticon.app.AppContainer
 import org.hapticon.app.feature.chat.ChatsRoute
+import org.hapticon.app.feature.gesture.GesturesRoute
 import org.hapticon.app.feature.icons.IconsRoute
 import org.hapticon.app.feature.sensors.SensorsRoute
 
@@ -51,6 +52,7 @@ fun HapticonApp(
                     TopLevelDestination.CHATS -> container.chat?.let { ChatsRoute(it) }
                     TopLevelDestination.ICONS -> IconsRoute(container)
                     TopLevelDestination.SENSORS -> SensorsRoute(container)
+                    TopLevelDestination.GESTURES -> GesturesRoute(container)
                 }
             }
         }

@@ -11,4 +11,5 @@ enum class TopLevelDestination(val label: String, val icon: ImageVector) {
     CHATS("Chats", HapticonIcons.Chat),
     ICONS("Icons", HapticonIcons.Vibration),
     SENSORS("Sensors", HapticonIcons.Usb),
+    GESTURES("Gestures", HapticonIcons.Gesture),
 }
