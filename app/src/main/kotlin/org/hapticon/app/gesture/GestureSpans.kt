@@ -19,22 +19,27 @@ object GestureSpans {
     /** Frames kept around the active part, in seconds (the gesture's soft start and end). */
     const val PAD_SECONDS: Double = 0.1
 
+    /** The start of a take that is taken as rest (the take begins with the hand at rest), in seconds. */
+    const val REST_SECONDS: Double = 0.25
+
     /**
-     * The frames `[from, to)` of [recording] that hold the gesture: on the channel that moves furthest from
-     * its rest value (the median) relative to its own noise (median absolute deviation), from the first to
-     * the last frame at least [ACTIVE_SHARE] of the largest deviation away, padded by [PAD_SECONDS]. Null
-     * when no channel moves at all (a constant recording).
+     * The frames `[from, to)` of [recording] that hold the gesture. Rest is the first [REST_SECONDS]: its
+     * median per channel is the rest value and its median absolute deviation the noise. On the channel that
+     * moves furthest from rest relative to its noise, the gesture runs from the first to the last frame at
+     * least [ACTIVE_SHARE] of the largest deviation away, padded by [PAD_SECONDS]. Null when no channel
+     * moves at all (a constant recording) or the take is not longer than its rest.
      */
     fun find(recording: Recording): IntRange? {
-        if (recording.frameCount == 0) return null
+        val restFrames = maxOf(1, (REST_SECONDS * recording.sampleRate).toInt())
+        if (recording.frameCount <= restFrames) return null
         var best: DoubleArray? = null
         var bestScore = 0.0
         for (channel in recording.channels) {
             val samples = channel.toDoubleArray()
             if (samples.any { !it.isFinite() }) continue
-            val rest = median(samples)
+            val rest = median(samples.copyOf(restFrames))
             val deviation = DoubleArray(samples.size) { abs(samples[it] - rest) }
-            val noise = median(deviation)
+            val noise = median(deviation.copyOf(restFrames))
             val peak = deviation.max()
             if (peak <= 0.0) continue
             // Peak over noise; a channel that is flat at rest but moves (noise 0) wins outright.
