@@ -1,7 +1,13 @@
 package org.hapticon.app.gesture
 
+import kotlinx.coroutines.Dispatchers
+import kotlinx.coroutines.ExperimentalCoroutinesApi
 import kotlinx.coroutines.flow.Flow
 import kotlinx.coroutines.flow.flowOf
+import kotlinx.coroutines.test.StandardTestDispatcher
+import kotlinx.coroutines.test.TestDispatcher
+import kotlinx.coroutines.test.resetMain
+import kotlinx.coroutines.test.setMain
 import org.hapticon.app.data.ChatRepository
 import org.hapticon.app.data.PendingReceipt
 import org.hapticon.app.data.database.ConversationSummary
@@ -11,6 +17,9 @@ import org.hapticon.core.HapticIcon
 import org.hapticon.gesture.Recording
 import org.hapticon.messaging.ChatMessage
 import org.hapticon.messaging.Receipt
+import org.hapticon.testing.gestures.SyntheticGestures
+import org.junit.rules.TestWatcher
+import org.junit.runner.Description
 import java.io.File
 
 /** A source the test drives: [play] pushes a recording's frames, one by one, on the calling thread. */
@@ -70,3 +79,13 @@ class SendRecordingChatRepository(private val peers: List<String>) : ChatReposit
     override suspend fun pendingReceipts(): List<PendingReceipt> = emptyList()
     override suspend fun receiptSent(receipt: Receipt) = error("not used by the gesture tests")
 }
+
+/** Makes [dispatcher] the Main dispatcher (where viewModelScope runs) for each test, and undoes it after. */
+@OptIn(ExperimentalCoroutinesApi::class)
+class MainDispatcherRule(val dispatcher: TestDispatcher = StandardTestDispatcher()) : TestWatcher() {
+    override fun starting(description: Description) = Dispatchers.setMain(dispatcher)
+    override fun finished(description: Description) = Dispatchers.resetMain()
+}
+
+/** A source with the synthetic people's channels and rate (test-fixtures), which the recognition tests play takes through. */
+fun syntheticSource() = TestGestureSource(SyntheticGestures.CHANNELS.map { GestureChannel(it) }, SyntheticGestures.SAMPLE_RATE)

@@ -1,28 +1,24 @@
 package org.hapticon.app.feature.gesture
 
-import kotlinx.coroutines.Dispatchers
 import kotlinx.coroutines.ExperimentalCoroutinesApi
-import kotlinx.coroutines.test.StandardTestDispatcher
 import kotlinx.coroutines.test.TestScope
 import kotlinx.coroutines.test.advanceUntilIdle
-import kotlinx.coroutines.test.resetMain
 import kotlinx.coroutines.test.runTest
-import kotlinx.coroutines.test.setMain
 import org.hapticon.app.gesture.GestureChannel
 import org.hapticon.app.gesture.GestureSourceKind
 import org.hapticon.app.gesture.SendRecordingChatRepository
+import org.hapticon.app.gesture.MainDispatcherRule
 import org.hapticon.app.gesture.TestGestureSource
+import org.hapticon.app.gesture.syntheticSource
 import org.hapticon.app.gesture.testGestureComponent
 import org.hapticon.core.HapticIcon
 import org.hapticon.gesture.recognition.GestureLabel
 import org.hapticon.gesture.recognition.PersonalTrainer
 import org.hapticon.testing.gestures.SyntheticGestures
-import org.junit.After
 import org.junit.Assert.assertEquals
 import org.junit.Assert.assertFalse
 import org.junit.Assert.assertNull
 import org.junit.Assert.assertTrue
-import org.junit.Before
 import org.junit.Rule
 import org.junit.Test
 import org.junit.rules.TemporaryFolder
@@ -39,25 +35,17 @@ class RecognitionViewModelTest {
     @get:Rule
     val folder = TemporaryFolder()
 
-    private val dispatcher = StandardTestDispatcher()
+    @get:Rule
+    val main = MainDispatcherRule()
+    private val dispatcher = main.dispatcher
     private val person = SyntheticGestures.people(1, seed = 3).single()
     private val none = GestureLabel.NONE
     private val hugGentle = GestureLabel.parse("hug-gentle")
     private val hugEnergetic = GestureLabel.parse("hug-energetic")
     private val knockGentle = GestureLabel.parse("knock-gentle")
-    private val source = TestGestureSource(SyntheticGestures.CHANNELS.map { GestureChannel(it) }, SyntheticGestures.SAMPLE_RATE)
+    private val source = syntheticSource()
     private val chats = SendRecordingChatRepository(listOf("bob"))
     private var wakes = 0
-
-    @Before
-    fun setUp() {
-        Dispatchers.setMain(dispatcher)
-    }
-
-    @After
-    fun tearDown() {
-        Dispatchers.resetMain()
-    }
 
     /** A model from five takes (0–4) of each label, stored where the view model finds it. */
     private fun TestScope.viewModel(minInterval: Double = RecognitionViewModel.MIN_SEND_INTERVAL_SECONDS): RecognitionViewModel {

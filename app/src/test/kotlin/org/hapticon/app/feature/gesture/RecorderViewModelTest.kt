@@ -2,18 +2,16 @@ package org.hapticon.app.feature.gesture
 
 import androidx.room.Room
 import androidx.test.core.app.ApplicationProvider
-import kotlinx.coroutines.Dispatchers
 import kotlinx.coroutines.ExperimentalCoroutinesApi
 import kotlinx.coroutines.flow.first
-import kotlinx.coroutines.test.StandardTestDispatcher
 import kotlinx.coroutines.test.advanceUntilIdle
-import kotlinx.coroutines.test.resetMain
 import kotlinx.coroutines.test.runTest
-import kotlinx.coroutines.test.setMain
 import org.hapticon.app.data.RoomIconRepository
 import org.hapticon.app.data.database.HapticonDatabase
 import org.hapticon.app.gesture.GestureSourceKind
+import org.hapticon.app.gesture.MainDispatcherRule
 import org.hapticon.app.gesture.TestGestureSource
+import org.hapticon.app.gesture.syntheticSource
 import org.hapticon.app.gesture.testGestureComponent
 import org.hapticon.app.playback.HapticPlayer
 import org.hapticon.app.playback.Playback
@@ -41,7 +39,9 @@ class RecorderViewModelTest {
     @get:Rule
     val folder = TemporaryFolder()
 
-    private val dispatcher = StandardTestDispatcher()
+    @get:Rule
+    val main = MainDispatcherRule()
+    private val dispatcher = main.dispatcher
     private lateinit var db: HapticonDatabase
     private val played = ArrayList<HapticIcon>()
     private val player = object : HapticPlayer {
@@ -61,7 +61,6 @@ class RecorderViewModelTest {
 
     @Before
     fun setUp() {
-        Dispatchers.setMain(dispatcher)
         // Room runs its queries on the test dispatcher, so advanceUntilIdle also finishes a save.
         db = Room.inMemoryDatabaseBuilder(ApplicationProvider.getApplicationContext(), HapticonDatabase::class.java)
             .allowMainThreadQueries().setQueryCoroutineContext(dispatcher).build()
@@ -70,18 +69,25 @@ class RecorderViewModelTest {
     @After
     fun tearDown() {
         db.close()
-        Dispatchers.resetMain()
     }
 
-    private fun viewModel() = RecorderViewModel(testGestureComponent(source, folder.root), RoomIconRepository(db.iconDao()), player, work = dispatcher)
+    private fun viewModel(from: TestGestureSource = source) =
+        RecorderViewModel(testGestureComponent(from, folder.root), RoomIconRepository(db.iconDao()), player, work = dispatcher)
+
+    /** A recorder that recorded [take] from the sensor-board source. */
+    private fun recorded(take: org.hapticon.gesture.Recording = knock): RecorderViewModel {
+        val from = TestGestureSource.of(take)
+        val viewModel = viewModel(from)
+        viewModel.selectSource(GestureSourceKind.SENSOR_BOARD)
+        viewModel.startRecording()
+        from.play(take)
+        viewModel.stopRecording()
+        return viewModel
+    }
 
     @Test
     fun recordTrimFitSave_knockBecomesACustomIconWithThreeRepetitions() = runTest(dispatcher) {
-        val viewModel = viewModel()
-        viewModel.selectSource(GestureSourceKind.SENSOR_BOARD)
-        viewModel.startRecording()
-        source.play(knock)
-        viewModel.stopRecording()
+        val viewModel = recorded()
         val recorded = viewModel.uiState.value
         assertEquals(knock.frameCount, recorded.take!!.frameCount)
         assertEquals(listOf("vibration"), recorded.channels)
@@ -115,11 +121,7 @@ class RecorderViewModelTest {
 
     @Test
     fun trim_isClampedToTheTakeAndTwoFrames() = runTest(dispatcher) {
-        val viewModel = viewModel()
-        viewModel.selectSource(GestureSourceKind.SENSOR_BOARD)
-        viewModel.startRecording()
-        source.play(knock)
-        viewModel.stopRecording()
+        val viewModel = recorded()
         viewModel.setTrim(-5, Int.MAX_VALUE)
         assertEquals(0 to knock.frameCount, viewModel.uiState.value.let { it.trimFrom to it.trimTo })
         viewModel.setTrim(knock.frameCount, knock.frameCount)
@@ -130,12 +132,7 @@ class RecorderViewModelTest {
     @Test
     fun silentTake_fitSaysNoGestureAndShowsNoIcon() = runTest(dispatcher) {
         val silence = org.hapticon.gesture.Recording(8000.0, listOf(org.hapticon.gesture.Channel("vibration", "", DoubleArray(4000))))
-        val quiet = TestGestureSource.of(silence)
-        val viewModel = RecorderViewModel(testGestureComponent(quiet, folder.root), RoomIconRepository(db.iconDao()), player, work = dispatcher)
-        viewModel.selectSource(GestureSourceKind.SENSOR_BOARD)
-        viewModel.startRecording()
-        quiet.play(silence)
-        viewModel.stopRecording()
+        val viewModel = recorded(silence)
         viewModel.makeIcon()
         advanceUntilIdle()
         assertNull(viewModel.uiState.value.fit)
@@ -144,11 +141,7 @@ class RecorderViewModelTest {
 
     @Test
     fun recordings_savedListedOpenedDeleted() = runTest(dispatcher) {
-        val viewModel = viewModel()
-        viewModel.selectSource(GestureSourceKind.SENSOR_BOARD)
-        viewModel.startRecording()
-        source.play(knock)
-        viewModel.stopRecording()
+        val viewModel = recorded()
         viewModel.setTrim(0, 4000)
         viewModel.saveRecording("my tap", GestureLabel.parse("knock-gentle"))
         advanceUntilIdle()

@@ -1,25 +1,21 @@
 package org.hapticon.app.feature.gesture
 
-import kotlinx.coroutines.Dispatchers
 import kotlinx.coroutines.ExperimentalCoroutinesApi
-import kotlinx.coroutines.test.StandardTestDispatcher
 import kotlinx.coroutines.test.advanceUntilIdle
-import kotlinx.coroutines.test.resetMain
 import kotlinx.coroutines.test.runTest
-import kotlinx.coroutines.test.setMain
 import org.hapticon.app.gesture.FileGestureModelStore
 import org.hapticon.app.gesture.GestureChannel
 import org.hapticon.app.gesture.GestureSpans
+import org.hapticon.app.gesture.MainDispatcherRule
 import org.hapticon.app.gesture.TestGestureSource
+import org.hapticon.app.gesture.syntheticSource
 import org.hapticon.app.gesture.testGestureComponent
 import org.hapticon.gesture.recognition.GestureLabel
 import org.hapticon.testing.gestures.SyntheticGestures
-import org.junit.After
 import org.junit.Assert.assertEquals
 import org.junit.Assert.assertNotNull
 import org.junit.Assert.assertNull
 import org.junit.Assert.assertTrue
-import org.junit.Before
 import org.junit.Rule
 import org.junit.Test
 import org.junit.rules.TemporaryFolder
@@ -34,20 +30,12 @@ class TeachViewModelTest {
     @get:Rule
     val folder = TemporaryFolder()
 
-    private val dispatcher = StandardTestDispatcher()
+    @get:Rule
+    val main = MainDispatcherRule()
+    private val dispatcher = main.dispatcher
     private val person = SyntheticGestures.people(1, seed = 3).single()
     private val hug = GestureLabel.parse("hug-gentle")
-    private val source = TestGestureSource(SyntheticGestures.CHANNELS.map { GestureChannel(it) }, SyntheticGestures.SAMPLE_RATE)
-
-    @Before
-    fun setUp() {
-        Dispatchers.setMain(dispatcher)
-    }
-
-    @After
-    fun tearDown() {
-        Dispatchers.resetMain()
-    }
+    private val source = syntheticSource()
 
     @Test
     fun recordedTakes_trainAStoredModelWithValidationAccuracy() = runTest(dispatcher) {
