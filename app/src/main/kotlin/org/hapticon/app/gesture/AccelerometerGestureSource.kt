@@ -18,6 +18,8 @@ class AccelerometerGestureSource(
     private val sensorManager: SensorManager,
     override val sampleRate: Double = DEFAULT_RATE_HZ,
 ) : GestureSource {
+    // Held while a frame is delivered and while stopping, so no frame arrives after stop() returns.
+    private val lock = Any()
     private var thread: HandlerThread? = null
     private var listener: SensorEventListener? = null
 
@@ -38,9 +40,11 @@ class AccelerometerGestureSource(
         val values = DoubleArray(CHANNELS.size)
         val newListener = object : SensorEventListener {
             override fun onSensorChanged(event: SensorEvent) {
-                if (!running) return
-                for (i in values.indices) values[i] = event.values[i] / SensorManager.STANDARD_GRAVITY.toDouble()
-                hold.update(event.timestamp, values)
+                synchronized(lock) {
+                    if (!running) return
+                    for (i in values.indices) values[i] = event.values[i] / SensorManager.STANDARD_GRAVITY.toDouble()
+                    hold.update(event.timestamp, values)
+                }
             }
 
             override fun onAccuracyChanged(sensor: Sensor?, accuracy: Int) = Unit
@@ -57,7 +61,7 @@ class AccelerometerGestureSource(
     }
 
     override fun stop() {
-        running = false
+        synchronized(lock) { running = false }
         listener?.let { sensorManager.unregisterListener(it) }
         listener = null
         thread?.quitSafely()

@@ -12,6 +12,8 @@ import java.io.Closeable
  * second — both fixed when recording starts, so connect and let it stream for a second first.
  */
 class SensorHubGestureSource(private val hub: SensorHub) : GestureSource {
+    // Held while a frame is delivered and while stopping, so no frame arrives after stop() returns.
+    private val lock = Any()
     private var subscription: Closeable? = null
     private var format: Pair<List<GestureChannel>, Double>? = null
 
@@ -41,18 +43,20 @@ class SensorHubGestureSource(private val hub: SensorHub) : GestureSource {
         running = true
         subscription = hub.addFrameListener(
             FrameListener { frame, _ ->
-                if (!running) return@FrameListener
-                // A frame with fewer channels than the header (a short CSV line) leaves the rest at 0.
-                val n = minOf(frame.channelCount, values.size)
-                for (i in 0 until n) values[i] = frame.values[i]
-                for (i in n until values.size) values[i] = 0.0
-                sink.onFrame(values)
+                synchronized(lock) {
+                    if (!running) return@FrameListener
+                    // A frame with fewer channels than the header (a short CSV line) leaves the rest at 0.
+                    val n = minOf(frame.channelCount, values.size)
+                    for (i in 0 until n) values[i] = frame.values[i]
+                    for (i in n until values.size) values[i] = 0.0
+                    sink.onFrame(values)
+                }
             },
         )
     }
 
     override fun stop() {
-        running = false
+        synchronized(lock) { running = false }
         subscription?.close()
         subscription = null
         format = null
