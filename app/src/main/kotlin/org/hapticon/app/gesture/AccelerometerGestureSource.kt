@@ -75,6 +75,7 @@ class AccelerometerGestureSource(
         /** Requested sensor period in µs (200 Hz). */
         const val REQUEST_PERIOD_US: Int = 5_000
 
+        /** The channels delivered, in order. */
         val CHANNELS: List<GestureChannel> = listOf(GestureChannel("accel_x", "g"), GestureChannel("accel_y", "g"), GestureChannel("accel_z", "g"))
     }
 }

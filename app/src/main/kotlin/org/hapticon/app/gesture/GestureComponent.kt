@@ -18,10 +18,13 @@ enum class GestureSourceKind(val label: String) {
  * recording files and the personal model file.
  */
 class GestureComponent(
+    /** The touchscreen source, also fed by the touch pad on screen. */
     val touch: TouchGestureSource,
     private val accelerometer: GestureSource?,
     private val sensorBoard: GestureSource,
+    /** The saved recordings. */
     val recordings: RecordingStore,
+    /** The personal recognition model. */
     val models: GestureModelStore,
 ) {
     /** The source of [kind], or null when this phone lacks it (no accelerometer). */

@@ -125,6 +125,7 @@ class TouchGestureSource(
         /** How far the ticker stays behind the clock: longer than touch events take to reach the app. */
         const val LAG_NANOS: Long = 50_000_000L
 
+        /** The channels delivered, in order. */
         val CHANNELS: List<GestureChannel> = listOf(
             GestureChannel("pressure"), GestureChannel("size"), GestureChannel("velocity_x"), GestureChannel("velocity_y"),
         )

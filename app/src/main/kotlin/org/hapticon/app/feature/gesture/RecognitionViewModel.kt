@@ -66,6 +66,7 @@ class RecognitionViewModel(
     // Written on the source's thread only.
     private var lastSentFrame = Long.MIN_VALUE
 
+    /** What the screen shows. */
     val uiState: StateFlow<RecognitionUiState> = state.asStateFlow()
 
     init {
@@ -83,15 +84,18 @@ class RecognitionViewModel(
         }
     }
 
+    /** Chooses the source to recognise from (not while running). */
     fun selectSource(kind: GestureSourceKind) {
         if (state.value.running) return
         state.update { it.copy(sourceKind = kind, message = null) }
     }
 
+    /** Chooses the conversation recognised gestures go to. */
     fun selectPeer(peer: String) {
         state.update { it.copy(peer = peer) }
     }
 
+    /** Turns sending recognised gestures on or off. */
     fun setSendEnabled(enabled: Boolean) {
         state.update { it.copy(sendEnabled = enabled) }
     }
@@ -130,6 +134,7 @@ class RecognitionViewModel(
         state.update { it.copy(running = true, decision = null, probability = 0.0, lastEvent = null, message = null) }
     }
 
+    /** Stops the source; the last decision stays shown. */
     fun stop() {
         source?.stop()
         source = null
@@ -165,6 +170,7 @@ class RecognitionViewModel(
         state.update { it.copy(message = message) }
     }
 
+    /** Hides the message. */
     fun dismissMessage() {
         state.update { it.copy(message = null) }
     }

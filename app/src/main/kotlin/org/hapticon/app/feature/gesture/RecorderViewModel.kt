@@ -79,6 +79,7 @@ class RecorderViewModel(
     private val state = MutableStateFlow(RecorderUiState())
     private var ticker: Job? = null
 
+    /** What the screen shows. */
     val uiState: StateFlow<RecorderUiState> = state.asStateFlow()
 
     /** The live plot's samples. */
@@ -89,12 +90,14 @@ class RecorderViewModel(
         refreshRecordings()
     }
 
+    /** Chooses the source to record from (not while recording). */
     fun selectSource(kind: GestureSourceKind) {
         if (recorder.recording) return
         val source = gestures.source(kind)
         state.update { it.copy(sourceKind = kind, sourceAvailable = source != null, message = if (source == null) "This phone has no ${kind.label.lowercase()}" else null) }
     }
 
+    /** Starts recording from the chosen source with a live plot; stops by itself at [MAX_SECONDS]. */
     fun startRecording() {
         val source = gestures.source(state.value.sourceKind) ?: return
         try {
@@ -118,6 +121,7 @@ class RecorderViewModel(
         }
     }
 
+    /** Stops recording and shows the take for trimming. */
     fun stopRecording() {
         if (!recorder.recording) return
         ticker?.cancel()
@@ -147,10 +151,12 @@ class RecorderViewModel(
         state.update { it.copy(trimFrom = start, trimTo = end, fit = null) }
     }
 
+    /** Chooses the channel the icon is fitted to. */
     fun selectFitChannel(name: String) {
         state.update { it.copy(fitChannel = name, fit = null) }
     }
 
+    /** Sets the name the icon is played and saved under. */
     fun setIconName(name: String) {
         state.update { it.copy(iconName = name, savedIcon = null) }
     }
@@ -182,6 +188,7 @@ class RecorderViewModel(
         }
     }
 
+    /** Plays the fitted icon. */
     fun play() {
         namedIcon()?.let { player.play(it) }
     }
@@ -209,6 +216,7 @@ class RecorderViewModel(
         }
     }
 
+    /** Opens saved recording [id] for trimming. */
     fun openRecording(id: String) {
         viewModelScope.launch {
             withContext(work) { runCatching { gestures.recordings.load(id) } }
@@ -217,6 +225,7 @@ class RecorderViewModel(
         }
     }
 
+    /** Deletes saved recording [id]. */
     fun deleteRecording(id: String) {
         viewModelScope.launch {
             withContext(work) { gestures.recordings.delete(id) }
@@ -233,6 +242,7 @@ class RecorderViewModel(
         }
     }
 
+    /** Hides the message. */
     fun dismissMessage() {
         state.update { it.copy(message = null) }
     }

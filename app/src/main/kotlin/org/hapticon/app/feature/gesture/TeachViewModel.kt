@@ -79,6 +79,7 @@ class TeachViewModel(
     private val state = MutableStateFlow(TeachUiState())
     private var ticker: Job? = null
 
+    /** What the screen shows. */
     val uiState: StateFlow<TeachUiState> = state.asStateFlow()
 
     /** The live plot of the take being recorded. */
@@ -91,6 +92,7 @@ class TeachViewModel(
         }
     }
 
+    /** Chooses the source the takes are recorded from; forgets takes from another source. */
     fun selectSource(kind: GestureSourceKind) {
         if (recorder.recording) return
         // Examples from another source have other channels: they cannot be trained together.
@@ -107,6 +109,7 @@ class TeachViewModel(
         }
     }
 
+    /** Sets how many takes each gesture gets (1 to [MAX_TAKES]). */
     fun setTakesPerLabel(takes: Int) {
         state.update { it.copy(takesPerLabel = takes.coerceIn(1, MAX_TAKES)) }
     }
@@ -211,6 +214,7 @@ class TeachViewModel(
         }
     }
 
+    /** Hides the message. */
     fun dismissMessage() {
         state.update { it.copy(message = null) }
     }
@@ -226,6 +230,7 @@ class TeachViewModel(
         /** Takes per label by default: enough for 0.98 accuracy on the synthetic people (docs/gesture-recognition.md). */
         const val DEFAULT_TAKES: Int = 5
 
+        /** Most takes per gesture offered. */
         const val MAX_TAKES: Int = 20
 
         /** Rest and a gentle hug: "squeeze to send a hug". */
