@@ -3,6 +3,7 @@ package org.hapticon.app
 import android.app.Application
 import android.content.Context
 import org.hapticon.app.data.IconRepository
+import org.hapticon.app.gesture.GestureComponent
 import org.hapticon.app.playback.HapticPlayer
 import org.hapticon.app.playback.VibrationOutput
 import org.hapticon.app.playback.VibratorVibrationOutput
@@ -52,6 +53,8 @@ class AppContainer(
     val chat: ChatComponent? = null,
     /** The user-study mode: protocols, sessions, masking noise, export; null in containers built without it. */
     val study: StudyComponent? = null,
+    /** Gesture recording, recognition and their files; null in containers built without it. */
+    val gestures: GestureComponent? = null,
 ) {
     companion object {
         /** The production graph, with [usbDevices] and [vibration] replaceable for tests. */
@@ -79,6 +82,7 @@ class AppContainer(
                 calibrations = calibrations,
                 chat = chat,
                 study = StudyComponent.create(context, db),
+                gestures = GestureComponent.create(context, hub),
             )
         }
     }

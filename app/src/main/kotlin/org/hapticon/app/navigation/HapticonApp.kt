@@ -14,6 +14,7 @@ import androidx.compose.runtime.saveable.rememberSaveableStateHolder
 import androidx.compose.ui.Modifier
 import org.hapticon.app.AppContainer
 import org.hapticon.app.feature.chat.ChatsRoute
+import org.hapticon.app.feature.gesture.GesturesRoute
 import org.hapticon.app.feature.icons.IconsRoute
 import org.hapticon.app.feature.sensors.SensorsRoute
 import org.hapticon.app.feature.study.StudyRoute
@@ -59,6 +60,7 @@ fun HapticonApp(
                     TopLevelDestination.ICONS -> IconsRoute(container)
                     TopLevelDestination.SENSORS -> SensorsRoute(container)
                     TopLevelDestination.STUDY -> StudyRoute(container)
+                    TopLevelDestination.GESTURES -> GesturesRoute(container)
                 }
             }
         }

@@ -132,4 +132,18 @@ class NavigationAndAccessibilityTest {
         rule.waitForIdle()
         rule.onNodeWithText("USB boards").assertExists()
     }
+
+    @Test
+    fun gestures_everyTabOpensAndEveryControlIsNamed() {
+        rule.onNode(hasText("Gestures") and hasClickAction()).performClick()
+        rule.waitForIdle()
+        rule.onNodeWithText("Touch here").assertExists()
+        assertEveryControlIsNamed("Gestures: Record")
+        for (tab in listOf("Teach", "Recognise")) {
+            rule.onNode(hasText(tab) and hasClickAction()).performClick()
+            rule.waitForIdle()
+            assertEveryControlIsNamed("Gestures: $tab")
+        }
+        rule.onNodeWithText("No model: teach or import one in the Teach tab").assertExists()
+    }
 }

@@ -32,6 +32,8 @@ fun LivePlot(
     label: String,
     modifier: Modifier = Modifier,
     height: Dp = 40.dp,
+    /** What a screen reader says; a source that is not a live window (a whole recording) says so here. */
+    description: String = "Plot of $label over the last $PLOT_WINDOW_SECONDS seconds",
 ) {
     val xs = remember { FloatArray(MAX_POINTS) }
     val ys = remember { FloatArray(MAX_POINTS) }
@@ -42,7 +44,7 @@ fun LivePlot(
         modifier
             .fillMaxWidth()
             .height(height)
-            .semantics { contentDescription = "Plot of $label over the last $PLOT_WINDOW_SECONDS seconds" },
+            .semantics { contentDescription = description },
     ) {
         drawLine(axis, start = Offset(0f, size.height), end = Offset(size.width, size.height))
         // revision is captured so that a new one redraws; the points come from the source.
