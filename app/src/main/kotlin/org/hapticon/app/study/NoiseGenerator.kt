@@ -4,6 +4,7 @@ import java.util.Random
 import kotlin.math.log10
 import kotlin.math.pow
 import kotlin.math.sqrt
+import org.hapticon.core.render.FloatArraySampleStream
 import org.hapticon.core.render.SampleStream
 
 /** The masking noise of a protocol; [OFF] plays nothing. */
@@ -75,21 +76,7 @@ object NoiseGenerator {
     }
 
     /** [samples] as a [SampleStream] at [sampleRate], for [org.hapticon.core.io.WavWriter]. */
-    fun stream(samples: FloatArray, sampleRate: Int): SampleStream = ArraySampleStream(samples, sampleRate)
-
-    private class ArraySampleStream(private val samples: FloatArray, override val sampleRate: Int) : SampleStream {
-        override val totalSamples: Long get() = samples.size.toLong()
-        override var position: Long = 0
-            private set
-
-        override fun read(destination: FloatArray, offset: Int, length: Int): Int {
-            if (position >= samples.size) return -1
-            val count = minOf(length.toLong(), samples.size - position).toInt()
-            System.arraycopy(samples, position.toInt(), destination, offset, count)
-            position += count
-            return count
-        }
-    }
+    fun stream(samples: FloatArray, sampleRate: Int): SampleStream = FloatArraySampleStream(samples, sampleRate)
 
     /** Paul Kellet's refined pink filter ("instrumentation grade"), from the music-dsp archive. */
     private class KelletPinkFilter {

@@ -4,7 +4,7 @@ import org.hapticon.core.io.WavEncoding
 import org.hapticon.core.io.WavFormatException
 import org.hapticon.core.io.WavReader
 import org.hapticon.core.io.WavWriter
-import org.hapticon.core.render.SampleStream
+import org.hapticon.core.render.FloatArraySampleStream
 import org.hapticon.gesture.Channel
 import org.hapticon.gesture.Recording
 import java.io.InputStream
@@ -43,20 +43,6 @@ public object RecordingWav {
         val samples = channel.toDoubleArray()
         val bad = samples.indexOfFirst { !it.isFinite() }
         require(bad < 0) { "channel ${channel.name} has a non-finite sample at index $bad" }
-        WavWriter.write(ChannelStream(samples, rate.toInt()), out, encoding)
-    }
-
-    private class ChannelStream(private val samples: DoubleArray, override val sampleRate: Int) : SampleStream {
-        override val totalSamples: Long get() = samples.size.toLong()
-        override var position: Long = 0
-            private set
-
-        override fun read(destination: FloatArray, offset: Int, length: Int): Int {
-            if (position >= samples.size) return -1
-            val count = minOf(length.toLong(), samples.size - position).toInt()
-            for (j in 0 until count) destination[offset + j] = samples[(position + j).toInt()].toFloat()
-            position += count
-            return count
-        }
+        WavWriter.write(FloatArraySampleStream(FloatArray(samples.size) { samples[it].toFloat() }, rate.toInt()), out, encoding)
     }
 }
