@@ -66,7 +66,11 @@ data class ResearcherUiState(
  * The researcher's side: the PIN gate, picking a protocol, starting the next participant's session, the session list,
  * export, share and upload. Actions that write return their [Job].
  */
-class ResearcherViewModel(private val study: StudyComponent) : ViewModel() {
+class ResearcherViewModel(
+    private val study: StudyComponent,
+    /** Where PINs are hashed: PBKDF2's 60,000 rounds take tens of milliseconds, too long for the main thread. */
+    private val hashing: kotlinx.coroutines.CoroutineDispatcher = Dispatchers.Default,
+) : ViewModel() {
     private data class Local(
         val lock: LockState,
         val pinError: String? = null,
@@ -100,18 +104,20 @@ class ResearcherViewModel(private val study: StudyComponent) : ViewModel() {
         )
     }.stateIn(viewModelScope, SharingStarted.Eagerly, ResearcherUiState(local.value.lock))
 
-    /** Sets the first PIN; [confirm] must repeat it. */
-    fun setPin(pin: String, confirm: String) {
+    /** Sets the first PIN; [confirm] must repeat it. The state says when it is done. */
+    fun setPin(pin: String, confirm: String): Job = viewModelScope.launch {
         val error = when {
             pin != confirm -> "the two PINs differ"
-            else -> runCatching { study.pin.set(pin) }.exceptionOrNull()?.message
+            else -> withContext(hashing) { runCatching { study.pin.set(pin) }.exceptionOrNull()?.message }
         }
         local.update { if (error == null) it.copy(lock = LockState.UNLOCKED, pinError = null) else it.copy(pinError = error) }
     }
 
     /** Opens the researcher screen when [pin] is right; a wrong PIN is refused with a message. */
-    fun unlock(pin: String): Boolean {
-        val ok = study.pin.check(pin)
+    fun unlock(pin: String): Job = viewModelScope.launch { checkPin(pin) }
+
+    private suspend fun checkPin(pin: String): Boolean {
+        val ok = withContext(hashing) { study.pin.check(pin) }
         local.update { if (ok) it.copy(lock = LockState.UNLOCKED, pinError = null) else it.copy(pinError = "wrong PIN") }
         return ok
     }
@@ -120,11 +126,10 @@ class ResearcherViewModel(private val study: StudyComponent) : ViewModel() {
     fun lock() = local.update { it.copy(lock = if (study.pin.isSet) LockState.LOCKED else LockState.SET_PIN, pinError = null) }
 
     /** Leaves the running session for the researcher screen; only with the right PIN. */
-    fun exitSession(pin: String): Boolean {
-        if (!unlock(pin)) return false
+    fun exitSession(pin: String): Job = viewModelScope.launch {
+        if (!checkPin(pin)) return@launch
         study.noise.stop()
         study.settings.update { it.copy(activeSessionId = null) }
-        return true
     }
 
     /** Picks the protocol the next session runs and the export covers. */

@@ -87,7 +87,7 @@ fun StudyRoute(container: AppContainer) {
                 onSelect = { session.select(it) },
                 onNext = { session.next() },
                 onFinishTask = { session.finishTask() },
-                onExit = researcher::exitSession,
+                onExit = { researcher.exitSession(it) },
                 pinError = state.pinError,
             )
         }
@@ -174,7 +174,7 @@ fun SessionScreen(
     onSelect: (Int) -> Unit,
     onNext: () -> Unit,
     onFinishTask: () -> Unit,
-    onExit: (String) -> Boolean,
+    onExit: (String) -> Unit,
     pinError: String?,
 ) {
     var asking by rememberSaveable { mutableStateOf(false) }
@@ -213,7 +213,8 @@ fun SessionScreen(
                     pinError?.let { ErrorText(it) }
                 }
             },
-            confirmButton = { TextButton(onClick = { if (onExit(pin)) asking = false; pin = "" }) { Text("Leave session") } },
+            // A right PIN ends the session and this screen with it; a wrong one shows pinError here.
+            confirmButton = { TextButton(onClick = { onExit(pin); pin = "" }) { Text("Leave session") } },
             dismissButton = { TextButton(onClick = { asking = false }) { Text("Cancel") } },
         )
     }

@@ -100,7 +100,7 @@ class StudyResearcherTest {
 
     @Test
     fun pinGate_firstUseSetsThePin_wrongPinRefused_rightPinOpens() = runTest(dispatcher) {
-        val vm = ResearcherViewModel(component())
+        val vm = ResearcherViewModel(component(), hashing = dispatcher)
         assertEquals(LockState.SET_PIN, vm.uiState.value.lock)
         vm.setPin("1234", "1243")
         assertEquals(LockState.SET_PIN, vm.uiState.first { it.pinError != null }.lock)
@@ -111,9 +111,9 @@ class StudyResearcherTest {
         assertNull(vm.uiState.first { it.lock == LockState.UNLOCKED }.pinError)
 
         vm.lock()
-        assertFalse(vm.unlock("4321"))
+        vm.unlock("4321").join()
         assertEquals(LockState.LOCKED, vm.uiState.first { it.pinError == "wrong PIN" }.lock)
-        assertTrue(vm.unlock("1234"))
+        vm.unlock("1234").join()
         assertNull(vm.uiState.first { it.lock == LockState.UNLOCKED }.pinError)
     }
 
@@ -121,7 +121,7 @@ class StudyResearcherTest {
     fun startSession_maskingWithoutHeadphones_warnsFirst_thenProceedsAndLeavingNeedsThePin() = runTest(dispatcher) {
         val study = component()
         study.repository.saveProtocol(StoredProtocol(OriginatingStudy.PROTOCOL.copy(id = "masked"), masking = MaskingSetting(NoiseColor.PINK, -30.0)))
-        val vm = ResearcherViewModel(study)
+        val vm = ResearcherViewModel(study, hashing = dispatcher)
         vm.setPin("1234", "1234")
         vm.select("masked")
 
@@ -137,9 +137,9 @@ class StudyResearcherTest {
         assertEquals(LockState.LOCKED, started.lock)
         assertEquals("P000-A", study.repository.session(active)!!.participant)
 
-        assertFalse(vm.exitSession("0000"))
+        vm.exitSession("0000").join()
         assertEquals(active, settings.preferences.value.activeSessionId)
-        assertTrue(vm.exitSession("1234"))
+        vm.exitSession("1234").join()
         assertNull(settings.preferences.value.activeSessionId)
 
         headphones = true
@@ -152,7 +152,7 @@ class StudyResearcherTest {
     fun export_writesCsvAndJsonToCacheExports_andBuildsTheShareIntent() = runTest(dispatcher) {
         val study = component()
         val record = study.repository.startSession(StoredProtocol.DEFAULT, 1_700_000_000_000L)
-        val vm = ResearcherViewModel(study)
+        val vm = ResearcherViewModel(study, hashing = dispatcher)
         vm.export().join()
 
         val export = vm.uiState.first { it.export != null }.export!!
@@ -195,7 +195,7 @@ class StudyResearcherTest {
     fun upload_collectorDown_failureShown_retrySendsTheSameExport() = runTest(dispatcher) {
         val study = component()
         study.repository.startSession(StoredProtocol.DEFAULT, 1_700_000_000_000L)
-        val vm = ResearcherViewModel(study)
+        val vm = ResearcherViewModel(study, hashing = dispatcher)
         // A port nobody listens on: the server is started and stopped to get one.
         val down = HttpServer.create(InetSocketAddress("127.0.0.1", 0), 0).let { val port = it.address.port; it.stop(0); port }
         vm.setCollector("http://127.0.0.1:$down", "")
