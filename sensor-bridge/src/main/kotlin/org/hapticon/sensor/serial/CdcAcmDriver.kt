@@ -3,7 +3,6 @@ package org.hapticon.sensor.serial
 import org.hapticon.sensor.port.LineSettings
 import org.hapticon.sensor.port.Parity
 import org.hapticon.sensor.port.StopBits
-import java.io.IOException
 
 /**
  * USB CDC ACM, the class that native-USB boards speak: Arduino Uno R3/Mega (16U2), Leonardo and
@@ -56,9 +55,6 @@ internal fun findAcmFunctions(device: UsbDeviceDescription): List<AcmFunction> {
     return listOfNotNull(single?.let { AcmFunction(it, it) })
 }
 
-private fun UsbInterfaceDescription.hasBulkPair(): Boolean =
-    bulkEndpoint(UsbDirection.IN) != null && bulkEndpoint(UsbDirection.OUT) != null
-
 /** CDC PSTN requests (CDC PSTN subclass 1.2, §6.3), sent to the control interface. */
 private object AcmRequest {
     const val SET_LINE_CODING = 0x20
@@ -78,10 +74,10 @@ internal class CdcAcmPort(
 
     override fun claimAndInitialize(): DataEndpoints {
         for (usbInterface in listOf(function.control, function.data).distinctBy { it.id }) {
-            if (!transport.claimInterface(usbInterface)) throw IOException("Cannot claim interface ${usbInterface.id} of ${device.ids}")
+            claim(usbInterface)
             claimed += usbInterface
         }
-        return DataEndpoints(function.data.bulkEndpoint(UsbDirection.IN)!!, function.data.bulkEndpoint(UsbDirection.OUT)!!)
+        return bulkPairOf(function.data)
     }
 
     override fun applySettings(settings: LineSettings) {

@@ -18,7 +18,7 @@ public class Ch34xDriver(override val device: UsbDeviceDescription) : UsbSerialD
 
     override fun openPort(transport: UsbTransport, portIndex: Int, settings: LineSettings, clock: MonotonicClock): UsbSerialPort {
         requirePortIndex(portIndex)
-        val dataInterface = device.interfaces.lastOrNull { it.bulkEndpoint(UsbDirection.IN) != null && it.bulkEndpoint(UsbDirection.OUT) != null }
+        val dataInterface = device.interfaces.lastOrNull { it.hasBulkPair() }
             ?: throw IOException("CH34x device ${device.ids} has no interface with bulk endpoints")
         return Ch34xPort(device, transport, clock, dataInterface).also { it.open(settings) }
     }
@@ -60,12 +60,12 @@ internal class Ch34xPort(
         private set
 
     override fun claimAndInitialize(): DataEndpoints {
-        if (!transport.claimInterface(usbInterface)) throw IOException("Cannot claim interface ${usbInterface.id} of ${device.ids}")
+        claim(usbInterface)
         val reply = ByteArray(2)
         control(UsbRequestType.VENDOR_DEVICE_IN, Ch34xRequest.READ_VERSION, 0, 0, reply, "CH34x READ_VERSION")
         version = reply[0].toInt() and 0xFF
         control(UsbRequestType.VENDOR_DEVICE_OUT, Ch34xRequest.SERIAL_INIT, 0, 0, null, "CH34x SERIAL_INIT")
-        return DataEndpoints(usbInterface.bulkEndpoint(UsbDirection.IN)!!, usbInterface.bulkEndpoint(UsbDirection.OUT)!!)
+        return bulkPairOf(usbInterface)
     }
 
     override fun applySettings(settings: LineSettings) {

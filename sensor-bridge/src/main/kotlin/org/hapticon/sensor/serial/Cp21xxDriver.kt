@@ -4,7 +4,6 @@ import org.hapticon.sensor.port.UnsupportedSettingException
 import org.hapticon.sensor.port.LineSettings
 import org.hapticon.sensor.port.Parity
 import org.hapticon.sensor.port.StopBits
-import java.io.IOException
 
 /**
  * Silicon Labs CP210x USB-UART chips (CP2102, CP2102N, CP2104 and the multi-port CP2105/CP2108, one
@@ -53,12 +52,10 @@ internal class Cp21xxPort(
     private val index = usbInterface.id
 
     override fun claimAndInitialize(): DataEndpoints {
-        if (!transport.claimInterface(usbInterface)) throw IOException("Cannot claim interface ${usbInterface.id} of ${device.ids}")
-        val read = usbInterface.bulkEndpoint(UsbDirection.IN)
-        val write = usbInterface.bulkEndpoint(UsbDirection.OUT)
-        if (read == null || write == null) throw IOException("Interface ${usbInterface.id} of ${device.ids} has no bulk endpoint pair")
+        claim(usbInterface)
+        val endpoints = bulkPairOf(usbInterface)
         control(UsbRequestType.VENDOR_INTERFACE_OUT, Cp21xxRequest.IFC_ENABLE, Cp21xxRequest.UART_ENABLE, index, null, "CP210x IFC_ENABLE")
-        return DataEndpoints(read, write)
+        return endpoints
     }
 
     override fun applySettings(settings: LineSettings) {

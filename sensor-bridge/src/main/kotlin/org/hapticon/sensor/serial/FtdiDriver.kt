@@ -58,17 +58,15 @@ internal class FtdiPort(
     private var baudIndexNamesChannel = multiPort
 
     override fun claimAndInitialize(): DataEndpoints {
-        if (!transport.claimInterface(usbInterface)) throw IOException("Cannot claim interface ${usbInterface.id} of ${device.ids}")
-        val read = usbInterface.bulkEndpoint(UsbDirection.IN)
-        val write = usbInterface.bulkEndpoint(UsbDirection.OUT)
-        if (read == null || write == null) throw IOException("Interface ${usbInterface.id} of ${device.ids} has no bulk endpoint pair")
+        claim(usbInterface)
+        val endpoints = bulkPairOf(usbInterface)
         // The H chips (bcdDevice 7.00 FT2232H, 8.00 FT4232H, 9.00 FT232H) read the channel from the low
         // byte of SET_BAUD_RATE's wIndex and the divisor bit from the high byte, like multi-port chips.
         val descriptors = transport.rawDescriptors()
         if (descriptors != null && descriptors.size >= 14 && descriptors[13].toInt() in 7..9) baudIndexNamesChannel = true
         control(UsbRequestType.VENDOR_DEVICE_OUT, FtdiRequest.RESET, FtdiRequest.RESET_SIO, channel, null, "FTDI reset")
         control(UsbRequestType.VENDOR_DEVICE_OUT, FtdiRequest.SET_LATENCY_TIMER, FtdiRequest.LATENCY_MILLIS, channel, null, "FTDI latency timer")
-        return DataEndpoints(read, write)
+        return endpoints
     }
 
     override fun applySettings(settings: LineSettings) {

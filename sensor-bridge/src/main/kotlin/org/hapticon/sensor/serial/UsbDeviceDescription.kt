@@ -50,6 +50,9 @@ public data class UsbInterfaceDescription(
     /** The first bulk endpoint in [direction], or null. */
     public fun bulkEndpoint(direction: UsbDirection): UsbEndpointDescription? =
         endpoints.firstOrNull { it.type == UsbEndpointType.BULK && it.direction == direction }
+
+    /** Whether serial data can move here: a bulk endpoint each way. */
+    internal fun hasBulkPair(): Boolean = bulkEndpoint(UsbDirection.IN) != null && bulkEndpoint(UsbDirection.OUT) != null
 }
 
 /**

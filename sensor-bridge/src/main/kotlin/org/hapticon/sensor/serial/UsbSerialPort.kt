@@ -50,6 +50,19 @@ public abstract class UsbSerialPort internal constructor(
     /** Claims interfaces and initialises the chip; returns the data endpoints. */
     internal abstract fun claimAndInitialize(): DataEndpoints
 
+    /** Claims [usbInterface] for this port, or throws [IOException] naming it. */
+    internal fun claim(usbInterface: UsbInterfaceDescription) {
+        if (!transport.claimInterface(usbInterface)) throw IOException("Cannot claim interface ${usbInterface.id} of ${device.ids}")
+    }
+
+    /** The bulk IN/OUT endpoints of [usbInterface], or [IOException] when it lacks either. */
+    internal fun bulkPairOf(usbInterface: UsbInterfaceDescription): DataEndpoints {
+        val read = usbInterface.bulkEndpoint(UsbDirection.IN)
+        val write = usbInterface.bulkEndpoint(UsbDirection.OUT)
+        if (read == null || write == null) throw IOException("Interface ${usbInterface.id} of ${device.ids} has no bulk endpoint pair")
+        return DataEndpoints(read, write)
+    }
+
     /** Checks [settings] against the chip (throwing [UnsupportedSettingException]) and sends them. */
     internal abstract fun applySettings(settings: LineSettings)
 
