@@ -21,6 +21,7 @@ import java.security.MessageDigest
 import org.hapticon.core.HapticIcon
 import org.hapticon.core.io.IconJson
 import org.hapticon.core.io.WavWriter
+import org.hapticon.core.render.Fidelity
 import org.hapticon.core.render.PcmRenderer
 
 /**
@@ -65,6 +66,15 @@ class IconAudioCache(
         evict()
         return file
     }
+
+    // Measuring renders the whole icon again in double precision: once per icon, not once per press.
+    private val fidelities = object : LinkedHashMap<String, Fidelity>(16, 0.75f, true) {
+        override fun removeEldestEntry(eldest: MutableMap.MutableEntry<String, Fidelity>): Boolean = size > maxFiles
+    }
+
+    /** How faithfully the PCM16 file of [icon] carries it; measured on first use and remembered. */
+    @Synchronized
+    fun fidelityOf(icon: HapticIcon): Fidelity = fidelities.getOrPut(keyOf(icon)) { PcmRenderer(icon, sampleRate).fidelity() }
 
     private fun keyOf(icon: HapticIcon): String {
         val digest = MessageDigest.getInstance("SHA-256").digest("$sampleRate:${IconJson.encode(icon)}".toByteArray())

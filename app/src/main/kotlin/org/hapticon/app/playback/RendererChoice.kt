@@ -195,8 +195,8 @@ class AdaptiveHapticPlayer(
         }
         vibrator.cancel()
         output.play(file)
-        val renderer = PcmRenderer(icon, cache.sampleRate)
-        return Playback.Playing(Renderer.AUDIO_COUPLED, Math.round(renderer.sampleCount * 1000.0 / cache.sampleRate), renderer.fidelity())
+        val samples = PcmRenderer(icon, cache.sampleRate).sampleCount
+        return Playback.Playing(Renderer.AUDIO_COUPLED, Math.round(samples * 1000.0 / cache.sampleRate), cache.fidelityOf(icon))
     }
 }
 

@@ -78,14 +78,17 @@ class AudioCoupledHapticsTest {
     @Test
     fun sameIconTwice_rendersOnceAndPlaysTheCachedFile() {
         val player = player()
-        player.play(HapticIcon.HIT)
+        val firstPlayback = player.play(HapticIcon.HIT) as Playback.Playing
         val first = audio.played.single()
         val written = first.lastModified()
         first.setLastModified(written - 10_000)
 
-        player.play(HapticIcon.HIT)
+        val secondPlayback = player.play(HapticIcon.HIT) as Playback.Playing
 
         assertEquals(listOf(first, first), audio.played)
+        // Measured once: the second press reuses the first press's fidelity.
+        assertEquals(PcmRenderer(HapticIcon.HIT, 48_000).fidelity(), firstPlayback.fidelity)
+        assertSame(firstPlayback.fidelity, secondPlayback.fidelity)
         assertEquals(1, first.parentFile!!.listFiles()!!.count { it.name.endsWith(".wav") })
     }
 
