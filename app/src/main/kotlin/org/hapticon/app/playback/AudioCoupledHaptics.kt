@@ -3,16 +3,12 @@ package org.hapticon.app.playback
 import android.content.Context
 import android.media.AudioManager
 import android.media.audiofx.HapticGenerator
-import android.net.Uri
 import android.os.Build
-import android.os.Handler
-import android.os.Looper
 import android.util.Log
 import androidx.annotation.OptIn
 import androidx.annotation.RequiresApi
 import androidx.media3.common.AudioAttributes
 import androidx.media3.common.C
-import androidx.media3.common.MediaItem
 import androidx.media3.common.util.UnstableApi
 import androidx.media3.exoplayer.ExoPlayer
 import java.io.File
@@ -100,29 +96,18 @@ class IconAudioCache(
  */
 @OptIn(UnstableApi::class)
 class Media3AudioCoupledOutput(private val context: Context) : AudioCoupledOutput {
-    private val main = Handler(Looper.getMainLooper())
-    private var player: ExoPlayer? = null
     private var generator: Any? = null // HapticGenerator on API 31+; Any keeps the class loadable below.
+    private val files = MainThreadFilePlayer(context, ::configure)
 
     override val isAvailable: Boolean
         get() = Build.VERSION.SDK_INT >= 31 && hapticsAvailable()
 
-    override fun play(wav: File) {
-        onMain {
-            val exo = player ?: newPlayer().also { player = it }
-            exo.setMediaItem(MediaItem.fromUri(Uri.fromFile(wav)))
-            exo.prepare()
-            exo.play()
-        }
-    }
+    override fun play(wav: File) = files.play(wav)
 
-    override fun stop() {
-        onMain { player?.stop() }
-    }
+    override fun stop() = files.stop()
 
     /** The file playing or last played, for the screens' diagnostics and tests; main thread only. */
-    val currentFile: File?
-        get() = player?.currentMediaItem?.localConfiguration?.uri?.path?.let(::File)
+    val currentFile: File? get() = files.currentFile
 
     /** The audio attributes the player uses: sonification with haptic channels unmuted. */
     val audioAttributes: AudioAttributes = AudioAttributes.Builder()
@@ -131,8 +116,7 @@ class Media3AudioCoupledOutput(private val context: Context) : AudioCoupledOutpu
         .setHapticChannelsMuted(false)
         .build()
 
-    private fun newPlayer(): ExoPlayer {
-        val exo = ExoPlayer.Builder(context).build()
+    private fun configure(exo: ExoPlayer) {
         exo.setAudioAttributes(audioAttributes, false)
         if (Build.VERSION.SDK_INT >= 31) {
             val audio = context.getSystemService(AudioManager::class.java)
@@ -140,7 +124,6 @@ class Media3AudioCoupledOutput(private val context: Context) : AudioCoupledOutpu
             exo.audioSessionId = session
             generator = attachGenerator(session)
         }
-        return exo
     }
 
     @RequiresApi(31)
@@ -154,10 +137,6 @@ class Media3AudioCoupledOutput(private val context: Context) : AudioCoupledOutpu
         // Without the generator the audio still plays; the vibrator path is the caller's fallback next time.
         Log.w(TAG, "no haptic generator on session $session: ${e.message}")
         null
-    }
-
-    private fun onMain(block: () -> Unit) {
-        if (Looper.myLooper() == Looper.getMainLooper()) block() else main.post(block)
     }
 
     private companion object {

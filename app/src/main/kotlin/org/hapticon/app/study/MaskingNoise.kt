@@ -3,16 +3,13 @@ package org.hapticon.app.study
 import android.content.Context
 import android.media.AudioDeviceInfo
 import android.media.AudioManager
-import android.net.Uri
-import android.os.Handler
-import android.os.Looper
 import androidx.annotation.OptIn
 import androidx.media3.common.AudioAttributes
 import androidx.media3.common.C
-import androidx.media3.common.MediaItem
 import androidx.media3.common.Player
 import androidx.media3.common.util.UnstableApi
 import androidx.media3.exoplayer.ExoPlayer
+import org.hapticon.app.playback.MainThreadFilePlayer
 import java.io.File
 import java.io.IOException
 import kotlin.math.pow
@@ -83,9 +80,12 @@ interface MaskingNoisePlayer {
  * time (about 0.2 s) happens on the caller's thread.
  */
 @OptIn(UnstableApi::class)
-class Media3MaskingNoisePlayer(private val context: Context, private val files: NoiseFiles) : MaskingNoisePlayer {
-    private val main = Handler(Looper.getMainLooper())
-    private var player: ExoPlayer? = null
+class Media3MaskingNoisePlayer(context: Context, private val files: NoiseFiles) : MaskingNoisePlayer {
+    private val output = MainThreadFilePlayer(context) {
+        // Media usage, no audio focus: the noise must not duck or pause for the icon playback.
+        it.setAudioAttributes(AudioAttributes.Builder().setUsage(C.USAGE_MEDIA).setContentType(C.AUDIO_CONTENT_TYPE_MUSIC).build(), false)
+    }
+    private val player: ExoPlayer? get() = output.player
 
     override fun start(setting: MaskingSetting) {
         if (!setting.isOn) return stop()
@@ -95,26 +95,16 @@ class Media3MaskingNoisePlayer(private val context: Context, private val files: 
             android.util.Log.w(TAG, "no masking noise: ${e.message}")
             return
         }
-        onMain {
-            val exo = player ?: ExoPlayer.Builder(context).build().also {
-                // Media usage, no audio focus: the noise must not duck or pause for the icon playback.
-                it.setAudioAttributes(AudioAttributes.Builder().setUsage(C.USAGE_MEDIA).setContentType(C.AUDIO_CONTENT_TYPE_MUSIC).build(), false)
-                player = it
-            }
-            exo.setMediaItem(MediaItem.fromUri(Uri.fromFile(file)))
+        output.play(file) { exo ->
             exo.repeatMode = Player.REPEAT_MODE_ONE
             exo.volume = NoiseFiles.volumeFor(setting.levelDbfs)
-            exo.prepare()
-            exo.play()
         }
     }
 
-    override fun stop() {
-        onMain { player?.stop() }
-    }
+    override fun stop() = output.stop()
 
     /** The file playing or last played; main thread only (diagnostics and tests). */
-    val currentFile: File? get() = player?.currentMediaItem?.localConfiguration?.uri?.path?.let(::File)
+    val currentFile: File? get() = output.currentFile
 
     /** The repeat mode; main thread only. */
     val repeatMode: Int get() = player?.repeatMode ?: Player.REPEAT_MODE_OFF
@@ -126,16 +116,7 @@ class Media3MaskingNoisePlayer(private val context: Context, private val files: 
     val isPlayRequested: Boolean get() = player?.let { it.playWhenReady && it.playbackState != Player.STATE_IDLE } ?: false
 
     /** Releases the player. */
-    fun release() {
-        onMain {
-            player?.release()
-            player = null
-        }
-    }
-
-    private fun onMain(block: () -> Unit) {
-        if (Looper.myLooper() == Looper.getMainLooper()) block() else main.post(block)
-    }
+    fun release() = output.release()
 
     private companion object {
         const val TAG = "MaskingNoise"
