@@ -54,11 +54,7 @@ class IconAudioCache(
             file.setLastModified(System.currentTimeMillis())
             return file
         }
-        if (!directory.isDirectory && !directory.mkdirs()) throw IOException("cannot create $directory")
-        // Written beside and renamed, so a half-written file is never played.
-        val partial = File(directory, "${file.name}.part")
-        partial.outputStream().buffered().use { WavWriter.write(PcmRenderer(icon, sampleRate).stream(), it) }
-        if (!partial.renameTo(file)) throw IOException("cannot rename $partial")
+        writeWholeFile(file) { WavWriter.write(PcmRenderer(icon, sampleRate).stream(), it) }
         evict()
         return file
     }

@@ -10,6 +10,7 @@ import androidx.media3.common.Player
 import androidx.media3.common.util.UnstableApi
 import androidx.media3.exoplayer.ExoPlayer
 import org.hapticon.app.playback.MainThreadFilePlayer
+import org.hapticon.app.playback.writeWholeFile
 import java.io.File
 import java.io.IOException
 import kotlin.math.pow
@@ -26,12 +27,8 @@ class NoiseFiles(private val directory: File, private val seed: Long = SEED) {
         require(color != NoiseColor.OFF) { "no file for OFF" }
         val file = File(directory, "${color.name.lowercase()}-$seed-${SAMPLE_RATE}.wav")
         if (file.isFile) return file
-        if (!directory.isDirectory && !directory.mkdirs()) throw IOException("cannot create $directory")
         val samples = NoiseGenerator.render(color, SAMPLE_RATE, SAMPLE_RATE * SECONDS, seed, RENDER_LEVEL_DBFS)
-        // Written beside and renamed, so a half-written file is never played.
-        val partial = File(directory, "${file.name}.part")
-        partial.outputStream().buffered().use { WavWriter.write(NoiseGenerator.stream(samples, SAMPLE_RATE), it) }
-        if (!partial.renameTo(file)) throw IOException("cannot rename $partial")
+        writeWholeFile(file) { WavWriter.write(NoiseGenerator.stream(samples, SAMPLE_RATE), it) }
         return file
     }
 
