@@ -42,12 +42,22 @@ public object Json {
      * Throws [JsonException] when the bytes are not valid UTF-8 (offset = byte index), when the text is
      * malformed or exceeds a limit (offset = character index); [IllegalArgumentException] for bad limits.
      */
-    public fun decodeUtf8(bytes: ByteArray, maxLength: Int = DEFAULT_MAX_LENGTH, maxDepth: Int = DEFAULT_MAX_DEPTH): JsonValue {
+    public fun decodeUtf8(bytes: ByteArray, maxLength: Int = DEFAULT_MAX_LENGTH, maxDepth: Int = DEFAULT_MAX_DEPTH): JsonValue =
+        decodeUtf8(bytes, maxLength, maxDepth, allowTrailingCommas = false)
+
+    /**
+     * Like [decodeUtf8], but also accepts a comma before a closing `]` or `}` — a JSON5 liberty found in
+     * files such as Apple's own AHAP samples. Everything else stays strict.
+     */
+    public fun decodeUtf8AllowingTrailingCommas(bytes: ByteArray, maxLength: Int = DEFAULT_MAX_LENGTH): JsonValue =
+        decodeUtf8(bytes, maxLength, DEFAULT_MAX_DEPTH, allowTrailingCommas = true)
+
+    private fun decodeUtf8(bytes: ByteArray, maxLength: Int, maxDepth: Int, allowTrailingCommas: Boolean): JsonValue {
         checkLimits(maxLength, maxDepth)
         if (bytes.size > maxLength) {
             throw JsonException("input of ${bytes.size} bytes exceeds the limit of $maxLength", maxLength)
         }
-        return JsonReader(decodeUtf8Strictly(bytes), maxDepth).readDocument()
+        return JsonReader(decodeUtf8Strictly(bytes), maxDepth, allowTrailingCommas).readDocument()
     }
 
     /**

@@ -8,7 +8,12 @@ import java.util.Locale
  * Recursion is bounded by [maxDepth] (at most [Json.MAX_DEPTH_LIMIT]), so hostile nesting fails with a
  * [JsonException] instead of a StackOverflowError. Every loop advances [pos], so it cannot hang.
  */
-internal class JsonReader(private val text: String, private val maxDepth: Int) {
+internal class JsonReader(
+    private val text: String,
+    private val maxDepth: Int,
+    // Apple's own AHAP samples end lists with a comma; RFC 8259 does not allow it, so only callers that read such files opt in.
+    private val allowTrailingCommas: Boolean = false,
+) {
     private var pos = 0
 
     fun readDocument(): JsonValue {
@@ -55,7 +60,14 @@ internal class JsonReader(private val text: String, private val maxDepth: Int) {
             if (members.put(name, readValue(depth)) != null) fail("duplicate member name ${snippet(JsonString(name))}", nameOffset)
             skipWhitespace()
             when (peek()) {
-                ',' -> pos++
+                ',' -> {
+                    pos++
+                    skipWhitespace()
+                    if (allowTrailingCommas && peek() == '}') {
+                        pos++
+                        return JsonObject(members, owned = true)
+                    }
+                }
                 '}' -> {
                     pos++
                     return JsonObject(members, owned = true)
@@ -79,7 +91,14 @@ internal class JsonReader(private val text: String, private val maxDepth: Int) {
             elements.add(readValue(depth))
             skipWhitespace()
             when (peek()) {
-                ',' -> pos++
+                ',' -> {
+                    pos++
+                    skipWhitespace()
+                    if (allowTrailingCommas && peek() == ']') {
+                        pos++
+                        return JsonArray(elements, owned = true)
+                    }
+                }
                 ']' -> {
                     pos++
                     return JsonArray(elements, owned = true)

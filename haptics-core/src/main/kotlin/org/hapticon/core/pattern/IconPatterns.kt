@@ -1,0 +1,130 @@
+package org.hapticon.core.pattern
+
+import org.hapticon.core.HapticIcon
+import kotlin.math.abs
+
+/**
+ * How overlapping repetitions of an icon combine when it becomes a [HapticPattern].
+ */
+public enum class Overlap {
+    /**
+     * Overlapping envelopes add: Processing Sound 2.0.1–2.3.1 `Env.play()` connects a new envelope reader to
+     * the oscillator's amplitude port without disconnecting the running one, and JSyn's input port sums every
+     * connected output (see docs/envelope-models.md). What the study's participants felt.
+     */
+    SUM,
+
+    /** The louder envelope wins: the paper's trapezoids drawn over each other. */
+    MAX,
+}
+
+/**
+ * This icon as a pattern: a constant carrier at the icon's note and an amplitude curve with the corners of
+ * every repetition's trapezoid (attack from 0 to level, sustain, release to 0), overlapping repetitions
+ * combined by [overlap], summed values capped at 1 (the icon's own amplitude limit).
+ *
+ * The curve is exact in continuous time: between consecutive corners every repetition is a straight line, so
+ * their sum is one; for [Overlap.MAX] the crossing points of the lines are added as corners. Sample-level rules
+ * of the Processing model (phase carry, one-sample minimum) belong to the PCM renderer, not to the pattern.
+ */
+public fun HapticIcon.toPattern(overlap: Overlap = Overlap.SUM): HapticPattern {
+    val starts = DoubleArray(count) { it * period }
+    val corners = sortedSetOf<Double>()
+    for (start in starts) {
+        corners += start
+        corners += start + attack
+        corners += start + attack + sustain
+        corners += start + envelopeDuration
+    }
+    val times = corners.toDoubleArray()
+    val combine: (DoubleArray) -> Double = when (overlap) {
+        Overlap.SUM -> { values -> values.sum() }
+        Overlap.MAX -> { values -> values.max() }
+    }
+    val keys = ArrayList<AmplitudeKey>(2 * times.size)
+    for (i in times.indices) {
+        val t = times[i]
+        // A zero-length attack or release is a step: the value just before and just after the corner differ.
+        val before = combine(DoubleArray(count) { valueBefore(t, starts[it]) })
+        val after = combine(DoubleArray(count) { valueAfter(t, starts[it]) })
+        // (Rounding in the corner arithmetic leaves ~1e-16 differences that are not steps.)
+        if (i > 0 && abs(before - after) > 1e-9) keys += AmplitudeKey(t, minOf(1.0, before))
+        keys += AmplitudeKey(t, minOf(1.0, after))
+        if (overlap == Overlap.MAX && i < times.lastIndex) {
+            // Between corners every repetition is a straight line; the louder of two swaps where they cross.
+            val next = times[i + 1]
+            val from = DoubleArray(count) { valueAfter(t, starts[it]) }
+            val to = DoubleArray(count) { valueBefore(next, starts[it]) }
+            for (crossing in crossingsOfMax(t, next, from, to)) {
+                keys += AmplitudeKey(crossing, minOf(1.0, lineMax(crossing, t, next, from, to)))
+            }
+        }
+    }
+    return HapticPattern(name, dropCollinear(keys), listOf(FrequencyKey(0.0, frequency)))
+}
+
+// One repetition's trapezoid at absolute time t, the repetition starting at [start], as the limit from the
+// right (valueAfter) and from the left (valueBefore); they differ only at a zero-length attack or release.
+// Corners are computed exactly as toPattern computes them, so a corner time compares equal to itself.
+private fun HapticIcon.valueAfter(t: Double, start: Double): Double = when {
+    t < start -> 0.0
+    t < start + attack -> level * (t - start) / attack
+    t < start + attack + sustain -> level
+    t < start + envelopeDuration -> level * (start + envelopeDuration - t) / release
+    else -> 0.0
+}
+
+private fun HapticIcon.valueBefore(t: Double, start: Double): Double = when {
+    t <= start -> 0.0
+    t < start + attack -> level * (t - start) / attack
+    t <= start + attack + sustain -> level
+    t <= start + envelopeDuration -> level * (start + envelopeDuration - t) / release
+    else -> 0.0
+}
+
+private fun lineAt(k: Int, t: Double, a: Double, b: Double, from: DoubleArray, to: DoubleArray): Double =
+    from[k] + (to[k] - from[k]) * (t - a) / (b - a)
+
+private fun lineMax(t: Double, a: Double, b: Double, from: DoubleArray, to: DoubleArray): Double =
+    from.indices.maxOf { lineAt(it, t, a, b, from, to) }
+
+// The max of straight lines is convex, so its corners inside (a, b) are found by splitting at the crossing of
+// the lines that lead at each end until one line leads at both.
+private fun crossingsOfMax(a: Double, b: Double, from: DoubleArray, to: DoubleArray): List<Double> {
+    val out = ArrayList<Double>()
+    fun search(lo: Double, hi: Double, depth: Int) {
+        if (depth > 64 || hi - lo < 1e-12) return
+        // On a tie the steeper line leads just after lo, the shallower one just before hi.
+        val atLo = from.indices.maxWith(compareBy({ lineAt(it, lo, a, b, from, to) }, { to[it] - from[it] }))
+        val atHi = from.indices.maxWith(compareBy({ lineAt(it, hi, a, b, from, to) }, { from[it] - to[it] }))
+        if (atLo == atHi) return
+        val gapLo = lineAt(atLo, lo, a, b, from, to) - lineAt(atHi, lo, a, b, from, to)
+        val gapHi = lineAt(atLo, hi, a, b, from, to) - lineAt(atHi, hi, a, b, from, to)
+        if (gapLo == gapHi) return
+        val crossing = lo + (hi - lo) * gapLo / (gapLo - gapHi)
+        if (crossing <= lo || crossing >= hi) return
+        search(lo, crossing, depth + 1)
+        out += crossing
+        search(crossing, hi, depth + 1)
+    }
+    search(a, b, 0)
+    return out
+}
+
+// Removes corners that lie on the straight line through their neighbours (a sum of flat parts, say).
+private fun dropCollinear(keys: List<AmplitudeKey>): List<AmplitudeKey> {
+    if (keys.size < 3) return keys
+    val out = ArrayList<AmplitudeKey>(keys.size)
+    out += keys[0]
+    for (i in 1 until keys.lastIndex) {
+        val a = out.last()
+        val b = keys[i]
+        val c = keys[i + 1]
+        val inside = a.time < b.time && b.time < c.time
+        val onLine = inside &&
+            abs(a.amplitude + (c.amplitude - a.amplitude) * (b.time - a.time) / (c.time - a.time) - b.amplitude) < 1e-12
+        if (!onLine) out += b
+    }
+    out += keys.last()
+    return out
+}

@@ -1,0 +1,149 @@
+package org.hapticon.core.pattern
+
+import org.hapticon.core.io.Json
+import org.hapticon.core.io.JsonArray
+import org.hapticon.core.io.JsonNumber
+import org.hapticon.core.io.JsonObject
+import org.hapticon.core.io.JsonString
+import org.hapticon.core.io.JsonValue
+import java.util.Locale
+import kotlin.math.abs
+import kotlin.math.sqrt
+
+/**
+ * Meta Haptics Studio / Lofelt `.haptic` files, data model v1 (Lofelt/NiceVibrations
+ * `core/datamodel/src/v1.rs`): `version` {major, minor, patch}, optional `metadata`, and
+ * `signals.continuous.envelopes` with `amplitude` breakpoints {time, amplitude, emphasis?: {amplitude,
+ * frequency}} and optional `frequency` breakpoints {time, frequency}, every value normalised 0..1.
+ *
+ * Reading rejects what Meta's validator rejects, naming the file's member: an empty or single-breakpoint
+ * amplitude envelope, a zero duration, breakpoint times that go back, values outside [0, 1], an emphasis
+ * weaker than its breakpoint, and a frequency breakpoint outside the amplitude envelope's time span.
+ * Amplitude is the pattern's amplitude; a normalised frequency becomes Hz through [FrequencyMapping]; an
+ * emphasis becomes a [Transient] with intensity √(emphasis amplitude) and sharpness = emphasis frequency, as
+ * Meta's AHAP converter maps them (`core/datamodel/src/ios/v1.rs`). Without a frequency envelope the carrier
+ * sits at the middle of the range (noted).
+ *
+ * Writing puts every transient on an amplitude breakpoint (one is inserted at the curve's value if none is at
+ * that time) as its emphasis, and clips the frequency envelope to the amplitude envelope's span, noting
+ * anything it had to change.
+ */
+public object MetaHaptic {
+    /** The data-model major version this build reads and writes. */
+    public const val MAJOR_VERSION: Int = 1
+
+    /**
+     * The pattern in `.haptic` [bytes], named [name]. Throws [PatternException] naming the member
+     * (`signals.continuous.envelopes.amplitude: needs at least two breakpoints`) or
+     * [org.hapticon.core.io.JsonException] for malformed JSON.
+     */
+    public fun read(bytes: ByteArray, name: String, mapping: FrequencyMapping = FrequencyMapping.DEFAULT): PatternImport {
+        val root = Json.decodeUtf8(bytes).asObject("haptic")
+        val version = root["version"].asObject("version")
+        val major = version["major"].asNumber("version.major")
+        version["minor"].asNumber("version.minor")
+        version["patch"].asNumber("version.patch")
+        if (major != MAJOR_VERSION.toDouble()) fail("version.major", "unsupported data model version $major (this build reads $MAJOR_VERSION)")
+        val envelopesPath = "signals.continuous.envelopes"
+        val envelopes = root["signals"].asObject("signals")["continuous"].asObject("signals.continuous")["envelopes"].asObject(envelopesPath)
+        val amplitudePath = "$envelopesPath.amplitude"
+        val breakpoints = envelopes["amplitude"].asArray(amplitudePath).objects(amplitudePath)
+        if (breakpoints.isEmpty()) fail(amplitudePath, "is empty; it needs at least two breakpoints")
+        if (breakpoints.size == 1) fail(amplitudePath, "has a single breakpoint; it needs at least two")
+        val notes = ArrayList<String>()
+        val keys = ArrayList<AmplitudeKey>()
+        val taps = ArrayList<Transient>()
+        for ((path, bp) in breakpoints) {
+            val time = bp["time"].asTime("$path.time")
+            val amplitude = bp["amplitude"].asUnit("$path.amplitude")
+            if (keys.isNotEmpty() && time < keys.last().time) fail("$path.time", "must not be before the previous breakpoint (${keys.last().time} s), was $time")
+            keys += AmplitudeKey(time, amplitude)
+            bp["emphasis"]?.let { e ->
+                val emphasis = e.asObject("$path.emphasis")
+                val strength = emphasis["amplitude"].asUnit("$path.emphasis.amplitude")
+                val frequency = emphasis["frequency"].asUnit("$path.emphasis.frequency")
+                if (strength < amplitude) fail("$path.emphasis.amplitude", "must not be below the breakpoint's amplitude $amplitude, was $strength")
+                taps += Transient(time, sqrt(strength), frequency)
+            }
+        }
+        val first = keys.first().time
+        val last = keys.last().time
+        if (last <= first) fail(amplitudePath, "has zero duration (every breakpoint at $first s)")
+        val frequencyPath = "$envelopesPath.frequency"
+        val frequency = when (val f = envelopes["frequency"]) {
+            null, is org.hapticon.core.io.JsonNull -> {
+                notes += "no frequency envelope: the carrier stays at ${hz(mapping.hertzOf(0.5))}, the middle of the range"
+                listOf(FrequencyKey(0.0, mapping.hertzOf(0.5)))
+            }
+            else -> f.asArray(frequencyPath).objects(frequencyPath).map { (path, bp) ->
+                val time = bp["time"].asTime("$path.time")
+                if (time < first || time > last) fail("$path.time", "$time s lies outside the amplitude envelope ($first..$last s)")
+                FrequencyKey(time, mapping.hertzOf(bp["frequency"].asUnit("$path.frequency")))
+            }.also { list ->
+                for (i in 1 until list.size) {
+                    if (list[i].time < list[i - 1].time) fail("$frequencyPath[$i].time", "must not be before the previous breakpoint")
+                }
+                if (list.isEmpty()) notes += "empty frequency envelope: the carrier stays at the middle of the range"
+            }.ifEmpty { listOf(FrequencyKey(0.0, mapping.hertzOf(0.5))) }
+        }
+        return PatternImport(HapticPattern(name, keys, frequency, taps), notes)
+    }
+
+    /** [pattern] as `.haptic` text, with notes on what the format could not keep. */
+    public fun write(pattern: HapticPattern, mapping: FrequencyMapping = FrequencyMapping.DEFAULT): PatternExport {
+        val notes = ArrayList<String>()
+        val keys = ArrayList<AmplitudeKey>(pattern.amplitude)
+        // The format needs two breakpoints spanning a positive duration, and every emphasis on a breakpoint.
+        val end = maxOf(pattern.duration, keys.lastOrNull()?.time ?: 0.0)
+        if (keys.isEmpty() || keys.last().time < end) {
+            if (keys.isNotEmpty() && keys.last().amplitude != 0.0) keys += AmplitudeKey(keys.last().time, 0.0)
+            if (keys.isEmpty()) keys += AmplitudeKey(0.0, 0.0)
+            keys += AmplitudeKey(end, 0.0)
+        }
+        val emphasis = HashMap<Int, Transient>()
+        for (tap in pattern.transients) {
+            var index = keys.indexOfFirst { abs(it.time - tap.time) < 1e-9 }
+            if (index < 0) {
+                index = keys.indexOfFirst { it.time > tap.time }.let { if (it < 0) keys.size else it }
+                keys.add(index, AmplitudeKey(tap.time, pattern.amplitudeAt(tap.time)))
+                emphasis.keys.filter { it >= index }.sortedDescending().forEach { emphasis[it + 1] = emphasis.remove(it)!! }
+            }
+            val earlier = emphasis[index]
+            if (earlier != null) {
+                notes += "two transients at ${seconds(tap.time)}: the stronger one kept"
+                if (earlier.intensity >= tap.intensity) continue
+            }
+            emphasis[index] = tap
+        }
+        val amplitude = keys.mapIndexed { i, key ->
+            val members = linkedMapOf<String, JsonValue>("time" to JsonNumber(key.time), "amplitude" to JsonNumber(key.amplitude))
+            emphasis[i]?.let { tap ->
+                var strength = tap.intensity * tap.intensity
+                if (strength < key.amplitude) {
+                    notes += "transient at ${seconds(tap.time)} raised to the breakpoint's amplitude ${"%.3f".format(Locale.ROOT, key.amplitude)}: an emphasis cannot be weaker"
+                    strength = key.amplitude
+                }
+                members["emphasis"] = JsonObject(linkedMapOf("amplitude" to JsonNumber(strength), "frequency" to JsonNumber(tap.sharpness)))
+            }
+            JsonObject(members)
+        }
+        val span = keys.first().time..keys.last().time
+        val inside = pattern.frequency.filter { it.time in span }
+        if (inside.size < pattern.frequency.size) notes += "${pattern.frequency.size - inside.size} frequency keys outside the amplitude envelope dropped"
+        val withStart = listOf(FrequencyKey(span.start, pattern.frequencyAt(span.start))).filter { inside.firstOrNull()?.time != span.start } + inside
+        // `.haptic` interpolates the normalised frequency, which is logarithmic in Hz: add points where that strays.
+        val frequency = densify(withStart.map { it.time to it.hertz.coerceIn(mapping.minHz, mapping.maxHz) }, mapping::normalizedOf, mapping::hertzOf) { it * 0.004 }
+            .map { (t, x) -> JsonObject(linkedMapOf("time" to JsonNumber(t), "frequency" to JsonNumber(x))) }
+        val outside = pattern.frequency.count { it.hertz !in mapping }
+        if (outside > 0) notes += "$outside frequency keys outside ${hz(mapping.minHz)}..${hz(mapping.maxHz)} clamped to the range"
+        val root = JsonObject(linkedMapOf(
+            "version" to JsonObject(linkedMapOf("major" to JsonNumber(MAJOR_VERSION), "minor" to JsonNumber(0), "patch" to JsonNumber(0))),
+            "metadata" to JsonObject(linkedMapOf("editor" to JsonString("Hapticon"), "description" to JsonString(pattern.name))),
+            "signals" to JsonObject(linkedMapOf("continuous" to JsonObject(linkedMapOf("envelopes" to JsonObject(linkedMapOf(
+                "amplitude" to JsonArray(amplitude),
+                "frequency" to JsonArray(frequency),
+            )))))),
+        ))
+        return PatternExport(Json.encode(root, "  ") + "\n", notes)
+    }
+}
