@@ -77,6 +77,7 @@ private fun dispatch(args: List<String>, console: Console) {
     when (command) {
         "icons" -> runIcons(rest, console)
         "render" -> runRender(rest, console)
+        "convert" -> runConvert(rest, console)
         "plot" -> runPlot(rest, console)
         "bench" -> runBench(rest, console)
         "demo" -> runDemo(rest, console)

@@ -5,10 +5,10 @@ import org.hapticon.core.render.EnvelopeModel
 import org.hapticon.core.render.RenderMode
 import java.io.File
 
-/** `hapticon render ICON --out FILE.wav [--rate HZ] [--format f32|s16] [--model paper|processing] [--mode exact|fast]`. */
+/** `hapticon render ICON|PATTERN --out FILE.wav [--rate HZ] [--format f32|s16] [--model paper|processing] [--mode exact|fast]`. */
 fun runRender(args: List<String>, console: Console) {
     val arguments = Arguments.parse("render", args, valueOptions = setOf("out", "rate", "format", "model", "mode"))
-    val spec = arguments.single("an ICON (a preset name or an icon JSON file)")
+    val spec = arguments.single("an ICON (a preset name, an icon or pattern JSON file, .ahap or .haptic)")
     val settings = AudioSettings(
         sampleRate = arguments.int("rate", DEFAULT_SAMPLE_RATE),
         encoding = arguments.choice("format", FORMAT_CHOICES, WavEncoding.FLOAT32),
@@ -16,6 +16,13 @@ fun runRender(args: List<String>, console: Console) {
         mode = arguments.choice("mode", MODE_CHOICES, RenderMode.EXACT),
     )
     val file = File(arguments.required("out"))
+    if (PatternSource.isPattern(spec)) {
+        // A pattern has no envelope model or render mode: its curves are sampled as they are.
+        val imported = PatternSource.load(spec)
+        imported.notes.forEach { console.err.println("hapticon: note: $it") }
+        console.out.println(writeWav(imported.pattern, file, settings.sampleRate, settings.encoding))
+        return
+    }
     val icon = IconSource.load(spec)
     console.out.println(WavExport.write(icon, settings, file))
 }

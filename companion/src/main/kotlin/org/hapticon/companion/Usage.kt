@@ -9,7 +9,13 @@ val USAGE: String = """
     |      Print the four presets (stroke, hit, knock, hug) as a JSON array of icon objects.
     |  hapticon render ICON --out FILE.wav [--rate HZ] [--format f32|s16]
     |                       [--model paper|processing] [--mode exact|fast]
-    |      Render ICON to a mono WAV file, streaming block by block.
+    |      Render ICON to a mono WAV file, streaming block by block. ICON may also be a pattern file
+    |      (.ahap, .haptic, or a hapticon.pattern .json), rendered from its curves (docs/patterns.md).
+    |  hapticon convert IN OUT [--range MIN_HZ:MAX_HZ] [--rate HZ] [--format f32|s16]
+    |      Convert between a preset or icon/pattern .json, Apple .ahap and Meta .haptic (formats from the
+    |      extensions; OUT may also be .wav). What the target format cannot keep is printed as notes on
+    |      stderr. --range is the actuator's frequency range for sharpness and normalised frequency
+    |      (default 65.4:523.3, MIDI notes 36-72).
     |  hapticon plot ICON --out FILE.png [--model paper|processing] [--rate HZ]
     |      Draw ICON's envelope over its carrier waveform.
     |  hapticon bench [--json] [--quick] [--messaging]

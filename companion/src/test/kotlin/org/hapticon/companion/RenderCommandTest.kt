@@ -190,7 +190,7 @@ class RenderCommandTest {
     @Test
     fun render_missingOutOrIcon_exitsTwo() {
         assertUsageError("hapticon: render needs --out", cli("render", "hug"))
-        assertUsageError("hapticon: render needs an ICON (a preset name or an icon JSON file)", cli("render", "--out", "x.wav"))
+        assertUsageError("hapticon: render needs an ICON (a preset name, an icon or pattern JSON file, .ahap or .haptic)", cli("render", "--out", "x.wav"))
     }
 
     @Test
