@@ -60,14 +60,7 @@ internal class JsonReader(
             if (members.put(name, readValue(depth)) != null) fail("duplicate member name ${snippet(JsonString(name))}", nameOffset)
             skipWhitespace()
             when (peek()) {
-                ',' -> {
-                    pos++
-                    skipWhitespace()
-                    if (allowTrailingCommas && peek() == '}') {
-                        pos++
-                        return JsonObject(members, owned = true)
-                    }
-                }
+                ',' -> if (trailingCommaBefore('}')) return JsonObject(members, owned = true)
                 '}' -> {
                     pos++
                     return JsonObject(members, owned = true)
@@ -91,14 +84,7 @@ internal class JsonReader(
             elements.add(readValue(depth))
             skipWhitespace()
             when (peek()) {
-                ',' -> {
-                    pos++
-                    skipWhitespace()
-                    if (allowTrailingCommas && peek() == ']') {
-                        pos++
-                        return JsonArray(elements, owned = true)
-                    }
-                }
+                ',' -> if (trailingCommaBefore(']')) return JsonArray(elements, owned = true)
                 ']' -> {
                     pos++
                     return JsonArray(elements, owned = true)
@@ -235,6 +221,15 @@ internal class JsonReader(
         if (!text.startsWith(literal, pos)) fail("invalid literal, expected '$literal'")
         pos += literal.length
         return value
+    }
+
+    // Consumes a ',' and, when trailing commas are allowed and [close] follows, the closer too (returns true).
+    private fun trailingCommaBefore(close: Char): Boolean {
+        pos++
+        skipWhitespace()
+        if (!allowTrailingCommas || peek() != close) return false
+        pos++
+        return true
     }
 
     private fun skipDigits() {
