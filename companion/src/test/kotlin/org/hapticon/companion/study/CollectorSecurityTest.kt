@@ -136,6 +136,28 @@ class CollectorSecurityTest {
         }
     }
 
+    /** The connection bound is a hard limit: a third client waits until one of two open connections closes. */
+    @Test fun connections_overTheLimit_waitUntilOneCloses() {
+        CollectorHarness(sqlite(), limits = CollectorLimits(maxConnections = 2, idleTimeoutMillis = 30_000)).use { h ->
+            val open = List(2) { connect(h.server.port) }
+            try {
+                Thread.sleep(200) // both accepted
+                connect(h.server.port).use { third ->
+                    third.soTimeout = 500
+                    third.getOutputStream().write("GET /health HTTP/1.1\r\nHost: 127.0.0.1\r\nConnection: close\r\n\r\n".toByteArray())
+                    val waited = runCatching { third.getInputStream().read() }
+                    assertTrue("the third connection was served while two were open: $waited", waited.exceptionOrNull() is java.net.SocketTimeoutException)
+                    open[0].close()
+                    third.soTimeout = 5_000
+                    val response = third.getInputStream().readBytes().toString(Charsets.UTF_8)
+                    assertTrue(response, response.startsWith("HTTP/1.1 200 ")) // a timed-out read consumes nothing
+                }
+            } finally {
+                open.forEach { it.close() }
+            }
+        }
+    }
+
     @Test fun upload_bodyCutShort_400_nothingStored() {
         CollectorHarness(sqlite()).use { h ->
             val body = upload.toByteArray()
