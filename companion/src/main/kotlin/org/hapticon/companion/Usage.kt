@@ -53,10 +53,16 @@ val USAGE: String = """
     |      descriptives per task and icon, paired t and/or Wilcoxon signed-rank tests for every icon pair
     |      of a task (--holm adds Holm-adjusted p); Markdown to stdout, CSV/Markdown tables and one box
     |      plot per task into DIR (default ./analysis).
-    |  hapticon collect [--port N] [--host H] [--db sqlite:PATH|postgresql://HOST/DB?user=..] [--token-file F]
+    |  hapticon collect [--port N] [--host H] [--db sqlite:PATH|postgresql://HOST/DB?user=..] [--allow-anonymous]
     |      Study collector: an HTTP service the app uploads results to (POST /v1/results, text/csv with
-    |      X-Study-Id); GET /v1/studies/ID/results.csv, GET /health. Defaults: 127.0.0.1:8080,
+    |      X-Study-Id); GET /v1/studies/ID/results.csv, GET /health. Every /v1 request needs a bearer token
+    |      of its study and role; --allow-anonymous turns that off (loudly). Defaults: 127.0.0.1:8080,
     |      sqlite:hapticon-results.db. Runs until Ctrl-C.
+    |  hapticon collect token add --study ID --role upload|download [--db DB]
+    |  hapticon collect token list [--db DB]
+    |  hapticon collect token revoke TOKEN_ID [--db DB]
+    |      Collector tokens: add prints a new token once (only its SHA-256 is stored); an upload token
+    |      cannot download, and a token of one study cannot touch another. See docs/security.md.
     |  hapticon classify-bench [--people N] [--seed S] [--out DIR] [--quick]
     |      Gesture recognition on simulated people, leave-one-participant-out: accuracy (mean ± SD), live
     |      decision latency (ms) and compute per window (µs) for windows 0.25-2 s × 10/30/100 trees, and a

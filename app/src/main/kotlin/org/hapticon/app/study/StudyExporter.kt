@@ -5,6 +5,7 @@ import android.content.Intent
 import androidx.core.content.FileProvider
 import java.io.File
 import java.io.IOException
+import java.net.HttpRetryException
 import java.net.HttpURLConnection
 import java.net.URI
 import kotlinx.coroutines.Dispatchers
@@ -92,8 +93,10 @@ fun interface ResultUploader {
 
 /**
  * [ResultUploader] for `hapticon collect`: `POST {url}/v1/results` with the long-format CSV as `text/csv`, the study
- * id in `X-Study-Id` and an optional bearer token; 200 is success, 400 carries `{"error": "..."}`. Runs on
- * Dispatchers.IO with [connectTimeoutMillis] and [readTimeoutMillis].
+ * id in `X-Study-Id` and the study's upload token as `Authorization: Bearer` (made with `hapticon collect token add
+ * --study ID --role upload`; sent only when set, for a collector run with `--allow-anonymous`). 200 is success;
+ * 400 carries `{"error": "..."}`; 401 (no or unknown token) and 403 (a download token, or another study's) get a
+ * message saying which token to enter. Runs on Dispatchers.IO with [connectTimeoutMillis] and [readTimeoutMillis].
  */
 class HttpResultUploader(
     private val connectTimeoutMillis: Int = 10_000,
@@ -118,10 +121,21 @@ class HttpResultUploader(
                 val body = csv.toByteArray(Charsets.UTF_8)
                 connection.setFixedLengthStreamingMode(body.size)
                 connection.outputStream.use { it.write(body) }
-                val status = connection.responseCode
-                val text = (if (status < 400) connection.inputStream else connection.errorStream)?.use { it.readBytes().decodeToString() }.orEmpty()
+                val status = try {
+                    connection.responseCode
+                } catch (e: HttpRetryException) {
+                    // The JDK's HttpURLConnection (Robolectric, desktop) cannot re-send a streamed body for
+                    // authentication and throws on 401 instead of returning it; Android's returns 401.
+                    e.responseCode()
+                }
+                val text = if (status == 200) "" else runCatching { connection.errorStream?.use { it.readBytes().decodeToString() } }.getOrNull().orEmpty()
                 when (status) {
                     200 -> UploadResult.Uploaded("uploaded to ${endpoint.host}")
+                    401 -> UploadResult.Failed(
+                        if (token.isBlank()) "the collector needs a token: enter the upload token of study '$studyId' and upload again"
+                        else "the collector does not know this token (revoked, mistyped or from another collector): enter the upload token of study '$studyId' and upload again",
+                    )
+                    403 -> UploadResult.Failed("the collector refused this token (${errorOf(text)}): enter the upload token of study '$studyId' and upload again")
                     else -> UploadResult.Failed("collector answered $status: ${errorOf(text)}")
                 }
             } finally {

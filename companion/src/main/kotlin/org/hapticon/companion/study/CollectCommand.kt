@@ -3,7 +3,6 @@ package org.hapticon.companion.study
 import org.hapticon.companion.Arguments
 import org.hapticon.companion.Console
 import org.hapticon.companion.UsageException
-import java.io.File
 import java.io.IOException
 import java.sql.SQLException
 
@@ -14,9 +13,10 @@ const val DEFAULT_COLLECT_PORT: Int = 8080
 const val DEFAULT_COLLECT_DB: String = "sqlite:hapticon-results.db"
 
 /**
- * `hapticon collect [--port N] [--host H] [--db sqlite:PATH|postgresql://HOST/DB?user=..] [--token-file F]`:
+ * `hapticon collect [--port N] [--host H] [--db sqlite:PATH|postgresql://HOST/DB?user=..] [--allow-anonymous]`:
  * runs the [CollectorServer] in the foreground until the process is stopped; [waitForStop] blocks until
  * then (tests pass their own and get the started server through [started]).
+ * `hapticon collect token add|list|revoke …` manages the tokens in the same database ([runToken]).
  */
 fun runCollect(
     args: List<String>,
@@ -24,32 +24,30 @@ fun runCollect(
     started: (CollectorServer) -> Unit = {},
     waitForStop: () -> Unit = { Thread.currentThread().join() },
 ) {
-    val arguments = Arguments.parse("collect", args, valueOptions = setOf("port", "host", "db", "token-file"))
+    if (args.firstOrNull() == "token") return runToken(args.drop(1), console)
+    val arguments = Arguments.parse("collect", args, valueOptions = setOf("port", "host", "db"), flagOptions = setOf("allow-anonymous"))
     arguments.requireNoPositionals()
     val port = arguments.int("port", DEFAULT_COLLECT_PORT)
     if (port !in 0..65_535) throw UsageException("--port must be in 0..65535, got $port")
     val host = arguments.value("host") ?: "127.0.0.1"
     val db = arguments.value("db") ?: DEFAULT_COLLECT_DB
-    val token = arguments.value("token-file")?.let { readToken(it) }
-    val jdbcUrl = try {
-        ResultStore.jdbcUrl(db)
-    } catch (e: IllegalArgumentException) {
-        throw UsageException(e.message.orEmpty())
-    }
-    val store = try {
-        ResultStore(jdbcUrl)
-    } catch (e: SQLException) {
-        throw UsageException("cannot open database $db: ${e.message?.lineSequence()?.firstOrNull()}")
-    }
-    val server = try {
-        CollectorServer(store, host, port, token)
+    val store = openStore(db)
+    val tokens = openTokens(store, db)
+    val anonymous = arguments.flag("allow-anonymous")
+    val server = CollectorServer(store, if (anonymous) CollectorAccess.Anonymous else CollectorAccess.Tokens(tokens), host, port)
+    try {
+        server.start()
     } catch (e: IOException) {
         throw UsageException("cannot listen on $host:$port: ${e.message}")
     }
-    server.start()
     val hook = Thread { server.stop() }
     Runtime.getRuntime().addShutdownHook(hook)
-    val auth = if (token == null) "no token" else "bearer token required"
+    if (anonymous) {
+        // Loud on purpose: this mode lets anyone who reaches the port read and fill every study.
+        console.err.println("collect: WARNING: --allow-anonymous: NO AUTHENTICATION. Anyone who can reach $host:${server.port} can upload to and download EVERY study.")
+        console.err.flush()
+    }
+    val auth = if (anonymous) "anonymous access" else tokenSummary(tokens)
     console.out.println("collect: listening on http://$host:${server.port} (${dbLabel(db)}, $auth); Ctrl-C stops it")
     console.out.flush()
     try {
@@ -61,18 +59,68 @@ fun runCollect(
     }
 }
 
+/**
+ * `hapticon collect token add --study ID --role upload|download [--db DB]` prints a new token (once: only
+ * its hash is stored); `token list [--db DB]` prints id, study, role and creation time; `token revoke ID
+ * [--db DB]` deletes one, effective on the next request.
+ */
+private fun runToken(args: List<String>, console: Console) {
+    val action = args.firstOrNull() ?: throw UsageException("collect token needs add, list or revoke")
+    val rest = args.drop(1)
+    when (action) {
+        "add" -> {
+            val arguments = Arguments.parse("collect token add", rest, valueOptions = setOf("db", "study", "role"))
+            arguments.requireNoPositionals()
+            val study = arguments.required("study")
+            val role = arguments.required("role").let { TokenRole.of(it) ?: throw UsageException("--role must be upload or download, got '$it'") }
+            if (!ResultRows.STUDY_ID.matches(study)) throw UsageException("--study must be 1-64 letters, digits, '.', '_' or '-', got '$study'")
+            val db = arguments.value("db") ?: DEFAULT_COLLECT_DB
+            val issued = openTokens(openStore(db), db).add(study, role)
+            console.out.println(issued.token)
+            console.err.println("collect: ${role.word} token ${issued.info.id} for study '$study' (shown once; only its SHA-256 is stored)")
+        }
+        "list" -> {
+            val arguments = Arguments.parse("collect token list", rest, valueOptions = setOf("db"))
+            arguments.requireNoPositionals()
+            val db = arguments.value("db") ?: DEFAULT_COLLECT_DB
+            console.out.println("id,study_id,role,created_at")
+            for (t in openTokens(openStore(db), db).list()) console.out.println("${t.id},${t.studyId},${t.role.word},${t.createdAt}")
+        }
+        "revoke" -> {
+            val arguments = Arguments.parse("collect token revoke", rest, valueOptions = setOf("db"))
+            val id = arguments.single("a token id (see 'hapticon collect token list')")
+            val db = arguments.value("db") ?: DEFAULT_COLLECT_DB
+            if (!openTokens(openStore(db), db).revoke(id)) throw UsageException("no token with id '$id'")
+            console.out.println("collect: revoked token $id")
+        }
+        else -> throw UsageException("collect token needs add, list or revoke, got '$action'")
+    }
+}
+
+private fun openStore(db: String): ResultStore {
+    val jdbcUrl = try {
+        ResultStore.jdbcUrl(db)
+    } catch (e: IllegalArgumentException) {
+        throw UsageException(e.message.orEmpty())
+    }
+    return try {
+        ResultStore(jdbcUrl)
+    } catch (e: SQLException) {
+        throw UsageException("cannot open database ${dbLabel(db)}: ${e.message?.lineSequence()?.firstOrNull()}")
+    }
+}
+
+private fun openTokens(store: ResultStore, db: String): CollectorTokens = try {
+    CollectorTokens(store)
+} catch (e: SQLException) {
+    throw UsageException("cannot open the token table in ${dbLabel(db)}: ${e.message?.lineSequence()?.firstOrNull()}")
+}
+
+/** How many tokens there are, or how to make the first: without one, every /v1 request gets 401. */
+private fun tokenSummary(tokens: CollectorTokens): String {
+    val count = tokens.list().size
+    return if (count == 0) "no tokens yet: every /v1 request gets 401; add one with 'hapticon collect token add --study ID --role upload'" else "$count token${if (count == 1) "" else "s"}"
+}
+
 /** The database for the log line, without the query string that may hold a password. */
 private fun dbLabel(db: String): String = db.substringBefore('?')
-
-private fun readToken(path: String): String {
-    val file = File(path)
-    if (!file.isFile) throw UsageException("--token-file: no such file: $file")
-    val token = try {
-        file.readText(Charsets.UTF_8).trim()
-    } catch (e: IOException) {
-        throw UsageException("cannot read $file: ${e.message}")
-    }
-    if (token.isEmpty()) throw UsageException("--token-file: $file is empty")
-    if (token.any { it.isWhitespace() }) throw UsageException("--token-file: $file must hold one token without spaces")
-    return token
-}

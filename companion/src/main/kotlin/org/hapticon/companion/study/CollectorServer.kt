@@ -1,50 +1,133 @@
 package org.hapticon.companion.study
 
-import com.sun.net.httpserver.HttpExchange
-import com.sun.net.httpserver.HttpServer
+import org.eclipse.jetty.http.HttpHeader
+import org.eclipse.jetty.io.Content
+import org.eclipse.jetty.server.Handler
+import org.eclipse.jetty.server.HttpConfiguration
+import org.eclipse.jetty.server.HttpConnectionFactory
+import org.eclipse.jetty.server.NetworkConnectionLimit
+import org.eclipse.jetty.server.Request
+import org.eclipse.jetty.server.Response
+import org.eclipse.jetty.server.Server
+import org.eclipse.jetty.server.ServerConnector
+import org.eclipse.jetty.util.Callback
+import org.eclipse.jetty.util.thread.QueuedThreadPool
 import org.hapticon.core.io.Json
 import org.hapticon.core.io.JsonNumber
 import org.hapticon.core.io.JsonObject
 import org.hapticon.core.io.JsonString
 import org.hapticon.core.io.JsonValue
 import java.io.IOException
-import java.net.InetSocketAddress
+import java.nio.ByteBuffer
 import java.nio.charset.CharacterCodingException
 import java.nio.charset.CodingErrorAction
-import java.security.MessageDigest
 import java.sql.SQLException
-import java.util.concurrent.Executors
+import java.util.concurrent.CompletionException
+import java.util.concurrent.TimeoutException
+
+/**
+ * The collector's hard limits. [idleTimeoutMillis]: a connection that sends nothing for this long is closed
+ * (a stalled upload gets 408 if it can still hear it). [maxConnections]: connections beyond this wait in the
+ * kernel's accept queue. [maxThreads]: Jetty's pool; a request body is read without holding a thread, so a
+ * stalled upload costs a connection, not a thread. [maxBodyBytes]: larger uploads get 413.
+ */
+class CollectorLimits(
+    val idleTimeoutMillis: Long = 10_000,
+    val maxConnections: Int = 256,
+    val maxThreads: Int = 32,
+    val maxBodyBytes: Int = 16 shl 20,
+) {
+    init {
+        require(idleTimeoutMillis > 0) { "idle timeout must be > 0 ms" }
+        require(maxConnections > 0) { "at least one connection" }
+        require(maxThreads >= MIN_THREADS) { "Jetty needs at least $MIN_THREADS threads (acceptor, selector, requests)" }
+        require(maxBodyBytes > 0) { "body limit must be > 0 bytes" }
+    }
+
+    companion object {
+        /** One acceptor, one selector and a few request threads. */
+        const val MIN_THREADS: Int = 8
+    }
+}
+
+/** Who may use the `/v1` endpoints: holders of a [CollectorTokens] token, or (only when chosen explicitly) anybody. */
+sealed interface CollectorAccess {
+    /** Each request needs `Authorization: Bearer TOKEN`, of the right role, for the study it touches. */
+    class Tokens(val tokens: CollectorTokens) : CollectorAccess
+
+    /** No authentication at all: `hapticon collect --allow-anonymous`, logged loudly. */
+    data object Anonymous : CollectorAccess
+}
 
 /**
  * The study collector's HTTP service on [host]:[port] (0 picks a free port, see [port]) over [store]:
- * `POST /v1/results` (text/csv body, `X-Study-Id` header) stores an upload in one transaction,
- * `GET /v1/studies/{id}/results.csv` serves a study's rows, `GET /health` answers `{"status":"ok"}`.
- * With a [token], the /v1 endpoints need `Authorization: Bearer TOKEN`. Errors are JSON `{"error": …}`.
+ * `POST /v1/results` (text/csv body, `X-Study-Id` header, an upload token of that study) stores an upload in
+ * one transaction, `GET /v1/studies/{id}/results.csv` (a download token of that study) serves a study's rows
+ * with formula-like cells neutralised ([Csv.neutralise]), `GET /health` answers `{"status":"ok"}` to anybody.
+ * Errors are JSON `{"error": …}`: 401 without a valid token, 403 for a token of another role or study.
+ *
+ * Jetty 12 (core handlers, no servlet API): its NIO connector parses headers without a thread per
+ * connection, so slow clients cannot exhaust a pool as they did the JDK's `HttpServer` with 4 threads; the
+ * body is read asynchronously under [CollectorLimits] (idle timeout, connection limit, size limit).
  */
-class CollectorServer(private val store: ResultStore, host: String, port: Int, private val token: String?) {
-    private val server: HttpServer = HttpServer.create(InetSocketAddress(host, port), 0)
-    private val executor = Executors.newFixedThreadPool(THREADS)
+class CollectorServer(
+    private val store: ResultStore,
+    private val access: CollectorAccess,
+    host: String,
+    port: Int,
+    private val limits: CollectorLimits = CollectorLimits(),
+) {
+    private val pool = QueuedThreadPool(limits.maxThreads, MIN_IDLE_THREADS).apply {
+        name = "collector"
+        isDaemon = true // a server left running must not keep a finished command's JVM alive
+    }
+    private val server = Server(pool)
+    private val connector = ServerConnector(server, 1, 1, HttpConnectionFactory(HttpConfiguration().apply { sendServerVersion = false }))
 
     init {
-        server.executor = executor
-        server.createContext("/health") { exchange -> respond(exchange) { health(exchange) } }
-        server.createContext("/v1/results") { exchange -> respond(exchange) { authorized(exchange) { upload(exchange) } } }
-        server.createContext("/v1/studies/") { exchange -> respond(exchange) { authorized(exchange) { download(exchange) } } }
+        quietJettyLogging()
+        connector.host = host
+        connector.port = port
+        connector.idleTimeout = limits.idleTimeoutMillis
+        server.addConnector(connector)
+        server.addBean(NetworkConnectionLimit(limits.maxConnections, connector))
+        server.handler = Routes()
+        server.stopTimeout = STOP_TIMEOUT_MILLIS
     }
 
-    /** The port the service listens on. */
-    val port: Int get() = server.address.port
+    /** The port the service listens on (after [start]). */
+    val port: Int get() = connector.localPort
 
-    /** Starts serving. */
-    fun start() = server.start()
-
-    /** Stops serving, letting requests in progress finish for up to a second. */
-    fun stop() {
-        server.stop(1)
-        executor.shutdown()
+    /** Starts serving; [IOException] when the address cannot be bound. */
+    fun start() {
+        try {
+            server.start()
+        } catch (e: IOException) {
+            server.stop()
+            throw IOException(e.cause?.message ?: e.message, e)
+        }
     }
+
+    /**
+     * Stops serving at once: an upload in progress is rolled back and its client gets no 200, so it uploads
+     * again (idempotent). No graceful wait: Jetty's would wait for every idle keep-alive connection to close.
+     */
+    fun stop() = server.stop()
 
     private class Reply(val status: Int, val contentType: String, val body: ByteArray)
+
+    private inner class Routes : Handler.Abstract() {
+        override fun handle(request: Request, response: Response, callback: Callback): Boolean {
+            val path = request.httpURI.path
+            when {
+                path == "/health" -> send(response, callback, guarded { health(request) })
+                path == "/v1/results" -> upload(request, response, callback)
+                path.startsWith("/v1/studies/") -> send(response, callback, guarded { download(request, path) })
+                else -> send(response, callback, error(404, "no such resource"))
+            }
+            return true
+        }
+    }
 
     private fun json(status: Int, vararg members: Pair<String, JsonValue>): Reply =
         Reply(status, "application/json", (Json.encode(JsonObject(linkedMapOf(*members))) + "\n").toByteArray(Charsets.UTF_8))
@@ -52,25 +135,35 @@ class CollectorServer(private val store: ResultStore, host: String, port: Int, p
     private fun error(status: Int, message: String, line: Int? = null): Reply =
         if (line == null) json(status, "error" to JsonString(message)) else json(status, "error" to JsonString(message), "line" to JsonNumber(line.toDouble()))
 
-    private fun health(exchange: HttpExchange): Reply {
-        if (exchange.requestURI.path != "/health") return error(404, "no such resource")
-        if (exchange.requestMethod != "GET") return error(405, "use GET")
+    private fun health(request: Request): Reply {
+        if (request.method != "GET") return error(405, "use GET")
         return if (store.isHealthy()) json(200, "status" to JsonString("ok")) else error(503, "database unavailable")
     }
 
-    private fun upload(exchange: HttpExchange): Reply {
-        if (exchange.requestMethod != "POST") return error(405, "use POST")
-        if (exchange.requestURI.path != "/v1/results") return error(404, "no such resource")
-        val contentType = exchange.requestHeaders.getFirst("Content-Type")?.substringBefore(';')?.trim()?.lowercase()
-        if (contentType != "text/csv") return error(415, "Content-Type must be text/csv, got '${contentType.orEmpty()}'")
-        val studyId = exchange.requestHeaders.getFirst("X-Study-Id")?.trim()
-            ?: return error(400, "missing X-Study-Id header")
-        if (!ResultRows.STUDY_ID.matches(studyId)) return error(400, "X-Study-Id must be 1-64 letters, digits, '.', '_' or '-'")
-        val bytes = exchange.requestBody.use { it.readNBytes(MAX_BODY_BYTES + 1) }
-        if (bytes.size > MAX_BODY_BYTES) return error(413, "body larger than $MAX_BODY_BYTES bytes")
+    private fun upload(request: Request, response: Response, callback: Callback) {
+        var studyId = ""
+        val refused = guarded {
+            if (request.method != "POST") return@guarded error(405, "use POST")
+            val contentType = request.headers[HttpHeader.CONTENT_TYPE]?.substringBefore(';')?.trim()?.lowercase()
+            if (contentType != "text/csv") return@guarded error(415, "Content-Type must be text/csv, got '${contentType.orEmpty()}'")
+            studyId = request.headers["X-Study-Id"]?.trim() ?: return@guarded error(400, "missing X-Study-Id header")
+            if (!ResultRows.STUDY_ID.matches(studyId)) return@guarded error(400, "X-Study-Id must be 1-64 letters, digits, '.', '_' or '-'")
+            authorize(request, TokenRole.UPLOAD, studyId)?.let { return@guarded it }
+            if (request.headers.getLongField(HttpHeader.CONTENT_LENGTH) > limits.maxBodyBytes) return@guarded tooLarge()
+            null
+        }
+        if (refused != null) return send(response, callback, refused)
+        // Read the whole body without holding a thread, then parse and store it on the pool: a client that
+        // stalls mid-body costs one connection until the idle timeout, and nothing is stored from a partial body.
+        Content.Source.asByteArrayAsync(request, limits.maxBodyBytes).whenCompleteAsync({ bytes, failure ->
+            send(response, callback, if (failure != null) bodyFailed(failure) else guarded { store(bytes, studyId) })
+        }, pool)
+    }
+
+    private fun store(bytes: ByteArray, studyId: String): Reply {
         val text = try {
             Charsets.UTF_8.newDecoder().onMalformedInput(CodingErrorAction.REPORT).onUnmappableCharacter(CodingErrorAction.REPORT)
-                .decode(java.nio.ByteBuffer.wrap(bytes)).toString()
+                .decode(ByteBuffer.wrap(bytes)).toString()
         } catch (e: CharacterCodingException) {
             return error(400, "body is not UTF-8")
         }
@@ -86,48 +179,73 @@ class CollectorServer(private val store: ResultStore, host: String, port: Int, p
         }
     }
 
-    private fun download(exchange: HttpExchange): Reply {
-        if (exchange.requestMethod != "GET") return error(405, "use GET")
-        val match = DOWNLOAD_PATH.matchEntire(exchange.requestURI.path) ?: return error(404, "no such resource")
-        val rows = store.rows(match.groupValues[1])
-        if (rows.isEmpty()) return error(404, "no results for study '${match.groupValues[1]}'")
+    /** Why reading a body failed: cut short (400), stalled past the idle timeout (408) or over the limit (413). */
+    private fun bodyFailed(failure: Throwable): Reply {
+        val cause = if (failure is CompletionException) failure.cause ?: failure else failure
+        return when {
+            cause is TimeoutException || cause.cause is TimeoutException ->
+                error(408, "request body stalled for ${limits.idleTimeoutMillis} ms; nothing stored")
+            cause is IOException -> error(400, "request body cut short (${cause.message ?: cause.javaClass.simpleName}); nothing stored")
+            // Content.Source.asByteArrayAsync's maxSize (Jetty 12.1 ContentSourceRetainableByteBuffer: "… exceeded").
+            cause is IllegalStateException && cause.message.orEmpty().endsWith("exceeded") -> tooLarge()
+            else -> error(400, "request body unreadable (${cause.javaClass.simpleName}); nothing stored")
+        }
+    }
+
+    private fun tooLarge() = error(413, "body larger than ${limits.maxBodyBytes} bytes")
+
+    private fun download(request: Request, path: String): Reply {
+        if (request.method != "GET") return error(405, "use GET")
+        val match = DOWNLOAD_PATH.matchEntire(path) ?: return error(404, "no such resource")
+        val studyId = match.groupValues[1]
+        authorize(request, TokenRole.DOWNLOAD, studyId)?.let { return it }
+        val rows = store.rows(studyId)
+        if (rows.isEmpty()) return error(404, "no results for study '$studyId'")
         return Reply(200, "text/csv; charset=utf-8", ResultRows.format(rows).toByteArray(Charsets.UTF_8))
     }
 
-    private inline fun authorized(exchange: HttpExchange, handle: () -> Reply): Reply {
-        if (token == null) return handle()
-        val given = exchange.requestHeaders.getFirst("Authorization")?.removePrefix("Bearer ")?.trim().orEmpty()
-        // Constant-time comparison: the time taken must not tell how much of a guessed token was right.
-        if (!MessageDigest.isEqual(given.toByteArray(), token.toByteArray())) {
-            return error(401, "missing or wrong bearer token")
+    /** Null when [request] may act as [role] on [studyId]; else the 401 or 403 reply. */
+    private fun authorize(request: Request, role: TokenRole, studyId: String): Reply? {
+        val tokens = when (access) {
+            CollectorAccess.Anonymous -> return null
+            is CollectorAccess.Tokens -> access.tokens
         }
-        return handle()
+        val header = request.headers[HttpHeader.AUTHORIZATION]?.trim().orEmpty()
+        if (!header.startsWith("Bearer ", ignoreCase = true)) return error(401, "missing bearer token")
+        val token = tokens.authenticate(header.substring("Bearer ".length).trim()) ?: return error(401, "unknown or revoked token")
+        // The same answer for another study's token whatever that study is, so tokens cannot probe for studies.
+        if (token.studyId != studyId) return error(403, "this token is not for study '$studyId'")
+        if (token.role != role) return error(403, "this token may only ${token.role.word}, not ${role.word}")
+        return null
     }
 
-    private fun respond(exchange: HttpExchange, handle: () -> Reply) {
-        val reply = try {
-            handle()
-        } catch (e: SQLException) {
-            error(503, "database error: ${e.message?.lineSequence()?.firstOrNull().orEmpty()}")
-        } catch (e: Exception) {
-            error(500, "internal error: ${e.javaClass.simpleName}")
-        }
-        try {
-            exchange.responseHeaders.set("Content-Type", reply.contentType)
-            if (reply.status == 401) exchange.responseHeaders.set("WWW-Authenticate", "Bearer")
-            exchange.sendResponseHeaders(reply.status, reply.body.size.toLong())
-            exchange.responseBody.use { it.write(reply.body) }
-        } catch (e: IOException) {
-            // The client went away; nothing to tell it.
-        } finally {
-            exchange.close()
-        }
+    private inline fun guarded(handle: () -> Reply?): Reply? = try {
+        handle()
+    } catch (e: SQLException) {
+        error(503, "database error: ${e.message?.lineSequence()?.firstOrNull().orEmpty()}")
+    } catch (e: Exception) {
+        error(500, "internal error: ${e.javaClass.simpleName}")
+    }
+
+    private fun send(response: Response, callback: Callback, reply: Reply?) {
+        val r = reply ?: error(500, "internal error: no reply")
+        response.status = r.status
+        response.headers.put(HttpHeader.CONTENT_TYPE, r.contentType)
+        if (r.status == 401) response.headers.put(HttpHeader.WWW_AUTHENTICATE, "Bearer")
+        response.write(true, ByteBuffer.wrap(r.body), callback) // a client that went away fails the callback; nothing to tell it
     }
 
     companion object {
-        /** Largest upload accepted: a whole study's results are a few hundred kilobytes. */
-        const val MAX_BODY_BYTES: Int = 16 shl 20
-        private const val THREADS = 4
+        private const val MIN_IDLE_THREADS = 4
+        private const val STOP_TIMEOUT_MILLIS = 0L
         private val DOWNLOAD_PATH = Regex("/v1/studies/([A-Za-z0-9._-]{1,64})/results\\.csv")
+
+        /**
+         * Jetty logs through SLF4J, and HiveMQ's jar (on the companion's classpath for `hapticon broker`)
+         * brings a logback.xml that prints INFO to stdout, which belongs to the command: warnings only.
+         */
+        private fun quietJettyLogging() {
+            (org.slf4j.LoggerFactory.getLogger("org.eclipse.jetty") as? ch.qos.logback.classic.Logger)?.level = ch.qos.logback.classic.Level.WARN
+        }
     }
 }

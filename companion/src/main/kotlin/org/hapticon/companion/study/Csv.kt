@@ -65,6 +65,22 @@ object Csv {
     fun field(value: String): String =
         if (value.any { it == ',' || it == '"' || it == '\n' || it == '\r' }) "\"" + value.replace("\"", "\"\"") + "\"" else value
 
-    /** [values] as one CSV line ending in `\n`. */
-    fun line(values: List<String>): String = values.joinToString(",", postfix = "\n") { field(it) }
+    /**
+     * [values] as one CSV line ending in `\n`, each cell [neutralised][neutralise] first: every CSV the companion
+     * writes (collector downloads, analysis tables) may hold uploaded text and may be opened in a spreadsheet.
+     */
+    fun line(values: List<String>): String = values.joinToString(",", postfix = "\n") { field(neutralise(it)) }
+
+    /**
+     * [value], or `'` + [value] when a spreadsheet could run it as a formula: OWASP "CSV Injection" — a cell
+     * starting with `=`, `+`, `-`, `@`, tab or carriage return is prefixed with a single quote, which
+     * spreadsheets take as "this is text". Plain numbers such as `-1` or `+2.5e3` are left alone (no
+     * spreadsheet evaluates them as a formula, and `hapticon analyze` must read negative responses back).
+     * The stored value is never changed; only what is written out.
+     */
+    fun neutralise(value: String): String =
+        if (value.isNotEmpty() && value[0] in FORMULA_STARTS && !PLAIN_NUMBER.matches(value)) "'$value" else value
+
+    private const val FORMULA_STARTS = "=+-@\t\r"
+    private val PLAIN_NUMBER = Regex("[+-]?(?:[0-9]+(?:\\.[0-9]*)?|\\.[0-9]+)(?:[eE][+-]?[0-9]+)?")
 }

@@ -92,7 +92,8 @@ class ResultStore(private val jdbcUrl: String) {
         }
     }
 
-    private fun connect(): Connection {
+    /** A new connection to the database (the caller closes it); [CollectorTokens] keeps its table here too. */
+    internal fun connect(): Connection {
         val connection = DriverManager.getConnection(jdbcUrl)
         // Uploads run on several server threads: let a SQLite writer wait for the file lock instead of failing at once.
         if (jdbcUrl.startsWith("jdbc:sqlite:")) connection.createStatement().use { it.execute("PRAGMA busy_timeout = $SQLITE_BUSY_TIMEOUT_MS") }

@@ -5,9 +5,16 @@ import java.net.http.HttpClient
 import java.net.http.HttpRequest
 import java.net.http.HttpResponse
 
-/** A [CollectorServer] on a free port of 127.0.0.1 over [store], and an HTTP client for it. */
-class CollectorHarness(val store: ResultStore, token: String? = null) : AutoCloseable {
-    val server = CollectorServer(store, "127.0.0.1", 0, token).also { it.start() }
+/**
+ * A [CollectorServer] on a free port of 127.0.0.1 over [store] with [access] (anonymous unless a test is about
+ * tokens) and [limits], and an HTTP client for it.
+ */
+class CollectorHarness(
+    val store: ResultStore,
+    access: CollectorAccess = CollectorAccess.Anonymous,
+    limits: CollectorLimits = CollectorLimits(),
+) : AutoCloseable {
+    val server = CollectorServer(store, access, "127.0.0.1", 0, limits).also { it.start() }
     private val client = HttpClient.newHttpClient()
     private val base = "http://127.0.0.1:${server.port}"
 

@@ -101,49 +101,70 @@ class CollectorTest {
         }
     }
 
-    @Test fun bearerTokenIsRequiredWhenConfigured() {
-        CollectorHarness(sqlite(), token = "s3cret").use { h ->
-            assertEquals(401, h.upload(upload).statusCode())
-            assertEquals(401, h.upload(upload, "demo-study", "text/csv", "Authorization", "Bearer wrong").statusCode())
-            assertEquals(200, h.upload(upload, "demo-study", "text/csv", "Authorization", "Bearer s3cret").statusCode())
-            assertEquals(401, h.get("/v1/studies/demo-study/results.csv").statusCode())
-            assertEquals(200, h.get("/v1/studies/demo-study/results.csv", "Authorization", "Bearer s3cret").statusCode())
-            assertEquals(200, h.get("/health").statusCode()) // health stays open for monitoring
-        }
-    }
-
     @Test fun collectCommandServesUntilStoppedAndAnalyzeReadsTheDownload() {
-        val tokenFile = temp.newFile("token").apply { writeText("tok\n") }
-        val out = ByteArrayOutputStream()
         val db = File(temp.root, "cli.db")
+        val added = cli("collect", "token", "add", "--study", "demo-study", "--role", "upload", "--db", "sqlite:${db.path}")
+        assertEquals(added.toString(), 0, added.exitCode)
+        val addedDownload = cli("collect", "token", "add", "--study", "demo-study", "--role", "download", "--db", "sqlite:${db.path}")
+        val uploadToken = added.stdout.trim()
+        val downloadToken = addedDownload.stdout.trim()
+        assertTrue(uploadToken, uploadToken.matches(Regex("hct1\\.[0-9a-f]{16}\\.[A-Za-z0-9_-]{43}")))
+        assertTrue(added.stderr, added.stderr.matches(Regex("collect: upload token [0-9a-f]{16} for study 'demo-study' \\(shown once; only its SHA-256 is stored\\)\n")))
+        val out = ByteArrayOutputStream()
         var downloaded = ""
         runCollect(
-            listOf("--port", "0", "--db", "sqlite:${db.path}", "--token-file", tokenFile.path),
+            listOf("--port", "0", "--db", "sqlite:${db.path}"),
             Console(PrintStream(out, true, "UTF-8"), PrintStream(ByteArrayOutputStream())),
             started = { server ->
                 val client = HttpClient.newHttpClient()
                 val base = "http://127.0.0.1:${server.port}"
                 val post = HttpRequest.newBuilder(URI("$base/v1/results")).POST(HttpRequest.BodyPublishers.ofString(upload))
-                    .header("Content-Type", "text/csv").header("X-Study-Id", "demo-study").header("Authorization", "Bearer tok").build()
+                    .header("Content-Type", "text/csv").header("X-Study-Id", "demo-study").header("Authorization", "Bearer $uploadToken").build()
                 assertEquals(200, client.send(post, HttpResponse.BodyHandlers.ofString()).statusCode())
-                val get = HttpRequest.newBuilder(URI("$base/v1/studies/demo-study/results.csv")).header("Authorization", "Bearer tok").build()
+                val get = HttpRequest.newBuilder(URI("$base/v1/studies/demo-study/results.csv")).header("Authorization", "Bearer $downloadToken").build()
                 downloaded = client.send(get, HttpResponse.BodyHandlers.ofString()).body()
             },
             waitForStop = {},
         )
-        assertTrue(out.toString("UTF-8"), out.toString("UTF-8").matches(Regex("collect: listening on http://127\\.0\\.0\\.1:\\d+ \\(sqlite:.*cli\\.db, bearer token required\\); Ctrl-C stops it\n")))
+        assertTrue(out.toString("UTF-8"), out.toString("UTF-8").matches(Regex("collect: listening on http://127\\.0\\.0\\.1:\\d+ \\(sqlite:.*cli\\.db, 2 tokens\\); Ctrl-C stops it\n")))
         assertEquals(upload, downloaded)
         val results = temp.newFile("downloaded.csv").apply { writeText(downloaded) }
         val analysis = cli("analyze", results.path, "--out", File(temp.root, "analysis").path)
         assertEquals(analysis.toString(), 0, analysis.exitCode)
     }
 
+    @Test fun collectWithoutTokensSaysHowToAddOne_allowAnonymousWarnsOnStderr() {
+        val db = "sqlite:" + File(temp.root, "empty.db").path
+        val out = ByteArrayOutputStream()
+        val err = ByteArrayOutputStream()
+        var status = 0
+        runCollect(listOf("--port", "0", "--db", db), Console(PrintStream(out, true, "UTF-8"), PrintStream(err, true, "UTF-8")), started = { server ->
+            val get = HttpRequest.newBuilder(URI("http://127.0.0.1:${server.port}/v1/studies/demo-study/results.csv")).build()
+            status = HttpClient.newHttpClient().send(get, HttpResponse.BodyHandlers.ofString()).statusCode()
+        }, waitForStop = {})
+        assertEquals(401, status)
+        assertTrue(out.toString("UTF-8"), out.toString("UTF-8").contains("no tokens yet: every /v1 request gets 401; add one with 'hapticon collect token add --study ID --role upload'"))
+        assertEquals("", err.toString("UTF-8"))
+        out.reset()
+        runCollect(listOf("--port", "0", "--db", db, "--allow-anonymous"), Console(PrintStream(out, true, "UTF-8"), PrintStream(err, true, "UTF-8")), started = { server ->
+            val get = HttpRequest.newBuilder(URI("http://127.0.0.1:${server.port}/v1/studies/demo-study/results.csv")).build()
+            status = HttpClient.newHttpClient().send(get, HttpResponse.BodyHandlers.ofString()).statusCode()
+        }, waitForStop = {})
+        assertEquals(404, status) // no token needed, and no such study yet
+        assertTrue(out.toString("UTF-8"), out.toString("UTF-8").contains(", anonymous access); Ctrl-C stops it"))
+        assertTrue(err.toString("UTF-8"), err.toString("UTF-8").startsWith("collect: WARNING: --allow-anonymous: NO AUTHENTICATION. Anyone who can reach 127.0.0.1:"))
+    }
+
     @Test fun collectUsageErrors() {
         assertEquals(listOf("hapticon: --db must be sqlite:PATH or postgresql://HOST/DB?user=.., got 'mysql://x'"), cli("collect", "--db", "mysql://x").stderrLines)
         assertEquals(listOf("hapticon: --port must be in 0..65535, got 70000"), cli("collect", "--port", "70000").stderrLines)
-        assertEquals(listOf("hapticon: --token-file: no such file: nope"), cli("collect", "--token-file", "nope").stderrLines)
-        val empty = temp.newFile("empty-token")
-        assertEquals(listOf("hapticon: --token-file: $empty is empty"), cli("collect", "--token-file", empty.path).stderrLines)
+        assertEquals(listOf("hapticon: unknown option --token-file for collect"), cli("collect", "--token-file", "nope").stderrLines)
+        val db = "sqlite:" + File(temp.root, "tokens.db").path
+        assertEquals(listOf("hapticon: collect token needs add, list or revoke"), cli("collect", "token").stderrLines)
+        assertEquals(listOf("hapticon: --role must be upload or download, got 'admin'"), cli("collect", "token", "add", "--study", "s", "--role", "admin", "--db", db).stderrLines)
+        assertEquals(listOf("hapticon: collect token add needs --study"), cli("collect", "token", "add", "--role", "upload", "--db", db).stderrLines)
+        assertEquals(listOf("hapticon: --study must be 1-64 letters, digits, '.', '_' or '-', got '../x'"), cli("collect", "token", "add", "--study", "../x", "--role", "upload", "--db", db).stderrLines)
+        assertEquals(listOf("hapticon: no token with id 'abc'"), cli("collect", "token", "revoke", "abc", "--db", db).stderrLines)
         ServerSocket(0, 1, InetAddress.getByName("127.0.0.1")).use { taken ->
             val busy = cli("collect", "--port", taken.localPort.toString(), "--db", "sqlite:" + File(temp.root, "busy.db").path)
             assertEquals(2, busy.exitCode)

@@ -13,6 +13,18 @@ class CsvTest {
         assertEquals(listOf("4", "5", "6"), records[3].fields)
     }
 
+    @Test fun neutralise_formulaStarts_prefixedWithQuote_plainNumbersAndOtherTextUnchanged() {
+        // OWASP CSV Injection: = + - @ tab CR at the start of a cell.
+        for (formula in listOf("=1+1", "+1+1", "-1+1", "@SUM(A1)", "\tx", "\rx", "=", "-", "+", "@", "-e", "1e5x".let { "-$it" })) {
+            assertEquals(formula, "'$formula", Csv.neutralise(formula))
+        }
+        for (plain in listOf("", "-1", "+2.5", "-0.5e-3", ".5", "-.5", "3.", "1E10", "a=1", " =1", "'=1", "stroke", "\u2212" + "1")) {
+            assertEquals(plain, plain, Csv.neutralise(plain))
+        }
+        assertEquals("'=HYPERLINK(\"http://x\")", Csv.parse(Csv.line(listOf("=HYPERLINK(\"http://x\")")), "f").single().fields.single())
+        assertEquals("\"'=1,2\",-3\n", Csv.line(listOf("=1,2", "-3")))
+    }
+
     @Test fun skipsByteOrderMark() {
         assertEquals(listOf("a", "b"), Csv.parse("\uFEFFa,b\n", "f").single().fields)
     }

@@ -151,7 +151,8 @@ private fun CollectorSettings(state: ResearcherUiState, viewModel: ResearcherVie
             keyboardOptions = KeyboardOptions(keyboardType = KeyboardType.Uri), modifier = Modifier.fillMaxWidth(),
         )
         OutlinedTextField(
-            token, { token = it }, label = { Text("Token (optional)") }, singleLine = true,
+            token, { token = it }, label = { Text("Upload token") }, singleLine = true,
+            supportingText = { Text("hapticon collect token add --study ${state.selected?.protocol?.id ?: "ID"} --role upload") },
             visualTransformation = PasswordVisualTransformation(), modifier = Modifier.fillMaxWidth(),
         )
         Row(horizontalArrangement = Arrangement.spacedBy(8.dp)) {

@@ -13,6 +13,7 @@ import kotlinx.coroutines.ExperimentalCoroutinesApi
 import kotlinx.coroutines.flow.first
 import kotlinx.coroutines.runBlocking
 import kotlinx.coroutines.test.StandardTestDispatcher
+import kotlinx.coroutines.test.advanceUntilIdle
 import kotlinx.coroutines.test.resetMain
 import kotlinx.coroutines.test.runTest
 import kotlinx.coroutines.test.setMain
@@ -22,9 +23,11 @@ import org.hapticon.app.study.MaskingSetting
 import org.hapticon.app.study.NoiseColor
 import org.hapticon.app.study.PinGate
 import org.hapticon.app.study.RoomStudyRepository
+import org.hapticon.app.study.SharedPreferencesStudySettings
 import org.hapticon.app.study.StoredProtocol
 import org.hapticon.app.study.StudyComponent
 import org.hapticon.app.study.StudyExporter
+import org.hapticon.app.study.StudySettingsRepository
 import org.hapticon.app.study.TestMaskingNoise
 import org.hapticon.app.study.TestStudySettings
 import org.hapticon.app.study.TickingClock
@@ -69,7 +72,10 @@ class StudyResearcherTest {
         Dispatchers.resetMain()
     }
 
-    private fun component(pin: PinGate = PinGate(context.getSharedPreferences("researcher-test", Context.MODE_PRIVATE).also { it.edit().clear().commit() })) =
+    private fun component(
+        pin: PinGate = PinGate(context.getSharedPreferences("researcher-test", Context.MODE_PRIVATE).also { it.edit().clear().commit() }),
+        settings: StudySettingsRepository = this.settings,
+    ) =
         StudyComponent(
             repository = RoomStudyRepository(db),
             settings = settings,
@@ -81,14 +87,25 @@ class StudyResearcherTest {
             clock = TickingClock(),
         )
 
-    /** A stub of `hapticon collect`: 200 for a CSV with the right header, else 400 naming the line. */
-    private fun startCollector(): String {
+    /**
+     * A stub of `hapticon collect`: 200 for a CSV with the right header, else 400 naming the line. With
+     * [uploadToken], its answers to other tokens as the collector gives them: 401 for none or an unknown one, 403
+     * for [DOWNLOAD_TOKEN] (a real token of the study, but of the download role).
+     */
+    private fun startCollector(uploadToken: String? = null): String {
         val server = HttpServer.create(InetSocketAddress("127.0.0.1", 0), 0)
         server.createContext("/v1/results") { exchange ->
             val body = exchange.requestBody.readBytes().decodeToString()
+            val authorization = exchange.requestHeaders.getFirst("Authorization")
             uploads += "${exchange.requestMethod} ${exchange.requestHeaders.getFirst("Content-Type")} " +
-                "${exchange.requestHeaders.getFirst("X-Study-Id")} ${exchange.requestHeaders.getFirst("Authorization")} ${body.length}"
-            val (status, answer) = if (body.startsWith(ResponseCsv.HEADER)) 200 to "{\"stored\": 1}" else 400 to "{\"error\": \"line 1: header must be exactly ${ResponseCsv.HEADER.take(8)}...\"}"
+                "${exchange.requestHeaders.getFirst("X-Study-Id")} $authorization ${body.length}"
+            val (status, answer) = when {
+                uploadToken != null && authorization == null -> 401 to "{\"error\":\"missing bearer token\"}"
+                uploadToken != null && authorization == "Bearer $DOWNLOAD_TOKEN" -> 403 to "{\"error\":\"this token may only download, not upload\"}"
+                uploadToken != null && authorization != "Bearer $uploadToken" -> 401 to "{\"error\":\"unknown or revoked token\"}"
+                body.startsWith(ResponseCsv.HEADER) -> 200 to "{\"stored\": 1}"
+                else -> 400 to "{\"error\": \"line 1: header must be exactly ${ResponseCsv.HEADER.take(8)}...\"}"
+            }
             val bytes = answer.toByteArray()
             exchange.sendResponseHeaders(status, bytes.size.toLong())
             exchange.responseBody.use { it.write(bytes) }
@@ -210,5 +227,49 @@ class StudyResearcherTest {
         assertEquals(UploadState.Done("0 rows uploaded to 127.0.0.1"), vm.uiState.first { it.upload is UploadState.Done }.upload)
         assertEquals(export, vm.uiState.value.export)
         assertEquals(listOf("POST text/csv; charset=utf-8 hapticon-icons null ${export.csv.length}"), uploads)
+    }
+
+    @Test
+    fun upload_tokenFromTheSettings_sentAsBearer_401And403SayWhichTokenAndNothingIsLost() = runTest(dispatcher) {
+        val prefs = context.getSharedPreferences("researcher-token-test", Context.MODE_PRIVATE).also { it.edit().clear().commit() }
+        val study = component(settings = SharedPreferencesStudySettings(prefs))
+        study.repository.startSession(StoredProtocol.DEFAULT, 1_700_000_000_000L)
+        val vm = ResearcherViewModel(study, hashing = dispatcher)
+        val url = startCollector(uploadToken = UPLOAD_TOKEN)
+        // The uploader runs on Dispatchers.IO (joined); the state then reaches uiState on the test dispatcher.
+        suspend fun uploadState(): UploadState {
+            vm.upload().join()
+            advanceUntilIdle()
+            return vm.uiState.value.upload
+        }
+        fun failed(message: String) = UploadState.Failed("$message: enter the upload token of study 'hapticon-icons' and upload again")
+
+        vm.setCollector(url, "")
+        assertEquals(failed("the collector needs a token"), uploadState())
+        val export = vm.uiState.value.export!!
+        vm.setCollector(url, DOWNLOAD_TOKEN)
+        assertEquals(failed("the collector refused this token (this token may only download, not upload)"), uploadState())
+        vm.setCollector(url, "hct1.ffffffffffffffff.wrong")
+        assertEquals(failed("the collector does not know this token (revoked, mistyped or from another collector)"), uploadState())
+
+        vm.setCollector(" $url ", "  $UPLOAD_TOKEN  ")
+        // Saved trimmed, where a restarted app reads it back.
+        assertEquals(UPLOAD_TOKEN, SharedPreferencesStudySettings(prefs).preferences.value.collectorToken)
+        advanceUntilIdle()
+        assertEquals(UPLOAD_TOKEN, vm.uiState.value.collectorToken)
+        assertEquals(UploadState.Done("0 rows uploaded to 127.0.0.1"), uploadState())
+        // The refused uploads lost nothing: the same export went out each time, and the last with the token.
+        assertEquals(export, vm.uiState.value.export)
+        assertTrue(export.csvFile.isFile)
+        val sent = "POST text/csv; charset=utf-8 hapticon-icons"
+        assertEquals(
+            listOf("$sent null", "$sent Bearer $DOWNLOAD_TOKEN", "$sent Bearer hct1.ffffffffffffffff.wrong", "$sent Bearer $UPLOAD_TOKEN").map { "$it ${export.csv.length}" },
+            uploads,
+        )
+    }
+
+    private companion object {
+        const val UPLOAD_TOKEN = "hct1.0123456789abcdef.AAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAA"
+        const val DOWNLOAD_TOKEN = "hct1.fedcba9876543210.BBBBBBBBBBBBBBBBBBBBBBBBBBBBBBBBBBBBBBBBBBB"
     }
 }
