@@ -224,7 +224,7 @@ public class MqttMessenger(private val settings: MqttSettings) : Messenger {
         }
     }
 
-    private companion object {
+    internal companion object {
         val LOG: Logger = Logger.getLogger(MqttMessenger::class.java.name)
 
         /** Why the broker will never accept this client as configured, or null when trying again may help. */
