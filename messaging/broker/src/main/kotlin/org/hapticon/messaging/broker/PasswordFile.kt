@@ -4,6 +4,7 @@ import java.io.File
 import java.io.IOException
 import java.nio.file.Files
 import java.nio.file.StandardCopyOption
+import java.nio.file.attribute.BasicFileAttributes
 import java.nio.file.attribute.PosixFilePermissions
 import java.security.MessageDigest
 import java.security.SecureRandom
@@ -32,7 +33,7 @@ import javax.crypto.spec.PBEKeySpec
  * once (Mosquitto needs a SIGHUP for that). Thread-safe.
  */
 public class PasswordFile(public val file: File) {
-    private var loadedStamp: Pair<Long, Long>? = null
+    private var loadedStamp: List<Any?>? = null
     private var hashes: Map<String, String> = emptyMap()
 
     /** True when [file] exists. */
@@ -79,7 +80,10 @@ public class PasswordFile(public val file: File) {
 
     private fun current(): Map<String, String> {
         if (!file.isFile) return emptyMap()
-        val stamp = file.lastModified() to file.length()
+        // The file key (inode) changes with every add, which renames a new file into place: a password changed
+        // within the same millisecond, to a line of the same length, is still noticed.
+        val attributes = Files.readAttributes(file.toPath(), BasicFileAttributes::class.java)
+        val stamp = listOf(attributes.fileKey(), attributes.lastModifiedTime(), attributes.size())
         if (stamp != loadedStamp) {
             hashes = file.readLines()
                 .filter { it.isNotBlank() && !it.startsWith("#") && ':' in it }

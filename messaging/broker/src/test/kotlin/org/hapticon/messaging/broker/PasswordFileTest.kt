@@ -65,6 +65,10 @@ class PasswordFileTest {
         assertFalse(broker.verify("carol", "c".toByteArray()))
         PasswordFile(file).add("carol", "c".toCharArray(), iterations = 1_000)
         assertTrue(broker.verify("carol", "c".toByteArray()))
+        // A new password of the same length, at once: the old one stops working.
+        PasswordFile(file).add("carol", "d".toCharArray(), iterations = 1_000)
+        assertFalse(broker.verify("carol", "c".toByteArray()))
+        assertTrue(broker.verify("carol", "d".toByteArray()))
     }
 
     @Test
