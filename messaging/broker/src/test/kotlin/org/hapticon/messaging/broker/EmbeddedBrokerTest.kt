@@ -27,11 +27,11 @@ class EmbeddedBrokerTest {
     @After
     fun stopBrokers() = brokers.forEach { Thread(it::stop).start() }
 
-    private fun broker(port: Int = 0): EmbeddedBroker {
+    private fun broker(port: Int = 0, host: String = EmbeddedBroker.HOST): EmbeddedBroker {
         val dir = temp.newFolder()
         val passwords = PasswordFile(java.io.File(dir, "passwd")).apply { add("alice", "alice-secret".toCharArray(), iterations = 1_000) }
         val acl = java.io.File(dir, "aclfile").apply { writeText(AclFile.DEFAULT_TEXT) }
-        return EmbeddedBroker(java.io.File(dir, "store"), port, BrokerSecurity.Authenticated(passwords.file, acl)).also { brokers += it }
+        return EmbeddedBroker(java.io.File(dir, "store"), port, BrokerSecurity.Authenticated(passwords.file, acl), host).also { brokers += it }
     }
 
     @Test
@@ -47,6 +47,18 @@ class EmbeddedBrokerTest {
             .firstOrNull { it is Inet4Address && !it.isLoopbackAddress }
         assumeTrue("no non-loopback IPv4 address to try", other != null)
         assertThrows(ConnectException::class.java) { Socket().use { it.connect(InetSocketAddress(other, broker.port), 2_000) } }
+    }
+
+    @Test
+    fun start_lanHost_answersThereWithTheSameLoginRules() {
+        val lan = NetworkInterface.networkInterfaces().toList()
+            .flatMap { it.inetAddresses.toList() }
+            .firstOrNull { it is Inet4Address && !it.isLoopbackAddress }
+        assumeTrue("no non-loopback IPv4 address to bind", lan != null)
+        val broker = broker(host = lan!!.hostAddress)
+        broker.start()
+        assertArrayEquals(CONNACK_ACCEPTED, connect(lan, broker.port))
+        assertArrayEquals(CONNACK_NOT_AUTHORIZED, connect(lan, broker.port, user = null))
     }
 
     // One test for the lifecycle: every stop takes 4.5 s.
