@@ -36,13 +36,19 @@ val USAGE: String = """
     |  hapticon handshake --self ANGLES.csv --partner ANGLES.csv
     |      Tele-handshake commands for the self hand at each of its rows (header time_s,thumb_deg,middle_deg)
     |      as CSV time_s,active, then per region pressure V, actuator deg, servo (not palm), vibration amp.
-    |  hapticon chat --broker URL --user NAME [--to PEER] [--device ID] [--password-file FILE] [--wav-dir DIR]
+    |  hapticon chat --broker URL --user NAME --password-file FILE [--to PEER] [--wav-dir DIR]
     |      Chat over MQTT (tcp://HOST:PORT, or ssl://HOST:PORT for TLS) with the app or another chat: lines
     |      are sent to PEER; /icon ICON [TEXT], /sticker NAME [TEXT], /to PEER, /help, /quit. Received icons
-    |      are rendered to WAV files in DIR. Delivered and read receipts both ways.
-    |  hapticon broker [--port N] [--data DIR]
-    |      Run the embedded MQTT broker on 127.0.0.1 (default port 1883, store in ~/.hapticon/broker)
-    |      until Ctrl-C.
+    |      are rendered to WAV files in DIR. Delivered and read receipts both ways. Says why it cannot
+    |      connect; exits 2 when the broker refuses the user or typed lines never reached it.
+    |      --anonymous instead of --password-file for a broker run with --allow-anonymous.
+    |  hapticon broker [--port N] [--host ADDR] [--data DIR] [--users FILE] [--acl FILE] [--allow-anonymous]
+    |      Run the embedded MQTT broker until Ctrl-C (default 127.0.0.1:1883, files in ~/.hapticon/broker).
+    |      Every client logs in with a user from the users file (Mosquitto's password-file format, created
+    |      empty on first run) and is held to the ACL file (Mosquitto's format, the deployment's rules).
+    |      --host binds a LAN address so phones can reach the laptop.
+    |  hapticon broker adduser NAME [--data DIR | --users FILE] [--password-file FILE]
+    |      Add a broker user or change its password (asked on the terminal, or the file's first line).
     |  hapticon schedule --participants N --design paper|williams|full|random|fixed [--seed S] [--protocol FILE]
     |      Counterbalanced orders of a study (default: the originating study) as CSV participant,position,task,
     |      a blank line, then participant,task,position,stimulus; participant is the pseudonymous id (P000-A).

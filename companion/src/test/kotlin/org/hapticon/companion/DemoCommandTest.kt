@@ -28,7 +28,7 @@ class DemoCommandTest {
         assertEquals("wrote ${File(dir, "stroke.wav")}: stroke, 476280 samples, 10.800 s at 44100 Hz, f32, paper model, exact mode", lines[0])
         assertEquals("wrote ${File(dir, "envelope-models.png")}: 1200×1224 PNG", lines[8])
         assertEquals("wrote ${File(dir, "fsr-press.bin")}: framed stream from hapticon-demo-fsr, device info + 2000 FSR samples at 1000 Hz, 28036 bytes", lines[9])
-        assertEquals(true, Regex("messaging: embedded MQTT broker on tcp://127\\.0\\.0\\.1:\\d+").matches(lines[15]))
+        assertEquals(true, Regex("messaging: embedded MQTT broker on tcp://127\\.0\\.0\\.1:\\d+, users alice and bob with passwords, the shipped ACL").matches(lines[15]))
         assertEquals(
             "messaging: alice sent bob \"hello from alice\" with icon knock: attack 0.005 s, sustain 0.01 s, release 0.005 s, " +
                 "level 0.5, note 57 (220.0 Hz), 3× every 0.27 s, 0.560 s; bob received it intact",

@@ -9,12 +9,18 @@ import kotlinx.coroutines.withTimeoutOrNull
 import java.util.concurrent.atomic.AtomicLong
 
 /**
- * Drains an [Outbox] through a [Messenger]: sends what is due, removes what the broker acknowledged, and
- * reschedules failures by [retryPolicy]. With a persistent outbox this is what makes offline composing
- * work: messages wait in the outbox and flow when the broker is reachable again.
+ * Drains an [Outbox] through a [Messenger]: sends what is due, reschedules failures by [retryPolicy], and
+ * keeps what the broker acknowledged until the receiver's receipt confirms it ([confirm], which the
+ * owner calls for every receipt that arrives). With a persistent outbox this is what makes offline
+ * composing work, and what makes delivery survive a broker that loses acknowledged messages.
  *
- * Retries can deliver a message twice (an acknowledgement lost with the connection); receivers
- * deduplicate by id. Entries are sent one at a time, each awaiting its acknowledgement.
+ * An acknowledged message without a receipt is sent again after `max(receiptTimeoutMillis, its age)`,
+ * capped at [maxResendDelayMillis]: the delays double as the message ages (30 s, 1 min, 2 min… up to an
+ * hour by default), so an offline receiver's queue gets a handful of copies a day, not a flood. A
+ * reconnection sends every never-acknowledged entry at once, but not the ones awaiting receipts.
+ *
+ * Retries and resends deliver a message more than once; receivers deduplicate by id and send the receipt
+ * again for a repeat. Entries are sent one at a time, each awaiting its acknowledgement.
  */
 public class OutboxSender(
     private val outbox: Outbox,
@@ -22,10 +28,20 @@ public class OutboxSender(
     private val retryPolicy: RetryPolicy = RetryPolicy(),
     private val clock: Clock = Clock.SYSTEM,
     private val sendTimeoutMillis: Long = 10_000,
+    private val receiptTimeoutMillis: Long = 30_000,
+    private val maxResendDelayMillis: Long = 3_600_000,
 ) {
     init {
         require(sendTimeoutMillis >= 1) { "sendTimeoutMillis must be >= 1, was $sendTimeoutMillis" }
+        require(receiptTimeoutMillis >= 1) { "receiptTimeoutMillis must be >= 1, was $receiptTimeoutMillis" }
+        require(maxResendDelayMillis >= receiptTimeoutMillis) { "maxResendDelayMillis must be >= receiptTimeoutMillis, was $maxResendDelayMillis" }
     }
+
+    /**
+     * A [receipt] arrived: when it confirms a message of the outbox (its sender is the message's
+     * recipient), that message is done and leaves the outbox. Returns whether it did.
+     */
+    public suspend fun confirm(receipt: Receipt): Boolean = outbox.markDelivered(receipt.messageId, receipt.from)
 
     private val wakeups = Channel<Unit>(Channel.CONFLATED)
     private val connections = AtomicLong()
@@ -42,27 +58,43 @@ public class OutboxSender(
     }
 
     /**
-     * One pass: sends every entry due at the clock's current time (every pending entry when [ignoreSchedule]),
-     * oldest first, and returns how many the broker acknowledged. The first failure ends the pass (the
-     * connection is probably gone; the rest would fail too): that entry is rescheduled and counted as an
-     * attempt. Suspends while sending; does not throw except [CancellationException].
+     * One pass: sends every entry due at the clock's current time (with [ignoreSchedule] also every entry
+     * the broker never acknowledged), oldest first, and returns how many the broker acknowledged. The first
+     * failure ends the pass (the connection is probably gone; the rest would fail too): that entry is
+     * rescheduled and counted as an attempt. Suspends while sending; does not throw except
+     * [CancellationException].
      */
     public suspend fun sendDue(ignoreSchedule: Boolean = false): Int {
         var sent = 0
-        while (true) {
-            val batch = outbox.due(if (ignoreSchedule) Long.MAX_VALUE else clock.nowMillis(), BATCH_SIZE)
-            if (batch.isEmpty()) return sent
-            for (entry in batch) {
-                val failure = attempt(entry)
-                if (failure != null) {
-                    val attempts = entry.attempts + 1
-                    outbox.markFailed(entry.message.id, failure, retryPolicy.nextAttemptAt(clock.nowMillis(), attempts))
-                    return sent
-                }
-                outbox.markSent(entry.message.id)
+        if (ignoreSchedule) {
+            val now = clock.nowMillis()
+            for (entry in outbox.pending().filter { !it.awaitingReceipt || it.nextAttemptAtMillis <= now }) {
+                if (!sendOne(entry)) return sent
                 sent++
             }
         }
+        while (true) {
+            // Every entry sent is rescheduled into the future (resend or retry), so this loop ends.
+            val batch = outbox.due(clock.nowMillis(), BATCH_SIZE)
+            if (batch.isEmpty()) return sent
+            for (entry in batch) {
+                if (!sendOne(entry)) return sent
+                sent++
+            }
+        }
+    }
+
+    /** Sends [entry] and records the outcome; returns whether the broker acknowledged it. */
+    private suspend fun sendOne(entry: OutboxEntry): Boolean {
+        val failure = attempt(entry)
+        val now = clock.nowMillis()
+        if (failure != null) {
+            outbox.markFailed(entry.message.id, failure, retryPolicy.nextAttemptAt(now, entry.attempts + 1))
+            return false
+        }
+        val age = now - entry.message.sentAtMillis
+        outbox.markSent(entry.message.id, now + age.coerceIn(receiptTimeoutMillis, maxResendDelayMillis))
+        return true
     }
 
     /**
@@ -97,7 +129,7 @@ public class OutboxSender(
         throw IllegalStateException("unreachable")
     }
 
-    /** Sends [entry]; returns null when acknowledged, else why not. */
+    /** Publishes [entry]; returns null when acknowledged, else why not. */
     private suspend fun attempt(entry: OutboxEntry): String? = try {
         val acknowledged = withTimeoutOrNull(sendTimeoutMillis) {
             messenger.send(entry.recipient, entry.message)

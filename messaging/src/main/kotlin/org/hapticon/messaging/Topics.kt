@@ -3,8 +3,12 @@ package org.hapticon.messaging
 /**
  * The MQTT topics of protocol version 1 and the user names they embed.
  *
- * Every user has one inbox, `hapticon/v1/inbox/<user>`, into which anyone may publish messages and
- * receipts and which only its owner reads; and one retained capabilities message at
+ * Every user has one inbox, `hapticon/v1/inbox/<user>/+`: what `sender` sends `user` (messages, receipts,
+ * hand poses) goes to `hapticon/v1/inbox/<user>/<sender>`. The topic carries the sender because MQTT
+ * 3.1.1 does not tell a receiver who published: the broker's ACL lets an authenticated user publish only
+ * to topics ending in its own name and read only its own inbox (companion/mosquitto/aclfile, enforced alike
+ * by Mosquitto and the embedded broker), so the last level is the broker's word for who sent it, and a
+ * payload naming someone else is dropped. Every user also has one retained capabilities message at
  * `hapticon/v1/capabilities/<user>`, which only its owner writes and anyone reads.
  */
 public object Topics {
@@ -27,8 +31,23 @@ public object Topics {
     /** True when [name] can be a user name: 1..[MAX_USER_NAME_LENGTH] of letters, digits, `.`, `_`, `-`, starting with a letter or digit. */
     public fun isValidUserName(name: String): Boolean = USER_NAME.matches(name)
 
-    /** `hapticon/v1/inbox/<user>`. Throws [IllegalArgumentException] when [user] is not a valid user name. */
-    public fun inbox(user: String): String = INBOX_PREFIX + requireUserName(user)
+    /**
+     * `hapticon/v1/inbox/<recipient>/<sender>`: where [sender] publishes to [recipient]. Throws
+     * [IllegalArgumentException] when either is not a valid user name.
+     */
+    public fun inbox(recipient: String, sender: String): String = INBOX_PREFIX + requireUserName(recipient) + "/" + requireUserName(sender)
+
+    /** `hapticon/v1/inbox/<user>/+`: the filter that [user] subscribes to. Throws as [inbox] does. */
+    public fun inboxFilter(user: String): String = INBOX_PREFIX + requireUserName(user) + "/+"
+
+    /**
+     * The sender of a message that arrived on [topic] in [user]'s inbox, or null when [topic] is not
+     * `hapticon/v1/inbox/<user>/<valid sender>`.
+     */
+    public fun inboxSender(user: String, topic: String): String? {
+        val prefix = INBOX_PREFIX + user + "/"
+        return topic.removePrefix(prefix).takeIf { topic.startsWith(prefix) && isValidUserName(it) }
+    }
 
     /** `hapticon/v1/capabilities/<user>`. Throws [IllegalArgumentException] when [user] is not a valid user name. */
     public fun capabilities(user: String): String = CAPABILITIES_PREFIX + requireUserName(user)

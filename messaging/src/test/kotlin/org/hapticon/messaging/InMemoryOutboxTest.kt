@@ -37,17 +37,26 @@ class InMemoryOutboxTest {
     }
 
     @Test
-    fun markSent_removesTheEntryAndMarkFailedCountsAttempts() = runBlocking {
+    fun markSentKeepsTheEntryUntilMarkDelivered_markFailedCountsAttempts() = runBlocking {
         outbox.enqueue("bob", first)
         outbox.enqueue("bob", second)
         outbox.markFailed(ID_2, "timeout", 10)
         outbox.markFailed(ID_2, "refused", 30)
-        outbox.markSent(ID_1)
-        outbox.markSent("unknown")
+        outbox.markSent(ID_1, resendAtMillis = 40)
+        outbox.markSent("unknown", 1)
         outbox.markFailed("unknown", "x", 1)
-        assertEquals(listOf(OutboxEntry("bob", second, attempts = 2, nextAttemptAtMillis = 30, lastError = "refused")), outbox.pending())
+        assertEquals(
+            listOf(
+                OutboxEntry("bob", first, nextAttemptAtMillis = 40, awaitingReceipt = true),
+                OutboxEntry("bob", second, attempts = 2, nextAttemptAtMillis = 30, lastError = "refused"),
+            ),
+            outbox.pending(),
+        )
         assertEquals(30L, outbox.nextAttemptAt())
-        outbox.markSent(ID_2)
+        assertEquals(false, outbox.markDelivered(ID_1, by = "carol"))
+        assertEquals(true, outbox.markDelivered(ID_1, by = "bob"))
+        assertEquals(true, outbox.markDelivered(ID_2, by = "bob"))
+        assertEquals(false, outbox.markDelivered(ID_2, by = "bob"))
         assertEquals(null, outbox.nextAttemptAt())
     }
 }

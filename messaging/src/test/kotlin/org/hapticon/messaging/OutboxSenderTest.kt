@@ -20,7 +20,38 @@ class OutboxSenderTest {
         for (m in messages) sender.enqueue("bob", m)
         assertEquals(4, sender.sendDue())
         assertEquals(messages.map { "bob" to it }, messenger.sentMessages)
+        // Acknowledged by the broker, kept until bob confirms: resent after the message's age (≈ 100 s here).
+        assertEquals(messages.map { true to 100_000 + (100_000 - it.sentAtMillis) }, outbox.pending().map { it.awaitingReceipt to it.nextAttemptAtMillis })
+        assertEquals(false, sender.confirm(Receipt(messages[0].id, "mallory", ReceiptState.DELIVERED, 1))) // not the recipient
+        for (m in messages) assertEquals(true, sender.confirm(Receipt(m.id, "bob", ReceiptState.DELIVERED, 1)))
         assertEquals(emptyList<OutboxEntry>(), outbox.pending())
+        assertEquals(false, sender.confirm(Receipt(messages[0].id, "bob", ReceiptState.READ, 2))) // already gone
+    }
+
+    @Test
+    fun sendDue_noReceipt_resendsWithDoublingDelaysUpToTheCapUntilConfirmed() = runBlocking {
+        val resender = OutboxSender(outbox, messenger, policy, clock, sendTimeoutMillis = 50, receiptTimeoutMillis = 30_000, maxResendDelayMillis = 200_000)
+        val fresh = ChatMessage.compose("alice", "hi", clock = clock)
+        resender.enqueue("bob", fresh)
+        val delays = mutableListOf<Long>()
+        repeat(6) {
+            assertEquals(1, resender.sendDue())
+            val next = outbox.nextAttemptAt()!!
+            delays += next - clock.now
+            clock.now = next - 1
+            assertEquals(0, resender.sendDue()) // not before its time
+            clock.now = next
+        }
+        // 30 s (the receipt timeout) while the message is young, then its age: doubling, capped at 200 s.
+        assertEquals(listOf(30_000L, 30_000, 60_000, 120_000, 200_000, 200_000), delays)
+        assertEquals(6, messenger.sentMessages.size)
+        // A reconnection does not resend what awaits its receipt before its time.
+        clock.now -= 1
+        assertEquals(0, resender.sendDue(ignoreSchedule = true))
+        assertEquals(true, resender.confirm(Receipt(fresh.id, "bob", ReceiptState.DELIVERED, 1)))
+        clock.advance(1_000_000)
+        assertEquals(0, resender.sendDue(ignoreSchedule = true))
+        assertEquals(6, messenger.sentMessages.size)
     }
 
     @Test
@@ -36,7 +67,7 @@ class OutboxSenderTest {
         // The next pass, still at the same time, sends the two that were never tried and leaves the failed one.
         messenger.failWith = { null }
         assertEquals(2, sender.sendDue())
-        assertEquals(listOf(messages[1].id), outbox.pending().map { it.message.id })
+        assertEquals(listOf(messages[1].id), outbox.pending().filter { !it.awaitingReceipt }.map { it.message.id })
     }
 
     @Test
@@ -90,12 +121,12 @@ class OutboxSenderTest {
         repeat(10) { yield() }
         assertEquals(emptyList<String>(), messenger.attempts)
         messenger.mutableState.value = ConnectionState.Connected
-        withTimeout(10_000) { while (outbox.pending().isNotEmpty()) yield() }
+        withTimeout(10_000) { while (outbox.pending().any { !it.awaitingReceipt }) yield() }
         assertEquals(messages.map { "bob" to it }, messenger.sentMessages)
         // Enqueued while running: the wake-up sends it without waiting for anything else.
         val late = ChatMessage(ID_1, "alice", 9, "late")
         sender.enqueue("carol", late)
-        withTimeout(10_000) { while (outbox.pending().isNotEmpty()) yield() }
+        withTimeout(10_000) { while (outbox.pending().any { !it.awaitingReceipt }) yield() }
         assertEquals("carol" to late, messenger.sentMessages.last())
         running.cancel()
     }

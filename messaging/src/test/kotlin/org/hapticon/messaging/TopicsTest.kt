@@ -7,7 +7,8 @@ import org.junit.Test
 class TopicsTest {
     @Test
     fun inboxAndCapabilities_validUser_areTheVersionOneTopics() {
-        assertEquals("hapticon/v1/inbox/alice", Topics.inbox("alice"))
+        assertEquals("hapticon/v1/inbox/alice/bob", Topics.inbox("alice", "bob"))
+        assertEquals("hapticon/v1/inbox/alice/+", Topics.inboxFilter("alice"))
         assertEquals("hapticon/v1/capabilities/bob.k-2_x", Topics.capabilities("bob.k-2_x"))
     }
 
@@ -21,7 +22,19 @@ class TopicsTest {
 
     @Test
     fun inbox_invalidUser_throws() {
-        assertThrows(IllegalArgumentException::class.java) { Topics.inbox("#") }
+        assertThrows(IllegalArgumentException::class.java) { Topics.inbox("#", "bob") }
+        assertThrows(IllegalArgumentException::class.java) { Topics.inbox("bob", "+") }
+        assertThrows(IllegalArgumentException::class.java) { Topics.inboxFilter("a/b") }
+    }
+
+    @Test
+    fun inboxSender_readsTheLastLevelOnlyFromTheUsersOwnInbox() {
+        assertEquals("alice", Topics.inboxSender("bob", "hapticon/v1/inbox/bob/alice"))
+        assertEquals(null, Topics.inboxSender("bob", "hapticon/v1/inbox/carol/alice"))
+        assertEquals(null, Topics.inboxSender("bob", "hapticon/v1/inbox/bob"))
+        assertEquals(null, Topics.inboxSender("bob", "hapticon/v1/inbox/bob/"))
+        assertEquals(null, Topics.inboxSender("bob", "hapticon/v1/inbox/bob/alice/x"))
+        assertEquals(null, Topics.inboxSender("bob", "hapticon/v1/inbox/bobby/alice"))
     }
 
     @Test

@@ -144,9 +144,11 @@ class OfflineFirstChatRepository(
 
     override suspend fun nextAttemptAt(): Long? = outbox.nextAttemptAt()
 
-    override suspend fun markSent(messageId: String) {
+    // The entry stays until the receiver's delivered receipt (markDelivered): the broker's acknowledgement
+    // is not proof of delivery (Outbox). The message shows SENT meanwhile.
+    override suspend fun markSent(messageId: String, resendAtMillis: Long) {
         db.withTransaction {
-            outbox.deleteEntry(messageId)
+            outbox.reschedule(messageId, resendAtMillis)
             val row = messages.message(messageId) ?: return@withTransaction
             // A receipt can overtake the acknowledgement; never move a message backwards.
             if (row.state == MessageState.SENDING.name || row.state == MessageState.FAILED.name) {
@@ -155,11 +157,22 @@ class OfflineFirstChatRepository(
         }
     }
 
+    override suspend fun markDelivered(messageId: String, by: String): Boolean = db.withTransaction {
+        // Only the recipient's receipt confirms (the receipt's topic proves who sent it).
+        if (outbox.entry(messageId)?.recipient != by) return@withTransaction false
+        outbox.deleteEntry(messageId)
+        true
+    }
+
     override suspend fun markFailed(messageId: String, error: String, nextAttemptAtMillis: Long) {
         db.withTransaction {
             outbox.markFailed(messageId, error, nextAttemptAtMillis)
-            val entry = outbox.pending().firstOrNull { it.messageId == messageId } ?: return@withTransaction
-            if (entry.attempts >= failedAfterAttempts) messages.updateState(messageId, MessageState.FAILED.name)
+            val entry = outbox.entry(messageId) ?: return@withTransaction
+            // A resend that fails does not undo SENT: the broker acknowledged an earlier copy.
+            val row = messages.message(messageId) ?: return@withTransaction
+            if (entry.attempts >= failedAfterAttempts && row.state == MessageState.SENDING.name) {
+                messages.updateState(messageId, MessageState.FAILED.name)
+            }
         }
     }
 
@@ -167,7 +180,8 @@ class OfflineFirstChatRepository(
 
     private suspend fun OutboxEntity.asEntry(): OutboxEntry? {
         val row = messages.message(messageId) ?: return null
-        return OutboxEntry(recipient, row.asChatMessage(), attempts, nextAttemptAtMillis, lastError)
+        val acknowledged = row.state != MessageState.SENDING.name && row.state != MessageState.FAILED.name
+        return OutboxEntry(recipient, row.asChatMessage(), attempts, nextAttemptAtMillis, lastError, awaitingReceipt = acknowledged)
     }
 
     private companion object {

@@ -14,7 +14,17 @@ data class ChatPreferences(
     val autoPlay: Boolean = false,
     /** A renderer the user forces instead of the best available one ([org.hapticon.app.playback.Renderer] name), or null. */
     val rendererOverride: String? = null,
+    /**
+     * The broker password of [userName] (the MQTT user name is the Hapticon user name: the broker's ACL
+     * ties topics to it), or null for a broker run with `--allow-anonymous`.
+     */
+    val brokerPassword: String? = null,
 ) {
+    /** Omits the password, so that it never reaches a log. */
+    override fun toString(): String =
+        "ChatPreferences(userName=$userName, brokerUrl=$brokerUrl, autoPlay=$autoPlay, rendererOverride=$rendererOverride, " +
+            "brokerPassword=${if (brokerPassword == null) "none" else "***"})"
+
     companion object {
         /** The emulator's alias for the host machine, where a development broker runs. */
         const val DEFAULT_BROKER_URL = "tcp://10.0.2.2:1883"
@@ -27,9 +37,15 @@ interface ChatSettingsRepository {
     fun update(transform: (ChatPreferences) -> ChatPreferences)
 }
 
-/** Settings kept in SharedPreferences (small, synchronous reads at start-up are fine). */
+/**
+ * Settings kept in SharedPreferences (small, synchronous reads at start-up are fine). The broker password
+ * lives in a file of its own, `chat_credentials`, private to the app like the rest, so that settings can be
+ * exported or shown without it. It is not encrypted at rest: Jetpack Security's EncryptedSharedPreferences is
+ * deprecated, and a Keystore-wrapped key is left for later (docs/security.md).
+ */
 class SharedPreferencesChatSettings(context: Context) : ChatSettingsRepository {
     private val prefs = context.getSharedPreferences("chat", Context.MODE_PRIVATE)
+    private val credentials = context.getSharedPreferences("chat_credentials", Context.MODE_PRIVATE)
     private val state = MutableStateFlow(read())
     override val preferences: StateFlow<ChatPreferences> = state.asStateFlow()
 
@@ -41,6 +57,7 @@ class SharedPreferencesChatSettings(context: Context) : ChatSettingsRepository {
             .putBoolean(AUTO_PLAY, next.autoPlay)
             .putString(RENDERER, next.rendererOverride)
             .apply()
+        credentials.edit().putString(PASSWORD, next.brokerPassword).apply()
         state.value = next
     }
 
@@ -49,6 +66,7 @@ class SharedPreferencesChatSettings(context: Context) : ChatSettingsRepository {
         brokerUrl = prefs.getString(BROKER, null) ?: ChatPreferences.DEFAULT_BROKER_URL,
         autoPlay = prefs.getBoolean(AUTO_PLAY, false),
         rendererOverride = prefs.getString(RENDERER, null),
+        brokerPassword = credentials.getString(PASSWORD, null),
     )
 
     private companion object {
@@ -56,6 +74,7 @@ class SharedPreferencesChatSettings(context: Context) : ChatSettingsRepository {
         const val BROKER = "broker"
         const val AUTO_PLAY = "auto_play"
         const val RENDERER = "renderer"
+        const val PASSWORD = "broker_password"
     }
 }
 

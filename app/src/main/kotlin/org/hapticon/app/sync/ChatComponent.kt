@@ -60,12 +60,11 @@ class ChatComponent(
                 audio = Media3AudioCoupledOutput(context),
                 audioCache = IconAudioCache(java.io.File(context.cacheDir, "icon-audio")),
             )
-            val deviceId = deviceId(context)
             val sync = ChatSync(
                 repository = repository,
                 outbox = repository,
                 settings = settings,
-                messengerFactory = { user, broker -> mqttMessenger(user, broker, deviceId) },
+                messengerFactory = ::mqttMessenger,
                 player = player,
                 rateLimiter = VibrationRateLimiter(Clock.MONOTONIC),
                 localCapabilities = { user -> RendererChoice.capabilitiesOf(user, device(), override()) },
@@ -74,19 +73,12 @@ class ChatComponent(
             return ChatComponent(repository, RoomIconRepository(db.iconDao()), settings, sync, player, device)
         }
 
-        private fun mqttMessenger(user: String, broker: String, deviceId: String): Messenger? = try {
-            MqttMessenger(MqttSettings(BrokerAddress.parse(broker), user, deviceId))
+        // The client id is the user name (the broker binds it to the login), so no per-device id any more.
+        private fun mqttMessenger(user: String, broker: String, password: String?): Messenger? = try {
+            MqttMessenger(MqttSettings(BrokerAddress.parse(broker), user, password))
         } catch (e: IllegalArgumentException) {
             android.util.Log.w("ChatComponent", "no messenger for $user at $broker: ${e.message}")
             null
-        }
-
-        /** A stable id for this installation (the MQTT session is per user and device). */
-        private fun deviceId(context: Context): String {
-            val prefs = context.getSharedPreferences("device", Context.MODE_PRIVATE)
-            return prefs.getString("id", null) ?: ("android-" + java.util.UUID.randomUUID().toString().take(8)).also {
-                prefs.edit().putString("id", it).apply()
-            }
         }
     }
 }

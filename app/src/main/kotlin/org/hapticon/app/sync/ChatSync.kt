@@ -38,7 +38,8 @@ import kotlinx.coroutines.coroutineScope
 
 /**
  * The background sync: while the user has an account, keeps a [Messenger] connected, drains the Room
- * outbox through an [OutboxSender] (retries with backoff), stores what arrives exactly once, answers with
+ * outbox through an [OutboxSender] (retries with backoff; a message stays in the outbox until the
+ * receiver's receipt arrives and is sent again meanwhile), stores what arrives exactly once, answers with
  * delivered receipts (and read receipts for the open conversation; a receipt that cannot go out now is
  * kept in Room and sent when the connection returns), records receipts for own messages,
  * remembers peers' capabilities and, when the user enabled it, plays arriving icons within
@@ -51,7 +52,7 @@ class ChatSync(
     private val outbox: Outbox,
     private val settings: ChatSettingsRepository,
     /** Makes the messenger for an account; null when the settings cannot make one (a bad broker URL). */
-    private val messengerFactory: (user: String, brokerUrl: String) -> Messenger?,
+    private val messengerFactory: (user: String, brokerUrl: String, password: String?) -> Messenger?,
     private val player: HapticPlayer,
     private val rateLimiter: VibrationRateLimiter,
     /** What this device can do, published as the user's retained capabilities. */
@@ -78,16 +79,16 @@ class ChatSync(
     /** The latest capabilities each peer published (retained on the broker, so known soon after connecting). */
     val peerCapabilities: StateFlow<Map<String, Capabilities>> = peers.asStateFlow()
 
-    /** Starts syncing; reconnects with a new messenger whenever the user name or broker changes. Idempotent. */
+    /** Starts syncing; reconnects with a new messenger whenever the user name, broker or password changes. Idempotent. */
     fun start() {
         if (job != null) return
         job = scope.launch {
             settings.preferences
-                .map { it.userName to it.brokerUrl }
+                .map { Triple(it.userName, it.brokerUrl, it.brokerPassword) }
                 .distinctUntilChanged()
-                .collectLatest { (user, broker) ->
+                .collectLatest { (user, broker, password) ->
                     if (user == null) return@collectLatest
-                    val messenger = messengerFactory(user, broker) ?: return@collectLatest
+                    val messenger = messengerFactory(user, broker, password) ?: return@collectLatest
                     runSession(messenger)
                 }
         }
@@ -162,7 +163,11 @@ class ChatSync(
         try {
             when (event) {
                 is InboxEvent.MessageReceived -> onMessage(messenger, event.message)
-                is InboxEvent.ReceiptReceived -> repository.applyReceipt(event.receipt)
+                is InboxEvent.ReceiptReceived -> {
+                    repository.applyReceipt(event.receipt)
+                    // The receiver has it: the outbox stops sending it again (OutboxSender, end to end).
+                    outbox.markDelivered(event.receipt.messageId, event.receipt.from)
+                }
                 is InboxEvent.CapabilitiesReceived -> peers.update { it + (event.capabilities.user to event.capabilities) }
                 is InboxEvent.HandPoseReceived -> hands[event.pose.from]?.offer(event.pose, nanoClock())
                 is InboxEvent.Rejected -> Log.w(TAG, "rejected payload on ${event.topic}: ${event.rejection.reason} ${event.rejection.field ?: ""} ${event.rejection.detail}")

@@ -52,13 +52,22 @@ class ChatRepositoryTest {
     }
 
     @Test
-    fun markSent_pendingMessage_removesOutboxEntryAndMarksSent() = runTest {
+    fun markSent_keepsTheEntryAwaitingTheReceipt_markDeliveredByTheRecipientRemovesIt() = runTest {
         val sent = repository.send("alice", "bob", "", sticker = "hug", icon = HapticIcon.HUG)
 
-        repository.markSent(sent.id)
+        repository.markSent(sent.id, resendAtMillis = now + 30_000)
 
-        assertEquals(emptyList<OutboxEntity>(), db.outboxDao().pending())
+        assertEquals(listOf(OutboxEntity(sent.id, "bob", now, nextAttemptAtMillis = now + 30_000)), db.outboxDao().pending())
         assertEquals(MessageState.SENT, repository.messages("bob").first().single().state)
+        assertEquals(true, repository.pending().single().awaitingReceipt)
+        // A failed resend does not make an acknowledged message look failed.
+        repeat(3) { repository.markFailed(sent.id, "offline", now + 60_000) }
+        assertEquals(MessageState.SENT, repository.messages("bob").first().single().state)
+
+        assertFalse(repository.markDelivered(sent.id, by = "mallory"))
+        assertTrue(repository.markDelivered(sent.id, by = "bob"))
+        assertEquals(emptyList<OutboxEntity>(), db.outboxDao().pending())
+        assertFalse(repository.markDelivered(sent.id, by = "bob"))
     }
 
     @Test
@@ -92,7 +101,7 @@ class ChatRepositoryTest {
     @Test
     fun applyReceipt_readThenLateDelivered_staysRead() = runTest {
         val sent = repository.send("alice", "bob", "hi")
-        repository.markSent(sent.id)
+        repository.markSent(sent.id, resendAtMillis = now + 30_000)
 
         repository.applyReceipt(Receipt(sent.id, "bob", ReceiptState.READ, now + 5))
         repository.applyReceipt(Receipt(sent.id, "bob", ReceiptState.DELIVERED, now + 1))

@@ -66,7 +66,7 @@ class ChatSyncTest {
 
     private fun start(limiter: VibrationRateLimiter) {
         sync = ChatSync(
-            repository, repository, settings, { _, _ -> messenger },
+            repository, repository, settings, { _, _, _ -> messenger },
             AdaptiveHapticPlayer(vibrator, { device }, { null }), limiter,
             { user -> RendererChoice.capabilitiesOf(user, device, null) }, scope, clock = { now },
             retryPolicy = RetryPolicy(initialDelayMillis = 10, maxDelayMillis = 10, jitter = 0.0),
@@ -96,7 +96,11 @@ class ChatSyncTest {
             sent.second,
         )
         await(repository.messages("bob")) { it.single().state == MessageState.SENT }
+        // Kept until bob's delivered receipt arrives, then gone.
+        assertEquals(listOf(message.id), db.outboxDao().pending().map { it.messageId })
+        messenger.deliver(InboxEvent.ReceiptReceived(Receipt(message.id, "bob", ReceiptState.DELIVERED, now + 1)))
         assertEquals(emptyList<OutboxEntity>(), db.outboxDao().pending())
+        assertEquals(MessageState.DELIVERED, repository.messages("bob").first().single().state)
     }
 
     @Test

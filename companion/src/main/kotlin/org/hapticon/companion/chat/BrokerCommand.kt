@@ -3,21 +3,52 @@ package org.hapticon.companion.chat
 import org.hapticon.companion.Arguments
 import org.hapticon.companion.Console
 import org.hapticon.companion.UsageException
+import org.hapticon.messaging.Topics
+import org.hapticon.messaging.broker.AclFile
+import org.hapticon.messaging.broker.BrokerSecurity
 import org.hapticon.messaging.broker.EmbeddedBroker
+import org.hapticon.messaging.broker.PasswordFile
+import java.io.BufferedReader
 import java.io.File
 import java.io.IOException
+import java.io.InputStreamReader
+import java.io.Reader
 
 /**
- * `hapticon broker [--port N] [--data DIR]`: runs the embedded MQTT broker on 127.0.0.1 in the foreground
- * until the process is stopped (Ctrl-C). [waitForStop] blocks until then; tests pass their own.
+ * `hapticon broker [--port N] [--host ADDR] [--data DIR] [--users FILE] [--acl FILE] [--allow-anonymous]`:
+ * runs the embedded MQTT broker in the foreground until the process is stopped (Ctrl-C). Every client
+ * authenticates against the users file (Mosquitto's password-file format; created empty on first run) and
+ * is held to the ACL file (Mosquitto's format; written from [AclFile.DEFAULT_TEXT] on first run): the same
+ * rules as the Mosquitto deployment. `--allow-anonymous` switches that off, loudly. [waitForStop] blocks
+ * until the broker should stop; tests pass their own.
+ *
+ * `hapticon broker adduser NAME [--data DIR | --users FILE] [--password-file FILE]` adds a user or
+ * changes its password; the password comes from the file's first line, else from the terminal (asked
+ * twice, not echoed), else from the first line of [input]. A running broker sees the change at once.
  */
-fun runBroker(args: List<String>, console: Console, waitForStop: () -> Unit = { Thread.currentThread().join() }) {
-    val arguments = Arguments.parse("broker", args, valueOptions = setOf("port", "data"))
+fun runBroker(
+    args: List<String>,
+    console: Console,
+    input: Reader = InputStreamReader(System.`in`, Charsets.UTF_8),
+    waitForStop: () -> Unit = { Thread.currentThread().join() },
+) {
+    if (args.firstOrNull() == "adduser") return addUser(args.drop(1), console, input)
+    val arguments = Arguments.parse("broker", args, valueOptions = setOf("port", "host", "data", "users", "acl"), flagOptions = setOf("allow-anonymous"))
     arguments.requireNoPositionals()
     val port = arguments.int("port", DEFAULT_BROKER_PORT)
     if (port !in 1..65_535) throw UsageException("--port must be in 1..65535, got $port")
+    val host = arguments.value("host") ?: EmbeddedBroker.HOST
     val data = File(arguments.value("data") ?: defaultDataDirectory())
-    val broker = EmbeddedBroker(data, port)
+    val security = if (arguments.flag("allow-anonymous")) {
+        console.err.println(
+            "broker: WARNING --allow-anonymous: any client that reaches $host:$port connects without a password, " +
+                "reads every inbox and sends as anyone. Use it for a throw-away local test only.",
+        )
+        BrokerSecurity.AllowAnonymous
+    } else {
+        prepareSecurity(arguments, data, console)
+    }
+    val broker = EmbeddedBroker(File(data, "store"), port, security, host)
     try {
         broker.start()
     } catch (e: IOException) {
@@ -26,7 +57,9 @@ fun runBroker(args: List<String>, console: Console, waitForStop: () -> Unit = { 
     // Ctrl-C ends the JVM through its shutdown hooks; this one closes the store so queued messages are kept.
     val hook = Thread { broker.stop() }
     Runtime.getRuntime().addShutdownHook(hook)
-    console.out.println("broker: listening on tcp://${EmbeddedBroker.HOST}:${broker.port}, store in $data; Ctrl-C stops it")
+    val auth = if (security is BrokerSecurity.Authenticated) "users ${security.passwordFile}, ACL ${security.aclFile}" else "ANONYMOUS"
+    console.out.println("broker: listening on tcp://${if (':' in host) "[$host]" else host}:${broker.port} ($auth), store in ${broker.dataDirectory}; Ctrl-C stops it")
+    if (host == EmbeddedBroker.HOST) console.out.println("broker: reachable from this machine only; --host ADDRESS (e.g. this laptop's Wi-Fi address) lets phones in")
     console.out.flush()
     try {
         waitForStop()
@@ -34,6 +67,86 @@ fun runBroker(args: List<String>, console: Console, waitForStop: () -> Unit = { 
         Runtime.getRuntime().removeShutdownHook(hook)
         broker.stop()
     }
+}
+
+/** The users and ACL files of a broker run, created on first use. */
+private fun prepareSecurity(arguments: Arguments, data: File, console: Console): BrokerSecurity.Authenticated {
+    val users = File(arguments.value("users") ?: File(data, "passwd").path)
+    val acl = File(arguments.value("acl") ?: File(data, "aclfile").path)
+    try {
+        if (!acl.exists() && arguments.value("acl") == null) {
+            acl.absoluteFile.parentFile.mkdirs()
+            acl.writeText(AclFile.DEFAULT_TEXT)
+        }
+        AclFile.read(acl)
+    } catch (e: IOException) {
+        throw UsageException("--acl: ${e.message}")
+    }
+    val passwords = PasswordFile(users)
+    val known = try {
+        passwords.users()
+    } catch (e: IOException) {
+        throw UsageException("cannot read the users file $users: ${e.message}")
+    }
+    if (!passwords.exists) {
+        users.absoluteFile.parentFile.mkdirs()
+        users.createNewFile()
+        users.setReadable(false, false)
+        users.setReadable(true, true)
+        users.setWritable(false, false)
+        users.setWritable(true, true)
+    }
+    if (known.isEmpty()) {
+        console.out.println("broker: no users yet in $users; nobody can connect until you add one:")
+        console.out.println("broker:   hapticon broker adduser NAME" + (arguments.value("users")?.let { " --users $it" } ?: arguments.value("data")?.let { " --data $it" } ?: ""))
+    } else {
+        console.out.println("broker: ${known.size} user(s): ${known.joinToString(", ")}")
+    }
+    return BrokerSecurity.Authenticated(users, acl)
+}
+
+private fun addUser(args: List<String>, console: Console, input: Reader) {
+    val arguments = Arguments.parse("broker adduser", args, valueOptions = setOf("data", "users", "password-file"))
+    val name = arguments.single("a user name")
+    if (!Topics.isValidUserName(name)) {
+        throw UsageException("the user name must be 1..${Topics.MAX_USER_NAME_LENGTH} letters, digits, '.', '_' or '-', starting with a letter or digit; got '$name'")
+    }
+    val users = File(arguments.value("users") ?: File(arguments.value("data") ?: defaultDataDirectory(), "passwd").path)
+    val password = arguments.value("password-file")?.let(::readPasswordFile) ?: askPassword(name, input)
+    try {
+        PasswordFile(users).add(name, password)
+    } catch (e: IOException) {
+        throw UsageException("cannot write the users file $users: ${e.message}")
+    } finally {
+        password.fill('\u0000')
+    }
+    console.out.println("broker: $name can connect now (users file $users)")
+}
+
+private fun askPassword(name: String, input: Reader): CharArray {
+    val terminal = System.console()
+    if (terminal != null) {
+        val first = terminal.readPassword("password for %s: ", name) ?: throw UsageException("no password given")
+        val again = terminal.readPassword("again: ") ?: throw UsageException("no password given")
+        if (!first.contentEquals(again)) throw UsageException("the two passwords differ")
+        if (first.isEmpty()) throw UsageException("the password must not be empty")
+        return first
+    }
+    val line = BufferedReader(input).readLine()?.takeIf { it.isNotEmpty() } ?: throw UsageException("no password on standard input")
+    return line.toCharArray()
+}
+
+/** The first line of [path], for `--password-file`: a password on the command line would show in `ps`. */
+internal fun readPasswordFile(path: String): CharArray {
+    val file = File(path)
+    if (!file.isFile) throw UsageException("--password-file $path: no such file")
+    val text = try {
+        if (file.length() > 4096) throw UsageException("--password-file $path is larger than 4096 bytes")
+        file.readText()
+    } catch (e: IOException) {
+        throw UsageException("cannot read --password-file $path: ${e.message}")
+    }
+    return text.lineSequence().firstOrNull()?.takeIf { it.isNotEmpty() }?.toCharArray() ?: throw UsageException("--password-file $path is empty")
 }
 
 /** The standard MQTT port, which `hapticon broker` uses unless told otherwise. */

@@ -16,17 +16,18 @@ import org.hapticon.messaging.mqtt.MqttMessenger
 import org.hapticon.messaging.mqtt.MqttSettings
 import java.io.BufferedReader
 import java.io.File
-import java.io.IOException
 import java.io.InputStreamReader
 import java.io.Reader
 
 /**
- * `hapticon chat --broker URL --user NAME [--to PEER] [--device ID] [--password-file FILE] [--wav-dir DIR]`:
+ * `hapticon chat --broker URL --user NAME [--to PEER] [--password-file FILE | --anonymous] [--wav-dir DIR]`:
  * a terminal chat over MQTT with the phone app or another `hapticon chat`. Reads lines from [input]
- * (stdin by default) until `/quit` or its end; see [ChatSession].
+ * (stdin by default) until `/quit` or its end; see [ChatSession]. Connection failures are printed as they
+ * happen (refused, TLS trust, unknown host); a refusal by the broker (bad password) or lines that never
+ * reached it end the command with one line and a non-zero exit.
  */
 fun runChat(args: List<String>, console: Console, input: Reader = InputStreamReader(System.`in`, Charsets.UTF_8)) {
-    val arguments = Arguments.parse("chat", args, valueOptions = setOf("broker", "user", "to", "device", "password-file", "wav-dir"))
+    val arguments = Arguments.parse("chat", args, valueOptions = setOf("broker", "user", "to", "password-file", "wav-dir"), flagOptions = setOf("anonymous"))
     arguments.requireNoPositionals()
     val broker = try {
         BrokerAddress.parse(arguments.required("broker"))
@@ -35,13 +36,16 @@ fun runChat(args: List<String>, console: Console, input: Reader = InputStreamRea
     }
     val user = userName(arguments.required("user"), "--user")
     val peer = arguments.value("to")?.let { userName(it, "--to") }
-    val device = arguments.value("device")?.let { userName(it, "--device") } ?: DEFAULT_DEVICE
-    val password = arguments.value("password-file")?.let(::readPassword)
+    val password = arguments.value("password-file")?.let { String(readPasswordFile(it)) }
+    if (password == null && !arguments.flag("anonymous")) {
+        throw UsageException("chat needs --password-file FILE (the broker authenticates every user), or --anonymous for a broker run with --allow-anonymous")
+    }
+    if (password != null && arguments.flag("anonymous")) throw UsageException("--password-file and --anonymous exclude each other")
     val wavDir = arguments.value("wav-dir")?.let(::File)?.also(OutputFiles::ensureDirectory)
 
-    val messenger = MqttMessenger(MqttSettings(broker, user, device, password))
+    val messenger = MqttMessenger(MqttSettings(broker, user, password))
     val gate = InboxGate(BoundedDeduplicator(), VibrationRateLimiter(Clock.MONOTONIC))
-    console.err.println("chat: connecting to $broker as $user (client id ${MqttSettings(broker, user, device).clientId})")
+    console.err.println("chat: connecting to $broker as $user")
     val session = ChatSession(messenger, peer, console.out, console.err, wavDir, gate)
     try {
         runBlocking { session.run(BufferedReader(input)) }
@@ -50,25 +54,9 @@ fun runChat(args: List<String>, console: Console, input: Reader = InputStreamRea
     }
 }
 
-/** The device id when `--device` is not given; a second chat as the same user needs another one. */
-const val DEFAULT_DEVICE: String = "cli"
-
 private fun userName(name: String, option: String): String {
     if (!Topics.isValidUserName(name)) {
         throw UsageException("$option must be 1..${Topics.MAX_USER_NAME_LENGTH} letters, digits, '.', '_' or '-', starting with a letter or digit; got '$name'")
     }
     return name
-}
-
-// A password on the command line would show in `ps` and the shell history; a file (mode 600) does not.
-private fun readPassword(path: String): String {
-    val file = File(path)
-    if (!file.isFile) throw UsageException("--password-file $path: no such file")
-    val text = try {
-        if (file.length() > 4096) throw UsageException("--password-file $path is larger than 4096 bytes")
-        file.readText()
-    } catch (e: IOException) {
-        throw UsageException("cannot read --password-file $path: ${e.message}")
-    }
-    return text.lineSequence().firstOrNull()?.takeIf { it.isNotEmpty() } ?: throw UsageException("--password-file $path is empty")
 }

@@ -12,6 +12,7 @@ import kotlinx.coroutines.delay
 import kotlinx.coroutines.flow.first
 import kotlinx.coroutines.job
 import kotlinx.coroutines.launch
+import kotlinx.coroutines.runBlocking
 import kotlinx.coroutines.selects.select
 import kotlinx.coroutines.withContext
 import kotlinx.coroutines.withTimeoutOrNull
@@ -79,7 +80,8 @@ class ChatSession(
     /**
      * Runs the chat until `/quit` or the end of [input]; then waits up to the drain timeout for typed
      * messages to reach the broker, and disconnects. Suspends meanwhile. Throws [UsageException] when the
-     * broker refuses the user for good (bad password, ACL).
+     * broker refuses the user for good (bad password, ACL), or (after disconnecting) when typed messages
+     * never reached the broker.
      */
     suspend fun run(input: BufferedReader) {
         // The input is read on a thread of its own: a blocked readLine cannot be cancelled, and the chat must
@@ -107,7 +109,18 @@ class ChatSession(
             }
             try {
                 readLines(lines, connection)
-                drainOutbox()
+                // A refusal that came while the input was ending still ends the chat with its reason.
+                if (connection.isCompleted) connection.await()
+                val left = drainOutbox()
+                val unconfirmed = outbox.pending().count { it.awaitingReceipt }
+                if (unconfirmed > 0) {
+                    err.println("chat: $unconfirmed message(s) reached the broker but were not yet confirmed by the receiver; nothing will send them again after this process ends")
+                }
+                if (left > 0) {
+                    val why = (messenger.state.value as? ConnectionState.Connecting)?.lastFailure ?: lastFailure ?: "the broker did not acknowledge them"
+                    // One line and a non-zero exit: a script piping lines in must learn that they did not go out.
+                    throw UsageException("$left message(s) not delivered ($why); they are lost with this process")
+                }
             } finally {
                 background.cancel()
                 withContext(NonCancellable) { messenger.disconnect() }
@@ -186,6 +199,7 @@ class ChatSession(
             is InboxEvent.MessageReceived -> received(event.message)
             is InboxEvent.ReceiptReceived -> {
                 val r = event.receipt
+                runBlocking { sender.confirm(r) } // the message is done: it leaves the outbox
                 val what = sentTexts[r.messageId] ?: "message ${r.messageId.take(8)}"
                 say(if (r.state == ReceiptState.READ) "✓✓ ${r.from} read $what" else "✓ ${r.from} received $what")
             }
@@ -204,9 +218,11 @@ class ChatSession(
     }
 
     private fun received(message: ChatMessage) {
+        // Every copy is acknowledged, repeats too: the sender resends until a delivered receipt arrives, and
+        // the first receipt may have been lost.
+        receipts.trySend(message.sender to Receipt(message.id, user, ReceiptState.DELIVERED, clock.nowMillis()))
         val admission = gate.admit(message) as? Admission.New ?: return // a repeat: it took effect already
         say(ChatFormat.message(message))
-        receipts.trySend(message.sender to Receipt(message.id, user, ReceiptState.DELIVERED, clock.nowMillis()))
         synchronized(unread) { unread += message }
         val icon = message.icon ?: return
         when (admission.vibration) {
@@ -243,27 +259,44 @@ class ChatSession(
         }
     }
 
+    @Volatile private var lastFailure: String? = null
+
     private suspend fun reportConnection() {
         var wasConnected = false
+        var everConnected = false
         messenger.state.collect { state ->
             when (state) {
-                ConnectionState.Connected -> err.println("chat: connected as $user" + (peer?.let { ", talking to $it" } ?: "") + "; /help lists commands")
-                is ConnectionState.Connecting -> if (wasConnected) err.println("chat: connection lost (${state.lastFailure}); reconnecting")
+                ConnectionState.Connected -> {
+                    everConnected = true
+                    err.println("chat: connected as $user" + (peer?.let { ", talking to $it" } ?: "") + "; /help lists commands")
+                }
+                is ConnectionState.Connecting -> when {
+                    wasConnected -> err.println("chat: connection lost (${state.lastFailure}); reconnecting")
+                    // Why the first connection fails, once per distinct reason: refused, TLS trust, unknown host.
+                    !everConnected && state.lastFailure != null && state.lastFailure != lastFailure ->
+                        err.println("chat: cannot connect: ${state.lastFailure}; still trying (typed lines wait)")
+                }
                 is ConnectionState.Failed -> err.println("chat: the broker refused $user: ${state.reason}")
                 ConnectionState.Disconnected -> Unit
             }
+            if (state is ConnectionState.Connecting && state.lastFailure != null) lastFailure = state.lastFailure
             wasConnected = state == ConnectionState.Connected
         }
     }
 
-    private suspend fun drainOutbox() {
-        val drained = withTimeoutOrNull(drainTimeoutMillis) {
+    /**
+     * Waits up to the drain timeout for every message to reach the broker (and, briefly, for receipts);
+     * returns how many never reached it.
+     */
+    private suspend fun drainOutbox(): Int {
+        withTimeoutOrNull(drainTimeoutMillis) {
+            while (outbox.pending().any { !it.awaitingReceipt }) delay(DRAIN_POLL_MILLIS)
+        }
+        // A peer that is online confirms within moments; one that is offline should not hold the terminal.
+        withTimeoutOrNull(minOf(drainTimeoutMillis, RECEIPT_GRACE_MILLIS)) {
             while (outbox.pending().isNotEmpty()) delay(DRAIN_POLL_MILLIS)
         }
-        if (drained == null) {
-            val left = outbox.pending().size
-            err.println("chat: $left message(s) not sent: the broker was unreachable; they are lost with this process")
-        }
+        return outbox.pending().count { !it.awaitingReceipt }
     }
 
     private fun say(line: String) {
@@ -287,6 +320,7 @@ class ChatSession(
         """.trimMargin()
 
         private const val DRAIN_POLL_MILLIS = 20L
+        private const val RECEIPT_GRACE_MILLIS = 1_000L
         private const val MAX_KNOWN_CAPABILITIES = 1_000
     }
 

@@ -10,10 +10,7 @@ import org.hapticon.messaging.ChatMessage
 import org.hapticon.messaging.Decoded
 import org.hapticon.messaging.InboxEvent
 import org.hapticon.messaging.MessageCodec
-import org.hapticon.messaging.broker.EmbeddedBroker
-import org.hapticon.messaging.mqtt.BrokerAddress
 import org.hapticon.messaging.mqtt.MqttMessenger
-import org.hapticon.messaging.mqtt.MqttSettings
 import java.nio.file.Files
 import java.util.Locale
 import java.util.concurrent.LinkedBlockingQueue
@@ -113,12 +110,10 @@ object MessagingBenchmark {
     private fun latencyMicros(config: Config): List<Double> {
         val store = Files.createTempDirectory("hapticon-bench-broker").toFile()
         try {
-            EmbeddedBroker(store).use { broker ->
-                broker.start()
-                val address = BrokerAddress(EmbeddedBroker.HOST, broker.port)
+            DemoBroker(store, listOf("alice", "bob")).start().use { broker ->
                 val arrivals = LinkedBlockingQueue<Long>()
-                val alice = MqttMessenger(MqttSettings(address, "alice", "bench"))
-                val bob = MqttMessenger(MqttSettings(address, "bob", "bench"))
+                val alice = MqttMessenger(broker.settings("alice"))
+                val bob = MqttMessenger(broker.settings("bob"))
                 return runBlocking {
                     try {
                         alice.connect { }

@@ -10,15 +10,13 @@ import org.hapticon.messaging.ChatMessage
 import org.hapticon.messaging.InboxEvent
 import org.hapticon.messaging.Receipt
 import org.hapticon.messaging.ReceiptState
-import org.hapticon.messaging.broker.EmbeddedBroker
-import org.hapticon.messaging.mqtt.BrokerAddress
 import org.hapticon.messaging.mqtt.MqttMessenger
-import org.hapticon.messaging.mqtt.MqttSettings
 import java.io.File
 import java.nio.file.Files
 
 /**
- * The messaging part of `hapticon demo`: the embedded broker on a free loopback port, two users, alice
+ * The messaging part of `hapticon demo`: the embedded broker on a free loopback port with authentication
+ * on (a password file holding the two demo users with random passwords, and the shipped ACL), alice
  * sends bob a text with the knock icon, bob renders the icon he received to `received-knock.wav` and sends
  * a delivered receipt, which alice receives.
  */
@@ -35,21 +33,20 @@ object MessagingDemo {
     fun write(dir: File, report: (String) -> Unit) {
         val store = Files.createTempDirectory("hapticon-demo-broker").toFile()
         try {
-            EmbeddedBroker(store).use { broker ->
-                broker.start()
-                report("messaging: embedded MQTT broker on tcp://${EmbeddedBroker.HOST}:${broker.port}")
-                runBlocking { exchange(BrokerAddress(EmbeddedBroker.HOST, broker.port), dir, report) }
+            DemoBroker(store, listOf("alice", "bob")).start().use { broker ->
+                report("messaging: embedded MQTT broker on ${broker.address}, users alice and bob with passwords, the shipped ACL")
+                runBlocking { exchange(broker, dir, report) }
             }
         } finally {
             store.deleteRecursively()
         }
     }
 
-    private suspend fun exchange(address: BrokerAddress, dir: File, report: (String) -> Unit) {
+    private suspend fun exchange(broker: DemoBroker, dir: File, report: (String) -> Unit) {
         val aliceInbox = Channel<InboxEvent>(Channel.UNLIMITED)
         val bobInbox = Channel<InboxEvent>(Channel.UNLIMITED)
-        val alice = MqttMessenger(MqttSettings(address, "alice", "demo"))
-        val bob = MqttMessenger(MqttSettings(address, "bob", "demo"))
+        val alice = MqttMessenger(broker.settings("alice"))
+        val bob = MqttMessenger(broker.settings("bob"))
         try {
             alice.connect { aliceInbox.trySend(it) }
             bob.connect { bobInbox.trySend(it) }

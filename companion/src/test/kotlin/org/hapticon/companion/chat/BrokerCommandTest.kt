@@ -5,6 +5,7 @@ import org.hapticon.companion.Console
 import org.hapticon.companion.cli
 import org.hapticon.messaging.ChatMessage
 import org.hapticon.messaging.InboxEvent
+import org.hapticon.messaging.broker.AclFile
 import org.hapticon.messaging.mqtt.BrokerAddress
 import org.hapticon.messaging.mqtt.MqttMessenger
 import org.hapticon.messaging.mqtt.MqttSettings
@@ -12,6 +13,8 @@ import org.junit.Assert.assertEquals
 import org.junit.Rule
 import org.junit.Test
 import org.junit.rules.TemporaryFolder
+import java.io.File
+import java.io.StringReader
 import java.net.InetAddress
 import java.net.ServerSocket
 import java.util.concurrent.LinkedBlockingQueue
@@ -22,18 +25,38 @@ class BrokerCommandTest {
     val temp = TemporaryFolder()
 
     @Test
-    fun broker_untilStopped_carriesMessagesAndReportsWhereItListens() {
+    fun broker_firstRunThenAddUser_authenticatesUsersAndCarriesTheirMessages() {
         val port = ServerSocket(0, 1, InetAddress.getByName("127.0.0.1")).use { it.localPort }
-        val data = temp.newFolder("store")
+        val data = temp.newFolder("broker")
+        val first = Captured()
+        runBroker(listOf("--port", port.toString(), "--data", data.path), Console(first.stream, Captured().stream)) {}
+        assertEquals(
+            listOf(
+                "broker: no users yet in ${File(data, "passwd")}; nobody can connect until you add one:",
+                "broker:   hapticon broker adduser NAME --data $data",
+                "broker: listening on tcp://127.0.0.1:$port (users ${File(data, "passwd")}, ACL ${File(data, "aclfile")}), store in ${File(data, "store")}; Ctrl-C stops it",
+                "broker: reachable from this machine only; --host ADDRESS (e.g. this laptop's Wi-Fi address) lets phones in",
+            ),
+            first.lines,
+        )
+        assertEquals(AclFile.DEFAULT_TEXT, File(data, "aclfile").readText())
+        for (user in listOf("alice", "bob")) {
+            val added = Captured()
+            runBroker(listOf("adduser", user, "--data", data.path), Console(added.stream, Captured().stream), StringReader("$user-secret\n"))
+            assertEquals(listOf("broker: $user can connect now (users file ${File(data, "passwd")})"), added.lines)
+        }
+
         val out = Captured()
         val received = LinkedBlockingQueue<InboxEvent>()
         var arrived: InboxEvent? = null
+        var impostor: Throwable? = null
         val message = ChatMessage.compose("alice", "through the command's broker")
         runBroker(listOf("--port", port.toString(), "--data", data.path), Console(out.stream, Captured().stream)) {
             runBlocking {
                 val address = BrokerAddress("127.0.0.1", port)
-                val bob = MqttMessenger(MqttSettings(address, "bob", "t"))
-                val alice = MqttMessenger(MqttSettings(address, "alice", "t"))
+                impostor = runCatching { MqttMessenger(MqttSettings(address, "alice", "guess")).connect { } }.exceptionOrNull()
+                val bob = MqttMessenger(MqttSettings(address, "bob", "bob-secret"))
+                val alice = MqttMessenger(MqttSettings(address, "alice", "alice-secret"))
                 bob.connect { received.put(it) }
                 alice.connect { }
                 alice.send("bob", message)
@@ -42,8 +65,41 @@ class BrokerCommandTest {
                 bob.disconnect()
             }
         }
-        assertEquals(listOf("broker: listening on tcp://127.0.0.1:$port, store in $data; Ctrl-C stops it"), out.lines)
+        assertEquals("broker: 2 user(s): alice, bob", out.lines.first())
         assertEquals(InboxEvent.MessageReceived(message), arrived)
+        assertEquals("cannot connect to tcp://127.0.0.1:$port as alice: bad user name or password", impostor?.message)
+    }
+
+    @Test
+    fun broker_allowAnonymous_warnsLoudlyAndLetsAnyoneIn() {
+        val port = ServerSocket(0, 1, InetAddress.getByName("127.0.0.1")).use { it.localPort }
+        val out = Captured()
+        val err = Captured()
+        var connected = false
+        runBroker(listOf("--port", port.toString(), "--data", temp.newFolder().path, "--allow-anonymous"), Console(out.stream, err.stream)) {
+            runBlocking {
+                val anyone = MqttMessenger(MqttSettings(BrokerAddress("127.0.0.1", port), "anyone", null))
+                anyone.connect { }
+                connected = true
+                anyone.disconnect()
+            }
+        }
+        assertEquals(true, connected)
+        assertEquals(
+            "broker: WARNING --allow-anonymous: any client that reaches 127.0.0.1:$port connects without a password, reads every inbox and sends as anyone. Use it for a throw-away local test only.",
+            err.lines.first(),
+        )
+        assertEquals(true, out.lines.first().contains("(ANONYMOUS)"))
+    }
+
+    @Test
+    fun brokerAddUser_badNameOrNoPassword_exitsTwoWithOneLine() {
+        val data = temp.newFolder().path
+        assertEquals(
+            listOf("hapticon: the user name must be 1..32 letters, digits, '.', '_' or '-', starting with a letter or digit; got 'a/b'"),
+            cli("broker", "adduser", "a/b", "--data", data).stderrLines,
+        )
+        assertEquals(listOf("hapticon: broker adduser needs a user name"), cli("broker", "adduser", "--data", data).stderrLines)
     }
 
     @Test

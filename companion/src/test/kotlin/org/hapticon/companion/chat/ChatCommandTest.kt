@@ -25,7 +25,7 @@ class ChatCommandTest {
     private val alice = ChatFixture.unique("alice")
     private val bob = ChatFixture.unique("bob")
 
-    private fun chat(vararg extra: String) = ChatRun(listOf("--broker", fixture.url, "--user", alice, "--to", bob) + extra)
+    private fun chat(vararg extra: String) = ChatRun(listOf("--broker", fixture.url, "--user", alice, "--to", bob, "--password-file", ChatFixture.passwordFile(alice)) + extra)
 
     @Test
     fun chat_withAPhone_exchangesTextIconStickerAndReceipts() {
@@ -82,10 +82,10 @@ class ChatCommandTest {
     }
 
     @Test
-    fun chat_sameMessageTwice_isShownOnce() {
+    fun chat_sameMessageTwice_isShownOnceAndAcknowledgedTwice() {
         val chat = chat()
         chat.err.awaitLine { it.startsWith("chat: connected") }
-        val (phone, _) = fixture.phone(bob)
+        val (phone, phoneEvents) = fixture.phone(bob)
         val once = ChatMessage.compose(bob, "only once")
         runBlocking {
             phone.send(alice, once)
@@ -94,6 +94,9 @@ class ChatCommandTest {
         }
         chat.out.awaitLine("$bob: marker")
         assertEquals(1, chat.out.lines.count { it == "$bob: only once" })
+        // The repeat is acknowledged again: the sender resends until a delivered receipt reaches it.
+        val receipts = List(3) { (phoneEvents.nextNonCapabilities() as InboxEvent.ReceiptReceived).receipt }
+        assertEquals(listOf(once.id, once.id), receipts.filter { it.state == ReceiptState.DELIVERED && it.messageId == once.id }.map { it.messageId })
         assertEquals(0, chat.quit())
     }
 
@@ -102,13 +105,19 @@ class ChatCommandTest {
         val chat = chat()
         chat.err.awaitLine { it.startsWith("chat: connected") }
         val (phone, _) = fixture.phone(bob)
-        val mallory = MqttClient.builder().useMqttVersion3().identifier(ChatFixture.unique("mallory"))
-            .serverHost("127.0.0.1").serverPort(fixture.broker.port).buildBlocking()
+        val malloryName = ChatFixture.unique("mallory")
+        val mallory = MqttClient.builder().useMqttVersion3().identifier(malloryName)
+            .serverHost("127.0.0.1").serverPort(fixture.broker.port)
+            .simpleAuth().username(malloryName).password(ChatFixture.register(malloryName).toByteArray()).applySimpleAuth()
+            .buildBlocking()
         mallory.connect()
-        mallory.publishWith().topic(Topics.inbox(alice)).qos(MqttQos.AT_LEAST_ONCE).payload("{\"schema\":\"hapticon.message\",\"version\":9}".toByteArray()).send()
+        mallory.publishWith().topic(Topics.inbox(alice, malloryName)).qos(MqttQos.AT_LEAST_ONCE).payload("{\"schema\":\"hapticon.message\",\"version\":9}".toByteArray()).send()
+        // bob's name in the payload, mallory's (the broker's word) in the topic: dropped as a forgery.
+        mallory.publishWith().topic(Topics.inbox(alice, malloryName)).qos(MqttQos.AT_LEAST_ONCE).payload(org.hapticon.messaging.MessageCodec.encode(ChatMessage.compose(bob, "I am bob"))).send()
         val escape = ChatMessage.compose(bob, "\u001b[2Jgotcha\u202e")
         runBlocking { phone.send(alice, escape) }
-        chat.err.awaitLine("chat: rejected a payload on hapticon/v1/inbox/$alice: UNSUPPORTED_VERSION (version): this build reads version 1 of \"hapticon.message\", got 9")
+        chat.err.awaitLine("chat: rejected a payload on hapticon/v1/inbox/$alice/$malloryName: UNSUPPORTED_VERSION (version): this build reads version 1 of \"hapticon.message\", got 9")
+        chat.err.awaitLine("chat: rejected a payload on hapticon/v1/inbox/$alice/$malloryName: INVALID_VALUE (sender): sender $bob on the topic of $malloryName")
         chat.out.awaitLine("$bob: \\u001b[2Jgotcha\\u202e")
         mallory.disconnect()
         assertEquals(0, chat.quit())
@@ -116,7 +125,7 @@ class ChatCommandTest {
 
     @Test
     fun chat_linesWithoutAPeerAndUnknownCommands_getAnswers() {
-        val chat = ChatRun(listOf("--broker", fixture.url, "--user", alice))
+        val chat = ChatRun(listOf("--broker", fixture.url, "--user", alice, "--password-file", ChatFixture.passwordFile(alice)))
         chat.err.awaitLine { it.startsWith("chat: connected") }
         chat.input.type("hello?")
         chat.input.type("/frobnicate")
@@ -147,6 +156,28 @@ class ChatCommandTest {
     }
 
     @Test
+    fun chat_brokerUnreachable_saysWhyAndExitsNonZeroWithTheUndeliveredCount() {
+        val port = java.net.ServerSocket(0, 1, java.net.InetAddress.getByName("127.0.0.1")).use { it.localPort } // nobody listens
+        val chat = ChatRun(listOf("--broker", "tcp://127.0.0.1:$port", "--user", alice, "--to", bob, "--password-file", ChatFixture.passwordFile(alice)))
+        chat.err.awaitLine { it.startsWith("chat: cannot connect: connection refused: nothing accepts connections there") }
+        chat.input.type("never sent")
+        assertEquals(2, chat.quit(command = null))
+        val last = chat.err.lines.last()
+        assertEquals(true, last.startsWith("hapticon: 1 message(s) not delivered (connection refused: nothing accepts connections there"))
+        assertEquals(true, last.endsWith("); they are lost with this process"))
+    }
+
+    @Test
+    fun chat_wrongPassword_exitsTwoSayingSo() {
+        ChatFixture.register(alice)
+        val wrong = File(fixture.temp.root, "wrong.pw").apply { writeText("guess\n") }
+        val chat = ChatRun(listOf("--broker", fixture.url, "--user", alice, "--password-file", wrong.path))
+        chat.err.awaitLine("chat: the broker refused $alice: bad user name or password")
+        assertEquals(2, chat.quit(command = null))
+        assertEquals("hapticon: cannot connect to ${fixture.url} as $alice: bad user name or password", chat.err.lines.last())
+    }
+
+    @Test
     fun chat_badArguments_exitTwoWithOneLine() {
         val cases = listOf(
             listOf("chat", "--user", "alice") to "hapticon: chat needs --broker",
@@ -156,6 +187,8 @@ class ChatCommandTest {
                 "hapticon: --user must be 1..32 letters, digits, '.', '_' or '-', starting with a letter or digit; got 'a/b'",
             listOf("chat", "--broker", fixture.url, "--user", "a", "--password-file", "/nonexistent/pw") to
                 "hapticon: --password-file /nonexistent/pw: no such file",
+            listOf("chat", "--broker", fixture.url, "--user", "a") to
+                "hapticon: chat needs --password-file FILE (the broker authenticates every user), or --anonymous for a broker run with --allow-anonymous",
         )
         for ((args, line) in cases) {
             val result = cli(*args.toTypedArray())

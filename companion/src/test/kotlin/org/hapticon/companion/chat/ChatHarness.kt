@@ -6,7 +6,10 @@ import org.hapticon.companion.EXIT_OK
 import org.hapticon.companion.reportFailure
 import org.hapticon.messaging.InboxEvent
 import org.hapticon.messaging.InboxListener
+import org.hapticon.messaging.broker.AclFile
+import org.hapticon.messaging.broker.BrokerSecurity
 import org.hapticon.messaging.broker.EmbeddedBroker
+import org.hapticon.messaging.broker.PasswordFile
 import org.hapticon.messaging.mqtt.BrokerAddress
 import org.hapticon.messaging.mqtt.MqttMessenger
 import org.hapticon.messaging.mqtt.MqttSettings
@@ -130,7 +133,7 @@ class ChatFixture : ExternalResource() {
     /** A connected messenger for [user] whose events land in the returned queue. */
     fun phone(user: String): Pair<MqttMessenger, LinkedBlockingQueue<InboxEvent>> {
         val events = LinkedBlockingQueue<InboxEvent>()
-        val messenger = MqttMessenger(MqttSettings(BrokerAddress.parse(url), user, "phone"))
+        val messenger = MqttMessenger(MqttSettings(BrokerAddress.parse(url), user, register(user)))
         messengers += messenger
         runBlocking { messenger.connect(InboxListener { events.put(it) }) }
         return messenger to events
@@ -139,11 +142,26 @@ class ChatFixture : ExternalResource() {
     companion object {
         private val names = AtomicInteger()
 
-        private val shared: EmbeddedBroker by lazy {
-            val store = Files.createTempDirectory("hapticon-chat-test-broker").toFile()
-            Runtime.getRuntime().addShutdownHook(Thread { store.deleteRecursively() })
-            EmbeddedBroker(File(store, "store")).also { it.start() }
+        private val root: File by lazy {
+            Files.createTempDirectory("hapticon-chat-test-broker").toFile().also { dir -> Runtime.getRuntime().addShutdownHook(Thread { dir.deleteRecursively() }) }
         }
+        private val passwords: PasswordFile by lazy { PasswordFile(File(root, "passwd")) }
+        private val registered = mutableSetOf<String>()
+
+        private val shared: EmbeddedBroker by lazy {
+            val acl = File(root, "aclfile").apply { writeText(AclFile.DEFAULT_TEXT) }
+            EmbeddedBroker(File(root, "store"), security = BrokerSecurity.Authenticated(passwords.file, acl)).also { it.start() }
+        }
+
+        /** Adds [user] to the shared broker's password file (once) and returns its password, `<user>-secret`. */
+        @Synchronized
+        fun register(user: String): String {
+            if (registered.add(user)) passwords.add(user, "$user-secret".toCharArray(), iterations = 1_000)
+            return "$user-secret"
+        }
+
+        /** A file holding [user]'s password, for `--password-file`. */
+        fun passwordFile(user: String): String = File(root, "$user.pw").apply { writeText(register(user) + "\n") }.path
 
         /** [base] with a suffix no other test of this JVM uses, e.g. `alice-3`. */
         fun unique(base: String): String = "$base-${names.incrementAndGet()}"

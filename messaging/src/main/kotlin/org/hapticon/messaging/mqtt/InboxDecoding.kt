@@ -13,12 +13,22 @@ import org.hapticon.messaging.Topics
 /** Turns what arrives on a topic into an [InboxEvent]; never throws. Transport-independent, so testable alone. */
 internal object InboxDecoding {
     fun decode(user: String, topic: String, payload: ByteArray): InboxEvent {
-        if (topic == Topics.inbox(user)) {
+        val sender = Topics.inboxSender(user, topic)
+        if (sender != null) {
             return when (val decoded = MessageCodec.decodeInbox(payload)) {
-                is Decoded.Accepted -> when (val value = decoded.value) {
-                    is ChatMessage -> InboxEvent.MessageReceived(value)
-                    is Receipt -> InboxEvent.ReceiptReceived(value)
-                    is HandPose -> InboxEvent.HandPoseReceived(value)
+                is Decoded.Accepted -> {
+                    // The topic's sender is the broker's word (its ACL lets a user publish only under its own
+                    // name); the payload's is the sender's claim. A disagreement is a forgery or a bug.
+                    val (event, claimed, field) = when (val value = decoded.value) {
+                        is ChatMessage -> Triple(InboxEvent.MessageReceived(value), value.sender, "sender")
+                        is Receipt -> Triple(InboxEvent.ReceiptReceived(value), value.from, "from")
+                        is HandPose -> Triple(InboxEvent.HandPoseReceived(value), value.from, "from")
+                    }
+                    if (claimed == sender) {
+                        event
+                    } else {
+                        InboxEvent.Rejected(topic, Decoded.Rejected(RejectionReason.INVALID_VALUE, field, "$field $claimed on the topic of $sender"))
+                    }
                 }
                 is Decoded.Rejected -> InboxEvent.Rejected(topic, decoded)
             }

@@ -42,8 +42,9 @@ import java.util.logging.Logger
 
 /**
  * A [Messenger] over MQTT 3.1.1 with the HiveMQ client: QoS 1 everywhere, a persistent session
- * (cleanSession=false) under the fixed client id of [MqttSettings.clientId], the inbox at
- * `hapticon/v1/inbox/<user>` and everyone's capabilities at `hapticon/v1/capabilities/+`.
+ * (cleanSession=false) under the client id of [MqttSettings.clientId] (the user name), the inbox at
+ * `hapticon/v1/inbox/<user>/+` (see [Topics]) and everyone's capabilities at `hapticon/v1/capabilities/+`.
+ * What this user sends goes to `hapticon/v1/inbox/<recipient>/<user>`.
  *
  * Incoming payloads are decoded by [MessageCodec] on a delivery thread of this messenger (never on the
  * network thread) and acknowledged to the broker only after the listener returned. One instance connects
@@ -59,7 +60,7 @@ public class MqttMessenger(private val settings: MqttSettings) : Messenger {
     @Volatile private var closing = false
     @Volatile private var client: Mqtt3AsyncClient? = null
     @Volatile private var subscribedOnce = false
-    private val inboxTopic = Topics.inbox(settings.user)
+    private val inboxTopic = Topics.inboxFilter(settings.user)
 
     // One thread, so events reach the listener in arrival order, and a blocking listener stalls only the
     // inbox, never the network thread that also carries keep-alives and acknowledgements.
@@ -105,15 +106,15 @@ public class MqttMessenger(private val settings: MqttSettings) : Messenger {
     }
 
     override suspend fun send(recipient: String, message: ChatMessage) {
-        publish(Topics.inbox(recipient), MessageCodec.encode(message), retain = false)
+        publish(Topics.inbox(recipient, user), MessageCodec.encode(message), retain = false)
     }
 
     override suspend fun send(recipient: String, receipt: Receipt) {
-        publish(Topics.inbox(recipient), MessageCodec.encode(receipt), retain = false)
+        publish(Topics.inbox(recipient, user), MessageCodec.encode(receipt), retain = false)
     }
 
     override suspend fun send(recipient: String, pose: HandPose) {
-        publish(Topics.inbox(recipient), MessageCodec.encode(pose), retain = false, qos = MqttQos.AT_MOST_ONCE)
+        publish(Topics.inbox(recipient, user), MessageCodec.encode(pose), retain = false, qos = MqttQos.AT_MOST_ONCE)
     }
 
     override suspend fun publishCapabilities(capabilities: Capabilities) {
@@ -203,7 +204,7 @@ public class MqttMessenger(private val settings: MqttSettings) : Messenger {
         }
         val delay = settings.reconnectPolicy.delayMillis(context.reconnector.attempts + 1)
         context.reconnector.reconnect(true).delay(delay, TimeUnit.MILLISECONDS)
-        mutableState.value = ConnectionState.Connecting(lastFailure = context.cause.message ?: context.cause.javaClass.simpleName)
+        mutableState.value = ConnectionState.Connecting(lastFailure = describeFailure(context.cause))
     }
 
     private fun deliver(publish: Mqtt3Publish, listener: InboxListener) {
@@ -223,7 +224,7 @@ public class MqttMessenger(private val settings: MqttSettings) : Messenger {
         }
     }
 
-    private companion object {
+    internal companion object {
         val LOG: Logger = Logger.getLogger(MqttMessenger::class.java.name)
 
         /** Why the broker will never accept this client as configured, or null when trying again may help. */
@@ -236,6 +237,18 @@ public class MqttMessenger(private val settings: MqttSettings) : Messenger {
                 Mqtt3ConnAckReturnCode.UNSUPPORTED_PROTOCOL_VERSION -> "the broker does not speak MQTT 3.1.1"
                 else -> null
             }
+        }
+
+        /** One line saying why a connection attempt failed or a connection ended, for people. */
+        fun describeFailure(cause: Throwable): String {
+            val chain = generateSequence(cause) { it.cause }.take(8).toList()
+            chain.firstOrNull { it is javax.net.ssl.SSLException }?.let { tls ->
+                val untrusted = chain.any { it is java.security.cert.CertificateException || it.javaClass.simpleName == "CertPathBuilderException" }
+                return if (untrusted) "TLS: the broker's certificate is not trusted (${tls.message})" else "TLS handshake failed: ${tls.message}"
+            }
+            chain.firstOrNull { it is java.net.ConnectException }?.let { return "connection refused: nothing accepts connections there (${it.message})" }
+            chain.firstOrNull { it is java.net.UnknownHostException }?.let { return "unknown host ${it.message}" }
+            return cause.message ?: cause.javaClass.simpleName
         }
 
         fun describe(state: ConnectionState): String = when (state) {

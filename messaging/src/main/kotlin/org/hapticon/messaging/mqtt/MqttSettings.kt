@@ -60,36 +60,35 @@ public data class BrokerAddress(val host: String, val port: Int = DEFAULT_PORT, 
 /**
  * How an [MqttMessenger] connects.
  *
- * The MQTT client id is `hapticon-<user>-<deviceId>`, fixed per user and device, so the broker keeps one
- * persistent session per device: messages queued while the device is offline wait for that device. Two
- * clients with the same user and device id take the session from each other; give each device its own id.
+ * The MQTT client id is the user name: the broker binds the client id to the authenticated user
+ * (Mosquitto `use_username_as_clientid true`; the embedded broker refuses any other id), so nobody can
+ * take over another user's persistent session and its queued messages. A user therefore has one session:
+ * a second device of the same user that connects takes the session over from the first (MQTT 3.1.1
+ * §3.1.4: the server disconnects the existing client with that id).
  *
  * @property broker where to connect.
- * @property user the user name (see [Topics.isValidUserName]); also the MQTT user name when [password] is set.
- * @property deviceId a stable id of this installation, same rules as a user name.
- * @property password the MQTT password, or null for a broker that allows anonymous clients. Sent in clear
- *   text unless [BrokerAddress.tls].
+ * @property user the user name (see [Topics.isValidUserName]); also the MQTT user name and client id.
+ * @property password the MQTT password, or null for a broker started with `--allow-anonymous`. Sent in
+ *   clear text unless [BrokerAddress.tls].
  * @property keepAliveSeconds MQTT keep-alive: how soon a dead connection is noticed.
  * @property reconnectPolicy delays between reconnection attempts.
  */
 public data class MqttSettings(
     val broker: BrokerAddress,
     val user: String,
-    val deviceId: String,
-    val password: String? = null,
+    val password: String?,
     val keepAliveSeconds: Int = 30,
     val reconnectPolicy: RetryPolicy = RetryPolicy(initialDelayMillis = 250, maxDelayMillis = 30_000),
 ) {
     init {
         Topics.requireUserName(user)
-        require(Topics.isValidUserName(deviceId)) { "device id must follow the user-name rules, was \"$deviceId\"" }
         require(keepAliveSeconds in 1..65_535) { "keepAliveSeconds must be in 1..65535, was $keepAliveSeconds" }
     }
 
-    /** The MQTT client id: `hapticon-<user>-<deviceId>`. */
-    val clientId: String get() = "hapticon-$user-$deviceId"
+    /** The MQTT client id: the user name, as the broker requires. */
+    val clientId: String get() = user
 
     /** Omits the password. */
     override fun toString(): String =
-        "MqttSettings(broker=$broker, user=$user, deviceId=$deviceId, password=${if (password == null) "none" else "***"}, keepAliveSeconds=$keepAliveSeconds)"
+        "MqttSettings(broker=$broker, user=$user, password=${if (password == null) "none" else "***"}, keepAliveSeconds=$keepAliveSeconds)"
 }

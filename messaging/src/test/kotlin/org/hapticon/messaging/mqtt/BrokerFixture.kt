@@ -6,7 +6,10 @@ import com.hivemq.client.mqtt.mqtt3.Mqtt3BlockingClient
 import kotlinx.coroutines.runBlocking
 import org.hapticon.messaging.InboxListener
 import org.hapticon.messaging.RetryPolicy
+import org.hapticon.messaging.broker.AclFile
+import org.hapticon.messaging.broker.BrokerSecurity
 import org.hapticon.messaging.broker.EmbeddedBroker
+import org.hapticon.messaging.broker.PasswordFile
 import org.junit.rules.ExternalResource
 import java.io.File
 import java.nio.file.Files
@@ -34,30 +37,54 @@ class BrokerFixture : ExternalResource() {
         rawClients.forEach { runCatching { it.disconnect() } }
     }
 
-    /** A messenger for [user] on [device], not yet connected. */
-    fun messenger(user: String, device: String = "test"): MqttMessenger =
-        MqttMessenger(MqttSettings(address, user, device, reconnectPolicy = FAST_RECONNECT)).also { messengers += it }
+    /** A messenger for [user] (registered in the broker's password file), not yet connected. */
+    fun messenger(user: String): MqttMessenger =
+        MqttMessenger(MqttSettings(address, user, SharedBroker.register(user), reconnectPolicy = FAST_RECONNECT)).also { messengers += it }
 
     /** A messenger for [user], connected with [listener]. */
-    fun connected(user: String, listener: InboxListener, device: String = "test"): MqttMessenger =
-        messenger(user, device).also { runBlocking { it.connect(listener) } }
+    fun connected(user: String, listener: InboxListener): MqttMessenger =
+        messenger(user).also { runBlocking { it.connect(listener) } }
 
-    /** A bare MQTT client that can publish anything anywhere: the hostile sender. */
-    fun rawClient(id: String): Mqtt3BlockingClient {
-        val client = MqttClient.builder().useMqttVersion3().identifier(id).serverHost(EmbeddedBroker.HOST).serverPort(broker.port).buildBlocking()
+    /**
+     * A bare MQTT client, authenticated as [user] (client id [clientId]), that can attempt anything the
+     * broker lets it: the hostile third user.
+     */
+    fun rawClient(user: String, clientId: String = user): Mqtt3BlockingClient {
+        val client = MqttClient.builder().useMqttVersion3().identifier(clientId).serverHost(EmbeddedBroker.HOST).serverPort(broker.port)
+            .simpleAuth().username(user).password(SharedBroker.register(user).toByteArray()).applySimpleAuth()
+            .buildBlocking()
         client.connect()
         rawClients += client
         return client
     }
 }
 
-/** One embedded broker for every test in this JVM, started on first use; its store is deleted at exit. */
+/**
+ * One embedded broker for every test in this JVM, started on first use, enforcing the shipped ACL and a
+ * password file that [register] fills; its store is deleted at exit.
+ */
 object SharedBroker {
-    val instance: EmbeddedBroker by lazy {
-        val store = Files.createTempDirectory("hapticon-test-broker").toFile()
-        Runtime.getRuntime().addShutdownHook(Thread { store.deleteRecursively() })
-        EmbeddedBroker(File(store, "store")).also { it.start() }
+    private val root: File by lazy {
+        Files.createTempDirectory("hapticon-test-broker").toFile().also { dir -> Runtime.getRuntime().addShutdownHook(Thread { dir.deleteRecursively() }) }
     }
+    val passwords: PasswordFile by lazy { PasswordFile(File(root, "passwd")) }
+
+    val instance: EmbeddedBroker by lazy {
+        val acl = File(root, "aclfile").apply { writeText(AclFile.DEFAULT_TEXT) }
+        EmbeddedBroker(File(root, "store"), security = BrokerSecurity.Authenticated(passwords.file, acl)).also { it.start() }
+    }
+
+    /** Adds [user] to the password file (once) and returns its password, `<user>-secret`. */
+    @Synchronized
+    fun register(user: String): String {
+        val password = "$user-secret"
+        // Few PBKDF2 rounds: the tests connect hundreds of times; the format is the same.
+        if (user !in registered) passwords.add(user, password.toCharArray(), iterations = 1_000)
+        registered += user
+        return password
+    }
+
+    private val registered = mutableSetOf<String>()
 }
 
 private val users = AtomicInteger()

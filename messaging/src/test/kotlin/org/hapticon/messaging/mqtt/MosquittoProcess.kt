@@ -61,6 +61,14 @@ class MosquittoProcess(private val dir: File, users: Map<String, String>) {
         }
     }
 
+    /** Kills Mosquitto with SIGKILL: no chance to save anything on the way out. */
+    fun kill() {
+        val running = process ?: return
+        process = null
+        running.destroyForcibly() // SIGKILL on Unix (java.lang.Process)
+        running.waitFor(20, TimeUnit.SECONDS)
+    }
+
     fun restart() {
         stop()
         start()

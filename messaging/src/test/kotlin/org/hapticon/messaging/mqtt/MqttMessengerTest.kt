@@ -101,38 +101,45 @@ class MqttMessengerTest {
     fun hostilePayloads_areRejectedWithReasons_andTheInboxKeepsWorking() {
         val bobInbox = CollectingListener()
         fixture.connected(bob, bobInbox)
-        val mallory = fixture.rawClient(uniqueUser("mallory"))
-        val inbox = Topics.inbox(bob)
+        val malloryName = uniqueUser("mallory")
+        val mallory = fixture.rawClient(malloryName)
+        val inbox = Topics.inbox(bob, malloryName) // the only way into bob's inbox the ACL leaves mallory
         mallory.publishQos1(inbox, "{\"schema\":".toByteArray())
         mallory.publishQos1(inbox, ByteArray(100_000) { 'x'.code.toByte() })
-        mallory.publishQos1(inbox, """{"schema":"hapticon.message","version":7}""".toByteArray())
+        mallory.publishQos1(inbox, """{"schema":"hapticon.message","version":7,"sender":"$malloryName"}""".toByteArray())
         mallory.publishQos1(inbox, String(MessageCodec.encode(hello), Charsets.UTF_8).replace("\"text\":\"hello\"", "\"text\":42").toByteArray())
-        // Someone else's capabilities on bob's topic: a forgery (the ACL of a real deployment forbids it).
-        mallory.publishQos1(Topics.capabilities(bob), MessageCodec.encode(Capabilities("mallory", RendererKind.NONE, false)))
+        // alice's message (payload sender alice) under mallory's name: a forgery the receiver drops.
         mallory.publishQos1(inbox, MessageCodec.encode(hello))
-        val events = bobInbox.awaitEvents(6)
-        val rejections = events.take(5).map { (it as InboxEvent.Rejected).rejection.let { r -> r.reason to r.field } }
+        mallory.publishQos1(inbox, MessageCodec.encode(Receipt(ID_2, alice, ReceiptState.READ, NEW_YEAR_2026)))
+        val own = hello.copy(id = ID_2, sender = malloryName)
+        mallory.publishQos1(inbox, MessageCodec.encode(own))
+        val events = bobInbox.awaitEvents(7)
+        val rejections = events.take(6).map { (it as InboxEvent.Rejected).rejection.let { r -> r.reason to r.field } }
         assertEquals(
+            "$events",
             listOf(
                 RejectionReason.MALFORMED_JSON to null,
                 RejectionReason.PAYLOAD_TOO_LARGE to null,
                 RejectionReason.UNSUPPORTED_VERSION to "version",
                 RejectionReason.WRONG_TYPE to "text",
-                RejectionReason.INVALID_VALUE to "user",
+                RejectionReason.INVALID_VALUE to "sender",
+                RejectionReason.INVALID_VALUE to "from",
             ),
             rejections,
         )
-        assertEquals(InboxEvent.MessageReceived(hello), events[5])
+        assertEquals("$events", "sender $alice on the topic of $malloryName", (events[4] as InboxEvent.Rejected).rejection.detail)
+        assertEquals(InboxEvent.MessageReceived(own), events[6])
     }
 
     @Test
     fun oversizedPayload_isRejectedFromItsSizeAlone() {
         val bobInbox = CollectingListener()
         fixture.connected(bob, bobInbox)
-        fixture.rawClient(uniqueUser("mallory")).publishQos1(Topics.inbox(bob), ByteArray(MessageLimits.MAX_PAYLOAD_BYTES + 1))
+        val malloryName = uniqueUser("mallory")
+        fixture.rawClient(malloryName).publishQos1(Topics.inbox(bob, malloryName), ByteArray(MessageLimits.MAX_PAYLOAD_BYTES + 1))
         assertEquals(
             InboxEvent.Rejected(
-                Topics.inbox(bob),
+                Topics.inbox(bob, malloryName),
                 Decoded.Rejected(RejectionReason.PAYLOAD_TOO_LARGE, null, "65537 bytes exceed the limit of 65536"),
             ),
             bobInbox.awaitEvent(),
@@ -167,7 +174,7 @@ class MqttMessengerTest {
             aliceMessenger.send(bob, hello.copy(id = ID_2))
             assertEquals(InboxEvent.MessageReceived(hello.copy(id = ID_2)), delivered.poll(CollectingListener.WAIT_SECONDS, TimeUnit.SECONDS))
             val record = synchronized(logged) { logged.single() }
-            assertEquals("inbox listener of hapticon-$bob-test failed; message acknowledged anyway", record.message)
+            assertEquals("inbox listener of $bob failed; message acknowledged anyway", record.message)
             assertEquals("listener bug", record.thrown.message)
         } finally {
             logger.removeHandler(capture)
@@ -185,19 +192,21 @@ class MqttMessengerTest {
         val aliceInbox = CollectingListener()
         fixture.connected(alice, aliceInbox)
         assertEquals(InboxEvent.CapabilitiesReceived(bobCapabilities), aliceInbox.awaitEvent())
-        // An empty retained message deletes it, so later tests on the shared broker do not receive it.
-        fixture.rawClient(uniqueUser("cleaner")).publishQos1(Topics.capabilities(bob), ByteArray(0), retain = true)
+        // An empty retained message deletes it, so later tests on the shared broker do not receive it. Only bob
+        // may write bob's capabilities, and only one client can be bob at a time.
+        bobMessenger.disconnect()
+        fixture.rawClient(bob).publishQos1(Topics.capabilities(bob), ByteArray(0), retain = true)
     }
 
     @Test
     fun offlineRecipient_getsWhatWasSentMeanwhile_onItsNextConnection() = runBlocking {
-        val bobMessenger = fixture.connected(bob, CollectingListener(), device = "phone")
+        val bobMessenger = fixture.connected(bob, CollectingListener())
         bobMessenger.disconnect()
         val aliceMessenger = fixture.connected(alice, CollectingListener())
         aliceMessenger.send(bob, hello)
         aliceMessenger.send(bob, hello.copy(id = ID_2, text = "second"))
         val bobAgain = CollectingListener()
-        fixture.connected(bob, bobAgain, device = "phone")
+        fixture.connected(bob, bobAgain)
         assertEquals(
             listOf(InboxEvent.MessageReceived(hello), InboxEvent.MessageReceived(hello.copy(id = ID_2, text = "second"))),
             bobAgain.awaitEvents(2),
@@ -208,12 +217,12 @@ class MqttMessengerTest {
     fun connect_whileTheBrokerIsDown_waitsForItAndThenConnects() = runBlocking {
         // A broker not started yet, on a port nobody listens on.
         val port = ServerSocket(0, 1, InetAddress.getByName(EmbeddedBroker.HOST)).use { it.localPort }
-        val late = EmbeddedBroker(temp.newFolder(), port)
-        val aliceMessenger = MqttMessenger(MqttSettings(BrokerAddress(EmbeddedBroker.HOST, port), alice, "test", reconnectPolicy = FAST_RECONNECT))
+        val late = EmbeddedBroker(temp.newFolder(), port, fixture.broker.security)
+        val aliceMessenger = MqttMessenger(MqttSettings(BrokerAddress(EmbeddedBroker.HOST, port), alice, SharedBroker.register(alice), reconnectPolicy = FAST_RECONNECT))
         try {
             val connecting = async { aliceMessenger.connect(CollectingListener()) }
             val retrying = withTimeout(20_000) { aliceMessenger.state.first { it is ConnectionState.Connecting && it.lastFailure != null } }
-            assertEquals(true, (retrying as ConnectionState.Connecting).lastFailure!!.contains("Connection refused"))
+            assertEquals(true, (retrying as ConnectionState.Connecting).lastFailure!!.startsWith("connection refused: nothing accepts connections there"))
             late.start()
             withTimeout(20_000) { connecting.await() }
             assertEquals(ConnectionState.Connected, aliceMessenger.state.value)

@@ -91,6 +91,13 @@ interface OutboxDao {
 
     @Query("DELETE FROM outbox WHERE message_id = :id")
     suspend fun deleteEntry(id: String)
+
+    /** The broker acknowledged [id]: due again at [next] unless its delivered receipt removes it first. */
+    @Query("UPDATE outbox SET next_attempt_at = :next WHERE message_id = :id")
+    suspend fun reschedule(id: String, next: Long)
+
+    @Query("SELECT * FROM outbox WHERE message_id = :id")
+    suspend fun entry(id: String): OutboxEntity?
 }
 
 /** The user's custom icons. */

@@ -1,5 +1,9 @@
 package org.hapticon.app.feature.chat
 
+import androidx.compose.runtime.remember
+import androidx.compose.foundation.text.KeyboardOptions
+import androidx.compose.ui.text.input.KeyboardType
+import androidx.compose.ui.text.input.PasswordVisualTransformation
 import androidx.activity.compose.BackHandler
 import androidx.compose.foundation.Image
 import androidx.compose.foundation.clickable
@@ -107,7 +111,7 @@ fun ChatListRoute(component: ChatComponent, onOpen: (String) -> Unit) {
 fun ChatListScreen(
     uiState: ChatListUiState,
     availableRenderers: List<AdaptiveRenderer>,
-    onSaveAccount: (String, String) -> String?,
+    onSaveAccount: (userName: String, brokerUrl: String, password: String) -> String?,
     onNewConversation: (String) -> String?,
     onOpen: (String) -> Unit,
     onAutoPlay: (Boolean) -> Unit,
@@ -142,16 +146,23 @@ fun ChatListScreen(
 }
 
 @Composable
-private fun AccountForm(defaultBroker: String, onSave: (String, String) -> String?) {
+private fun AccountForm(defaultBroker: String, onSave: (String, String, String) -> String?) {
     var name by rememberSaveable { mutableStateOf("") }
     var broker by rememberSaveable { mutableStateOf(defaultBroker) }
+    // Not rememberSaveable: a password does not belong in the saved instance state.
+    var password by remember { mutableStateOf("") }
     var error by rememberSaveable { mutableStateOf<String?>(null) }
     Column(Modifier.padding(16.dp), verticalArrangement = Arrangement.spacedBy(12.dp)) {
         Text("Welcome to Hapticon", style = MaterialTheme.typography.headlineSmall)
         OutlinedTextField(name, { name = it }, label = { Text("User name") }, singleLine = true, modifier = Modifier.fillMaxWidth())
         OutlinedTextField(broker, { broker = it }, label = { Text("Broker URL") }, singleLine = true, modifier = Modifier.fillMaxWidth())
+        OutlinedTextField(
+            password, { password = it }, label = { Text("Broker password") }, singleLine = true,
+            visualTransformation = PasswordVisualTransformation(),
+            keyboardOptions = KeyboardOptions(keyboardType = KeyboardType.Password), modifier = Modifier.fillMaxWidth(),
+        )
         error?.let { Text(it, color = MaterialTheme.colorScheme.error) }
-        Button(onClick = { error = onSave(name, broker) }) { Text("Start chatting") }
+        Button(onClick = { error = onSave(name, broker, password) }) { Text("Start chatting") }
     }
 }
 

@@ -38,13 +38,13 @@ class ChatListViewModel(
         if (user == null) ChatListUiState.NeedsAccount(prefs.brokerUrl) else ChatListUiState.Success(user, conversations, prefs)
     }.stateIn(viewModelScope, SharingStarted.WhileSubscribed(5_000), ChatListUiState.Loading)
 
-    /** Saves the account; returns why not when the user name is not valid. */
-    fun saveAccount(userName: String, brokerUrl: String): String? {
+    /** Saves the account (a blank [password] means none); returns why not when the user name or URL is not valid. */
+    fun saveAccount(userName: String, brokerUrl: String, password: String): String? {
         val name = userName.trim()
         if (!Topics.isValidUserName(name)) return "Use 1 to 32 letters, digits, '.', '_' or '-'"
         val url = brokerUrl.trim()
         if (runCatching { org.hapticon.messaging.mqtt.BrokerAddress.parse(url) }.isFailure) return "Not a broker URL (e.g. tcp://10.0.2.2:1883)"
-        settings.update { it.copy(userName = name, brokerUrl = url) }
+        settings.update { it.copy(userName = name, brokerUrl = url, brokerPassword = password.takeIf { p -> p.isNotEmpty() }) }
         return null
     }
 

@@ -5,6 +5,7 @@ import ch.qos.logback.classic.LoggerContext
 import ch.qos.logback.classic.encoder.PatternLayoutEncoder
 import ch.qos.logback.classic.spi.ILoggingEvent
 import ch.qos.logback.core.ConsoleAppender
+import com.hivemq.embedded.EmbeddedExtension
 import com.hivemq.embedded.EmbeddedHiveMQ
 import org.slf4j.LoggerFactory
 import java.io.File
@@ -14,13 +15,17 @@ import java.net.ServerSocket
 import java.util.concurrent.ExecutionException
 
 /**
- * An MQTT broker (HiveMQ Community Edition) running inside this JVM, listening on [HOST] (loopback) only:
- * for the `hapticon broker` command, the demo and tests. Not a deployment broker; see `companion/mosquitto/`.
+ * An MQTT broker (HiveMQ Community Edition) running inside this JVM, listening on [host] (loopback unless
+ * told otherwise): for the `hapticon broker` command, the demo and tests. For a study with many phones see
+ * `companion/mosquitto/` and docs/deployment.md.
+ *
+ * [security] decides who connects and what they may do: with [BrokerSecurity.Authenticated] the same
+ * password file, client-id binding and ACL as the Mosquitto deployment (see [SecurityExtension]);
+ * [BrokerSecurity.AllowAnonymous] lets anyone do anything and is logged as a warning on every start.
  *
  * Sessions, subscriptions, retained messages and the QoS 1 messages queued for offline persistent
  * sessions (clients that connect with cleanSession=false) are kept in [dataDirectory], so they survive
- * [stop] and [start], and [restart]. Anonymous clients are allowed: the broker is reachable from this
- * machine only.
+ * [stop] and [start], and [restart].
  *
  * [requestedPort] 0 picks a free port on the first [start]; later starts reuse the port it got, so clients
  * can reconnect to the same address after a restart. Not thread-safe: start and stop from one thread.
@@ -29,10 +34,15 @@ import java.util.concurrent.ExecutionException
  * at INFO to stdout, which belongs to the command that embeds the broker.
  *
  * @property dataDirectory where the persistent store lives; created when missing.
+ * @property security authentication and authorization.
+ * @property host the address to listen on: [HOST] (loopback) by default, a LAN address so that phones can
+ *   reach a laptop, or `0.0.0.0` for every interface.
  */
 public class EmbeddedBroker(
     public val dataDirectory: File,
     private val requestedPort: Int = 0,
+    public val security: BrokerSecurity,
+    public val host: String = HOST,
 ) : AutoCloseable {
     private var broker: EmbeddedHiveMQ? = null
     private var boundPort: Int = requestedPort
@@ -55,18 +65,23 @@ public class EmbeddedBroker(
         }
 
     /**
-     * Starts listening on [HOST]:[port] and blocks until the broker accepts connections (about a second;
+     * Starts listening on [host]:[port] and blocks until the broker accepts connections (about a second;
      * five in a JVM that has not loaded the broker's classes yet).
      * Does nothing when already running. Throws [IOException] when the port is taken or the data directory
      * is unusable.
      */
     public fun start() {
         if (broker != null) return
-        if (boundPort == 0) boundPort = ServerSocket(0, 1, InetAddress.getByName(HOST)).use { it.localPort }
+        val address = InetAddress.getByName(host)
+        if (boundPort == 0) boundPort = ServerSocket(0, 1, address).use { it.localPort }
         try {
-            ServerSocket(boundPort, 1, InetAddress.getByName(HOST)).close()
+            ServerSocket(boundPort, 1, address).close()
         } catch (e: IOException) {
-            throw IOException("cannot listen on $HOST:$boundPort: ${e.message}", e)
+            throw IOException("cannot listen on $host:$boundPort: ${e.message}", e)
+        }
+        if (security is BrokerSecurity.Authenticated) {
+            // Fail here with the reason rather than with an extension that refuses to start.
+            AclFile.read(security.aclFile)
         }
         val conf = File(dataDirectory, "conf")
         val data = File(dataDirectory, "data")
@@ -75,18 +90,31 @@ public class EmbeddedBroker(
             if (!dir.isDirectory && !dir.mkdirs()) throw IOException("cannot create the broker directory $dir")
         }
         quietLogging()
-        File(conf, "config.xml").writeText(configXml(boundPort))
+        if (security == BrokerSecurity.AllowAnonymous) {
+            LoggerFactory.getLogger(EmbeddedBroker::class.java).warn(
+                "ANONYMOUS ACCESS: the broker on $host:$boundPort lets any client connect without a password, " +
+                    "read every inbox and publish as anyone (--allow-anonymous)",
+            )
+        }
+        File(conf, "config.xml").writeText(configXml(host, boundPort))
         File(conf, "logback.xml").writeText(LOGBACK_XML)
         val started = EmbeddedHiveMQ.builder()
             .withConfigurationFolder(conf.toPath())
             .withDataFolder(data.toPath())
             .withExtensionsFolder(extensions.toPath())
+            .withEmbeddedExtension(
+                EmbeddedExtension.builder()
+                    .withId("hapticon-security").withName("Hapticon users and ACL").withVersion("1")
+                    .withPriority(1000).withStartPriority(1000)
+                    .withExtensionMain(SecurityExtension(security))
+                    .build(),
+            )
             .build()
         try {
             started.start().get()
         } catch (e: ExecutionException) {
             runCatching { started.close() }
-            throw IOException("the broker did not start on $HOST:$boundPort: ${e.cause?.message}", e.cause)
+            throw IOException("the broker did not start on $host:$boundPort: ${e.cause?.message}", e.cause)
         }
         broker = started
     }
@@ -143,7 +171,7 @@ public class EmbeddedBroker(
 
         private const val LOG_PATTERN = "broker %level %logger{0}: %msg%n%ex"
 
-        /** The only address the embedded broker binds: loopback. */
+        /** The address the embedded broker binds unless told otherwise: loopback. */
         public const val HOST: String = "127.0.0.1"
 
         /** QoS 1 messages kept per offline persistent session. */
@@ -152,13 +180,13 @@ public class EmbeddedBroker(
         /** Largest MQTT packet accepted, in bytes: a 64 KiB payload plus topic and headers, with room to spare. */
         public const val MAX_PACKET_BYTES: Int = 131_072
 
-        private fun configXml(port: Int) = """
+        private fun configXml(host: String, port: Int) = """
             |<?xml version="1.0"?>
             |<hivemq>
             |    <listeners>
             |        <tcp-listener>
             |            <port>$port</port>
-            |            <bind-address>$HOST</bind-address>
+            |            <bind-address>$host</bind-address>
             |        </tcp-listener>
             |    </listeners>
             |    <mqtt>

@@ -27,18 +27,38 @@ class EmbeddedBrokerTest {
     @After
     fun stopBrokers() = brokers.forEach { Thread(it::stop).start() }
 
-    private fun broker(port: Int = 0) = EmbeddedBroker(temp.newFolder(), port).also { brokers += it }
+    private fun broker(port: Int = 0, host: String = EmbeddedBroker.HOST): EmbeddedBroker {
+        val dir = temp.newFolder()
+        val passwords = PasswordFile(java.io.File(dir, "passwd")).apply { add("alice", "alice-secret".toCharArray(), iterations = 1_000) }
+        val acl = java.io.File(dir, "aclfile").apply { writeText(AclFile.DEFAULT_TEXT) }
+        return EmbeddedBroker(java.io.File(dir, "store"), port, BrokerSecurity.Authenticated(passwords.file, acl), host).also { brokers += it }
+    }
 
     @Test
     fun start_portZero_answersAnMqttConnectOnLoopbackOnly() {
         val broker = broker()
         broker.start()
         assertArrayEquals(CONNACK_ACCEPTED, connect(InetAddress.getByName(EmbeddedBroker.HOST), broker.port))
+        assertArrayEquals(CONNACK_NOT_AUTHORIZED, connect(InetAddress.getByName(EmbeddedBroker.HOST), broker.port, user = null))
+        assertArrayEquals(CONNACK_BAD_PASSWORD, connect(InetAddress.getByName(EmbeddedBroker.HOST), broker.port, password = "guess"))
+        assertArrayEquals(CONNACK_IDENTIFIER_REJECTED, connect(InetAddress.getByName(EmbeddedBroker.HOST), broker.port, clientId = "bob"))
         val other = NetworkInterface.networkInterfaces().toList()
             .flatMap { it.inetAddresses.toList() }
             .firstOrNull { it is Inet4Address && !it.isLoopbackAddress }
         assumeTrue("no non-loopback IPv4 address to try", other != null)
         assertThrows(ConnectException::class.java) { Socket().use { it.connect(InetSocketAddress(other, broker.port), 2_000) } }
+    }
+
+    @Test
+    fun start_lanHost_answersThereWithTheSameLoginRules() {
+        val lan = NetworkInterface.networkInterfaces().toList()
+            .flatMap { it.inetAddresses.toList() }
+            .firstOrNull { it is Inet4Address && !it.isLoopbackAddress }
+        assumeTrue("no non-loopback IPv4 address to bind", lan != null)
+        val broker = broker(host = lan!!.hostAddress)
+        broker.start()
+        assertArrayEquals(CONNACK_ACCEPTED, connect(lan, broker.port))
+        assertArrayEquals(CONNACK_NOT_AUTHORIZED, connect(lan, broker.port, user = null))
     }
 
     // One test for the lifecycle: every stop takes 4.5 s.
@@ -71,23 +91,26 @@ class EmbeddedBrokerTest {
     @Test
     fun port_beforeTheFirstStartWithPortZero_throws() {
         assertThrows(IllegalStateException::class.java) { broker().port }
-        assertEquals(1883, EmbeddedBroker(temp.root, 1883).port)
+        assertEquals(1883, EmbeddedBroker(temp.root, 1883, BrokerSecurity.AllowAnonymous).port)
     }
 
-    /** Sends an MQTT 3.1.1 CONNECT (clean session, client id "t") and returns the 4-byte reply. */
-    private fun connect(host: InetAddress, port: Int): ByteArray = Socket(host, port).use { socket ->
-        socket.soTimeout = 10_000
-        val connect = byteArrayOf(
-            0x10, 13, // CONNECT, remaining length
-            0, 4, 'M'.code.toByte(), 'Q'.code.toByte(), 'T'.code.toByte(), 'T'.code.toByte(), 4, // protocol name, level 4 = 3.1.1
-            0x02, 0, 30, // clean session, keep-alive 30 s
-            0, 1, 't'.code.toByte(), // client id
-        )
-        socket.getOutputStream().write(connect)
-        socket.getInputStream().readNBytes(4)
-    }
+    /** Sends an MQTT 3.1.1 CONNECT (clean session) as [user] (none when null) and returns the 4-byte reply. */
+    private fun connect(host: InetAddress, port: Int, user: String? = "alice", password: String = "alice-secret", clientId: String = user ?: "t"): ByteArray =
+        Socket(host, port).use { socket ->
+            socket.soTimeout = 10_000
+            fun field(text: String) = byteArrayOf(0, text.length.toByte()) + text.toByteArray()
+            val flags = if (user == null) 0x02 else 0xC2 // clean session (+ user name and password)
+            val variable = field("MQTT") + byteArrayOf(4, flags.toByte(), 0, 30) // level 4 = 3.1.1, keep-alive 30 s
+            val payload = field(clientId) + (if (user == null) ByteArray(0) else field(user) + field(password))
+            val body = variable + payload
+            socket.getOutputStream().write(byteArrayOf(0x10, body.size.toByte()) + body)
+            socket.getInputStream().readNBytes(4)
+        }
 
     private companion object {
         val CONNACK_ACCEPTED = byteArrayOf(0x20, 0x02, 0x00, 0x00)
+        val CONNACK_IDENTIFIER_REJECTED = byteArrayOf(0x20, 0x02, 0x00, 0x02)
+        val CONNACK_BAD_PASSWORD = byteArrayOf(0x20, 0x02, 0x00, 0x04)
+        val CONNACK_NOT_AUTHORIZED = byteArrayOf(0x20, 0x02, 0x00, 0x05)
     }
 }

@@ -1,0 +1,18 @@
+package org.hapticon.messaging.mqtt
+
+import org.junit.Rule
+
+/** [BrokerSecurityContract] against the embedded broker with the shipped ACL. */
+class EmbeddedBrokerSecurityTest : BrokerSecurityContract() {
+    @get:Rule
+    val fixture = BrokerFixture()
+
+    override val alice = uniqueUser("alice")
+    override val bob = uniqueUser("bob")
+    override val mallory = uniqueUser("mallory")
+    override val address: BrokerAddress get() = fixture.address
+    override val keepsSessionsOnRefusedConnects = true
+    override val refusesForeignClientIds = true
+
+    override fun password(user: String): String = SharedBroker.register(user)
+}
