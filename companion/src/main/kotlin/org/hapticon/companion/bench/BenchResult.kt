@@ -72,7 +72,7 @@ data class BenchResult(
      * The targets, each judged on its worst measured case (slowest workload, slowest icon): FAST's median
      * speed on one thread, EXACT's median speed ratio to the plain `Math.sin` loop; then the sensor
      * targets: decoding speed of CSV and framed streams, allocation while decoding (every protocol), grain
-     * decision cost, and the sample-to-grain-command latency at the 99th percentile.
+     * decision cost, and the sample-to-grain-command latency at the 99th percentile and at its worst.
      */
     val targets: List<Target>
         get() {
@@ -95,12 +95,15 @@ data class BenchResult(
         val decodeAllocation = sensors.decode.maxOf { it.bytesAllocatedPerFrame }
         val grainDecision = sensors.model("grainDecider").medianNanosPerSample
         val p99 = sensors.latency.p99Micros
+        val worst = sensors.latency.maxMicros
         return listOf(
             Target("decodeCsv", ">= 50 MB/s", csv, "MB/s", csv >= 50.0),
             Target("decodeFramed", ">= 50 MB/s", framed, "MB/s", framed >= 50.0),
             Target("decodeAllocation", "0 bytes/frame", decodeAllocation, "bytes/frame", decodeAllocation == 0.0),
             Target("grainDecision", "<= 1000 ns/sample", grainDecision, "ns/sample", grainDecision <= 1000.0),
             Target("grainLatencyP99", "<= 1000 µs", p99, "µs", p99 <= 1000.0),
+            // The worst single sample: met on a quiet machine; a loaded one adds scheduler delays (docs/performance.md).
+            Target("grainLatencyMax", "<= 1000 µs (quiet)", worst, "µs", worst <= 1000.0),
         )
     }
 }
