@@ -77,6 +77,10 @@ object BenchReport {
             "fake-port FSR sample to grain command, µs: p50 %.1f, p99 %.1f, max %.1f (%d grains from %d samples at 1 kHz)",
             latency.p50Micros, latency.p99Micros, latency.maxMicros, latency.grains, latency.samples,
         )
+        line(
+            "  bytes allocated per sample: %s from decoded frame to command encoded; %s on the whole reader thread (with the fake port's own)",
+            allocation(latency.handlerBytesPerSample), allocation(latency.readerBytesPerSample),
+        )
         line("  framed sample written to a FakeSerialPort -> SensorReader thread -> FramedDecoder -> FSR force -> GrainDecider")
         line("  -> set-outputs command written back; one sample in flight at a time")
     }
@@ -171,6 +175,8 @@ object BenchReport {
             "p50Micros" to rounded(sensors.latency.p50Micros, 2),
             "p99Micros" to rounded(sensors.latency.p99Micros, 2),
             "maxMicros" to rounded(sensors.latency.maxMicros, 2),
+            "handlerAllocatedBytesPerSample" to measured(sensors.latency.handlerBytesPerSample, 3),
+            "readerAllocatedBytesPerSample" to measured(sensors.latency.readerBytesPerSample, 3),
         ),
     )
 
