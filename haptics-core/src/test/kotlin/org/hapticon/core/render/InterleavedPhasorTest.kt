@@ -90,6 +90,26 @@ class InterleavedPhasorTest {
         assertArrayEquals(whole, pieces, 0.0)
     }
 
+    @Test fun kernel_oneLineDominatingTheChunk_writesBitIdenticalSamplesToTheTwoLineMax() {
+        // Pieces under 8 samples always take the two-line kernel; the whole chunk takes the one-line one.
+        val clock = SampleClock(440.0, 48_000)
+        for ((lines, name) in listOf(doubleArrayOf(0.2, 1e-4, 0.1, -1e-4) to "rising on top", doubleArrayOf(0.0, 0.0, 0.7, -2e-4) to "falling on top")) {
+            val (rv, rsl, fv, fsl) = lines.toList()
+            val whole = DoubleArray(1024)
+            InterleavedPhasor(clock).apply { anchor(0.1) }.fill(whole, 0, whole.size, rv, rsl, fv, fsl, 3.0)
+            val pieces = DoubleArray(1024)
+            val phasor = InterleavedPhasor(clock).apply { anchor(0.1) }
+            var at = 0
+            while (at < pieces.size) {
+                val n = minOf(5, pieces.size - at)
+                phasor.fill(pieces, at, n, rv, rsl, fv, fsl, 3.0 + at)
+                at += n
+            }
+            assertArrayEquals(name, pieces, whole, 0.0)
+            assertEquals(name, runValue(rv, rsl, fv, fsl, 1000.0) * sineOfCycles((0.1 + 997 * 440.0 / 48_000) % 1.0), whole[997], 1e-12)
+        }
+    }
+
     @Test fun kernel_envelope_isTheRunValueAtEachWholeIndex() {
         val clock = SampleClock(100.0, 8_000)
         val out = DoubleArray(7)
