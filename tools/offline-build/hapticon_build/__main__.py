@@ -9,7 +9,7 @@ import sys
 import time
 
 from . import ui
-from .builder import Build, TestResult
+from .builder import MAIN_RUNTIME, Build, TestResult
 from .errors import BuildError
 from .project import load_project
 
@@ -91,7 +91,31 @@ def companion_classpath(build: Build) -> list[str]:
     with open(path, "w") as f:
         f.write(os.pathsep.join(cp) + "\n")
         f.write((module.main_class or "") + "\n")
+    with open(os.path.join(build.out, "companion", "inputs.txt"), "w") as f:
+        f.write("".join(p + "\n" for p in companion_inputs(build.project)))
     return cp
+
+
+def companion_inputs(project) -> list[str]:
+    """
+    Every file or directory whose change can change the companion, relative to the project root: the
+    main sources and build file of the companion and of each module it runs with, the settings, the
+    version catalog and this build tool. ./hapticon fingerprints these (paths, sizes, mtimes) in bash
+    and calls the build only when the fingerprint differs from the one of its last successful build.
+    """
+    modules, stack = [], [project.module(":companion")]
+    while stack:
+        m = stack.pop()
+        if m in modules:
+            continue
+        modules.append(m)
+        stack += project.project_deps(m, *MAIN_RUNTIME)
+    inputs = ["settings.gradle.kts", os.path.join("gradle", "libs.versions.toml"),
+              os.path.join("tools", "offline-build", "hapticon_build"), os.path.join("tools", "offline-build", "java")]
+    for m in sorted(modules, key=lambda m: m.path):
+        rel = os.path.relpath(m.directory, project.root)
+        inputs += [os.path.join(rel, "build.gradle.kts"), os.path.join(rel, "src", "main")]
+    return inputs
 
 
 def run_companion(build: Build, classpath: list[str], args: list[str]) -> None:

@@ -16,15 +16,16 @@ object BenchReport {
     fun table(result: BenchResult): String = buildString {
         line("hapticon bench: paper model, %d Hz, reads into a reused %d-sample block", result.sampleRate, result.blockSamples)
         line("")
-        line("throughput, M samples/s (median / best of the runs)")
-        line("  %-9s %9s %17s %17s %17s %8s %8s", "workload", "samples", "naive", "exact", "fast", "exact/n", "fast/n")
+        line("throughput on one thread, M samples/s, min / median / max over %d+ runs timed in rotation", result.throughputs.minOf { it.exact.runs })
         for (t in result.throughputs) {
-            line(
-                "  %-9s %9d %17s %17s %17s %7.1f× %7.1f×", t.workload, t.samples,
-                rate(t.naive), rate(t.exact), rate(t.fast), t.exactSpeedup, t.fastSpeedup,
-            )
+            line("  %s, %d samples", t.workload, t.samples)
+            line("    %-12s %23s", "sin loop", rate(t.sineLoop))
+            line("    %-12s %23s   ratio to sin loop %s", "exact", rate(t.exact), ratio(t.exactVsSine))
+            line("    %-12s %23s", "phasor", rate(t.phasor))
+            line("    %-12s %23s   ratio to phasor   %s", "fast", rate(t.fast), ratio(t.fastVsPhasor))
         }
-        line("  naive = for each sample i: t = i/fs; sin(2π·f·t) · envelope.sample(t), envelope = icon.envelope(model) built once")
+        line("  sin loop = block[j] = sin(2π·f·i/fs) per sample; phasor = one rotating phasor; both a bare carrier")
+        line("  (no envelope: less work than ours). Ratios are per repeat, ours / baseline, same run; > 1 is faster.")
         line("")
         val worst = result.worstError
         val rates = result.errorCases.map { it.sampleRate }.distinct().sorted()
@@ -76,6 +77,10 @@ object BenchReport {
             "fake-port FSR sample to grain command, µs: p50 %.1f, p99 %.1f, max %.1f (%d grains from %d samples at 1 kHz)",
             latency.p50Micros, latency.p99Micros, latency.maxMicros, latency.grains, latency.samples,
         )
+        line(
+            "  bytes allocated per sample: %s from decoded frame to command encoded; %s on the whole reader thread (with the fake port's own)",
+            allocation(latency.handlerBytesPerSample), allocation(latency.readerBytesPerSample),
+        )
         line("  framed sample written to a FakeSerialPort -> SensorReader thread -> FramedDecoder -> FSR force -> GrainDecider")
         line("  -> set-outputs command written back; one sample in flight at a time")
     }
@@ -92,11 +97,12 @@ object BenchReport {
                 obj(
                     "workload" to JsonString(t.workload),
                     "samples" to JsonNumber(t.samples),
-                    "naive" to rateJson(t.naive),
-                    "exact" to rateJson(t.exact),
-                    "fast" to rateJson(t.fast),
-                    "exactVsNaive" to rounded(t.exactSpeedup, 3),
-                    "fastVsNaive" to rounded(t.fastSpeedup, 3),
+                    "sineLoop" to spreadJson(t.sineLoop, 0),
+                    "phasor" to spreadJson(t.phasor, 0),
+                    "exact" to spreadJson(t.exact, 0),
+                    "fast" to spreadJson(t.fast, 0),
+                    "exactVsSine" to spreadJson(t.exactVsSine, 3),
+                    "fastVsPhasor" to spreadJson(t.fastVsPhasor, 3),
                 )
             },
         ),
@@ -169,6 +175,8 @@ object BenchReport {
             "p50Micros" to rounded(sensors.latency.p50Micros, 2),
             "p99Micros" to rounded(sensors.latency.p99Micros, 2),
             "maxMicros" to rounded(sensors.latency.maxMicros, 2),
+            "handlerAllocatedBytesPerSample" to measured(sensors.latency.handlerBytesPerSample, 3),
+            "readerAllocatedBytesPerSample" to measured(sensors.latency.readerBytesPerSample, 3),
         ),
     )
 
@@ -178,10 +186,12 @@ object BenchReport {
     /** An allocation figure for the table; `n/a` where the JVM could not count. */
     private fun allocation(bytes: Double): String = if (bytes.isNaN() || bytes < 0) "n/a" else number(bytes)
 
-    private fun rateJson(rate: Rate): JsonObject = obj(
-        "medianSamplesPerSecond" to JsonNumber(Math.round(rate.medianSamplesPerSecond)),
-        "bestSamplesPerSecond" to JsonNumber(Math.round(rate.bestSamplesPerSecond)),
-        "runs" to JsonNumber(rate.runs),
+    /** Rates in samples per second (whole), ratios with [decimals]. */
+    private fun spreadJson(spread: Spread, decimals: Int): JsonObject = obj(
+        "min" to rounded(spread.min, decimals),
+        "median" to rounded(spread.median, decimals),
+        "max" to rounded(spread.max, decimals),
+        "runs" to JsonNumber(spread.runs),
     )
 
     /** An object of [members] in order, leaving out those whose value is null (not measured). */
@@ -195,8 +205,11 @@ object BenchReport {
 
     private val POWERS = doubleArrayOf(1.0, 10.0, 100.0, 1000.0)
 
-    private fun rate(rate: Rate): String =
-        String.format(Locale.ROOT, "%.1f / %.1f", rate.medianSamplesPerSecond / 1e6, rate.bestSamplesPerSecond / 1e6)
+    private fun rate(rate: Spread): String =
+        String.format(Locale.ROOT, "%.0f / %.0f / %.0f", rate.min / 1e6, rate.median / 1e6, rate.max / 1e6)
+
+    private fun ratio(ratio: Spread): String =
+        String.format(Locale.ROOT, "%.2f× / %.2f× / %.2f×", ratio.min, ratio.median, ratio.max)
 
     /** Whole numbers without a fraction, others with up to 3 significant decimals. */
     private fun number(value: Double): String =

@@ -2,17 +2,29 @@ package org.hapticon.companion.bench
 
 import org.hapticon.core.render.EnvelopeModel
 
-/** Samples per second over several runs of one case. */
-data class Rate(val medianSamplesPerSecond: Double, val bestSamplesPerSecond: Double, val runs: Int)
-
-/** Throughput of the naive baseline, EXACT and FAST over one workload of [samples] samples. */
-data class Throughput(val workload: String, val samples: Long, val naive: Rate, val exact: Rate, val fast: Rate) {
-    /** EXACT's median speed over the naive baseline's. */
-    val exactSpeedup: Double get() = exact.medianSamplesPerSecond / naive.medianSamplesPerSecond
-
-    /** FAST's median speed over the naive baseline's. */
-    val fastSpeedup: Double get() = fast.medianSamplesPerSecond / naive.medianSamplesPerSecond
+/** [min], [median] and [max] of one figure over [runs] repeated runs. */
+data class Spread(val min: Double, val median: Double, val max: Double, val runs: Int) {
+    companion object {
+        /** The spread of [values] (non-empty). */
+        fun of(values: List<Double>): Spread = Spread(values.min(), median(values), values.max(), values.size)
+    }
 }
+
+/**
+ * Samples per second over one workload of [samples] samples: the baselines [sineLoop] ([PlainSineLoop])
+ * and [phasor] ([SinglePhasorLoop]), EXACT and FAST, timed in rotation in the same run; [exactVsSine] and
+ * [fastVsPhasor] are the per-repeat ratios of our speed to the baseline's (> 1: ours is faster).
+ */
+data class Throughput(
+    val workload: String,
+    val samples: Long,
+    val sineLoop: Spread,
+    val phasor: Spread,
+    val exact: Spread,
+    val fast: Spread,
+    val exactVsSine: Spread,
+    val fastVsPhasor: Spread,
+)
 
 /**
  * Largest |FAST − EXACT| over a full stream of a full-scale icon at [note] and [sampleRate]: [maxAbsError]
@@ -57,19 +69,20 @@ data class BenchResult(
     val worstDoubleError: ErrorCase get() = errorCases.maxBy { it.maxAbsDoubleError }
 
     /**
-     * The targets, each judged on its worst measured case (slowest workload, slowest icon); then the sensor
+     * The targets, each judged on its worst measured case (slowest workload, slowest icon): FAST's median
+     * speed on one thread, EXACT's median speed ratio to the plain `Math.sin` loop; then the sensor
      * targets: decoding speed of CSV and framed streams, allocation while decoding (every protocol), grain
-     * decision cost, and the sample-to-grain-command latency at the 99th percentile.
+     * decision cost, and the sample-to-grain-command latency at the 99th percentile and at its worst.
      */
     val targets: List<Target>
         get() {
-            val fast = throughputs.minOf { it.fast.medianSamplesPerSecond }
-            val exact = throughputs.minOf { it.exact.medianSamplesPerSecond }
+            val fast = throughputs.minOf { it.fast.median }
+            val exactRatio = throughputs.minOf { it.exactVsSine.median }
             val firstBlock = firstBlocks.maxOf { it.worstMicros }
             val allocation = maxOf(allocatedBytesPerBlockExact, allocatedBytesPerBlockFast)
             return listOf(
-                Target("fast", ">= 200 M samples/s", fast / 1e6, "M samples/s", fast >= 200e6),
-                Target("exact", ">= 30 M samples/s", exact / 1e6, "M samples/s", exact >= 30e6),
+                Target("fast", ">= 1000 M samples/s", fast / 1e6, "M samples/s", fast >= 1e9),
+                Target("exactVsSine", ">= 0.9x plain sin", exactRatio, "x (median)", exactRatio >= 0.9),
                 Target("firstBlock", "<= 50 µs", firstBlock, "µs", firstBlock <= 50.0),
                 Target("allocation", "0 bytes/block", allocation, "bytes/block", allocation == 0.0),
             ) + sensorTargets()
@@ -82,12 +95,15 @@ data class BenchResult(
         val decodeAllocation = sensors.decode.maxOf { it.bytesAllocatedPerFrame }
         val grainDecision = sensors.model("grainDecider").medianNanosPerSample
         val p99 = sensors.latency.p99Micros
+        val worst = sensors.latency.maxMicros
         return listOf(
             Target("decodeCsv", ">= 50 MB/s", csv, "MB/s", csv >= 50.0),
             Target("decodeFramed", ">= 50 MB/s", framed, "MB/s", framed >= 50.0),
             Target("decodeAllocation", "0 bytes/frame", decodeAllocation, "bytes/frame", decodeAllocation == 0.0),
             Target("grainDecision", "<= 1000 ns/sample", grainDecision, "ns/sample", grainDecision <= 1000.0),
             Target("grainLatencyP99", "<= 1000 µs", p99, "µs", p99 <= 1000.0),
+            // The worst single sample: met on a quiet machine; a loaded one adds scheduler delays (docs/performance.md).
+            Target("grainLatencyMax", "<= 1000 µs (quiet)", worst, "µs", worst <= 1000.0),
         )
     }
 }

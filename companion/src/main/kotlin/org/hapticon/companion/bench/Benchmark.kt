@@ -25,7 +25,7 @@ class Benchmark(private val config: BenchConfig, private val progress: (String) 
     fun run(): BenchResult {
         val started = System.nanoTime()
         val throughputs = WORKLOADS.map { (name, icons) ->
-            progress("throughput over $name (naive, exact, fast)")
+            progress("throughput over $name (plain sine, single phasor, exact, fast)")
             throughput(name, icons)
         }
         progress("FAST error against EXACT")
@@ -52,33 +52,44 @@ class Benchmark(private val config: BenchConfig, private val progress: (String) 
         )
     }
 
+    /**
+     * The four loops over one workload, timed in rotation (plain sine, single phasor, EXACT, FAST, then
+     * again), so a slow moment of a loaded machine hits all four alike; each repeat also gives the ratios
+     * EXACT / plain sine and FAST / single phasor of that repeat.
+     */
     private fun throughput(name: String, icons: List<HapticIcon>): Throughput {
         val rate = config.sampleRate
         // Renderers are built once: throughput is about reading streams; construction has its own figure.
         val exact = icons.map { IconRenderer(it, rate, EnvelopeModel.PAPER, RenderMode.EXACT) }
         val fast = icons.map { IconRenderer(it, rate, EnvelopeModel.PAPER, RenderMode.FAST) }
         val samples = exact.sumOf { it.sampleCount }
+        val loops: List<() -> Unit> = listOf(
+            { for (r in exact) drain(PlainSineLoop(r.icon.frequency, rate, r.sampleCount)) },
+            { for (r in exact) drain(SinglePhasorLoop(r.icon.frequency, rate, r.sampleCount)) },
+            { for (renderer in exact) drain(renderer.stream()) },
+            { for (renderer in fast) drain(renderer.stream()) },
+        )
+        val warmUntil = System.nanoTime() + config.warmupMillis * 1_000_000
+        do loops.forEach { it() } while (System.nanoTime() < warmUntil)
+        val rates = List(loops.size) { ArrayList<Double>() }
+        val measureUntil = System.nanoTime() + config.measureMillis * 1_000_000
+        while (rates[0].size < config.minRuns || System.nanoTime() < measureUntil) {
+            for ((k, loop) in loops.withIndex()) {
+                val start = System.nanoTime()
+                loop()
+                rates[k] += samples / ((System.nanoTime() - start) / 1e9)
+            }
+        }
         return Throughput(
             workload = name,
             samples = samples,
-            naive = measure(samples) { for (icon in icons) drain(NaiveRenderer(icon, rate, EnvelopeModel.PAPER)) },
-            exact = measure(samples) { for (renderer in exact) drain(renderer.stream()) },
-            fast = measure(samples) { for (renderer in fast) drain(renderer.stream()) },
+            sineLoop = Spread.of(rates[0]),
+            phasor = Spread.of(rates[1]),
+            exact = Spread.of(rates[2]),
+            fast = Spread.of(rates[3]),
+            exactVsSine = Spread.of(rates[2].indices.map { rates[2][it] / rates[0][it] }),
+            fastVsPhasor = Spread.of(rates[3].indices.map { rates[3][it] / rates[1][it] }),
         )
-    }
-
-    /** Warms [runOnce] up for the configured time, then times whole runs; median and best samples per second. */
-    private inline fun measure(samplesPerRun: Long, runOnce: () -> Unit): Rate {
-        val warmUntil = System.nanoTime() + config.warmupMillis * 1_000_000
-        do runOnce() while (System.nanoTime() < warmUntil)
-        val rates = ArrayList<Double>()
-        val measureUntil = System.nanoTime() + config.measureMillis * 1_000_000
-        while (rates.size < config.minRuns || System.nanoTime() < measureUntil) {
-            val start = System.nanoTime()
-            runOnce()
-            rates += samplesPerRun / ((System.nanoTime() - start) / 1e9)
-        }
-        return Rate(median(rates), rates.max(), rates.size)
     }
 
     private fun drain(stream: SampleStream) {
@@ -89,9 +100,9 @@ class Benchmark(private val config: BenchConfig, private val progress: (String) 
         }
     }
 
-    private fun drain(naive: NaiveRenderer) {
+    private fun drain(loop: BaselineLoop) {
         while (true) {
-            val count = naive.read(block)
+            val count = loop.read(block)
             if (count < 0) return
             checksum += block[count - 1]
         }

@@ -3,7 +3,6 @@ package org.hapticon.companion.bench
 import org.hapticon.companion.sensors.SensorDemo
 import org.hapticon.companion.sensors.SyntheticPress
 import org.hapticon.sensor.grains.FsrForceConverter
-import org.hapticon.sensor.grains.FsrReading
 import org.hapticon.sensor.grains.GrainDecider
 import org.hapticon.sensor.grains.GrainSettings
 import org.hapticon.sensor.port.FakeSerialPort
@@ -13,14 +12,28 @@ import org.hapticon.sensor.protocol.framed.FramedEncoder
 import org.hapticon.sensor.protocol.framed.FramedProtocol
 import org.hapticon.sensor.protocol.framed.SampleFrame
 import org.hapticon.sensor.safety.SafetyLimits
+import java.lang.management.ManagementFactory
 import java.util.concurrent.atomic.AtomicInteger
 import kotlin.math.ceil
 
 /**
  * Latency from an FSR sample arriving to the grain command it causes: [p50Micros] and [p99Micros] (nearest
  * rank) and [maxMicros] over the [grains] measured, which [samples] samples (after warm-up) caused.
+ * [handlerBytesPerSample]: bytes allocated per measured sample from the decoded frame to the command
+ * encoded (force, decision, encoding); [readerBytesPerSample]: the reader thread's whole allocation per
+ * sample, which adds decoding (0, measured by the decoding bench) and the [FakeSerialPort]'s own work (a
+ * lock condition node per wait, a recorded copy per write: the test double's, not the app's). NaN where
+ * not counted.
  */
-data class GrainLatencyResult(val samples: Int, val grains: Int, val p50Micros: Double, val p99Micros: Double, val maxMicros: Double)
+data class GrainLatencyResult(
+    val samples: Int,
+    val grains: Int,
+    val p50Micros: Double,
+    val p99Micros: Double,
+    val maxMicros: Double,
+    val handlerBytesPerSample: Double = Double.NaN,
+    val readerBytesPerSample: Double = Double.NaN,
+)
 
 /**
  * Measures the app's grain path end to end on a [FakeSerialPort]: the bench thread writes one framed FSR
@@ -47,7 +60,7 @@ class GrainLatency(private val samples: Int, private val warmupSamples: Int) {
         val latencies = LongArray(total) { NOT_A_GRAIN }
         val handled = AtomicInteger(0)
         val port = FakeSerialPort()
-        val path = GrainPath(port, writtenAt, latencies, handled)
+        val path = GrainPath(port, writtenAt, latencies, handled, warmupSamples, total)
         var failure: Throwable? = null
         val reader = SensorReader(port, FramedDecoder(path), { _, cause -> failure = cause }, bufferSize = READ_BYTES)
         reader.start("hapticon-bench-grain-latency")
@@ -65,7 +78,11 @@ class GrainLatency(private val samples: Int, private val warmupSamples: Int) {
         }
         val measured = latencies.copyOfRange(warmupSamples, total).filter { it != NOT_A_GRAIN }.sorted()
         check(measured.isNotEmpty()) { "no grain fired in $samples samples" }
-        return GrainLatencyResult(samples, measured.size, rank(measured, 0.50) / 1e3, rank(measured, 0.99) / 1e3, measured.last() / 1e3)
+        return GrainLatencyResult(
+            samples, measured.size, rank(measured, 0.50) / 1e3, rank(measured, 0.99) / 1e3, measured.last() / 1e3,
+            handlerBytesPerSample = path.handlerBytes() / samples,
+            readerBytesPerSample = path.allocatedBytes() / samples,
+        )
     }
 
     /** The reader side: decodes a sample into a force, decides, and writes a command for each grain. */
@@ -74,7 +91,25 @@ class GrainLatency(private val samples: Int, private val warmupSamples: Int) {
         private val writtenAt: LongArray,
         private val latencies: LongArray,
         private val handled: AtomicInteger,
+        private val warmupSamples: Int,
+        private val total: Int,
     ) : FramedDecoder.Listener {
+        private val threads = ManagementFactory.getThreadMXBean() as com.sun.management.ThreadMXBean
+        private val counting = threads.isThreadAllocatedMemorySupported && threads.isThreadAllocatedMemoryEnabled
+
+        // Read only by the bench thread after handled reaches total (published by that volatile write).
+        private var bytesAtWarmupEnd = 0L
+        private var bytesAtEnd = 0L
+        private var handlerBytes = 0L
+
+        /** Bytes allocated inside [onSample] over the measured samples; NaN if not counted. */
+        fun handlerBytes(): Double = if (counting) handlerBytes.toDouble() else Double.NaN
+
+        /** Bytes this reader thread allocated from the first measured sample to the end; NaN if not counted. */
+        fun allocatedBytes(): Double = if (counting) (bytesAtEnd - bytesAtWarmupEnd).toDouble() else Double.NaN
+
+        private fun threadBytes(): Long = if (counting) threads.getThreadAllocatedBytes(Thread.currentThread().id) else 0L
+
         private val converter = FsrForceConverter()
         private val decider = GrainDecider(GrainSettings(), SyntheticPress.SAMPLE_RATE_HZ.toDouble())
         private val encoder = FramedEncoder()
@@ -84,13 +119,22 @@ class GrainLatency(private val samples: Int, private val warmupSamples: Int) {
 
         override fun onSample(frame: SampleFrame) {
             val i = index++
-            val reading = converter.forceOf(SyntheticPress.voltsOfCounts(frame.values[0]))
-            if (reading is FsrReading.Force && decider.offer(reading.newtons)) {
-                val length = encoder.setOutputs(0, fullScale, command)
+            val entered = threadBytes()
+            if (i == warmupSamples) bytesAtWarmupEnd = entered
+            // The allocation-free conversion, as the app's GrainEngine uses (NaN, a fault, never fires).
+            var length = 0
+            if (decider.offer(converter.newtonsOrNaN(SyntheticPress.voltsOfCounts(frame.values[0])))) {
+                length = encoder.setOutputs(0, fullScale, command)
+            }
+            // Counted up to the command encoded: the port write is the FakeSerialPort's (it records a copy).
+            if (i >= warmupSamples) handlerBytes += threadBytes() - entered
+            if (length > 0) {
                 port.write(command, 0, length, WRITE_TIMEOUT_MILLIS)
                 latencies[i] = System.nanoTime() - writtenAt[i]
             }
-            // The volatile write publishes latencies[i] to the bench thread.
+            val left = threadBytes()
+            if (i == total - 1) bytesAtEnd = left
+            // The volatile write publishes latencies[i] (and the byte counts) to the bench thread.
             handled.set(i + 1)
         }
     }

@@ -10,6 +10,7 @@ import org.hapticon.gesture.recognition.WindowConfig
 import org.hapticon.testing.gestures.SimulatedPerson
 import org.hapticon.testing.gestures.SyntheticGestures
 import org.hapticon.testing.gestures.SyntheticTake
+import java.util.stream.Collectors
 import kotlin.math.sqrt
 
 /** What `classify-bench` varies and on how much synthetic data. */
@@ -39,10 +40,17 @@ class RecognitionResult(
 /** A personal model's accuracy (mean ± SD over people) from [examples] takes per label, and its training time. */
 class PersonalResult(val examples: Int, val trees: Int, val accuracyMean: Double, val accuracySd: Double, val trainMillis: Double)
 
-/** Leave-one-participant-out evaluation of window length × tree count on [SyntheticGestures] people. */
+/**
+ * Leave-one-participant-out evaluation of window length × tree count on [SyntheticGestures] people.
+ *
+ * With `parallel` (the default) the folds (and the personal models' people) run on every core: each fold
+ * is independent (its own forest seed, seed + held-out index), its figures are kept per fold and merged
+ * in fold order, so every accuracy, latency and hit rate is identical to a run on one thread. Only the
+ * µs-per-window timing differs, as any timing does; it is taken while the other folds run.
+ */
 object RecognitionBench {
     /** Runs every cell of [config]; [progress] gets one line per window length. */
-    fun run(config: RecognitionBenchConfig, progress: (String) -> Unit): List<RecognitionResult> {
+    fun run(config: RecognitionBenchConfig, parallel: Boolean = true, progress: (String) -> Unit): List<RecognitionResult> {
         val people = SyntheticGestures.people(config.people, config.seed)
         val takes = people.map { SyntheticGestures.takesOf(it, config.takesPerLabel) }
         val results = ArrayList<RecognitionResult>()
@@ -50,17 +58,20 @@ object RecognitionBench {
             val window = WindowConfig(seconds, WindowConfig.DEFAULT_HOP_SECONDS)
             val windows = takes.map { person -> LabelledWindows.of(person.map { it.labelled }, window) }
             val maxTrees = config.treeCounts.max()
-            val cells = config.treeCounts.associateWith { Cell() }
-            for (heldOut in people.indices) {
+            val folds = inOrder(people.indices.toList(), parallel) { heldOut ->
                 val training = windows.filterIndexed { i, _ -> i != heldOut }.reduce { a, b -> a + b }
                 val trainer = PersonalTrainer(window, ForestParams(trees = maxTrees, seed = config.seed + heldOut))
                 val full = trainer.train(training, SyntheticGestures.CHANNELS, SyntheticGestures.SAMPLE_RATE)
-                for (trees in config.treeCounts) {
+                config.treeCounts.map { trees ->
                     val model = GestureModel(full.sampleRate, full.channels, full.window, full.labels, full.forest.firstTrees(trees))
-                    cells.getValue(trees).add(model, people[heldOut], takes[heldOut])
+                    Cell().also { it.add(model, people[heldOut], takes[heldOut]) }
                 }
             }
-            for (trees in config.treeCounts) results += cells.getValue(trees).result(seconds, trees)
+            for ((k, trees) in config.treeCounts.withIndex()) {
+                val cell = Cell()
+                for (fold in folds) cell.merge(fold[k])
+                results += cell.result(seconds, trees)
+            }
             progress("window ${seconds}s done (${windows.sumOf { it.size }} windows over ${people.size} people)")
         }
         return results
@@ -70,21 +81,26 @@ object RecognitionBench {
      * Personal models with the default window and [trees]: for each person, train on [examples] takes per label
      * and score the windows of two further takes. Returns accuracy mean, SD and mean training time (ms).
      */
-    fun personal(config: RecognitionBenchConfig, trees: Int, examples: Int = 5): PersonalResult {
-        val accuracies = ArrayList<Double>()
-        var millis = 0.0
-        for (person in SyntheticGestures.people(config.people, config.seed)) {
+    fun personal(config: RecognitionBenchConfig, trees: Int, examples: Int = 5, parallel: Boolean = true): PersonalResult {
+        val perPerson = inOrder(SyntheticGestures.people(config.people, config.seed), parallel) { person ->
             // Takes 100+ are new to the person, unlike the 0.. takes of the leave-one-out runs.
             val training = GestureLabel.ALL.flatMap { label -> (0 until examples).map { SyntheticGestures.perform(person, label, take = 100 + it) } }
             val test = GestureLabel.ALL.flatMap { label -> (examples until examples + 2).map { SyntheticGestures.perform(person, label, take = 100 + it) } }
             val started = System.nanoTime()
             val model = PersonalTrainer(WindowConfig(), ForestParams(trees = trees, seed = config.seed)).train(training.map { it.labelled })
-            millis += (System.nanoTime() - started) / 1e6
+            val millis = (System.nanoTime() - started) / 1e6
             val cell = Cell()
             cell.add(model, person, test, live = false)
-            accuracies += cell.accuracies.single()
+            cell.accuracies.single() to millis
         }
-        return PersonalResult(examples, trees, accuracies.average(), sd(accuracies), millis / config.people)
+        val accuracies = perPerson.map { it.first }
+        return PersonalResult(examples, trees, accuracies.average(), sd(accuracies), perPerson.sumOf { it.second } / config.people)
+    }
+
+    /** [work] on each of [items], on every core when [parallel]; results in the order of [items] either way. */
+    private fun <T, R> inOrder(items: List<T>, parallel: Boolean, work: (T) -> R): List<R> {
+        if (!parallel) return items.map(work)
+        return items.parallelStream().map { work(it) }.collect(Collectors.toList())
     }
 
     private fun sd(values: List<Double>): Double {
@@ -141,6 +157,16 @@ object RecognitionBench {
                     break
                 }
             }
+        }
+
+        /** Appends [other]'s figures after this cell's (folds merged in fold order keep sequential results). */
+        fun merge(other: Cell) {
+            accuracies += other.accuracies
+            latencies += other.latencies
+            liveTakes += other.liveTakes
+            liveHits += other.liveHits
+            nanos += other.nanos
+            classified += other.classified
         }
 
         fun result(seconds: Double, trees: Int): RecognitionResult {

@@ -59,15 +59,12 @@ private fun readResponses(path: String): List<StudyResponse> {
     val file = File(path)
     if (file.isDirectory) throw UsageException("$file is a directory, not a results CSV")
     if (!file.isFile) throw UsageException("no such file: $file")
-    val text = try {
-        file.readText(Charsets.UTF_8)
-    } catch (e: IOException) {
-        throw UsageException("cannot read $file: ${e.message}")
-    }
     return try {
-        ResultsReader.read(text, path)
+        file.reader(Charsets.UTF_8).use { ResultsReader.read(it, path) }
     } catch (e: CsvFormatException) {
         throw UsageException(e.message.orEmpty())
+    } catch (e: IOException) {
+        throw UsageException("cannot read $file: ${e.message}")
     }
 }
 

@@ -1,5 +1,9 @@
 package org.hapticon.companion.study
 
+import java.io.IOException
+import java.io.Reader
+import java.io.StringReader
+
 /** A malformed CSV text: [source] (a file name or "upload"), 1-based [line], and what was wrong. */
 class CsvFormatException(val source: String, val line: Int, val problem: String) : Exception("$source:$line: $problem")
 
@@ -14,51 +18,17 @@ object Csv {
      */
     fun parse(text: String, source: String): List<CsvRecord> {
         val records = ArrayList<CsvRecord>()
-        var i = if (text.startsWith("\uFEFF")) 1 else 0
-        var line = 1
-        while (i < text.length) {
-            val start = line
-            val fields = ArrayList<String>()
-            val field = StringBuilder()
-            var endOfRecord = false
-            while (!endOfRecord) {
-                if (i < text.length && text[i] == '"') {
-                    i++
-                    while (true) {
-                        if (i >= text.length) throw CsvFormatException(source, start, "unterminated quoted field")
-                        val c = text[i++]
-                        if (c == '"') {
-                            if (i < text.length && text[i] == '"') { field.append('"'); i++ } else break
-                        } else {
-                            if (c == '\n') line++
-                            field.append(c)
-                        }
-                    }
-                    if (i < text.length && text[i] != ',' && text[i] != '\n' && text[i] != '\r') {
-                        throw CsvFormatException(source, line, "unexpected character '${text[i]}' after a closing quote")
-                    }
-                } else {
-                    while (i < text.length && text[i] != ',' && text[i] != '\n' && text[i] != '\r') {
-                        if (text[i] == '"') throw CsvFormatException(source, line, "quote inside an unquoted field")
-                        field.append(text[i++])
-                    }
-                }
-                fields += field.toString()
-                field.setLength(0)
-                when {
-                    i >= text.length -> endOfRecord = true
-                    text[i] == ',' -> i++
-                    else -> {
-                        if (text[i] == '\r') i++
-                        if (i < text.length && text[i] == '\n') i++
-                        line++
-                        endOfRecord = true
-                    }
-                }
-            }
-            if (!(fields.size == 1 && fields[0].isEmpty())) records += CsvRecord(start, fields)
-        }
+        forEachRecord(StringReader(text), source) { records += it }
         return records
+    }
+
+    /**
+     * Each record of [reader] in turn, as [parse] reads them, without holding the text or the records:
+     * `hapticon analyze` reads a million-row file in a few MB this way. [IOException]s of [reader] pass through.
+     */
+    fun forEachRecord(reader: Reader, source: String, action: (CsvRecord) -> Unit) {
+        val input = CsvRecordReader(reader, source)
+        while (true) action(input.next() ?: return)
     }
 
     /** [value] as one CSV field: quoted (quotes doubled) when it holds a comma, quote or line break. */
@@ -83,4 +53,82 @@ object Csv {
 
     private const val FORMULA_STARTS = "=+-@\t\r"
     private val PLAIN_NUMBER = Regex("[+-]?(?:[0-9]+(?:\\.[0-9]*)?|\\.[0-9]+)(?:[eE][+-]?[0-9]+)?")
+}
+
+/** Reads one [CsvRecord] at a time from [reader] through its own buffer (no per-character virtual calls). */
+private class CsvRecordReader(private val reader: Reader, private val source: String) {
+    private val buffer = CharArray(1 shl 16)
+    private var position = 0
+    private var limit = 0
+    private var line = 1
+    private val field = StringBuilder()
+
+    init {
+        if (peek() == '\uFEFF'.code) position++
+    }
+
+    /** The next character without consuming it, or -1 at the end. */
+    private fun peek(): Int {
+        if (position == limit) {
+            limit = reader.read(buffer)
+            position = 0
+            if (limit <= 0) {
+                limit = 0
+                return -1
+            }
+        }
+        return buffer[position].code
+    }
+
+    /** The next non-blank record, or null at the end. */
+    fun next(): CsvRecord? {
+        while (peek() >= 0) {
+            val start = line
+            val fields = ArrayList<String>()
+            var endOfRecord = false
+            while (!endOfRecord) {
+                if (peek() == '"'.code) {
+                    position++
+                    while (true) {
+                        val c = peek()
+                        if (c < 0) throw CsvFormatException(source, start, "unterminated quoted field")
+                        position++
+                        if (c == '"'.code) {
+                            if (peek() == '"'.code) { field.append('"'); position++ } else break
+                        } else {
+                            if (c == '\n'.code) line++
+                            field.append(c.toChar())
+                        }
+                    }
+                    val after = peek()
+                    if (after >= 0 && after != ','.code && after != '\n'.code && after != '\r'.code) {
+                        throw CsvFormatException(source, line, "unexpected character '${after.toChar()}' after a closing quote")
+                    }
+                } else {
+                    while (true) {
+                        val c = peek()
+                        if (c < 0 || c == ','.code || c == '\n'.code || c == '\r'.code) break
+                        if (c == '"'.code) throw CsvFormatException(source, line, "quote inside an unquoted field")
+                        field.append(c.toChar())
+                        position++
+                    }
+                }
+                fields += field.toString()
+                field.setLength(0)
+                val c = peek()
+                when {
+                    c < 0 -> endOfRecord = true
+                    c == ','.code -> position++
+                    else -> {
+                        if (c == '\r'.code) position++
+                        if (peek() == '\n'.code) position++
+                        line++
+                        endOfRecord = true
+                    }
+                }
+            }
+            if (!(fields.size == 1 && fields[0].isEmpty())) return CsvRecord(start, fields)
+        }
+        return null
+    }
 }

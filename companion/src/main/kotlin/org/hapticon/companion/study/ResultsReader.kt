@@ -1,6 +1,8 @@
 package org.hapticon.companion.study
 
 import org.hapticon.study.analysis.StudyResponse
+import java.io.Reader
+import java.io.StringReader
 
 /**
  * The tolerant reader `hapticon analyze` uses: any long-format results CSV with (at least) the columns
@@ -11,25 +13,41 @@ object ResultsReader {
     val REQUIRED_COLUMNS: List<String> = listOf("participant", "task", "icon", "response")
 
     /** The responses in [text]; [CsvFormatException] naming [source] and the line of the first problem. */
-    fun read(text: String, source: String): List<StudyResponse> {
-        val records = Csv.parse(text, source)
-        val header = records.firstOrNull() ?: throw CsvFormatException(source, 1, "empty file: expected a header with ${REQUIRED_COLUMNS.joinToString(", ")}")
-        val names = header.fields.map { it.trim() }
-        val index = REQUIRED_COLUMNS.associateWith { names.indexOf(it) }
-        val missing = index.filterValues { it < 0 }.keys
-        if (missing.isNotEmpty()) throw CsvFormatException(source, header.line, "missing column${if (missing.size > 1) "s" else ""} ${missing.joinToString(", ")}")
-        return records.drop(1).map { record ->
-            if (record.fields.size != names.size) {
-                throw CsvFormatException(source, record.line, "expected ${names.size} fields as in the header, found ${record.fields.size}")
+    fun read(text: String, source: String): List<StudyResponse> = read(StringReader(text), source)
+
+    /**
+     * The responses of [reader], read record by record (the text is never held whole). Equal participant,
+     * task and icon names share one String, so a million rows of a few hundred names stay small.
+     */
+    fun read(reader: Reader, source: String): List<StudyResponse> {
+        val responses = ArrayList<StudyResponse>()
+        val names = HashMap<String, String>()
+        fun shared(name: String): String = names.putIfAbsent(name, name) ?: name
+        var index: IntArray? = null
+        var width = 0
+        Csv.forEachRecord(reader, source) { record ->
+            val columns = index
+            if (columns == null) {
+                val header = record.fields.map { it.trim() }
+                val found = REQUIRED_COLUMNS.associateWith { header.indexOf(it) }
+                val missing = found.filterValues { it < 0 }.keys
+                if (missing.isNotEmpty()) throw CsvFormatException(source, record.line, "missing column${if (missing.size > 1) "s" else ""} ${missing.joinToString(", ")}")
+                index = IntArray(REQUIRED_COLUMNS.size) { found.getValue(REQUIRED_COLUMNS[it]) }
+                width = header.size
+                return@forEachRecord
             }
-            fun column(name: String) = record.fields[index.getValue(name)]
-            for (name in listOf("participant", "task", "icon")) {
-                if (column(name).isBlank()) throw CsvFormatException(source, record.line, "empty $name")
+            if (record.fields.size != width) {
+                throw CsvFormatException(source, record.line, "expected $width fields as in the header, found ${record.fields.size}")
             }
-            val text = column("response").trim()
+            for (k in 0 until 3) {
+                if (record.fields[columns[k]].isBlank()) throw CsvFormatException(source, record.line, "empty ${REQUIRED_COLUMNS[k]}")
+            }
+            val text = record.fields[columns[3]].trim()
             val response = text.toDoubleOrNull()?.takeIf { it.isFinite() }
                 ?: throw CsvFormatException(source, record.line, "response '$text' is not a finite number")
-            StudyResponse(column("participant"), column("task"), column("icon"), response)
+            responses += StudyResponse(shared(record.fields[columns[0]]), shared(record.fields[columns[1]]), shared(record.fields[columns[2]]), response)
         }
+        if (index == null) throw CsvFormatException(source, 1, "empty file: expected a header with ${REQUIRED_COLUMNS.joinToString(", ")}")
+        return responses
     }
 }

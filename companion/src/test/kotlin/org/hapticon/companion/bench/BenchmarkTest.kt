@@ -53,23 +53,36 @@ class BenchmarkTest {
     }
 
     @Test
-    fun naiveRenderer_computesTheSameSignalAsTheExactRenderer() {
-        val icon = HapticIcon.HUG
-        val naive = NaiveRenderer(icon, 8_000, EnvelopeModel.PAPER)
-        val exact = IconRenderer(icon, 8_000, EnvelopeModel.PAPER).stream().readAllSamples()
-        assertEquals(exact.size.toLong(), naive.sampleCount)
+    fun plainSineLoop_writesSinOfTheSampleIndexForEverySample() {
+        val loop = PlainSineLoop(440.0, 8_000, 2_500)
         val block = FloatArray(1000)
+        val seen = ArrayList<Float>()
+        while (true) {
+            val count = loop.read(block)
+            if (count < 0) break
+            for (j in 0 until count) seen += block[j]
+        }
+        assertEquals(2_500, seen.size)
+        for (i in listOf(0, 1, 999, 1000, 2_499)) assertEquals("sample $i", sin(2 * PI * 440.0 * i / 8_000).toFloat(), seen[i], 0f)
+    }
+
+    @Test
+    fun singlePhasorLoop_tracksTheSineWithinOneFloatStep() {
+        val loop = SinglePhasorLoop(440.0, 8_000, 8_000)
+        val block = FloatArray(3_000)
         var index = 0
         while (true) {
-            val count = naive.read(block)
+            val count = loop.read(block)
             if (count < 0) break
-            for (j in 0 until count) assertEquals("sample ${index + j}", exact[index + j], block[j], 1e-6f)
+            for (j in 0 until count) assertEquals("sample ${index + j}", sin(2 * PI * 440.0 * (index + j) / 8_000), block[j].toDouble(), 1e-7)
             index += count
         }
-        assertEquals(exact.size, index)
-        // Spot-check the formula itself: sin(2π·f·t) · envelope(t) at t = 0.75 s (attack, 0.25).
-        val t = 6_000 / 8_000.0
-        assertEquals((sin(2 * PI * icon.frequency * t) * 0.25).toFloat(), exact[6_000], 1e-6f)
+        assertEquals(8_000, index)
+    }
+
+    @Test
+    fun spread_ofValues_isMinMedianMaxAndCount() {
+        assertEquals(Spread(1.0, 2.5, 4.0, 4), Spread.of(listOf(4.0, 1.0, 3.0, 2.0)))
     }
 
     @Test
@@ -81,10 +94,10 @@ class BenchmarkTest {
     @Test
     fun targets_judgeTheWorstCaseOfEachFigure() {
         val targets = SAMPLE_RESULT.targets.associateBy { it.name }
-        assertEquals(210.0, targets.getValue("fast").measured, 1e-9) // the slower workload
+        assertEquals(1100.0, targets.getValue("fast").measured, 1e-9) // the slower workload
         assertEquals(true, targets.getValue("fast").met)
-        assertEquals(25.0, targets.getValue("exact").measured, 1e-9)
-        assertEquals(false, targets.getValue("exact").met)
+        assertEquals(0.85, targets.getValue("exactVsSine").measured, 1e-9) // the lower median ratio
+        assertEquals(false, targets.getValue("exactVsSine").met)
         assertEquals(150.0, targets.getValue("firstBlock").measured, 0.0)
         assertEquals(false, targets.getValue("firstBlock").met)
         assertEquals(true, targets.getValue("allocation").met)
@@ -95,10 +108,13 @@ class BenchmarkTest {
         val table = BenchReport.table(SAMPLE_RESULT)
         val lines = table.lines()
         assertEquals("hapticon bench: paper model, 44100 Hz, reads into a reused 4096-sample block", lines[0])
-        assertTrue(table, "  longest     1323000       10.0 / 11.0       25.0 / 26.0     210.0 / 220.0     2.5×    21.0×" in lines)
+        assertTrue(table, "  longest, 1323000 samples" in lines)
+        assertTrue(table, "    sin loop                40 / 50 / 55" in lines)
+        assertTrue(table, "    exact                   38 / 45 / 50   ratio to sin loop 0.80× / 0.90× / 1.05×" in lines)
+        assertTrue(table, "    fast              1000 / 1100 / 1200   ratio to phasor   2.40× / 2.75× / 3.00×" in lines)
         assertTrue(table, "  longest       150.0     120.0" in lines)
-        assertTrue(table, "  exact            >= 30 M samples/s    measured         25 M samples/s  NOT MET" in lines)
-        assertTrue(table, "  fast             >= 200 M samples/s   measured        210 M samples/s  met" in lines)
+        assertTrue(table, "  exactVsSine      >= 0.9x plain sin    measured      0.850 x (median)   NOT MET" in lines)
+        assertTrue(table, "  fast             >= 1000 M samples/s  measured       1100 M samples/s  met" in lines)
         assertTrue(table, "FAST max |error| vs EXACT: 5.96e-08 over 2 full streams (rates 8000, 44100 Hz; notes 0, 127; both models)" in lines)
         assertTrue(table, "FAST max |error| vs EXACT in double precision: 1.14e-11 over the same streams, read as doubles before narrowing" in lines)
         assertEquals("total 12.5 s", lines.last())
@@ -126,6 +142,7 @@ class BenchmarkTest {
         assertTrue(table, "  decodeAllocation 0 bytes/frame        measured      0.250 bytes/frame  NOT MET" in lines)
         assertTrue(table, "  grainDecision    <= 1000 ns/sample    measured       8.50 ns/sample    met" in lines)
         assertTrue(table, "  grainLatencyP99  <= 1000 µs           measured       1200 µs           NOT MET" in lines)
+        assertTrue(table, "  grainLatencyMax  <= 1000 µs (quiet)   measured       5000 µs           NOT MET" in lines)
     }
 
     @Test
@@ -133,8 +150,9 @@ class BenchmarkTest {
         val json = Json.decode(BenchReport.json(SAMPLE_RESULT)) as JsonObject
         assertEquals(JsonNumber(44_100), json["sampleRate"])
         val longest = (json["throughput"] as JsonArray)[0] as JsonObject
-        assertEquals(JsonNumber(210_000_000), (longest["fast"] as JsonObject)["medianSamplesPerSecond"])
-        assertEquals(JsonNumber(21.0), longest["fastVsNaive"])
+        assertEquals(JsonNumber(1_100_000_000), (longest["fast"] as JsonObject)["median"])
+        assertEquals(JsonNumber(2.75), (longest["fastVsPhasor"] as JsonObject)["median"])
+        assertEquals(JsonNumber(0.8), (longest["exactVsSine"] as JsonObject)["min"])
         assertEquals(JsonNumber(5.960464477539063E-8), json["fastMaxAbsError"])
         assertEquals(JsonNumber(1.14e-11), json["fastMaxAbsErrorDouble"])
         assertEquals(2, (json["fastErrorCases"] as JsonArray).size)
@@ -164,7 +182,7 @@ class BenchmarkTest {
         val allocation = json["allocatedBytesPerBlock"] as JsonObject
         assertEquals(JsonNumber(0), allocation["exact"])
         assertEquals(JsonNumber(0), allocation["fast"])
-        val targets = setOf("fast", "exact", "firstBlock", "allocation", "decodeCsv", "decodeFramed", "decodeAllocation", "grainDecision", "grainLatencyP99")
+        val targets = setOf("fast", "exactVsSine", "firstBlock", "allocation", "decodeCsv", "decodeFramed", "decodeAllocation", "grainDecision", "grainLatencyP99", "grainLatencyMax")
         assertEquals(targets, (json["targets"] as JsonObject).members.keys)
         val latency = (json["sensors"] as JsonObject)["grainLatency"] as JsonObject
         assertEquals(JsonNumber(2_000), latency["samples"])
@@ -179,14 +197,22 @@ class BenchmarkTest {
     }
 
     private companion object {
-        private fun rate(median: Double, best: Double) = Rate(median, best, 7)
+        private fun spread(min: Double, median: Double, max: Double) = Spread(min, median, max, 7)
 
         val SAMPLE_RESULT = BenchResult(
             sampleRate = 44_100,
             blockSamples = 4096,
             throughputs = listOf(
-                Throughput("longest", 1_323_000, rate(10e6, 11e6), rate(25e6, 26e6), rate(210e6, 220e6)),
-                Throughput("presets", 701_190, rate(20e6, 21e6), rate(60e6, 61e6), rate(260e6, 270e6)),
+                Throughput(
+                    "longest", 1_323_000, sineLoop = spread(40e6, 50e6, 55e6), phasor = spread(380e6, 400e6, 420e6),
+                    exact = spread(38e6, 45e6, 50e6), fast = spread(1000e6, 1100e6, 1200e6),
+                    exactVsSine = spread(0.8, 0.9, 1.05), fastVsPhasor = spread(2.4, 2.75, 3.0),
+                ),
+                Throughput(
+                    "presets", 701_190, sineLoop = spread(40e6, 50e6, 55e6), phasor = spread(380e6, 400e6, 420e6),
+                    exact = spread(38e6, 42e6, 50e6), fast = spread(1100e6, 1200e6, 1300e6),
+                    exactVsSine = spread(0.8, 0.85, 1.0), fastVsPhasor = spread(2.5, 2.9, 3.1),
+                ),
             ),
             errorCases = listOf(
                 ErrorCase(EnvelopeModel.PAPER, 8_000, 0.0, 240_000, 0.0, 2.5e-13),

@@ -21,6 +21,13 @@ class GrainLatencyTest {
         assertEquals(21, result.grains)
     }
 
+    @Test
+    fun run_afterWarmup_frameToCommandAllocatesNothingPerSample() {
+        val result = GrainLatency(samples = 2_000, warmupSamples = 20_000).run()
+        assertTrue(result.toString(), !result.handlerBytesPerSample.isNaN() && result.readerBytesPerSample >= result.handlerBytesPerSample)
+        assertEquals(result.toString(), 0.0, result.handlerBytesPerSample, 0.0)
+    }
+
     @Test(expected = IllegalArgumentException::class)
     fun constructor_noSamples_isRejected() {
         GrainLatency(samples = 0, warmupSamples = 0)

@@ -48,3 +48,36 @@ class CsvTest {
         assertEquals(0, Csv.parse("", "f").size)
     }
 }
+
+class CsvStreamingTest {
+    /** A Reader handing out one character per read, so every field, quote and CRLF straddles a refill. */
+    private class OneCharReader(text: String) : java.io.Reader() {
+        private val inner = java.io.StringReader(text)
+        override fun read(buffer: CharArray, offset: Int, length: Int): Int = inner.read(buffer, offset, minOf(1, length))
+        override fun close() = inner.close()
+    }
+
+    @Test fun forEachRecord_oneCharacterPerRead_readsAsParseDoes() {
+        val text = "\uFEFFa,b,c\r\n\"x, y\",\"say \"\"hi\"\"\",\r\n\"two\nlines\",2,3\n\n4,5,6"
+        val streamed = ArrayList<CsvRecord>()
+        Csv.forEachRecord(OneCharReader(text), "f.csv") { streamed += it }
+        val parsed = Csv.parse(text, "f.csv")
+        assertEquals(parsed.map { it.line to it.fields }, streamed.map { it.line to it.fields })
+        assertEquals(listOf(1, 2, 3, 6), streamed.map { it.line })
+    }
+
+    @Test fun forEachRecord_errorAfterRecords_hasDeliveredTheEarlierOnesAndNamesTheLine() {
+        val seen = ArrayList<List<String>>()
+        val error = assertThrows(CsvFormatException::class.java) {
+            Csv.forEachRecord(OneCharReader("a,b\n1,2\n\"open\n"), "f.csv") { seen += it.fields }
+        }
+        assertEquals("f.csv:3: unterminated quoted field", error.message)
+        assertEquals(listOf(listOf("a", "b"), listOf("1", "2")), seen)
+    }
+
+    @Test fun forEachRecord_emptyInput_deliversNothing() {
+        var count = 0
+        Csv.forEachRecord(OneCharReader(""), "f.csv") { count++ }
+        assertEquals(0, count)
+    }
+}

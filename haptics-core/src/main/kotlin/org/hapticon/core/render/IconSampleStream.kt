@@ -1,8 +1,8 @@
 package org.hapticon.core.render
 
 /**
- * [DoubleSampleStream] over an [IconSynthesizer]. Float reads make samples as doubles in a fixed
- * scratch block (allocated once per stream) and narrow them; double reads write straight into the
+ * [DoubleSampleStream] over an [IconSynthesizer]. FAST float reads narrow in the kernel; EXACT float
+ * reads make samples as doubles in a fixed scratch block (allocated once per stream) and narrow them; double reads write straight into the
  * caller's array. Neither allocates.
  */
 internal class IconSampleStream(
@@ -17,6 +17,7 @@ internal class IconSampleStream(
     override fun read(destination: FloatArray, offset: Int, length: Int): Int {
         checkRange(destination.size, offset, length)
         if (position >= totalSamples) return -1
+        if (synthesizer.mode == RenderMode.FAST) return synthesizer.fillFloats(destination, offset, length)
         return blocks.read(length) { scratch, written, made ->
             for (j in 0 until made) destination[offset + written + j] = scratch[j].toFloat()
         }

@@ -1,7 +1,6 @@
 package org.hapticon.core.render
 
 import org.hapticon.core.signal.SampleClock
-import org.hapticon.core.signal.cosineOfCycles
 import org.hapticon.core.signal.sineOfCycles
 
 /**
@@ -15,17 +14,18 @@ import org.hapticon.core.signal.sineOfCycles
  *
  * EXACT: a sine of the exact phase at every sample, computed exactly like [IconRenderer.sampleAt].
  *
- * FAST: a rotating phasor, re-anchored from the exact phase at every sample index that is a
- * multiple of [FAST_ANCHOR_INTERVAL]. Anchors sit on a fixed grid of indices, so the output does
- * not depend on how reads are split into blocks; the phasor's own rounding grows over at most one
- * interval (~1e-13). Against EXACT in double precision the difference is up to ~1.2e-11 at note 127,
+ * FAST: four interleaved rotating phasors ([InterleavedPhasor]), re-anchored from the exact phase at
+ * every sample index that is a multiple of [FAST_ANCHOR_INTERVAL]. Anchors sit on a fixed grid of
+ * indices, so the output does not depend on how reads are split into blocks; the phasors' own rounding
+ * grows over at most one interval (~1e-13). Float reads get FAST samples narrowed in the kernel itself
+ * ([fillFloats]), with no double scratch pass. Against EXACT in double precision the difference is up to ~1.2e-11 at note 127,
  * dominated by EXACT's own ~1e-12-cycle phase rounding (see [IconRenderer]); far inside the 1e-6 budget.
  */
 internal class IconSynthesizer(
     private val timeline: EnvelopeTimeline,
     private val clock: SampleClock,
     private val carrierOffset: Long,
-    private val mode: RenderMode,
+    val mode: RenderMode,
 ) {
     val totalSamples: Long = timeline.sampleCount
     var position: Long = 0
@@ -40,14 +40,27 @@ internal class IconSynthesizer(
     private var sampleInSecond = Math.floorMod(carrierOffset, sampleRate.toLong()).toInt()
     private var secondCycles = clock.cyclesAtSecond(second)
 
-    // FAST carrier state: (phasorCos, phasorSin) = cis(2π · phase) of the next sample.
-    private val rotationCos = cosineOfCycles(clock.frequency / sampleRate)
-    private val rotationSin = sineOfCycles(clock.frequency / sampleRate)
-    private var phasorCos = 1.0
-    private var phasorSin = 0.0
+    // FAST carrier state: the lanes hold the phases of the next four samples.
+    private val phasor = InterleavedPhasor(clock)
 
     /** Writes up to [length] next samples into [destination] from [offset]; returns how many (0 at the end). */
-    fun fill(destination: DoubleArray, offset: Int, length: Int): Int {
+    fun fill(destination: DoubleArray, offset: Int, length: Int): Int = fillRuns(length) { at, wanted ->
+        when (mode) {
+            RenderMode.EXACT -> fillExact(destination, offset + at, wanted)
+            RenderMode.FAST -> fastChunk(wanted) { count, m -> phasor.fill(destination, offset + at, count, sweep.risingValue, sweep.risingSlope, sweep.fallingValue, sweep.fallingSlope, m) }
+        }
+    }
+
+    /** FAST only: as [fill], the samples narrowed to float32 (the same doubles, narrowed as written). */
+    fun fillFloats(destination: FloatArray, offset: Int, length: Int): Int {
+        check(mode == RenderMode.FAST) { "float kernel is FAST's; EXACT float reads narrow a double block" }
+        return fillRuns(length) { at, wanted ->
+            fastChunk(wanted) { count, m -> phasor.fill(destination, offset + at, count, sweep.risingValue, sweep.risingSlope, sweep.fallingValue, sweep.fallingSlope, m) }
+        }
+    }
+
+    /** Up to [length] samples, run by run: [chunk] (samples written so far, samples wanted in this run) returns how many it wrote. */
+    private inline fun fillRuns(length: Int, chunk: (Int, Int) -> Int): Int {
         val count = minOf(length.toLong(), totalSamples - position).toInt()
         var written = 0
         while (written < count) {
@@ -55,11 +68,7 @@ internal class IconSynthesizer(
                 sweep.advance()
                 continue
             }
-            val wanted = minOf((count - written).toLong(), sweep.end - position).toInt()
-            val done = when (mode) {
-                RenderMode.EXACT -> fillExact(destination, offset + written, wanted)
-                RenderMode.FAST -> fillFast(destination, offset + written, wanted)
-            }
+            val done = chunk(written, minOf((count - written).toLong(), sweep.end - position).toInt())
             written += done
             position += done
         }
@@ -87,32 +96,12 @@ internal class IconSynthesizer(
         return chunk
     }
 
-    private fun fillFast(destination: DoubleArray, offset: Int, wanted: Int): Int {
+    /** Anchors the phasor on the grid, then has [kernel] write (samples, run-relative index m) up to the next anchor. */
+    private inline fun fastChunk(wanted: Int, kernel: (Int, Double) -> Unit): Int {
         val intoInterval = (position % FAST_ANCHOR_INTERVAL).toInt()
-        if (intoInterval == 0) {
-            val cycles = clock.cyclesAt(position + carrierOffset)
-            phasorCos = cosineOfCycles(cycles)
-            phasorSin = sineOfCycles(cycles)
-        }
+        if (intoInterval == 0) phasor.anchor(clock.cyclesAt(position + carrierOffset))
         val chunk = minOf(wanted, FAST_ANCHOR_INTERVAL - intoInterval)
-        val rc = rotationCos
-        val rs = rotationSin
-        var c = phasorCos
-        var s = phasorSin
-        val rv = sweep.risingValue
-        val rsl = sweep.risingSlope
-        val fv = sweep.fallingValue
-        val fsl = sweep.fallingSlope
-        var m = (position - sweep.start).toDouble()
-        for (j in 0 until chunk) {
-            destination[offset + j] = runValue(rv, rsl, fv, fsl, m) * s
-            val nextCos = c * rc - s * rs
-            s = s * rc + c * rs
-            c = nextCos
-            m += 1.0
-        }
-        phasorCos = c
-        phasorSin = s
+        kernel(chunk, (position - sweep.start).toDouble())
         return chunk
     }
 

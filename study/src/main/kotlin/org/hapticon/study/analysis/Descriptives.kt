@@ -23,10 +23,14 @@ public data class Descriptives(
 
     public companion object {
         /** The descriptives of [values]; throws [IllegalArgumentException] when empty or not all finite. */
-        public fun of(values: List<Double>): Descriptives {
+        public fun of(values: List<Double>): Descriptives = of(values.toDoubleArray())
+
+        /** The descriptives of [values] (not changed); as [of] for a list, without boxing a million values. */
+        public fun of(values: DoubleArray): Descriptives {
             require(values.isNotEmpty()) { "cannot describe an empty sample" }
-            requireFinite(values, "sample")
-            val sorted = values.sorted()
+            val bad = values.indexOfFirst { !it.isFinite() }
+            require(bad < 0) { "sample value ${bad + 1} is ${values[bad]}; responses must be finite numbers" }
+            val sorted = values.copyOf().also { it.sort() }
             val mean = values.average()
             return Descriptives(
                 n = values.size,
@@ -41,7 +45,10 @@ public data class Descriptives(
         }
 
         /** The R type 7 [p]-quantile of [sorted] (ascending, non-empty), p in [0, 1]. */
-        public fun quantile(sorted: List<Double>, p: Double): Double {
+        public fun quantile(sorted: List<Double>, p: Double): Double = quantile(sorted.toDoubleArray(), p)
+
+        /** As [quantile] for a list, over a sorted array. */
+        public fun quantile(sorted: DoubleArray, p: Double): Double {
             require(sorted.isNotEmpty()) { "cannot take a quantile of an empty sample" }
             require(p in 0.0..1.0) { "quantile probability must be in [0, 1], got $p" }
             val h = (sorted.size - 1) * p
@@ -53,7 +60,10 @@ public data class Descriptives(
 }
 
 /** Sample standard deviation (n − 1) of [values] around [mean], two-pass; null when fewer than 2 values. */
-internal fun sampleSd(values: List<Double>, mean: Double): Double? {
+internal fun sampleSd(values: List<Double>, mean: Double): Double? = sampleSd(values.toDoubleArray(), mean)
+
+/** As [sampleSd] for a list. */
+internal fun sampleSd(values: DoubleArray, mean: Double): Double? {
     if (values.size < 2) return null
     var sum = 0.0
     for (v in values) sum += (v - mean) * (v - mean)
