@@ -26,7 +26,8 @@ val USAGE: String = """
     |      {"stats":{"frames":N,"bad_frames":N,"dropped_bytes":N,...}}. Garbage is counted, not an error.
     |  hapticon grains --in FSR.csv [--grains N] [--distribution linear|convex|concave]
     |      Compliance-grain onsets of an FSR recording (header time_s,force in N, or time_s,voltage in V)
-    |      as CSV onset_s,bin,force_n: bin 0..N-1 and filtered force of each grain. Defaults: 24, linear.
+    |      as CSV onset_s,bin,force_n: bin 0..N of N+1 (grains = bins - 1, so a full press fires N grains)
+    |      and filtered force of each grain. Defaults: 24, linear.
     |  hapticon handshake --self ANGLES.csv --partner ANGLES.csv
     |      Tele-handshake commands for the self hand at each of its rows (header time_s,thumb_deg,middle_deg)
     |      as CSV time_s,active, then per region pressure V, actuator deg, servo (not palm), vibration amp.
@@ -67,6 +68,9 @@ val USAGE: String = """
     |      icon JSON and print the icon and its fit report (--json: one JSON object). See docs/gesture-extraction.md.
     |  hapticon fit-bench [--trials N] [--seed S]
     |      Parameter recovery of the fit on random synthetic icons at SNR 10-40 dB, per envelope method.
+    |  hapticon replicate [ID]
+    |      Reproduce a published result and print ours beside the paper's figures; without ID, list them
+    |      (001 compliance grains, 002 NAO touch gestures, 004 tele-handshake calibration). docs/replication.md.
     |  hapticon help
     |      Print this text.
     |
