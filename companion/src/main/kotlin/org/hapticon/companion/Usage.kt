@@ -59,9 +59,14 @@ val USAGE: String = """
     |  hapticon train --in DIR_OR_CSV [MORE..] --out MODEL.json [--window S] [--trees N] [--seed S]
     |      Train a gesture model from labelled CSV (header time_s,<channels..>[,label]; without a label
     |      column the file name holds the label, e.g. p1-knock-gentle-3.csv). Defaults: 1 s, 30 trees.
+    |  hapticon train --classifier logitboost --in DIR_OR_CSV [MORE..] --out MODEL.json [--iterations N]
+    |      Social-touch model: one message per contact CSV (header time_s,intensity,x,y,area) named
+    |      PERSON-LABEL[-N].csv; LogitBoost over stumps on 13 message features (default 10 rounds); prints
+    |      10x10-fold CV and leave-one-person-out accuracy.
     |  hapticon classify --model MODEL.json --in REC.csv
     |      Classify a recording (same channels and rate as the model) live: CSV time_s,label,probability,event
-    |      per decision, event 1 where a gesture is reported.
+    |      per decision, event 1 where a gesture is reported. With a social-touch model: label,probability
+    |      of the one message in REC.csv.
     |  hapticon fit --in REC.wav|REC.csv [--channel NAME] [--envelope lowpass|rms] [--level peak|full-scale]
     |               [--name NAME] --out ICON.json [--json]
     |      Fit a haptic icon to a gesture recording (vibration WAV, or CSV time_s,<channel>..); write it as

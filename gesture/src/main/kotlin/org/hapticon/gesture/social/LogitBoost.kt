@@ -51,7 +51,17 @@ public class LogitBoost private constructor(
         return best
     }
 
+    /** The stumps, round by round, class by class (for [SocialTouchModel]'s JSON). */
+    internal fun flatStumps(): List<Stump> = stumps.flatten()
+
     public companion object {
+        /** A model of [flat] stumps ([classCount] per round), as [flatStumps] lists them. */
+        internal fun of(featureCount: Int, classCount: Int, flat: List<Stump>): LogitBoost {
+            require(flat.isNotEmpty() && flat.size % classCount == 0) { "need a whole number of rounds of $classCount stumps, got ${flat.size}" }
+            require(flat.all { it.feature in -1 until featureCount && it.threshold.isFinite() && it.left.isFinite() && it.right.isFinite() }) { "a stump is out of range" }
+            return LogitBoost(featureCount, classCount, flat.chunked(classCount))
+        }
+
         /** Working responses are clipped to ±4 (Friedman et al. recommend 2..4; Weka uses 3 — see docs). */
         public const val Z_MAX: Double = 4.0
 
