@@ -41,6 +41,9 @@ val USAGE: String = """
     |  hapticon schedule --participants N --design paper|williams|full|random|fixed [--seed S] [--protocol FILE]
     |      Counterbalanced orders of a study (default: the originating study) as CSV participant,position,task,
     |      a blank line, then participant,task,position,stimulus; participant is the pseudonymous id (P000-A).
+    |  hapticon compliance-schedule --participants N [--repetitions R] [--seed S]
+    |      The Shaping Compliance study's trials (grains 0/9/19/39 x five electrode shapes, magnitude
+    |      estimation) per participant as CSV participant,trial,condition,grains,shape,electrodes,repetition.
     |  hapticon study-protocol [--out FILE]
     |      Print (or write) the default study protocol JSON, to edit and pass to --protocol. See docs/study.md.
     |  hapticon analyze RESULTS.csv [--out DIR] [--holm] [--test t|wilcoxon|both]
