@@ -10,6 +10,8 @@ kotlin {
 
 dependencies {
     api(project(":haptics-core"))
+    // The compliance protocol names its conditions as grain settings and electrode masks.
+    api(project(":sensor-bridge"))
 
     testImplementation(project(":test-fixtures"))
     testImplementation(libs.junit4)

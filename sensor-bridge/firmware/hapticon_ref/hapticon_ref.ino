@@ -9,10 +9,19 @@
 // rate. When the serial buffer is full a sample is skipped rather than blocking: the host sees a
 // longer time step between frames, not a sequence gap.
 //
-// The protocol logic lives in hfp.* and hfp_device.* (plain C++, tested on the host by
+// Compliance grains (grains.h) run on the board itself: channel HFP_GRAIN_CHANNEL is the force sensor,
+// and each grain drives the 3x3 electrode array through ELECTRODE_PINS (one switch per electrode, the
+// active electrode as anode against the common return) at the amplitude set on AMPLITUDE_PIN. The
+// decision and the first pulse happen in the same loop() pass as the sample, so force to pulse takes
+// one sample period plus the filter (well under 25 ms); the host sends calibrated levels and the
+// condition (grains, distribution, electrodes) with SET_GRAINS. Until it does, every step is 0 and no
+// current flows.
+//
+// The protocol logic lives in hfp.*, hfp_device.* and grains.* (plain C++, tested on the host by
 // ../test/run.sh); this file only binds it to the board.
 #include <Servo.h>
 
+#include "grains.h"
 #include "hfp.h"
 #include "hfp_device.h"
 
@@ -30,6 +39,11 @@ static const uint8_t SERVO_PINS[] = {2, 3, 4, 5, 6};          // thumb..pinky fo
 static const uint8_t CHANNEL_COUNT = sizeof(CHANNEL_PINS);
 static const uint8_t SERVO_COUNT = sizeof(SERVO_PINS);
 static const uint8_t ADC_BITS = 10;  // analogRead's default resolution on every Arduino core
+#ifndef HFP_GRAIN_CHANNEL
+#define HFP_GRAIN_CHANNEL 0  // the force sensor's channel
+#endif
+static const uint8_t ELECTRODE_PINS[hgr::ELECTRODES] = {7, 8, 9, 10, 11, 12, 13, 20, 21};  // electrodes 0..8
+static const uint8_t AMPLITUDE_PIN = 22;  // PWM/DAC setting the current source, 0..255 for steps 0..200
 
 static const hfp::DeviceConfig CONFIG = {
     1, 0, 0,             // firmware version
@@ -68,14 +82,40 @@ class ServoOutputs : public hfp::OutputDriver {
   Servo servos_[SERVO_COUNT];
 };
 
+// One pulse at a time (time-division scanning): set the level, close the electrode's switch for 200 us.
+// Blocking for 200 us is fine: the next electrode's slot starts 250 us after this one.
+class ElectrodeArray : public hgr::Stimulator {
+ public:
+  void attach() {
+    for (uint8_t e = 0; e < hgr::ELECTRODES; e++) {
+      pinMode(ELECTRODE_PINS[e], OUTPUT);
+      digitalWrite(ELECTRODE_PINS[e], LOW);
+    }
+    analogWrite(AMPLITUDE_PIN, 0);
+  }
+  void pulse(uint8_t electrode, uint8_t step, uint32_t) override {
+    if (electrode >= hgr::ELECTRODES || step == 0) return;
+    if (step > hgr::AMPLITUDE_STEPS) step = hgr::AMPLITUDE_STEPS;  // last line of defence for 2.7 mA
+    analogWrite(AMPLITUDE_PIN, (int)((uint16_t)step * 255 / hgr::AMPLITUDE_STEPS));
+    digitalWrite(ELECTRODE_PINS[electrode], HIGH);
+    delayMicroseconds(hgr::PULSE_MICROS);
+    digitalWrite(ELECTRODE_PINS[electrode], LOW);
+    analogWrite(AMPLITUDE_PIN, 0);
+  }
+};
+
 static SerialSink sink;
 static ServoOutputs outputs;
-static hfp::Device device(CONFIG, sink, outputs);
+static ElectrodeArray electrodes;
+static hgr::GrainRenderer grains;
+static hfp::Device device(CONFIG, sink, outputs, 0, &grains);
 
 // ---- Sketch ----------------------------------------------------------------------------------
 void setup() {
   Serial.begin(HFP_BAUD);
   outputs.attach();
+  electrodes.attach();
+  grains.configure(hgr::defaultParams(), HFP_SAMPLE_RATE_HZ);
   device.begin();
 }
 
@@ -95,7 +135,9 @@ void loop() {
   if (device.sampleDue(now)) {
     uint16_t values[CHANNEL_COUNT];
     for (uint8_t c = 0; c < CHANNEL_COUNT; c++) values[c] = (uint16_t)analogRead(CHANNEL_PINS[c]);
+    grains.offer(now, values[HFP_GRAIN_CHANNEL]);
     // Worst case for this frame: header 4 + timestamp 4 + 2 per channel + CRC 2, COBS +1, delimiter +1.
     if (Serial.availableForWrite() >= (int)(12 + 2 * CHANNEL_COUNT)) device.sendSample(now, values);
   }
+  grains.service(micros(), electrodes);
 }

@@ -19,6 +19,7 @@ const uint8_t TYPE_ACK = 0x03;
 const uint8_t TYPE_SET_OUTPUTS = 0x10;
 const uint8_t TYPE_REQUEST_INFO = 0x11;
 const uint8_t TYPE_SET_SAMPLE_RATE = 0x12;
+const uint8_t TYPE_SET_GRAINS = 0x13;  // compliance-grain parameters (grains.h), 21-byte payload
 
 // Acknowledgement status: ACK_OK accepts a command, the others reject it (NACK) and say why.
 const uint8_t ACK_OK = 0;

@@ -4,8 +4,9 @@
 
 namespace hfp {
 
-Device::Device(const DeviceConfig& config, ByteSink& sink, OutputDriver& outputs, uint16_t firstSequence)
-    : config_(config), sink_(sink), driver_(outputs), writer_(firstSequence),
+Device::Device(const DeviceConfig& config, ByteSink& sink, OutputDriver& outputs, uint16_t firstSequence,
+               hgr::GrainRenderer* grains)
+    : config_(config), sink_(sink), driver_(outputs), grains_(grains), writer_(firstSequence),
       sampleRateHz_(config.sampleRateHz), periodMicros_(1000000UL / config.sampleRateHz), nextDue_(0), scheduled_(false) {
   for (uint8_t i = 0; i < MAX_OUTPUTS; i++) outputs_[i] = 0;
 }
@@ -31,6 +32,9 @@ void Device::handle(const Frame& frame) {
       return setOutputs(frame);
     case TYPE_SET_SAMPLE_RATE:
       return setSampleRate(frame);
+    case TYPE_SET_GRAINS:
+      if (grains_ == 0) return ack(frame.sequence, NACK_UNKNOWN_COMMAND, frame.type);
+      return setGrains(frame);
     case TYPE_REQUEST_INFO:
       if (frame.payloadLength != 0) return ack(frame.sequence, NACK_MALFORMED, 0);
       return sendDeviceInfo();
@@ -64,9 +68,22 @@ void Device::setSampleRate(const Frame& frame) {
   if (frame.payloadLength != 4) return ack(frame.sequence, NACK_MALFORMED, 0);
   uint32_t rate = readU32(frame.payload);
   if (rate < 1 || rate > config_.maxSampleRateHz) return ack(frame.sequence, NACK_OUT_OF_RANGE, 0);
+  // The grain filter's cutoff must stay below the new Nyquist rate.
+  if (grains_ != 0 && hgr::validate(grains_->params(), rate) != hgr::PARAMS_OK) return ack(frame.sequence, NACK_OUT_OF_RANGE, 0);
+  if (grains_ != 0) grains_->configure(grains_->params(), rate);
   sampleRateHz_ = rate;
   periodMicros_ = 1000000UL / rate;
   scheduled_ = false;
+  ack(frame.sequence, ACK_OK, 0);
+}
+
+void Device::setGrains(const Frame& frame) {
+  // Checked whole before anything changes: a refused update leaves the running grains as they were.
+  hgr::GrainParams params;
+  if (!hgr::parseParams(frame.payload, frame.payloadLength, params)) return ack(frame.sequence, NACK_MALFORMED, 0);
+  hgr::ParamError error = hgr::validate(params, sampleRateHz_);
+  if (error != hgr::PARAMS_OK) return ack(frame.sequence, NACK_OUT_OF_RANGE, (uint8_t)error);
+  grains_->configure(params, sampleRateHz_);
   ack(frame.sequence, ACK_OK, 0);
 }
 

@@ -4,6 +4,7 @@
 #ifndef HAPTICON_HFP_DEVICE_H
 #define HAPTICON_HFP_DEVICE_H
 
+#include "grains.h"
 #include "hfp.h"
 
 namespace hfp {
@@ -41,7 +42,10 @@ struct DeviceConfig {
 
 class Device {
  public:
-  Device(const DeviceConfig& config, ByteSink& sink, OutputDriver& outputs, uint16_t firstSequence = 0);
+  // grains, when given, renders compliance grains stand-alone and takes SET_GRAINS updates; without it
+  // SET_GRAINS is NACKed as unknown.
+  Device(const DeviceConfig& config, ByteSink& sink, OutputDriver& outputs, uint16_t firstSequence = 0,
+         hgr::GrainRenderer* grains = 0);
 
   // Flushes the line with a lone delimiter and announces the device with a device-info frame.
   void begin();
@@ -62,12 +66,14 @@ class Device {
   void handle(const Frame& frame);
   void setOutputs(const Frame& frame);
   void setSampleRate(const Frame& frame);
+  void setGrains(const Frame& frame);
   void ack(uint16_t sequence, uint8_t status, uint8_t detail);
   void send();
 
   const DeviceConfig& config_;
   ByteSink& sink_;
   OutputDriver& driver_;
+  hgr::GrainRenderer* grains_;
   FrameWriter writer_;
   FrameDecoder decoder_;
   uint16_t outputs_[MAX_OUTPUTS];

@@ -17,14 +17,7 @@ namespace {
 int checks = 0;
 int failures = 0;
 
-#define CHECK(condition)                                                            \
-  do {                                                                              \
-    checks++;                                                                       \
-    if (!(condition)) {                                                             \
-      failures++;                                                                   \
-      fprintf(stderr, "%s:%d: CHECK failed: %s\n", __FILE__, __LINE__, #condition); \
-    }                                                                               \
-  } while (0)
+#include "check.h"
 
 typedef std::vector<uint8_t> Bytes;
 

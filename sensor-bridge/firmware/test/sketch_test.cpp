@@ -12,7 +12,25 @@ void loop();
 StubSerial Serial;
 static uint32_t now = 0;
 uint32_t micros() { return now; }
-int analogRead(uint8_t pin) { return (int)(pin - A0) * 100 + (int)(now / 1000); }
+static int forceA0 = -1;  // when >= 0, what A0 (the grain force channel) reads
+int analogRead(uint8_t pin) {
+  if (pin == A0 && forceA0 >= 0) return forceA0;
+  return (int)(pin - A0) * 100 + (int)(now / 1000);
+}
+int pinLevel[64];
+int electrodePulses[64];
+int lastAmplitude = -1;
+int maxAmplitude = 0;
+void pinMode(uint8_t, uint8_t) {}
+void digitalWrite(uint8_t pin, uint8_t level) {
+  if (level == HIGH && pinLevel[pin] == LOW) electrodePulses[pin]++;
+  pinLevel[pin] = level;
+}
+void analogWrite(uint8_t, int value) {
+  lastAmplitude = value;
+  if (value > maxAmplitude) maxAmplitude = value;
+}
+void delayMicroseconds(unsigned int us) { now += us; }
 
 int servoPulseByPin[64];
 
@@ -76,6 +94,46 @@ int main() {
   // Servos on pins 2..6 (thumb..pinky): travel 0..1000 as 1000..2000 us pulses.
   const int pulses[] = {1000, 1250, 1500, 1750, 2000};
   for (int i = 0; i < 5; i++) CHECK(servoPulseByPin[2 + i] == pulses[i]);
-  printf("sketch_test: %d infos, %d samples, %d acks, %d failed\n", infos, samples, acks, failures);
+  // No grain without a calibrated level: every step is 0 until SET_GRAINS.
+  for (int pin = 0; pin < 64; pin++) CHECK(electrodePulses[pin] == 0);
+
+  // SET_GRAINS: 9 grains over 0..1000, linear, the small square (electrodes 0, 1, 3, 4) at step 200
+  // (2.7 mA), 20 Hz, 20 ms, sequence 11. Then a 20 s slow press on A0.
+  uint8_t payload[21] = {9, 0, 0x00, 0x00, 0xe8, 0x03, 0x1b, 0x00, 200, 200, 0, 200, 200, 0, 0, 0, 0, 0xc8, 0x00, 0x20, 0x4e};
+  hfp::FrameWriter writer(11);
+  writer.begin(hfp::TYPE_SET_GRAINS);
+  for (size_t i = 0; i < sizeof(payload); i++) writer.u8(payload[i]);
+  uint8_t encoded[hfp::MAX_ENCODED];
+  size_t n = writer.end(encoded);
+  Serial.tx.clear();
+  Serial.rx.insert(Serial.rx.end(), encoded, encoded + n);
+  forceA0 = 0;
+  uint32_t start = now;
+  for (uint32_t k = 0; k < 21000; k++) {
+    forceA0 = k < 20000 ? (int)(k / 20) : 1000;
+    uint32_t end = start + (k + 1) * 1000;
+    while (now < end) {
+      loop();
+      now += 50;
+    }
+  }
+  hfp::FrameDecoder replies;
+  int grainAcks = 0;
+  for (size_t i = 0; i < Serial.tx.size(); i++) {
+    if (replies.feed(Serial.tx[i]) == hfp::FrameDecoder::FRAME && replies.frame().type == hfp::TYPE_ACK) {
+      CHECK(hfp::readU16(replies.frame().payload) == 11);
+      CHECK(replies.frame().payload[2] == hfp::ACK_OK);
+      grainAcks++;
+    }
+  }
+  CHECK(grainAcks == 1);
+  // 9 grains x 2 pulses on each of the four electrodes (pins 7, 8, 10, 11), none elsewhere.
+  const int electrodePins[] = {7, 8, 9, 10, 11, 12, 13, 20, 21};
+  const int expected[] = {18, 18, 0, 18, 18, 0, 0, 0, 0};
+  for (int e = 0; e < 9; e++) CHECK(electrodePulses[electrodePins[e]] == expected[e]);
+  CHECK(maxAmplitude == 255);  // step 200 = full scale = 2.7 mA
+  CHECK(lastAmplitude == 0);
+  printf("sketch_test: %d infos, %d samples, %d acks, %d grain pulses, %d failed\n", infos, samples, acks,
+         electrodePulses[7] + electrodePulses[8] + electrodePulses[10] + electrodePulses[11], failures);
   return failures == 0 ? 0 : 1;
 }

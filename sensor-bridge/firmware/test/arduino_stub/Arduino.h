@@ -10,8 +10,14 @@
 
 const uint8_t A0 = 14, A1 = 15, A2 = 16, A3 = 17, A4 = 18;
 
+const uint8_t OUTPUT = 1, LOW = 0, HIGH = 1;
+
 uint32_t micros();
 int analogRead(uint8_t pin);
+void pinMode(uint8_t pin, uint8_t mode);
+void digitalWrite(uint8_t pin, uint8_t level);
+void analogWrite(uint8_t pin, int value);
+void delayMicroseconds(unsigned int us);
 
 class StubSerial {
  public:

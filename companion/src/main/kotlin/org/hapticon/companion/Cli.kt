@@ -95,6 +95,8 @@ private fun dispatch(args: List<String>, console: Console) {
         "classify" -> runClassify(rest, console)
         "fit" -> runFit(rest, console)
         "fit-bench" -> runFitBench(rest, console)
+        "replicate" -> org.hapticon.companion.replicate.runReplicate(rest, console)
+        "compliance-schedule" -> org.hapticon.companion.study.runComplianceSchedule(rest, console)
         else -> throw UsageException("unknown command '$command'; try 'hapticon help'")
     }
 }

@@ -33,7 +33,8 @@ val USAGE: String = """
     |      {"stats":{"frames":N,"bad_frames":N,"dropped_bytes":N,...}}. Garbage is counted, not an error.
     |  hapticon grains --in FSR.csv [--grains N] [--distribution linear|convex|concave]
     |      Compliance-grain onsets of an FSR recording (header time_s,force in N, or time_s,voltage in V)
-    |      as CSV onset_s,bin,force_n: bin 0..N-1 and filtered force of each grain. Defaults: 24, linear.
+    |      as CSV onset_s,bin,force_n: bin 0..N of N+1 (grains = bins - 1, so a full press fires N grains)
+    |      and filtered force of each grain. Defaults: 24, linear.
     |  hapticon handshake --self ANGLES.csv --partner ANGLES.csv
     |      Tele-handshake commands for the self hand at each of its rows (header time_s,thumb_deg,middle_deg)
     |      as CSV time_s,active, then per region pressure V, actuator deg, servo (not palm), vibration amp.
@@ -53,6 +54,9 @@ val USAGE: String = """
     |  hapticon schedule --participants N --design paper|williams|full|random|fixed [--seed S] [--protocol FILE]
     |      Counterbalanced orders of a study (default: the originating study) as CSV participant,position,task,
     |      a blank line, then participant,task,position,stimulus; participant is the pseudonymous id (P000-A).
+    |  hapticon compliance-schedule --participants N [--repetitions R] [--seed S]
+    |      The Shaping Compliance study's trials (grains 0/9/19/39 x five electrode shapes, magnitude
+    |      estimation) per participant as CSV participant,trial,condition,grains,shape,electrodes,repetition.
     |  hapticon study-protocol [--out FILE]
     |      Print (or write) the default study protocol JSON, to edit and pass to --protocol. See docs/study.md.
     |  hapticon analyze RESULTS.csv [--out DIR] [--holm] [--test t|wilcoxon|both]
@@ -77,15 +81,23 @@ val USAGE: String = """
     |  hapticon train --in DIR_OR_CSV [MORE..] --out MODEL.json [--window S] [--trees N] [--seed S]
     |      Train a gesture model from labelled CSV (header time_s,<channels..>[,label]; without a label
     |      column the file name holds the label, e.g. p1-knock-gentle-3.csv). Defaults: 1 s, 30 trees.
+    |  hapticon train --classifier logitboost --in DIR_OR_CSV [MORE..] --out MODEL.json [--iterations N]
+    |      Social-touch model: one message per contact CSV (header time_s,intensity,x,y,area) named
+    |      PERSON-LABEL[-N].csv; LogitBoost over stumps on 13 message features (default 10 rounds); prints
+    |      10x10-fold CV and leave-one-person-out accuracy.
     |  hapticon classify --model MODEL.json --in REC.csv
     |      Classify a recording (same channels and rate as the model) live: CSV time_s,label,probability,event
-    |      per decision, event 1 where a gesture is reported.
+    |      per decision, event 1 where a gesture is reported. With a social-touch model: label,probability
+    |      of the one message in REC.csv.
     |  hapticon fit --in REC.wav|REC.csv [--channel NAME] [--envelope lowpass|rms] [--level peak|full-scale]
     |               [--name NAME] --out ICON.json [--json]
     |      Fit a haptic icon to a gesture recording (vibration WAV, or CSV time_s,<channel>..); write it as
     |      icon JSON and print the icon and its fit report (--json: one JSON object). See docs/gesture-extraction.md.
     |  hapticon fit-bench [--trials N] [--seed S]
     |      Parameter recovery of the fit on random synthetic icons at SNR 10-40 dB, per envelope method.
+    |  hapticon replicate [ID]
+    |      Reproduce a published result and print ours beside the paper's figures; without ID, list them
+    |      (001 compliance grains, 002 NAO touch gestures, 004 tele-handshake calibration). docs/replication.md.
     |  hapticon help
     |      Print this text.
     |

@@ -105,7 +105,7 @@ class NavigationAndAccessibilityTest {
         rule.waitForIdle()
 
         rule.onNodeWithText("Glove calibration").assertExists()
-        rule.onNodeWithText("Hold 0°").assertExists()
+        rule.onNodeWithText("Hold 0° (take 1 of 2)").assertExists()
         rule.onNodeWithText("No glove is streaming", substring = true).assertExists()
         assertEveryControlIsNamed("Calibration")
 

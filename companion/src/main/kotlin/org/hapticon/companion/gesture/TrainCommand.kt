@@ -11,6 +11,8 @@ import org.hapticon.gesture.recognition.LabelledRecording
 import org.hapticon.gesture.recognition.LiveRecognizer
 import org.hapticon.gesture.recognition.PersonalTrainer
 import org.hapticon.gesture.recognition.WindowConfig
+import org.hapticon.gesture.social.LogitBoost
+import org.hapticon.gesture.social.SocialTouchModel
 import java.io.File
 import java.util.Locale
 
@@ -22,9 +24,18 @@ const val DEFAULT_TREES: Int = 30
  * from labelled CSV recordings ([LabelledCsv]); a directory contributes its `*.csv` files in name order.
  */
 fun runTrain(args: List<String>, console: Console) {
-    val arguments = Arguments.parse("train", args, valueOptions = setOf("in", "out", "window", "trees", "seed"))
+    val arguments = Arguments.parse("train", args, valueOptions = setOf("in", "out", "window", "trees", "seed", "classifier", "iterations"))
     val inputs = listOf(arguments.required("in")) + arguments.positionals
     val out = File(arguments.required("out"))
+    when (arguments.value("classifier") ?: "forest") {
+        "forest" -> Unit
+        "logitboost" -> {
+            val iterations = arguments.int("iterations", LogitBoost.DEFAULT_ITERATIONS)
+            if (iterations !in 1..10_000) throw UsageException("--iterations must be in 1..10000, got $iterations")
+            return trainSocialTouch(inputs.flatMap { csvFiles(it) }, out, iterations, console)
+        }
+        else -> throw UsageException("--classifier must be forest or logitboost, got '${arguments.value("classifier")}'")
+    }
     val windowText = arguments.value("window")
     val window = windowText?.let { text ->
         val seconds = text.toDoubleOrNull()
@@ -63,8 +74,10 @@ fun runClassify(args: List<String>, console: Console) {
     val arguments = Arguments.parse("classify", args, valueOptions = setOf("model", "in"))
     arguments.requireNoPositionals()
     val modelPath = arguments.required("model")
+    val modelText = InputFiles.readText("model", modelPath)
+    if (SocialTouchModel.isSocialTouchModel(modelText)) return classifySocialTouch(modelText, modelPath, arguments.required("in"), console)
     val model = try {
-        GestureModel.decode(InputFiles.readText("model", modelPath))
+        GestureModel.decode(modelText)
     } catch (e: IllegalArgumentException) {
         throw UsageException("$modelPath: ${e.message}")
     }

@@ -4,7 +4,6 @@ import org.hapticon.companion.Arguments
 import org.hapticon.companion.Console
 import org.hapticon.companion.UsageException
 import org.hapticon.sensor.grains.BinDistribution
-import org.hapticon.sensor.grains.GrainBins
 import org.hapticon.sensor.grains.GrainSettings
 import org.hapticon.sensor.glove.SensorCsvException
 import java.util.Locale
@@ -20,8 +19,8 @@ fun runGrains(args: List<String>, console: Console) {
     val arguments = Arguments.parse("grains", args, valueOptions = setOf("in", "grains", "distribution"))
     arguments.requireNoPositionals()
     val count = arguments.int("grains", GrainSettings.DEFAULT_GRAIN_COUNT)
-    if (count !in GrainBins.MIN_COUNT..GrainBins.MAX_COUNT) {
-        throw UsageException("--grains must be in ${GrainBins.MIN_COUNT}..${GrainBins.MAX_COUNT}, got $count")
+    if (count !in GrainSettings.MIN_GRAIN_COUNT..GrainSettings.MAX_GRAIN_COUNT) {
+        throw UsageException("--grains must be in ${GrainSettings.MIN_GRAIN_COUNT}..${GrainSettings.MAX_GRAIN_COUNT}, got $count")
     }
     val settings = GrainSettings(grainCount = count, distribution = arguments.choice("distribution", DISTRIBUTION_CHOICES, BinDistribution.LINEAR))
     val path = arguments.required("in")
@@ -42,8 +41,8 @@ fun runGrains(args: List<String>, console: Console) {
 internal fun describe(table: GrainTable, settings: GrainSettings): String {
     val summary = table.summary
     return String.format(
-        Locale.ROOT, "grains: %d onsets from %d samples at %.1f Hz (mean rate of time_s), %d-sample grains, %d %s bins over %s-%s N",
-        table.summary.grains.size, summary.samples, summary.sampleRateHz, summary.grainSamples, settings.grainCount,
+        Locale.ROOT, "grains: %d onsets from %d samples at %.1f Hz (mean rate of time_s), %d-sample grains, %d grains = %d %s bins over %s-%s N",
+        table.summary.grains.size, summary.samples, summary.sampleRateHz, summary.grainSamples, settings.grainCount, settings.binCount,
         settings.distribution.name.lowercase(), number(settings.minNewtons), number(settings.maxNewtons),
     )
 }

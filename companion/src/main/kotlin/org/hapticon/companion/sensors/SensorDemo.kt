@@ -58,7 +58,7 @@ object SensorDemo {
         val settings = GrainSettings()
         val table = GrainTable.compute(forceCsv, settings, source = forces.path)
         OutputFiles.write(grains) { it.write(table.format().toByteArray(Charsets.UTF_8)) }
-        report("wrote $grains: ${table.summary.grains.size} grain onsets (${settings.grainCount} ${settings.distribution.name.lowercase()} bins, ${table.summary.grainSamples}-sample grains)")
+        report("wrote $grains: ${table.summary.grains.size} grain onsets (${settings.grainCount} grains = ${settings.binCount} ${settings.distribution.name.lowercase()} bins, ${table.summary.grainSamples}-sample grains)")
 
         val self = File(dir, "handshake-self.csv")
         val partner = File(dir, "handshake-partner.csv")

@@ -7,18 +7,18 @@ import org.junit.Test
 class GrainLatencyTest {
     @Test
     fun run_onePressCycle_measuresEveryGrainItCauses() {
-        // One 2 s press-and-release at 1 kHz fires 44 grains (SensorDemoTest sees the same 44 in the CSV).
+        // One 2 s press-and-release at 1 kHz fires 46 grains (SensorDemoTest sees the same 46 in the CSV).
         val result = GrainLatency(samples = 2_000, warmupSamples = 0).run()
         assertEquals(2_000, result.samples)
-        assertEquals(44, result.grains)
+        assertEquals(46, result.grains)
         assertTrue(result.toString(), result.p50Micros > 0 && result.p50Micros <= result.p99Micros && result.p99Micros <= result.maxMicros)
     }
 
     @Test
     fun run_warmupSamples_areNotCounted() {
-        // The first 1000 samples are the rest and the 0.8 s rise, whose grains climb bins 1..23; the release fires the other 21.
+        // The first 1000 samples are the rest and the 0.8 s rise, whose 24 grains climb bins 1..24 of 25; the release fires the other 22.
         val result = GrainLatency(samples = 1_000, warmupSamples = 1_000).run()
-        assertEquals(21, result.grains)
+        assertEquals(22, result.grains)
     }
 
     @Test

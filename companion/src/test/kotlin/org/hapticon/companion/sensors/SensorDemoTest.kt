@@ -25,7 +25,7 @@ class SensorDemoTest {
                 "wrote ${f("fsr-press.bin")}: framed stream from hapticon-demo-fsr, device info + 2000 FSR samples at 1000 Hz, 28036 bytes",
                 "wrote ${f("fsr-press.jsonl")}: 2001 frames decoded, 0 bad, 0 bytes dropped",
                 "wrote ${f("fsr-press.csv")}: 2000 rows of time_s,voltage",
-                "wrote ${f("grains.csv")}: 44 grain onsets (24 linear bins, 20-sample grains)",
+                "wrote ${f("grains.csv")}: 46 grain onsets (24 grains = 25 linear bins, 20-sample grains)",
                 "wrote ${f("handshake-self.csv")} and ${f("handshake-partner.csv")}: 500 rows each of time_s,thumb_deg,middle_deg",
                 "wrote ${f("handshake.csv")}: 500 steps, handshake active in 272",
             ),

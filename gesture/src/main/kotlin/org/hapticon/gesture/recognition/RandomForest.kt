@@ -9,9 +9,12 @@ import kotlin.math.roundToInt
 import kotlin.math.sqrt
 
 /**
- * How a [RandomForest] is grown: [trees] CART trees, each on a bootstrap sample, choosing among
- * [featuresPerSplit] random features at every split (0 = √(feature count), rounded), split while deeper than
- * [maxDepth] is not reached and both children keep at least [minLeaf] samples. [seed] makes training repeatable.
+ * How a [RandomForest] is grown: [trees] CART trees (Gini impurity), each on a bootstrap sample when [bootstrap]
+ * (else on all samples), choosing among [featuresPerSplit] random features at every split (0 = √(feature count),
+ * rounded), split while deeper than [maxDepth] is not reached, the node holds at least [minSamplesSplit] samples
+ * and both children keep at least [minLeaf] samples. [seed] makes training repeatable. The NAO paper's forest is
+ * [org.hapticon.gesture.recognition.NaoPreset.FOREST] (scikit-learn's names: n_estimators, max_depth,
+ * max_features, min_samples_split, criterion, bootstrap).
  */
 public class ForestParams(
     public val trees: Int = 30,
@@ -19,15 +22,20 @@ public class ForestParams(
     public val minLeaf: Int = 1,
     public val featuresPerSplit: Int = 0,
     public val seed: Long = 1L,
+    public val minSamplesSplit: Int = 2,
+    public val bootstrap: Boolean = true,
 ) {
     init {
         require(trees in 1..MAX_TREES) { "trees must be in 1..$MAX_TREES, was $trees" }
         require(maxDepth in 1..64) { "maxDepth must be in 1..64, was $maxDepth" }
         require(minLeaf >= 1) { "minLeaf must be >= 1, was $minLeaf" }
         require(featuresPerSplit >= 0) { "featuresPerSplit must be >= 0 (0 = square root), was $featuresPerSplit" }
+        require(minSamplesSplit >= 2) { "minSamplesSplit must be >= 2, was $minSamplesSplit" }
     }
 
-    override fun toString(): String = "ForestParams(trees=$trees, maxDepth=$maxDepth, minLeaf=$minLeaf, featuresPerSplit=$featuresPerSplit, seed=$seed)"
+    override fun toString(): String =
+        "ForestParams(trees=$trees, maxDepth=$maxDepth, minLeaf=$minLeaf, featuresPerSplit=$featuresPerSplit, seed=$seed, " +
+            "minSamplesSplit=$minSamplesSplit, bootstrap=$bootstrap)"
 
     public companion object {
         /** More trees than this buys nothing but model size. */
@@ -170,7 +178,7 @@ private class Tree(val feature: IntArray, val threshold: DoubleArray, val left: 
     }
 }
 
-/** CART growth with Gini impurity on bootstrap samples; scratch arrays are reused across trees. */
+/** CART growth with Gini impurity on bootstrap samples (or all samples); scratch arrays are reused across trees. */
 private class TreeGrower(
     private val x: List<DoubleArray>,
     private val y: IntArray,
@@ -193,7 +201,7 @@ private class TreeGrower(
     private val right = ArrayList<Int>()
 
     fun grow(random: SplittableRandom): Tree {
-        for (i in 0 until n) sample[i] = random.nextInt(n)
+        for (i in 0 until n) sample[i] = if (params.bootstrap) random.nextInt(n) else i
         feature.clear(); threshold.clear(); left.clear(); right.clear()
         build(0, n, 0, random)
         return Tree(feature.toIntArray(), threshold.toDoubleArray(), left.toIntArray(), right.toIntArray())
@@ -209,7 +217,7 @@ private class TreeGrower(
         for (c in 0 until classCount) if (totalCounts[c] > totalCounts[majority]) majority = c
         left[node] = majority
         val size = to - from
-        if (depth >= params.maxDepth || size < 2 * params.minLeaf || totalCounts[majority] == size) return node
+        if (depth >= params.maxDepth || size < 2 * params.minLeaf || size < params.minSamplesSplit || totalCounts[majority] == size) return node
 
         var bestScore = parentScore(size)
         var bestFeature = -1

@@ -27,6 +27,31 @@ class RandomForestTest {
     }
 
     @Test
+    fun train_minSamplesSplitAboveTheSampleCount_growsOnlyRoots() {
+        val forest = RandomForest.train(rows, labels, 4, ForestParams(trees = 3, minSamplesSplit = 201, bootstrap = false))
+        // 200 samples are fewer than 201: no node may split, so each tree is one leaf.
+        assertEquals(3, forest.nodeCount)
+        // 200 samples may split once (depth 1): a root and two leaves.
+        assertEquals(3, RandomForest.train(rows, labels, 4, ForestParams(trees = 1, minSamplesSplit = 200, maxDepth = 1, bootstrap = false, featuresPerSplit = 3)).nodeCount)
+    }
+
+    @Test
+    fun train_withoutBootstrapAndAllFeatures_treesAgreeEverywhere() {
+        // Every tree sees every sample and every feature, so the seed no longer matters: all votes are unanimous.
+        val forest = RandomForest.train(rows, labels, 4, ForestParams(trees = 3, bootstrap = false, featuresPerSplit = 3))
+        val p = DoubleArray(4)
+        for (row in rows) {
+            forest.predict(row, p)
+            assertEquals(1.0, p.max(), 0.0)
+        }
+    }
+
+    @Test
+    fun params_minSamplesSplitBelowTwo_isRejected() {
+        assertThrows(IllegalArgumentException::class.java) { ForestParams(minSamplesSplit = 1) }
+    }
+
+    @Test
     fun sameSeedSameForestOtherSeedOtherForest() {
         val a = Json.encode(train(seed = 3).toJson())
         assertEquals(a, Json.encode(train(seed = 3).toJson()))

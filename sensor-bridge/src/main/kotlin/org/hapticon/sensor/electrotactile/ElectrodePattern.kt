@@ -21,6 +21,16 @@ public data class ElectrodePattern(val bits: Int) {
     /** Number of electrodes on. */
     public val activeCount: Int get() = Integer.bitCount(bits)
 
+    /**
+     * Whether this pattern has enough electrodes for a compliance grain to be felt: at least
+     * [MIN_COMPLIANCE_ELECTRODES] (Shaping Compliance's pilot found fewer too weak). [GrainOutput] and the
+     * compliance protocol refuse patterns below it; other uses (calibrating one electrode) may drive fewer.
+     */
+    public val isStrongEnoughForCompliance: Boolean get() = activeCount >= MIN_COMPLIANCE_ELECTRODES
+
+    /** The indices (3·row + column) of the electrodes on, ascending: the time-division scan order. */
+    public fun electrodes(): List<Int> = (0 until SIZE * SIZE).filter { bits and (1 shl it) != 0 }
+
     /** The pattern as 3 strings, top row first, `X` on and `.` off (as in the docs). */
     public fun rows(): List<String> = (0 until SIZE).map { row -> (0 until SIZE).joinToString("") { if (isOn(row, it)) "X" else "." } }
 
@@ -30,6 +40,12 @@ public data class ElectrodePattern(val bits: Int) {
     public companion object {
         /** Electrodes per side. */
         public const val SIZE: Int = 3
+
+        /** Fewest electrodes a compliance grain may drive: 4 (fewer felt too weak in Shaping Compliance's pilot). */
+        public const val MIN_COMPLIANCE_ELECTRODES: Int = 4
+
+        /** All nine electrodes: the whole-array calibration check. */
+        public val ALL: ElectrodePattern = ElectrodePattern((1 shl (SIZE * SIZE)) - 1)
 
         private const val ALL_BITS = (1 shl (SIZE * SIZE)) - 1
 
@@ -55,22 +71,28 @@ public data class ElectrodePattern(val bits: Int) {
     }
 }
 
-/** The study's named electrode masks on the 3×3 array. */
+/**
+ * The electrode conditions of Shaping Compliance (the electrotactile compliance illusion, CHI 2024) on the 3×3
+ * array: large square 9 (3×3), vertical line 6 (2 columns × 3 rows), horizontal line 6 (3 columns × 2 rows),
+ * small square 4 (2×2) and triangle 6. The paper gives the sizes; where a shape sits on the array is ours (a
+ * 3×3 array has no centred 2-wide block: we use the left columns and the top rows). Every mask has at least
+ * [ElectrodePattern.MIN_COMPLIANCE_ELECTRODES] electrodes: fewer felt too weak in the paper's pilot.
+ */
 public enum class ElectrodeMask(
     /** The electrodes this mask drives. */
     public val pattern: ElectrodePattern,
 ) {
-    /** The outline of the whole array, 8 electrodes: `XXX/X.X/XXX`. */
-    LARGE_SQUARE(ElectrodePattern.of("XXX", "X.X", "XXX")),
+    /** The whole array, 9 electrodes: `XXX/XXX/XXX`. */
+    LARGE_SQUARE(ElectrodePattern.of("XXX", "XXX", "XXX")),
 
-    /** A 2×2 block in the top-left corner, 4 electrodes: `XX./XX./...` (a 3×3 array has no centred 2×2). */
+    /** A 2×2 block in the top-left corner, 4 electrodes: `XX./XX./...`. */
     SMALL_SQUARE(ElectrodePattern.of("XX.", "XX.", "...")),
 
-    /** The middle row, 3 electrodes: `.../XXX/...`. */
-    HORIZONTAL_LINE(ElectrodePattern.of("...", "XXX", "...")),
+    /** Three columns by two rows, the top two rows, 6 electrodes: `XXX/XXX/...`. */
+    HORIZONTAL_LINE(ElectrodePattern.of("XXX", "XXX", "...")),
 
-    /** The middle column, 3 electrodes: `.X./.X./.X.`. */
-    VERTICAL_LINE(ElectrodePattern.of(".X.", ".X.", ".X.")),
+    /** Two columns by three rows, the left two columns, 6 electrodes: `XX./XX./XX.`. */
+    VERTICAL_LINE(ElectrodePattern.of("XX.", "XX.", "XX.")),
 
     /** A triangle outline, apex at the top centre and base along the bottom row, 6 electrodes: `.X./X.X/XXX`. */
     TRIANGLE(ElectrodePattern.of(".X.", "X.X", "XXX")),

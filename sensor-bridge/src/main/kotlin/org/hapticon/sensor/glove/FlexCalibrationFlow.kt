@@ -30,14 +30,17 @@ public data class SettleCriterion(
 
 /** Where a [FlexCalibrationFlow] is. Every state is an immutable snapshot. */
 public sealed interface CalibrationState {
-    /** Waiting for the person to hold pose [poseIndex] at [targetDegrees] and confirm with `beginPose()`. */
-    public data class WaitingForPose(val poseIndex: Int, val targetDegrees: Double) : CalibrationState
+    /**
+     * Waiting for the person to hold pose [poseIndex] at [targetDegrees] and confirm with `beginPose()`, in round
+     * [take] (1-based; each pose is taken [FlexCalibrationFlow.takesPerPose] times).
+     */
+    public data class WaitingForPose(val poseIndex: Int, val targetDegrees: Double, val take: Int = 1) : CalibrationState
 
     /**
      * Collecting readings for pose [poseIndex]. [windowFill] valid readings are in the window so far;
      * [relativeSpread] is the current window's (max − min)/mean once it is full, else null; it stays above
      * the criterion while the reading is still moving. [faults] counts fault readings in this pose (each
-     * one empties the window).
+     * one empties the window). [take] is the round, as in [WaitingForPose].
      */
     public data class Settling(
         val poseIndex: Int,
@@ -45,6 +48,7 @@ public sealed interface CalibrationState {
         val windowFill: Int,
         val relativeSpread: Double?,
         val faults: Int,
+        val take: Int = 1,
     ) : CalibrationState
 
     /** Every pose was captured and fitted. */
@@ -58,9 +62,11 @@ public sealed interface CalibrationState {
  * The calibration procedure for one finger, as a state machine the app drives (one instance per finger):
  * for each pose in [posesDegrees] (default 0°, 30°, 50°, 70°, 90°) the app shows "hold θ", calls
  * [beginPose] once the person holds it, then feeds every reading to [offer]. Readings are collected until
- * the window is settled ([criterion]); the window's mean becomes a [CalibrationPoint] and the flow moves on.
- * After the last pose it fits ([FlexCalibration.fit]) and ends in [CalibrationState.Calibrated] or
- * [CalibrationState.Failed].
+ * the window is settled ([criterion]); the window's mean is that take of the pose and the flow moves on.
+ * The poses are walked [takesPerPose] times (the tele-handshake paper took each pose twice and averaged):
+ * round 1 through every pose, then round 2, so the hand leaves each pose before it is taken again. A pose's
+ * [CalibrationPoint] is the mean resistance of its takes. After the last take of the last pose it fits
+ * ([FlexCalibration.fit]) and ends in [CalibrationState.Calibrated] or [CalibrationState.Failed].
  *
  * [beginPose] is explicit because a reading that is settled at the previous pose would otherwise be
  * captured again before the person has moved. Not thread-safe: drive it from one thread.
@@ -72,8 +78,11 @@ public class FlexCalibrationFlow(
     public val posesDegrees: List<Double> = DEFAULT_POSES_DEGREES,
     /** When a held reading counts as settled. */
     public val criterion: SettleCriterion = SettleCriterion(),
+    /** How many times each pose is taken and averaged: 2, as the tele-handshake paper did. */
+    public val takesPerPose: Int = DEFAULT_TAKES_PER_POSE,
 ) {
     init {
+        require(takesPerPose in 1..MAX_TAKES_PER_POSE) { "takesPerPose must be in 1..$MAX_TAKES_PER_POSE, was $takesPerPose" }
         require(posesDegrees.all { it.isFinite() }) { "posesDegrees must be finite, were $posesDegrees" }
         require(posesDegrees.distinct().size >= 2) { "posesDegrees needs at least 2 distinct angles, were $posesDegrees" }
     }
@@ -88,8 +97,20 @@ public class FlexCalibrationFlow(
     public var state: CalibrationState = CalibrationState.WaitingForPose(0, posesDegrees[0])
         private set
 
-    /** The points captured so far, in pose order. */
-    public val points: List<CalibrationPoint> get() = captured.toList()
+    /** Every take captured so far, in the order taken (round 1's poses, then round 2's). */
+    public val takes: List<CalibrationPoint> get() = captured.toList()
+
+    /** Each pose taken so far, its resistance the mean of its takes, in pose order. */
+    public val points: List<CalibrationPoint> get() = posesDegrees.indices.mapNotNull { pose ->
+        val of = captured.indices.filter { it % posesDegrees.size == pose }.map { captured[it].kiloohms }
+        if (of.isEmpty()) null else CalibrationPoint(posesDegrees[pose], of.average())
+    }
+
+    /** Takes captured so far, 0..[totalTakes]. */
+    public val capturedTakes: Int get() = captured.size
+
+    /** Takes in the whole procedure: poses × [takesPerPose]. */
+    public val totalTakes: Int get() = posesDegrees.size * takesPerPose
 
     /**
      * Starts collecting for the pose the flow is waiting for and returns the new state; in any other state
@@ -99,7 +120,7 @@ public class FlexCalibrationFlow(
         val waiting = state as? CalibrationState.WaitingForPose ?: return state
         clearWindow()
         faults = 0
-        state = CalibrationState.Settling(waiting.poseIndex, waiting.targetDegrees, 0, null, 0)
+        state = CalibrationState.Settling(waiting.poseIndex, waiting.targetDegrees, 0, null, 0, waiting.take)
         return state
     }
 
@@ -152,11 +173,12 @@ public class FlexCalibrationFlow(
             return
         }
         captured += CalibrationPoint(settling.targetDegrees, mean)
-        val next = settling.poseIndex + 1
-        state = if (next < posesDegrees.size) {
-            CalibrationState.WaitingForPose(next, posesDegrees[next])
+        val next = captured.size
+        state = if (next < totalTakes) {
+            val pose = next % posesDegrees.size
+            CalibrationState.WaitingForPose(pose, posesDegrees[pose], next / posesDegrees.size + 1)
         } else {
-            when (val result = FlexCalibration.fit(captured)) {
+            when (val result = FlexCalibration.fit(points)) {
                 is FitResult.Fitted -> CalibrationState.Calibrated(result.fit)
                 is FitResult.Rejected -> CalibrationState.Failed(result.reason)
             }
@@ -171,5 +193,11 @@ public class FlexCalibrationFlow(
     public companion object {
         /** The study's calibration poses: 0°, 30°, 50°, 70°, 90°. */
         public val DEFAULT_POSES_DEGREES: List<Double> = listOf(0.0, 30.0, 50.0, 70.0, 90.0)
+
+        /** Each pose taken twice and averaged, as in the tele-handshake paper. */
+        public const val DEFAULT_TAKES_PER_POSE: Int = 2
+
+        /** Most takes per pose accepted. */
+        public const val MAX_TAKES_PER_POSE: Int = 10
     }
 }

@@ -3,6 +3,7 @@ package org.hapticon.sensor.grains
 import org.hapticon.core.HapticIcon
 import org.hapticon.core.render.VibrationWaveform
 import org.hapticon.sensor.electrotactile.ElectrodeMask
+import org.hapticon.sensor.electrotactile.ElectrodePattern
 import org.hapticon.sensor.electrotactile.ElectrotactileCommand
 import org.hapticon.sensor.electrotactile.ElectrotactileUserLimit
 import org.hapticon.sensor.electrotactile.PulseTrain
@@ -62,6 +63,19 @@ public sealed interface GrainOutput {
          * @throws org.hapticon.sensor.safety.SafetyLimitException when the current exceeds [userLimit] or 2.7 mA.
          */
         public fun electrotactile(mask: ElectrodeMask, currentMilliamps: Double, userLimit: ElectrotactileUserLimit): Electrotactile =
-            Electrotactile(ElectrotactileCommand(mask.pattern, currentMilliamps, userLimit, PulseTrain.GRAIN))
+            electrotactile(mask.pattern, currentMilliamps, userLimit)
+
+        /**
+         * The electrotactile grain on any [pattern] of at least [ElectrodePattern.MIN_COMPLIANCE_ELECTRODES]
+         * electrodes (Shaping Compliance: fewer felt too weak).
+         * @throws IllegalArgumentException when [pattern] has fewer than 4 electrodes.
+         * @throws org.hapticon.sensor.safety.SafetyLimitException when the current exceeds [userLimit] or 2.7 mA.
+         */
+        public fun electrotactile(pattern: ElectrodePattern, currentMilliamps: Double, userLimit: ElectrotactileUserLimit): Electrotactile {
+            require(pattern.isStrongEnoughForCompliance) {
+                "a compliance grain needs at least ${ElectrodePattern.MIN_COMPLIANCE_ELECTRODES} electrodes (fewer felt too weak), $pattern has ${pattern.activeCount}"
+            }
+            return Electrotactile(ElectrotactileCommand(pattern, currentMilliamps, userLimit, PulseTrain.GRAIN))
+        }
     }
 }

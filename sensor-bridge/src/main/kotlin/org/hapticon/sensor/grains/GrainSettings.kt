@@ -3,9 +3,12 @@ package org.hapticon.sensor.grains
 /**
  * The parameters of compliance grains that do not depend on the sensor's sample rate.
  *
- * [grainCount] bins over [[minNewtons], [maxNewtons]] placed by [distribution] (see [GrainBins]), the FSR
- * force smoothed by a first-order low-pass at [cutoffHz] (see [LowPassFilter]), and each grain lasting
- * [grainSeconds], during which no other grain may start.
+ * [grainCount] grains over [[minNewtons], [maxNewtons]]: the range is cut into [binCount] = [grainCount] + 1 bins
+ * placed by [distribution] (see [GrainBins]), so a slow press across the whole range crosses exactly
+ * [grainCount] inner edges and fires [grainCount] grains. Shaping Compliance: "(number of grains) = (number of
+ * bins) − 1", its 9–39 grains are 10–40 bins. Grain count 0 is one bin: the study's no-grain condition.
+ * The FSR force is smoothed by a first-order low-pass at [cutoffHz] (see [LowPassFilter]), and each grain
+ * lasts [grainSeconds], during which no other grain may start.
  */
 public data class GrainSettings(
     val grainCount: Int = DEFAULT_GRAIN_COUNT,
@@ -20,10 +23,23 @@ public data class GrainSettings(
         require(cutoffHz > 0.0 && cutoffHz.isFinite()) { "cutoffHz must be finite and > 0, was $cutoffHz" }
     }
 
-    /** The bins; throws from the constructor like [GrainBins] when the count or range is invalid. */
-    val bins: GrainBins = GrainBins(minNewtons, maxNewtons, grainCount, distribution)
+    init {
+        require(grainCount in MIN_GRAIN_COUNT..MAX_GRAIN_COUNT) { "grain count must be in $MIN_GRAIN_COUNT..$MAX_GRAIN_COUNT, was $grainCount" }
+    }
+
+    /** Number of force bins: [grainCount] + 1 (grains = bins − 1, Shaping Compliance). */
+    val binCount: Int get() = grainCount + 1
+
+    /** The [binCount] bins; throws from the constructor like [GrainBins] when the range is invalid. */
+    val bins: GrainBins = GrainBins(minNewtons, maxNewtons, grainCount + 1, distribution)
 
     public companion object {
+        /** Fewest grains: 0, the study's no-grain condition (one bin, nothing ever fires). */
+        public const val MIN_GRAIN_COUNT: Int = 0
+
+        /** Most grains: one fewer than [GrainBins.MAX_COUNT] bins. */
+        public const val MAX_GRAIN_COUNT: Int = GrainBins.MAX_COUNT - 1
+
         /** Default number of grains: the middle of the study's 9–39 range. */
         public const val DEFAULT_GRAIN_COUNT: Int = 24
 

@@ -21,22 +21,40 @@ class ElectrotactileCommandTest {
 
     @Test
     fun masks_areTheDocumentedPatterns() {
-        assertEquals(listOf("XXX", "X.X", "XXX"), ElectrodeMask.LARGE_SQUARE.pattern.rows())
+        assertEquals(listOf("XXX", "XXX", "XXX"), ElectrodeMask.LARGE_SQUARE.pattern.rows())
         assertEquals(listOf("XX.", "XX.", "..."), ElectrodeMask.SMALL_SQUARE.pattern.rows())
-        assertEquals(listOf("...", "XXX", "..."), ElectrodeMask.HORIZONTAL_LINE.pattern.rows())
-        assertEquals(listOf(".X.", ".X.", ".X."), ElectrodeMask.VERTICAL_LINE.pattern.rows())
+        assertEquals(listOf("XXX", "XXX", "..."), ElectrodeMask.HORIZONTAL_LINE.pattern.rows())
+        assertEquals(listOf("XX.", "XX.", "XX."), ElectrodeMask.VERTICAL_LINE.pattern.rows())
         assertEquals(listOf(".X.", "X.X", "XXX"), ElectrodeMask.TRIANGLE.pattern.rows())
-        assertEquals(listOf(8, 4, 3, 3, 6), ElectrodeMask.entries.map { it.pattern.activeCount })
+        // Shaping Compliance: large square 9, small square 4, horizontal line 6, vertical line 6, triangle 6.
+        assertEquals(listOf(9, 4, 6, 6, 6), ElectrodeMask.entries.map { it.pattern.activeCount })
+    }
+
+    @Test
+    fun masks_members_areTheElectrodeIndicesInScanOrder() {
+        assertEquals((0..8).toList(), ElectrodeMask.LARGE_SQUARE.pattern.electrodes())
+        assertEquals(listOf(0, 1, 3, 4), ElectrodeMask.SMALL_SQUARE.pattern.electrodes())
+        assertEquals(listOf(0, 1, 2, 3, 4, 5), ElectrodeMask.HORIZONTAL_LINE.pattern.electrodes())
+        assertEquals(listOf(0, 1, 3, 4, 6, 7), ElectrodeMask.VERTICAL_LINE.pattern.electrodes())
+        assertEquals(listOf(1, 3, 5, 6, 7, 8), ElectrodeMask.TRIANGLE.pattern.electrodes())
+        assertTrue(ElectrodeMask.entries.all { it.pattern.isStrongEnoughForCompliance })
+    }
+
+    @Test
+    fun pattern_fewerThanFourElectrodes_isFlaggedTooWeak() {
+        assertFalse(ElectrodePattern.of(".X.", ".X.", ".X.").isStrongEnoughForCompliance)
+        assertFalse(ElectrodePattern.of("X..", "...", "...").isStrongEnoughForCompliance)
+        assertTrue(ElectrodePattern.of("X.X", "...", "X.X").isStrongEnoughForCompliance)
     }
 
     @Test
     fun pattern_bits_areRowMajorFromTheTopLeft() {
-        // Electrode 3·row + column: the middle row is bits 3, 4, 5 = 0b000111000 = 56.
-        assertEquals(56, ElectrodeMask.HORIZONTAL_LINE.pattern.bits)
-        assertEquals(0b010010010, ElectrodeMask.VERTICAL_LINE.pattern.bits)
+        // Electrode 3·row + column: the top two rows are bits 0..5 = 0b000111111 = 63.
+        assertEquals(63, ElectrodeMask.HORIZONTAL_LINE.pattern.bits)
+        assertEquals(0b011011011, ElectrodeMask.VERTICAL_LINE.pattern.bits)
         assertTrue(ElectrodeMask.TRIANGLE.pattern.isOn(0, 1))
         assertFalse(ElectrodeMask.TRIANGLE.pattern.isOn(1, 1))
-        assertEquals("XXX/X.X/XXX", ElectrodeMask.LARGE_SQUARE.pattern.toString())
+        assertEquals(".X./X.X/XXX", ElectrodeMask.TRIANGLE.pattern.toString())
     }
 
     @Test

@@ -9,8 +9,8 @@ import kotlin.math.exp
 class FlexCalibrationFlowTest {
     private fun r(kiloohms: Double): DividerReading = DividerReading.Resistance(kiloohms)
 
-    private fun flow(poses: List<Double> = FlexCalibrationFlow.DEFAULT_POSES_DEGREES) =
-        FlexCalibrationFlow(GloveFinger.MIDDLE, poses, SettleCriterion(windowSamples = 3, maxRelativeSpread = 0.02))
+    private fun flow(poses: List<Double> = FlexCalibrationFlow.DEFAULT_POSES_DEGREES, takes: Int = 1) =
+        FlexCalibrationFlow(GloveFinger.MIDDLE, poses, SettleCriterion(windowSamples = 3, maxRelativeSpread = 0.02), takes)
 
     /** Holds the current pose steady at [kiloohms] for a full window. */
     private fun hold(flow: FlexCalibrationFlow, kiloohms: Double): CalibrationState {
@@ -93,6 +93,46 @@ class FlexCalibrationFlowTest {
         assertEquals(0.02, fit.calibration.alphaPerDegree, 1e-12)
         assertEquals(20.0, fit.calibration.betaKiloohms, 1e-10)
         assertEquals(listOf(0.0, 30.0, 50.0, 70.0, 90.0), flow.points.map { it.degrees })
+    }
+
+    @Test
+    fun defaultFlow_takesEachPoseTwice_roundByRound() {
+        assertEquals(2, FlexCalibrationFlow(GloveFinger.THUMB).takesPerPose)
+        assertEquals(10, FlexCalibrationFlow(GloveFinger.THUMB).totalTakes)
+    }
+
+    @Test
+    fun twoTakes_walkThePosesTwiceAndFitTheAverages() {
+        val flow = flow(listOf(0.0, 45.0, 90.0), takes = 2)
+        // Round 1 reads 10 % high, round 2 10 % low: each pose's point is the exact exponential.
+        val truth = { deg: Double -> 20.0 * exp(0.02 * deg) }
+        assertEquals(CalibrationState.WaitingForPose(1, 45.0, 1), hold(flow, truth(0.0) * 1.1))
+        assertEquals(CalibrationState.WaitingForPose(2, 90.0, 1), hold(flow, truth(45.0) * 1.1))
+        assertEquals(CalibrationState.WaitingForPose(0, 0.0, 2), hold(flow, truth(90.0) * 1.1))
+        assertEquals(3, flow.capturedTakes)
+        // After round 1, a point is its one take.
+        assertEquals(truth(45.0) * 1.1, flow.points[1].kiloohms, 1e-9)
+        flow.beginPose()
+        assertEquals(CalibrationState.Settling(0, 0.0, 1, null, 0, 2), flow.offer(r(truth(0.0) * 0.9)))
+        repeat(2) { flow.offer(r(truth(0.0) * 0.9)) }
+        hold(flow, truth(45.0) * 0.9)
+        val end = hold(flow, truth(90.0) * 0.9)
+        val fit = (end as CalibrationState.Calibrated).fit
+        assertEquals(0.02, fit.calibration.alphaPerDegree, 1e-12)
+        assertEquals(20.0, fit.calibration.betaKiloohms, 1e-10)
+        assertEquals(listOf(0.0, 45.0, 90.0, 0.0, 45.0, 90.0), flow.takes.map { it.degrees })
+        assertEquals(listOf(20.0, truth(45.0), truth(90.0)).map { Math.round(it * 1e9) }, flow.points.map { Math.round(it.kiloohms * 1e9) })
+    }
+
+    @Test
+    fun constructor_takesOutOfRange_isRejected() {
+        for (bad in listOf(0, 11)) {
+            try {
+                flow(takes = bad)
+                fail("accepted $bad")
+            } catch (_: IllegalArgumentException) {
+            }
+        }
     }
 
     @Test

@@ -96,13 +96,17 @@ class GrainBinsTest {
         assertEquals(24, settings.grainCount)
         assertEquals(9, GrainSettings.STUDY_MIN_GRAIN_COUNT)
         assertEquals(39, GrainSettings.STUDY_MAX_GRAIN_COUNT)
-        assertEquals(25, settings.bins.edges.size)
+        // Grains = bins − 1: 24 grains are 25 bins, 26 edges.
+        assertEquals(25, settings.binCount)
+        assertEquals(26, settings.bins.edges.size)
         assertEquals(0.02, settings.grainSeconds, 0.0)
         try {
-            GrainSettings(grainCount = 101)
+            GrainSettings(grainCount = 100)
             fail("accepted")
         } catch (e: IllegalArgumentException) {
-            assertEquals("grain count must be in 1..100, was 101", e.message)
+            assertEquals("grain count must be in 0..99, was 100", e.message)
         }
+        assertEquals(1, GrainSettings(grainCount = 0).binCount)
+        assertEquals(listOf(10, 20, 40), listOf(9, 19, 39).map { GrainSettings(grainCount = it).binCount })
     }
 }

@@ -12,11 +12,33 @@ class GrainDeciderTest {
     /** The cutoff that makes the filter coefficient exactly 1/2 at 1 kHz: e^(−2π·fc/fs) = 1/2. */
     private val halfCutoff = 1000.0 * ln(2.0) / (2 * PI)
 
-    /** Ten 1 N bins over 0–10 N, filter coefficient 1/2 at 1 kHz, grains of [grainSeconds]. */
+    /** 9 grains = ten 1 N bins over 0–10 N, filter coefficient 1/2 at 1 kHz, grains of [grainSeconds]. */
     private fun decider(grainSeconds: Double) =
-        GrainDecider(GrainSettings(grainCount = 10, maxNewtons = 10.0, cutoffHz = halfCutoff, grainSeconds = grainSeconds), 1000.0)
+        GrainDecider(GrainSettings(grainCount = 9, maxNewtons = 10.0, cutoffHz = halfCutoff, grainSeconds = grainSeconds), 1000.0)
 
     private fun onsets(decider: GrainDecider, forces: List<Double>): List<Int> = forces.indices.filter { decider.offer(forces[it]) }
+
+    @Test
+    fun offer_slowFullPress_firesExactlyTheRequestedGrainCount() {
+        // Shaping Compliance: grains = bins − 1. A 20 s linear press over the default 0–10 N range at 1 kHz,
+        // held at the top for 1 s, crosses each of the N inner edges once.
+        for (grains in listOf(0, 9, 19, 39)) {
+            val decider = GrainDecider(GrainSettings(grainCount = grains), 1000.0)
+            val fired = (0 until 21_000).count { decider.offer(minOf(10.0, it / 2000.0)) }
+            assertEquals("grains $grains", grains, fired)
+            assertEquals(grains, decider.currentReferenceBin)
+        }
+    }
+
+    @Test
+    fun offer_slowFullPressAndRelease_firesTheCountEachWay() {
+        for (grains in listOf(9, 19, 39)) {
+            val decider = GrainDecider(GrainSettings(grainCount = grains, distribution = BinDistribution.CONVEX), 1000.0)
+            val press = (0 until 21_000).map { minOf(10.0, it / 2000.0) }
+            val fired = (press + press.reversed() + List(1000) { 0.0 }).count { decider.offer(it) }
+            assertEquals("grains $grains", 2 * grains, fired)
+        }
+    }
 
     @Test
     fun lowPassFilter_coefficient_isOneMinusEToTheMinusTwoPiFcOverFs() {

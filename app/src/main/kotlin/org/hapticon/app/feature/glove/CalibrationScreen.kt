@@ -140,26 +140,28 @@ fun CalibrationScreen(
 @Composable
 private fun FlowStep(state: CalibrationUiState.Ready, onBeginPose: () -> Unit, onRestart: () -> Unit) {
     val finger = fingerName(state.finger).lowercase(Locale.ROOT)
-    val total = state.poses.size
+    // Every pose is taken takesPerPose times, round by round, and averaged.
+    val total = state.poses.size * state.takesPerPose
     val captured = when (val s = state.state) {
-        is CalibrationState.WaitingForPose -> s.poseIndex
-        is CalibrationState.Settling -> s.poseIndex
+        is CalibrationState.WaitingForPose -> (s.take - 1) * state.poses.size + s.poseIndex
+        is CalibrationState.Settling -> (s.take - 1) * state.poses.size + s.poseIndex
         is CalibrationState.Calibrated, is CalibrationState.Failed -> total
     }
+    val round = { take: Int -> if (state.takesPerPose > 1) " (take $take of ${state.takesPerPose})" else "" }
     Card(Modifier.fillMaxWidth()) {
         Column(Modifier.padding(16.dp), verticalArrangement = Arrangement.spacedBy(8.dp)) {
-            Text("Poses captured: $captured of $total", style = MaterialTheme.typography.labelLarge)
+            Text("Takes captured: $captured of $total", style = MaterialTheme.typography.labelLarge)
             LinearProgressIndicator(
                 progress = { captured.toFloat() / total },
                 modifier = Modifier.fillMaxWidth().semantics {
                     contentDescription = "Calibration progress"
-                    stateDescription = "$captured of $total poses captured"
+                    stateDescription = "$captured of $total takes captured"
                 },
             )
             Column(Modifier.semantics(mergeDescendants = true) { liveRegion = LiveRegionMode.Polite }, verticalArrangement = Arrangement.spacedBy(8.dp)) {
                 when (val s = state.state) {
                     is CalibrationState.WaitingForPose -> {
-                        Text("Hold ${degrees(s.targetDegrees)}", style = MaterialTheme.typography.headlineSmall, modifier = Modifier.semantics { heading() })
+                        Text("Hold ${degrees(s.targetDegrees)}${round(s.take)}", style = MaterialTheme.typography.headlineSmall, modifier = Modifier.semantics { heading() })
                         Text(
                             "Bend the $finger to ${degrees(s.targetDegrees)} and keep it still, then tap Start. " +
                                 "The pose is captured once ${state.windowSamples} readings agree within ${"%.0f".format(Locale.ROOT, state.maxSpreadPercent)} %.",
@@ -167,7 +169,7 @@ private fun FlowStep(state: CalibrationUiState.Ready, onBeginPose: () -> Unit, o
                         )
                     }
                     is CalibrationState.Settling -> {
-                        Text("Settling at ${degrees(s.targetDegrees)}…", style = MaterialTheme.typography.headlineSmall, modifier = Modifier.semantics { heading() })
+                        Text("Settling at ${degrees(s.targetDegrees)}${round(s.take)}…", style = MaterialTheme.typography.headlineSmall, modifier = Modifier.semantics { heading() })
                         Text("${s.windowFill} of ${state.windowSamples} steady readings", style = MaterialTheme.typography.bodyMedium)
                         s.relativeSpread?.let {
                             Text(
@@ -196,7 +198,7 @@ private fun FlowStep(state: CalibrationUiState.Ready, onBeginPose: () -> Unit, o
                     is CalibrationState.Calibrated -> OutlinedButton(onClick = onRestart) { Text("Calibrate again") }
                     is CalibrationState.Failed -> Button(onClick = onRestart) { Text("Try again") }
                 }
-                if (state.state is CalibrationState.Settling || (state.state as? CalibrationState.WaitingForPose)?.poseIndex?.let { it > 0 } == true) {
+                if (state.state is CalibrationState.Settling || captured > 0) {
                     OutlinedButton(onClick = onRestart) { Text("Start over") }
                 }
             }

@@ -20,8 +20,8 @@ import org.hapticon.sensor.glove.SensorFault
 
 /**
  * Calibrates the glove's flex sensors, one finger at a time, with sensor-bridge's
- * [FlexCalibrationFlow]: hold 0°, 30°, 50°, 70°, 90°, each until the reading settles, then fit
- * ln R = α·θ + ln β. A fitted result is saved for the current user in [store] at once.
+ * [FlexCalibrationFlow]: hold 0°, 30°, 50°, 70°, 90°, each until the reading settles, twice round (the
+ * tele-handshake paper took each pose twice and averaged), then fit ln R = α·θ + ln β. A fitted result is saved for the current user in [store] at once.
  *
  * Readings arrive on the sensor's reading thread and drive the flow there; the UI sees the flow's
  * state at most every [publishIntervalNanos] (≈ 30 fps), and at once whenever the pose or the
@@ -65,6 +65,7 @@ class CalibrationViewModel(
                 connected = connected,
                 finger = f,
                 poses = flow.posesDegrees,
+                takesPerPose = flow.takesPerPose,
                 windowSamples = flow.criterion.windowSamples,
                 maxSpreadPercent = flow.criterion.maxRelativeSpread * 100,
                 state = states.getValue(f),
@@ -128,8 +129,8 @@ class CalibrationViewModel(
     private fun currentStates(): Map<GloveFinger, CalibrationState> = flows.mapValues { it.value.state }
 
     private fun poseOf(state: CalibrationState): Int = when (state) {
-        is CalibrationState.WaitingForPose -> state.poseIndex
-        is CalibrationState.Settling -> state.poseIndex
+        is CalibrationState.WaitingForPose -> state.take * 1000 + state.poseIndex
+        is CalibrationState.Settling -> state.take * 1000 + state.poseIndex
         else -> -1
     }
 }
@@ -149,6 +150,8 @@ sealed interface CalibrationUiState {
         val connected: Boolean,
         val finger: GloveFinger,
         val poses: List<Double>,
+        /** Rounds through [poses]: each pose is taken this many times and averaged. */
+        val takesPerPose: Int,
         val windowSamples: Int,
         val maxSpreadPercent: Double,
         /** The selected finger's calibration flow. */

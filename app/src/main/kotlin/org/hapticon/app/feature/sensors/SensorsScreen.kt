@@ -362,7 +362,8 @@ private fun GrainsSection(grains: GrainUi, actions: SensorsActions) {
                 }
             }
             grains.deviceSampleRateHz?.let { Text("Sample rate from the board: $it Hz", style = MaterialTheme.typography.bodySmall) }
-            Text("Grains: ${grains.count}", style = MaterialTheme.typography.labelMedium)
+            // Shaping Compliance: grains = bins − 1, so a full press fires exactly this many grains.
+            Text("Grains per full press: ${grains.count} (${grains.count + 1} force bins)", style = MaterialTheme.typography.labelMedium)
             Slider(
                 value = grains.count.toFloat(),
                 onValueChange = { actions.onGrainCount(it.roundToInt()) },

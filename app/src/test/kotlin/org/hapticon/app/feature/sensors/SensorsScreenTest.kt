@@ -73,6 +73,8 @@ class SensorsScreenTest {
         scrollTo(hasText("Grains played: 7"))
         rule.onNodeWithText("Sample rate from the board: 1000 Hz").assertExists()
         rule.onNodeWithContentDescription("Grain count").assertExists()
+        // Grains = bins − 1 (Shaping Compliance): 24 grains are 25 bins.
+        rule.onNodeWithText("Grains per full press: 24 (25 force bins)").assertExists()
         rule.onNodeWithContentDescription("Burst strength").assertExists()
 
         scrollTo(hasText("Connect"))

@@ -74,6 +74,17 @@ public class FramedEncoder(firstSequence: Int = 0) {
         return finish(destination, offset)
     }
 
+    /**
+     * A command giving the firmware's stand-alone grain renderer new parameters (checked by
+     * [org.hapticon.sensor.grains.FirmwareGrainParams]; the device checks them again and NACKs with
+     * [AckStatus.OUT_OF_RANGE] and grains.h's reason as detail).
+     */
+    public fun setGrains(params: org.hapticon.sensor.grains.FirmwareGrainParams, destination: ByteArray, offset: Int = 0): Int {
+        begin(FramedProtocol.TYPE_SET_GRAINS)
+        for (b in params.payload()) u8(b.toInt() and 0xFF)
+        return finish(destination, offset)
+    }
+
     /** A device-info frame describing [info]. */
     public fun deviceInfo(info: DeviceInfo, destination: ByteArray, offset: Int = 0): Int {
         begin(FramedProtocol.TYPE_DEVICE_INFO)

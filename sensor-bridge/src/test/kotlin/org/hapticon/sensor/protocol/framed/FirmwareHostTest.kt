@@ -8,7 +8,7 @@ import org.junit.Test
 
 /**
  * Builds the reference firmware's protocol code and sketch with the host's g++ and runs their tests
- * (sensor-bridge/firmware/test/run.sh), so `./build test` covers the C++ side and its agreement with
+ * (sensor-bridge/firmware/test/run.sh, grains_test included), so `./build test` covers the C++ side and its agreement with
  * the shared vectors. Skipped where there is no g++.
  */
 class FirmwareHostTest {
@@ -21,6 +21,8 @@ class FirmwareHostTest {
         assertEquals(output, 0, exit)
         assertTrue(output, Regex("""host_test: \d+ checks, 0 failed""").containsMatchIn(output))
         assertTrue(output, output.contains("shared vectors: 13 frames, 11 exchanges"))
-        assertTrue(output, output.contains("sketch_test: 1 infos, 11 samples, 1 acks, 0 failed"))
+        assertTrue(output, Regex("""grains_test: \d+ checks, 0 failed""").containsMatchIn(output))
+        // 9 grains × 2 pulses × the small square's 4 electrodes after SET_GRAINS.
+        assertTrue(output, output.contains("sketch_test: 1 infos, 11 samples, 1 acks, 72 grain pulses, 0 failed"))
     }
 }

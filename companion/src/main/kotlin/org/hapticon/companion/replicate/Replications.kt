@@ -1,0 +1,10 @@
+package org.hapticon.companion.replicate
+
+import org.hapticon.testing.gestures.NaoSyntheticPeople
+
+/** Every replication `hapticon replicate` knows, in id order. */
+val allReplications: List<Replication> = listOf(
+    ComplianceGrainsReplication,
+    NaoGesturesReplication { NaoSyntheticPeople.sessions(count = 8, takesPerClass = 3) },
+    HandshakeCalibrationReplication,
+)

@@ -1,0 +1,94 @@
+package org.hapticon.companion.replicate
+
+import org.hapticon.companion.Console
+import org.hapticon.companion.UsageException
+import org.hapticon.companion.cli
+import org.hapticon.gesture.recognition.NaoRecording
+import org.hapticon.gesture.recognition.NaoSpan
+import org.junit.Assert.assertEquals
+import org.junit.Assert.assertTrue
+import org.junit.Assert.fail
+import org.junit.Test
+import java.io.ByteArrayOutputStream
+import java.io.PrintStream
+
+class ReplicateCommandTest {
+    /** A replication that prints a fixed line, to test the dispatch alone. */
+    private class TestReplication(override val id: String) : Replication {
+        override val title: String = "test $id"
+        override fun run(out: PrintStream) = out.println("ran $id")
+    }
+
+    private fun run(vararg args: String): String {
+        val bytes = ByteArrayOutputStream()
+        val out = PrintStream(bytes, true, "UTF-8")
+        runReplicate(args.toList(), Console(out, out), listOf(TestReplication("001"), TestReplication("002")))
+        return bytes.toString("UTF-8")
+    }
+
+    @Test
+    fun replicate_byId_runsThatOneWithItsTitle() {
+        assertEquals("002 test 002\nran 002\n", run("002"))
+    }
+
+    @Test
+    fun replicate_noId_listsThem() {
+        assertEquals("001  test 001\n002  test 002\n", run())
+    }
+
+    @Test
+    fun replicate_unknownId_isAUsageError() {
+        try {
+            run("009")
+            fail("accepted")
+        } catch (e: UsageException) {
+            assertEquals("no replication '009'; try 001, 002", e.message)
+        }
+        val result = cli("replicate", "009")
+        assertEquals(2, result.exitCode)
+        assertEquals(listOf("hapticon: no replication '009'; try 001, 002, 004"), result.stderrLines)
+    }
+
+    @Test
+    fun allReplications_areInIdOrder() {
+        assertEquals(listOf("001", "002", "004"), allReplications.map { it.id })
+    }
+
+    @Test
+    fun replicate001_printsOursBesideThePapers() {
+        val result = cli("replicate", "001")
+        assertEquals(result.toString(), 0, result.exitCode)
+        // requested, paper bins, our bins, paper grains, our grains.
+        for (g in listOf(9, 19, 39)) {
+            assertTrue(result.stdout, Regex("""\s$g\s+${g + 1}\s+${g + 1}\s+$g\s+$g\n""").containsMatchIn(result.stdout))
+        }
+        assertTrue(result.stdout, Regex("""large_square\s+9\s+9\s+XXX/XXX/XXX""").containsMatchIn(result.stdout))
+        assertTrue(result.stdout, result.stdout.contains("0.81 mA (step 60)"))
+    }
+
+    @Test
+    fun grainsPerSlowPress_isTheRequestedCount() {
+        assertEquals(listOf(0, 9, 19, 39), listOf(0, 9, 19, 39).map { ComplianceGrainsReplication.grainsPerSlowPress(it) })
+    }
+
+    @Test
+    fun handshake_twoTakes_lowerTheFitErrorByAboutRootTwo() {
+        val (alpha1, beta1) = HandshakeCalibrationReplication.rmsErrors(1)
+        val (alpha2, beta2) = HandshakeCalibrationReplication.rmsErrors(2)
+        // Averaging two independent pose errors halves their variance: errors fall by ≈ √2 (1.3..1.6 over 500 trials).
+        assertTrue("$alpha1 vs $alpha2", alpha1 / alpha2 in 1.3..1.6)
+        assertTrue("$beta1 vs $beta2", beta1 / beta2 in 1.3..1.6)
+    }
+
+    @Test
+    fun nao_onTwoTinySessions_printsTheTable() {
+        val still = { person: String ->
+            NaoRecording(person, List(4) { c -> DoubleArray(400) { k -> if (k in 100..299) 5.0 + c + (k % 7) else 10.0 } }, listOf(NaoSpan(100, 300, "squeeze-gentle")))
+        }
+        val bytes = ByteArrayOutputStream()
+        NaoGesturesReplication { listOf(still("a"), still("b")) }.run(PrintStream(bytes, true, "UTF-8"))
+        val text = bytes.toString("UTF-8")
+        assertTrue(text, text.contains("combined (11 classes)          74.1 %"))
+        assertTrue(text, text.contains("data: 2 simulated people"))
+    }
+}

@@ -1,0 +1,101 @@
+package org.hapticon.gesture.social
+
+import org.hapticon.core.io.Json
+import org.hapticon.core.io.JsonArray
+import org.hapticon.core.io.JsonException
+import org.hapticon.core.io.JsonNumber
+import org.hapticon.core.io.JsonObject
+import org.hapticon.core.io.JsonString
+import org.hapticon.gesture.recognition.JsonFields
+
+/**
+ * A trained social-touch classifier: [boost] over the [SocialTouchFeatures] of a whole message, whose classes are
+ * [labels] (whatever the training data named: the paper's six emotions, six social messages and no touch, or a
+ * researcher's own set).
+ */
+public class SocialTouchModel(public val labels: List<String>, public val boost: LogitBoost) {
+    init {
+        require(labels.size == boost.classCount && labels.toSet().size == labels.size) { "need ${boost.classCount} distinct labels, got $labels" }
+        require(boost.featureCount == SocialTouchFeatures.COUNT) { "expected ${SocialTouchFeatures.COUNT} features, got ${boost.featureCount}" }
+    }
+
+    /** The label of a message with [features], and its probability. */
+    public fun classify(features: DoubleArray): Pair<String, Double> {
+        val p = DoubleArray(labels.size)
+        val best = boost.predict(features, p)
+        return labels[best] to p[best]
+    }
+
+    /** This model as JSON in schema [SCHEMA] version [VERSION]. */
+    public fun encode(): String {
+        val stumps = boost.flatStumps()
+        return Json.encode(
+            JsonObject(
+                linkedMapOf(
+                    "schema" to JsonString(SCHEMA),
+                    "version" to JsonNumber(VERSION),
+                    "features" to JsonArray(SocialTouchFeatures.NAMES.map { JsonString(it) }),
+                    "labels" to JsonArray(labels.map { JsonString(it) }),
+                    "feature" to JsonArray(stumps.map { JsonNumber(it.feature) }),
+                    "threshold" to JsonArray(stumps.map { JsonNumber(it.threshold, isIntegral = false) }),
+                    "left" to JsonArray(stumps.map { JsonNumber(it.left, isIntegral = false) }),
+                    "right" to JsonArray(stumps.map { JsonNumber(it.right, isIntegral = false) }),
+                ),
+            ),
+        )
+    }
+
+    public companion object {
+        /** The `schema` member of a model file. */
+        public const val SCHEMA: String = "hapticon.social-touch-model"
+
+        /** The version this build writes and reads. */
+        public const val VERSION: Int = 1
+
+        /** Whether [text] looks like a social-touch model (its schema member), without parsing the rest. */
+        public fun isSocialTouchModel(text: String): Boolean = text.contains("\"$SCHEMA\"")
+
+        /** The model [text] describes; [IllegalArgumentException] naming the problem. */
+        public fun decode(text: String): SocialTouchModel {
+            val obj = try {
+                Json.decode(text) as? JsonObject
+            } catch (e: JsonException) {
+                throw IllegalArgumentException("model is not valid JSON: ${e.message}")
+            } ?: throw IllegalArgumentException("model: expected a JSON object")
+            require(JsonFields.string(obj, "schema") == SCHEMA) { "model: schema must be \"$SCHEMA\"" }
+            require(JsonFields.int(obj, "version") == VERSION) { "model: unsupported version (this build reads $VERSION)" }
+            require(JsonFields.strings(obj, "features") == SocialTouchFeatures.NAMES) { "model: feature set differs from ${SocialTouchFeatures.NAMES}" }
+            val labels = JsonFields.strings(obj, "labels")
+            val feature = JsonFields.ints(obj, "feature", "model")
+            val threshold = JsonFields.doubles(obj, "threshold", "model")
+            val left = JsonFields.doubles(obj, "left", "model")
+            val right = JsonFields.doubles(obj, "right", "model")
+            require(setOf(feature.size, threshold.size, left.size, right.size).size == 1) { "model: stump arrays differ in length" }
+            require(labels.size >= 2) { "model: need at least 2 labels" }
+            val stumps = feature.indices.map { Stump(feature[it], threshold[it], left[it], right[it]) }
+            return SocialTouchModel(labels, LogitBoost.of(SocialTouchFeatures.COUNT, labels.size, stumps))
+        }
+    }
+}
+
+/**
+ * A contact stream as CSV: header `time_s,intensity,x,y,area`, one frame per line (see [ContactFrame]). Errors are
+ * [IllegalArgumentException]s naming [source] and the line.
+ */
+public object ContactCsv {
+    /** The header. */
+    public const val HEADER: String = "time_s,intensity,x,y,area"
+
+    /** The frames of [text]. */
+    public fun read(text: String, source: String): List<ContactFrame> {
+        val lines = text.lineSequence().withIndex().filter { it.value.isNotBlank() && !it.value.startsWith("#") }.toList()
+        require(lines.isNotEmpty() && lines[0].value.trim().replace(" ", "") == HEADER) {
+            "$source:${lines.firstOrNull()?.index?.plus(1) ?: 1}: expected the header $HEADER"
+        }
+        return lines.drop(1).map { (i, line) ->
+            val cells = line.split(',').map { it.trim().toDoubleOrNull() }
+            require(cells.size == 5 && cells.all { it != null && it.isFinite() }) { "$source:${i + 1}: expected 5 finite numbers, got \"$line\"" }
+            ContactFrame(cells[0]!!, cells[1]!!, cells[2]!!, cells[3]!!, cells[4]!!)
+        }
+    }
+}

@@ -1,0 +1,155 @@
+// Host tests of the firmware's compliance grains (grains.*): grains = bins - 1 over a slow full press,
+// the time-division scan timing, force-to-pulse latency and the hard limits on parameter updates.
+#include <stdio.h>
+#include <string.h>
+
+#include <vector>
+
+#include "grains.h"
+
+namespace {
+
+int checks = 0;
+int failures = 0;
+
+#include "check.h"
+
+struct Pulse {
+  uint8_t electrode;
+  uint8_t step;
+  uint32_t onset;
+};
+
+class RecordingStimulator : public hgr::Stimulator {
+ public:
+  void pulse(uint8_t electrode, uint8_t step, uint32_t onset) {
+    Pulse p = {electrode, step, onset};
+    pulses.push_back(p);
+  }
+  std::vector<Pulse> pulses;
+};
+
+hgr::GrainParams params(uint8_t grains, uint8_t distribution, uint16_t bits) {
+  hgr::GrainParams p = hgr::defaultParams();
+  p.grains = grains;
+  p.distribution = distribution;
+  p.minForce = 0;
+  p.maxForce = 1000;
+  p.electrodeBits = bits;
+  for (uint8_t i = 0; i < hgr::ELECTRODES; i++) p.steps[i] = (uint8_t)(100 + i);
+  return p;
+}
+
+// A 20 s linear press from 0 to 1000 at 1 kHz, then 1 s held, with service() every 50 us.
+uint32_t slowPress(hgr::GrainRenderer& renderer, RecordingStimulator& out) {
+  uint32_t fired = 0;
+  for (uint32_t k = 0; k < 21000; k++) {
+    uint16_t force = (uint16_t)(k < 20000 ? k / 20 : 1000);
+    for (uint32_t t = k * 1000; t < (k + 1) * 1000; t += 50) {
+      if (t == k * 1000 && renderer.offer(t, force)) fired++;
+      renderer.service(t, out);
+    }
+  }
+  return fired;
+}
+
+void slowFullPress_firesExactlyTheRequestedGrains() {
+  const uint8_t counts[] = {0, 9, 19, 39, 99};
+  for (size_t i = 0; i < sizeof(counts); i++) {
+    for (uint8_t d = hgr::LINEAR; d <= hgr::CONCAVE; d++) {
+      hgr::GrainRenderer renderer;
+      hgr::GrainParams p = params(counts[i], d, 0x1FF);
+      CHECK(hgr::validate(p, 1000) == hgr::PARAMS_OK);
+      renderer.configure(p, 1000);
+      RecordingStimulator out;
+      uint32_t fired = slowPress(renderer, out);
+      // 99 convex grains crowd the start of the press (the first edge is 0.1 force units, the tenth 10)
+      // more tightly than the 20 ms grain can follow: only the study's 9-39 must be exact everywhere.
+      if (counts[i] <= 39 || d == hgr::LINEAR) CHECK(fired == counts[i]);
+      CHECK(out.pulses.size() == fired * 2 * 9);
+    }
+  }
+}
+
+void grain_scansEachElectrode250usApartTwiceAt125Hz() {
+  hgr::GrainRenderer renderer;
+  renderer.configure(params(9, hgr::LINEAR, 0x01B), 1000);  // the small square: electrodes 0, 1, 3, 4
+  RecordingStimulator out;
+  CHECK(!renderer.offer(0, 0));
+  CHECK(renderer.offer(1000, 1000));  // a step to the top: the filter passes bin 0 at once
+  for (uint32_t t = 1000; t < 20000; t += 10) renderer.service(t, out);
+  CHECK(out.pulses.size() == 8);
+  const uint8_t electrodes[] = {0, 1, 3, 4};
+  for (size_t i = 0; i < out.pulses.size() && i < 8; i++) {
+    CHECK(out.pulses[i].electrode == electrodes[i % 4]);
+    CHECK(out.pulses[i].step == 100 + electrodes[i % 4]);
+    // 200 us pulse + 50 us gap = 250 us per electrode; the second pulse 8 ms (125 Hz) after the first.
+    CHECK(out.pulses[i].onset == 1000 + (i / 4) * 8000 + (i % 4) * 250);
+  }
+}
+
+void stepPress_firstPulseWithin25ms() {
+  hgr::GrainRenderer renderer;
+  renderer.configure(params(39, hgr::LINEAR, 0x1FF), 1000);
+  RecordingStimulator out;
+  uint32_t pressed = 5000;
+  for (uint32_t t = 0; t < 50000 && out.pulses.empty(); t += 50) {
+    if (t % 1000 == 0) renderer.offer(t, (uint16_t)(t < pressed ? 0 : 500));
+    renderer.service(t, out);
+  }
+  CHECK(!out.pulses.empty());
+  // The 20 Hz filter (a = 0.118 at 1 kHz) passes the first edge (25.6) at the first sample after the press.
+  CHECK(!out.pulses.empty() && out.pulses[0].onset - pressed < 25000);
+  CHECK(!out.pulses.empty() && out.pulses[0].onset == pressed);
+}
+
+void validate_refusesWhatTheLimitsForbid() {
+  hgr::GrainParams p = params(39, hgr::LINEAR, 0x1FF);
+  CHECK(hgr::validate(p, 1000) == hgr::PARAMS_OK);
+  p.steps[4] = 200;  // exactly 2.7 mA
+  CHECK(hgr::validate(p, 1000) == hgr::PARAMS_OK);
+  p.steps[4] = 201;  // just past the cap
+  CHECK(hgr::validate(p, 1000) == hgr::STEP_ABOVE_CAP);
+  p = params(100, hgr::LINEAR, 0x1FF);
+  CHECK(hgr::validate(p, 1000) == hgr::BAD_GRAINS);
+  p = params(9, 3, 0x1FF);
+  CHECK(hgr::validate(p, 1000) == hgr::BAD_DISTRIBUTION);
+  p = params(9, hgr::LINEAR, 0x007);  // three electrodes: too weak
+  CHECK(hgr::validate(p, 1000) == hgr::TOO_FEW_ELECTRODES);
+  p = params(9, hgr::LINEAR, 0x20F);  // a tenth electrode
+  CHECK(hgr::validate(p, 1000) == hgr::TOO_FEW_ELECTRODES);
+  p = params(9, hgr::LINEAR, 0x00F);
+  CHECK(hgr::validate(p, 1000) == hgr::PARAMS_OK);
+  p.minForce = 1000;
+  CHECK(hgr::validate(p, 1000) == hgr::BAD_RANGE);
+  p = params(9, hgr::LINEAR, 0x1FF);
+  p.cutoffDeciHz = 5000;  // 500 Hz = Nyquist at 1 kHz
+  CHECK(hgr::validate(p, 1000) == hgr::BAD_CUTOFF);
+  p.cutoffDeciHz = 0;
+  CHECK(hgr::validate(p, 1000) == hgr::BAD_CUTOFF);
+  p = params(9, hgr::LINEAR, 0x1FF);
+  p.grainMicros = 8000 + 9 * 250 - 1;  // shorter than its own 2-pulse scan of nine electrodes
+  CHECK(hgr::validate(p, 1000) == hgr::BAD_GRAIN_LENGTH);
+}
+
+void parseParams_readsTheLittleEndianPayload() {
+  const uint8_t payload[hgr::PARAMS_LENGTH] = {39, 1, 0x10, 0x00, 0xe8, 0x03, 0xff, 0x01, 60, 61, 62, 63, 64, 65, 66, 67, 68, 0xc8, 0x00, 0x20, 0x4e};
+  hgr::GrainParams p;
+  CHECK(hgr::parseParams(payload, sizeof(payload), p));
+  CHECK(p.grains == 39 && p.distribution == hgr::CONVEX && p.minForce == 16 && p.maxForce == 1000);
+  CHECK(p.electrodeBits == 0x1FF && p.steps[0] == 60 && p.steps[8] == 68);
+  CHECK(p.cutoffDeciHz == 200 && p.grainMicros == 20000);
+  CHECK(!hgr::parseParams(payload, sizeof(payload) - 1, p));
+}
+
+}  // namespace
+
+int main() {
+  slowFullPress_firesExactlyTheRequestedGrains();
+  grain_scansEachElectrode250usApartTwiceAt125Hz();
+  stepPress_firstPulseWithin25ms();
+  validate_refusesWhatTheLimitsForbid();
+  parseParams_readsTheLittleEndianPayload();
+  printf("grains_test: %d checks, %d failed\n", checks, failures);
+  return failures == 0 ? 0 : 1;
+}

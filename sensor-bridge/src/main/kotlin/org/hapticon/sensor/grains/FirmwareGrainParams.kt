@@ -1,0 +1,61 @@
+package org.hapticon.sensor.grains
+
+import org.hapticon.sensor.electrotactile.AmplitudeSteps
+import org.hapticon.sensor.electrotactile.ElectrodePattern
+import org.hapticon.sensor.electrotactile.TimeDivisionScan
+import org.hapticon.sensor.electrotactile.PulseTrain
+
+/**
+ * The compliance-grain parameters the reference firmware renders stand-alone (firmware/hapticon_ref/grains.h),
+ * sent with the framed protocol's SET_GRAINS command ([org.hapticon.sensor.protocol.framed.FramedEncoder.setGrains]).
+ *
+ * [grainCount] grains (bins = grains + 1, as [GrainSettings]) over [minForce]..[maxForce] in the force channel's
+ * own units (the board bins what it samples), [pattern] with at least 4 electrodes, each electrode's amplitude
+ * step in [steps] (0..200, 200 = 2.7 mA), a low-pass at [cutoffHz] and [grainMicros] of dead time per grain.
+ * Checked here as the firmware checks it, so a refused update never reaches the wire.
+ * @throws IllegalArgumentException (or [org.hapticon.sensor.safety.SafetyLimitException] for a step past 200) when any is out of range.
+ */
+public data class FirmwareGrainParams(
+    val grainCount: Int,
+    val distribution: BinDistribution,
+    val minForce: Int,
+    val maxForce: Int,
+    val pattern: ElectrodePattern,
+    val steps: List<Int>,
+    val cutoffHz: Double = GrainSettings.DEFAULT_CUTOFF_HZ,
+    val grainMicros: Int = (GrainSettings.DEFAULT_GRAIN_SECONDS * 1e6).toInt(),
+) {
+    init {
+        require(grainCount in GrainSettings.MIN_GRAIN_COUNT..GrainSettings.MAX_GRAIN_COUNT) { "grain count must be in 0..99, was $grainCount" }
+        require(minForce in 0..0xFFFF && maxForce in 0..0xFFFF && minForce < maxForce) { "need 0 <= minForce < maxForce <= 65535, were $minForce and $maxForce" }
+        require(pattern.isStrongEnoughForCompliance) { "a compliance grain needs at least ${ElectrodePattern.MIN_COMPLIANCE_ELECTRODES} electrodes, $pattern has ${pattern.activeCount}" }
+        require(steps.size == ElectrodePattern.SIZE * ElectrodePattern.SIZE) { "need 9 steps, got ${steps.size}" }
+        steps.forEach { AmplitudeSteps.requireStep(it) }
+        require(cutoffHz > 0.0 && cutoffHz * 10 <= 0xFFFF) { "cutoffHz must be in (0, 6553.5], was $cutoffHz" }
+        val burst = (PulseTrain.GRAIN_PULSE_COUNT - 1) * 8000 + pattern.activeCount * TimeDivisionScan.SLOT_MICROS
+        require(grainMicros in burst..0xFFFF) { "grainMicros must be in $burst..65535 (longer than its own burst), was $grainMicros" }
+    }
+
+    /** The 21-byte SET_GRAINS payload, little-endian, in grains.h's order. */
+    public fun payload(): ByteArray {
+        val out = ByteArray(PAYLOAD_LENGTH)
+        fun u16(at: Int, v: Int) {
+            out[at] = v.toByte()
+            out[at + 1] = (v ushr 8).toByte()
+        }
+        out[0] = grainCount.toByte()
+        out[1] = distribution.ordinal.toByte()
+        u16(2, minForce)
+        u16(4, maxForce)
+        u16(6, pattern.bits)
+        steps.forEachIndexed { i, s -> out[8 + i] = s.toByte() }
+        u16(17, Math.round(cutoffHz * 10).toInt())
+        u16(19, grainMicros)
+        return out
+    }
+
+    public companion object {
+        /** Bytes of the payload. */
+        public const val PAYLOAD_LENGTH: Int = 21
+    }
+}
