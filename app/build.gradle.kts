@@ -46,8 +46,12 @@ dependencies {
     implementation(libs.androidx.compose.material3)
     implementation(libs.kotlinx.coroutines.android)
     implementation(libs.androidx.media3.exoplayer)
+    implementation(libs.material.color.utilities)
+    implementation(libs.zxing.core)
 
     testImplementation(project(":test-fixtures"))
+    // The embedded broker: "Stay reachable" is tested end to end over real MQTT.
+    testImplementation(project(":messaging:broker"))
     testImplementation(libs.junit4)
     testImplementation(libs.robolectric)
     testImplementation(libs.androidx.test.core)

@@ -9,17 +9,24 @@ import kotlinx.coroutines.flow.asStateFlow
 data class ChatPreferences(
     /** The user name; null until the first-run screen set it. */
     val userName: String? = null,
-    val brokerUrl: String = DEFAULT_BROKER_URL,
+    /** Empty until the first-launch screen tested and saved one: no address is right for every phone. */
+    val brokerUrl: String = "",
     /** Play an arriving message's icon at once (rate-limited). Off by default: vibrating unasked surprises people. */
     val autoPlay: Boolean = false,
     /** A renderer the user forces instead of the best available one ([org.hapticon.app.playback.Renderer] name), or null. */
     val rendererOverride: String? = null,
-) {
-    companion object {
-        /** The emulator's alias for the host machine, where a development broker runs. */
-        const val DEFAULT_BROKER_URL = "tcp://10.0.2.2:1883"
-    }
-}
+    // Added for the messenger screens (issue 18).
+    /** Android 12+ wallpaper colours instead of Hapticon's own scheme. */
+    val dynamicColor: Boolean = false,
+    /** Tell a sender when this user played their icon (the "felt" receipt); the user can switch it off. */
+    val sendFeltReceipts: Boolean = true,
+    /** Keep the broker connection in a foreground service while the app is closed ("Stay reachable"). */
+    val stayReachable: Boolean = false,
+    /** Start the "Stay reachable" service again after the phone restarts. */
+    val reachableAfterBoot: Boolean = false,
+    /** Conversations moved out of the chat list (still stored, back on a new message). */
+    val archived: Set<String> = emptySet(),
+)
 
 /** Reads and writes [ChatPreferences]. */
 interface ChatSettingsRepository {
@@ -40,15 +47,25 @@ class SharedPreferencesChatSettings(context: Context) : ChatSettingsRepository {
             .putString(BROKER, next.brokerUrl)
             .putBoolean(AUTO_PLAY, next.autoPlay)
             .putString(RENDERER, next.rendererOverride)
+            .putBoolean(DYNAMIC_COLOR, next.dynamicColor)
+            .putBoolean(FELT_RECEIPTS, next.sendFeltReceipts)
+            .putBoolean(STAY_REACHABLE, next.stayReachable)
+            .putBoolean(AFTER_BOOT, next.reachableAfterBoot)
+            .putStringSet(ARCHIVED, next.archived)
             .apply()
         state.value = next
     }
 
     private fun read() = ChatPreferences(
         userName = prefs.getString(USER, null),
-        brokerUrl = prefs.getString(BROKER, null) ?: ChatPreferences.DEFAULT_BROKER_URL,
+        brokerUrl = prefs.getString(BROKER, null) ?: "",
         autoPlay = prefs.getBoolean(AUTO_PLAY, false),
         rendererOverride = prefs.getString(RENDERER, null),
+        dynamicColor = prefs.getBoolean(DYNAMIC_COLOR, false),
+        sendFeltReceipts = prefs.getBoolean(FELT_RECEIPTS, true),
+        stayReachable = prefs.getBoolean(STAY_REACHABLE, false),
+        reachableAfterBoot = prefs.getBoolean(AFTER_BOOT, false),
+        archived = prefs.getStringSet(ARCHIVED, null)?.toSet() ?: emptySet(),
     )
 
     private companion object {
@@ -56,6 +73,11 @@ class SharedPreferencesChatSettings(context: Context) : ChatSettingsRepository {
         const val BROKER = "broker"
         const val AUTO_PLAY = "auto_play"
         const val RENDERER = "renderer"
+        const val DYNAMIC_COLOR = "dynamic_color"
+        const val FELT_RECEIPTS = "felt_receipts"
+        const val STAY_REACHABLE = "stay_reachable"
+        const val AFTER_BOOT = "reachable_after_boot"
+        const val ARCHIVED = "archived"
     }
 }
 

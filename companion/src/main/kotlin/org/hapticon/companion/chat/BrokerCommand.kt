@@ -5,6 +5,10 @@ import org.hapticon.companion.Console
 import org.hapticon.companion.UsageException
 import org.hapticon.messaging.broker.EmbeddedBroker
 import java.io.File
+import java.net.Inet4Address
+import java.net.NetworkInterface
+import org.hapticon.messaging.InviteLink
+import org.hapticon.messaging.mqtt.BrokerAddress
 import java.io.IOException
 
 /**
@@ -27,6 +31,8 @@ fun runBroker(args: List<String>, console: Console, waitForStop: () -> Unit = { 
     val hook = Thread { broker.stop() }
     Runtime.getRuntime().addShutdownHook(hook)
     console.out.println("broker: listening on tcp://${EmbeddedBroker.HOST}:${broker.port}, store in $data; Ctrl-C stops it")
+    // The invitation a phone opens (or scans in the app) to fill in this broker: the same link the app shares.
+    lanAddress()?.let { console.out.println("invite: ${InviteLink(null, BrokerAddress(it, broker.port))}") }
     console.out.flush()
     try {
         waitForStop()
@@ -38,5 +44,17 @@ fun runBroker(args: List<String>, console: Console, waitForStop: () -> Unit = { 
 
 /** The standard MQTT port, which `hapticon broker` uses unless told otherwise. */
 const val DEFAULT_BROKER_PORT: Int = 1883
+
+/**
+ * This machine's address on the local network (the first site-local IPv4 address of an interface that
+ * is up), which a phone on the same Wi-Fi can reach; null when there is none.
+ */
+internal fun lanAddress(): String? = runCatching {
+    NetworkInterface.getNetworkInterfaces().toList()
+        .filter { it.isUp && !it.isLoopback }
+        .flatMap { it.inetAddresses.toList() }
+        .firstOrNull { it is Inet4Address && it.isSiteLocalAddress }
+        ?.hostAddress
+}.getOrNull()
 
 private fun defaultDataDirectory(): String = File(System.getProperty("user.home"), ".hapticon/broker").path
