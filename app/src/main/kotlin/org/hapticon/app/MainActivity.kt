@@ -63,7 +63,10 @@ class MainActivity : ComponentActivity() {
                 container.chat?.pendingInvite?.value = link
                 destination = TopLevelDestination.CHATS
             }
-            MessageNotifier.ACTION_OPEN_CHAT -> destination = TopLevelDestination.CHATS
+            MessageNotifier.ACTION_OPEN_CHAT -> {
+                container.chat?.pendingConversation?.value = intent.getStringExtra(MessageNotifier.EXTRA_PEER)
+                destination = TopLevelDestination.CHATS
+            }
         }
     }
 

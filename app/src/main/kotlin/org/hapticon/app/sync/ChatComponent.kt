@@ -42,6 +42,9 @@ class ChatComponent(
     /** An invite link opened from outside, waiting for the Chats screen to apply it. */
     val pendingInvite: MutableStateFlow<String?> = MutableStateFlow(null)
 
+    /** A conversation to open (a tapped message notification), waiting for the Chats screen. */
+    val pendingConversation: MutableStateFlow<String?> = MutableStateFlow(null)
+
     /** What this phone can do now (the vibrator is asked again each time: cheap, and a test may change it). */
     val device: DeviceCapabilities get() = detectDevice()
 

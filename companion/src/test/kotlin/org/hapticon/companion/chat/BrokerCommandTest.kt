@@ -42,7 +42,9 @@ class BrokerCommandTest {
                 bob.disconnect()
             }
         }
-        assertEquals(listOf("broker: listening on tcp://127.0.0.1:$port, store in $data; Ctrl-C stops it"), out.lines)
+        // Then the invite link a phone opens, for this machine's LAN address when it has one.
+        val invite = lanAddress()?.let { listOf("invite: hapticon://invite?broker=tcp%3A%2F%2F$it%3A$port") } ?: emptyList()
+        assertEquals(listOf("broker: listening on tcp://127.0.0.1:$port, store in $data; Ctrl-C stops it") + invite, out.lines)
         assertEquals(InboxEvent.MessageReceived(message), arrived)
     }
 

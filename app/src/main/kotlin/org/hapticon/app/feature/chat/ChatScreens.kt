@@ -65,6 +65,15 @@ fun ChatsRoute(component: ChatComponent, onOpenStudy: () -> Unit = {}) {
         }
         screen = ChatScreen.LIST
     }
+    val pendingConversation by component.pendingConversation.collectAsStateWithLifecycle()
+    LaunchedEffect(pendingConversation) {
+        val open = pendingConversation ?: return@LaunchedEffect
+        component.pendingConversation.value = null
+        if (Topics.isValidUserName(open)) {
+            peer = open
+            screen = ChatScreen.CONVERSATION
+        }
+    }
     inviteMessage?.let { message ->
         AlertDialog(
             onDismissRequest = { inviteMessage = null },
@@ -166,7 +175,7 @@ private fun SettingsRoute(component: ChatComponent, onBack: () -> Unit, onOpenSt
     val scope = rememberCoroutineScope()
     val prefs by component.settings.preferences.collectAsStateWithLifecycle()
     val connection by component.sync.connection.collectAsStateWithLifecycle()
-    var exportResult by remember { mutableStateOf<String?>(null) }
+    var notice by remember { mutableStateOf<String?>(null) }
     val setReachable = { on: Boolean ->
         component.settings.update { it.copy(stayReachable = on, reachableAfterBoot = on && it.reachableAfterBoot) }
         if (on) ReachableService.start(context) else ReachableService.stop(context)
@@ -176,12 +185,12 @@ private fun SettingsRoute(component: ChatComponent, onBack: () -> Unit, onOpenSt
     // foreground service run without it), and the settings say that nothing will be announced.
     val permission = rememberLauncherForActivityResult(ActivityResultContracts.RequestPermission()) { granted ->
         setReachable(true)
-        if (!granted) exportResult = "Notifications are off: messages still arrive, but nothing announces them."
+        if (!granted) notice = "Notifications are off: messages still arrive, but nothing announces them."
     }
     val export = rememberLauncherForActivityResult(ActivityResultContracts.CreateDocument("application/json")) { uri ->
         if (uri == null) return@rememberLauncherForActivityResult
         scope.launch {
-            exportResult = withContext(Dispatchers.IO) {
+            notice = withContext(Dispatchers.IO) {
                 runCatching {
                     val json = ChatExport.toJson(component.repository.allMessages())
                     context.contentResolver.openOutputStream(uri)!!.use { it.write(json.toByteArray(Charsets.UTF_8)) }
@@ -205,8 +214,22 @@ private fun SettingsRoute(component: ChatComponent, onBack: () -> Unit, onOpenSt
             onBack = onBack,
             update = component.settings::update,
             onBroker = { url ->
+                // Like first launch: the new broker is saved only once it answered.
                 runCatching { BrokerAddress.parse(url) }.fold(
-                    onSuccess = { address -> component.settings.update { it.copy(brokerUrl = address.toString()) }; null },
+                    onSuccess = { address ->
+                        val user = prefs.userName
+                        if (user == null) {
+                            "Set a user name first"
+                        } else {
+                            notice = "Testing $address…"
+                            scope.launch {
+                                val problem = component.probe(user, address)
+                                if (problem == null) component.settings.update { it.copy(brokerUrl = address.toString()) }
+                                notice = problem?.let { "Broker not changed: $it" } ?: "Broker changed to $address"
+                            }
+                            null
+                        }
+                    },
                     onFailure = { it.message },
                 )
             },
@@ -222,7 +245,7 @@ private fun SettingsRoute(component: ChatComponent, onBack: () -> Unit, onOpenSt
             onExport = { export.launch("hapticon-chats.json") },
             onOpenStudy = onOpenStudy,
         ),
-        exportResult = exportResult,
+        notice = notice,
         version = runCatching { context.packageManager.getPackageInfo(context.packageName, 0).versionName }.getOrNull() ?: "",
     )
 }

@@ -55,7 +55,8 @@ data class SettingsActions(
 fun SettingsScreen(
     uiState: SettingsUiState,
     actions: SettingsActions,
-    exportResult: String? = null,
+    /** The outcome of the last action that takes a moment (broker test, export, permission), one line. */
+    notice: String? = null,
     version: String = "",
 ) {
     val prefs = uiState.preferences
@@ -71,6 +72,11 @@ fun SettingsScreen(
             Modifier.fillMaxSize().padding(padding).verticalScroll(rememberScrollState()).padding(horizontal = 16.dp, vertical = 8.dp),
             verticalArrangement = Arrangement.spacedBy(8.dp),
         ) {
+            notice?.let {
+                androidx.compose.material3.Surface(color = MaterialTheme.colorScheme.secondaryContainer, shape = MaterialTheme.shapes.medium) {
+                    Text(it, style = MaterialTheme.typography.bodyMedium, modifier = Modifier.fillMaxWidth().padding(12.dp))
+                }
+            }
             Section("Account", first = true)
             EditableField("User name", prefs.userName ?: "", actions.onUserName, "Others start a chat with you by this name.")
             EditableField("Broker", prefs.brokerUrl, actions.onBroker, "Connection: ${uiState.connection}")
@@ -108,7 +114,6 @@ fun SettingsScreen(
 
             Section("Data")
             OutlinedButton(onClick = actions.onExport) { Text("Export chats as JSON…") }
-            exportResult?.let { Text(it, style = MaterialTheme.typography.bodyMedium) }
 
             Section("About")
             Text(
