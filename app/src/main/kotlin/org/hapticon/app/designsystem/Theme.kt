@@ -23,11 +23,18 @@ private val DarkColors = darkColorScheme(
     tertiary = Color(0xFFFFB0C8),
 )
 
-/** Material 3 theme: the wallpaper's colours on Android 12+, our own palette before; dark follows the system. */
+/**
+ * Material 3 theme: the wallpaper's colours on Android 12+ ([dynamicColor]), our own palette before or when
+ * [dynamicColor] is off (screenshots use our palette); dark follows the system.
+ */
 @Composable
-fun HapticonTheme(darkTheme: Boolean = isSystemInDarkTheme(), content: @Composable () -> Unit) {
+fun HapticonTheme(
+    darkTheme: Boolean = isSystemInDarkTheme(),
+    dynamicColor: Boolean = true,
+    content: @Composable () -> Unit,
+) {
     val colors = when {
-        Build.VERSION.SDK_INT >= Build.VERSION_CODES.S -> {
+        dynamicColor && Build.VERSION.SDK_INT >= Build.VERSION_CODES.S -> {
             val context = LocalContext.current
             if (darkTheme) dynamicDarkColorScheme(context) else dynamicLightColorScheme(context)
         }
