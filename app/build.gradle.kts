@@ -58,5 +58,10 @@ dependencies {
     testImplementation(libs.androidx.test.ext.junit)
     testImplementation(libs.androidx.compose.ui.test.junit4)
     testImplementation(libs.kotlinx.coroutines.test)
+    testImplementation(libs.roborazzi)
+    testImplementation(libs.roborazzi.compose)
+    // ATF 3.1 also asks for Material Components 1.2.0-rc01, which is only on Google's repository and which
+    // the checks we run never load.
+    testImplementation(libs.accessibility.test.framework) { exclude(group = "com.google.android.material") }
     debugImplementation(libs.androidx.compose.ui.test.manifest)
 }
