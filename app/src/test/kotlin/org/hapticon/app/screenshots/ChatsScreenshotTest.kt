@@ -54,7 +54,7 @@ class ChatsScreenshotTest : ScreenshotTest() {
         message(3, false, MessageState.RECEIVED, now - 50 * 60_000, "Try this one", HapticIcon.HUG),
         message(4, true, MessageState.FELT, now - 40 * 60_000, "Felt it! Back to you", HapticIcon.STROKE),
         message(5, true, MessageState.READ, now - 30 * 60_000, "Lovely"),
-        message(6, true, MessageState.DELIVERED, now - 20 * 60_000, "Knock knock", HapticIcon.KNOCK),
+        message(6, true, MessageState.DELIVERED, now - 20 * 60_000, "Knock knock"),
         message(7, true, MessageState.SENT, now - 10 * 60_000, "Are you there?"),
         message(8, true, MessageState.FAILED, now - 5 * 60_000, "Sent while offline"),
         message(9, true, MessageState.SENDING, now - 60_000, "And one more"),

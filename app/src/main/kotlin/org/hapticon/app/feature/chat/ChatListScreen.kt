@@ -50,6 +50,7 @@ import androidx.compose.ui.Alignment
 import androidx.compose.ui.Modifier
 import androidx.compose.ui.graphics.Color
 import androidx.compose.ui.semantics.CustomAccessibilityAction
+import androidx.compose.ui.semantics.contentDescription
 import androidx.compose.ui.semantics.customActions
 import androidx.compose.ui.semantics.semantics
 import androidx.compose.ui.text.font.FontWeight
@@ -134,6 +135,8 @@ fun ChatListScreen(
                     onClick = { newChat = true },
                     icon = { Icon(HapticonIcons.Edit, contentDescription = null) },
                     text = { Text("New chat") },
+                    // Named on the button itself: the label is a child the merged tree does not always carry.
+                    modifier = Modifier.semantics { contentDescription = "New chat" },
                 )
             }
         },
@@ -308,6 +311,7 @@ private fun NewChatDialog(onStart: (String) -> String?, onDismiss: () -> Unit) {
         text = {
             OutlinedTextField(
                 peer, { peer = it; error = null }, label = { Text("Their user name") }, singleLine = true,
+                modifier = Modifier.semantics { contentDescription = "Their user name" },
                 isError = error != null, supportingText = { Text(error ?: "As they chose it on their phone, e.g. bob") },
             )
         },

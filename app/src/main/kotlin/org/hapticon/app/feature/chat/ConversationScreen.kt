@@ -189,7 +189,8 @@ private fun MessageList(
                 },
                 icon = { Icon(HapticonIcons.ArrowDownward, contentDescription = null) },
                 text = { Text(if (unseen > 0) "$unseen new message${if (unseen == 1) "" else "s"}" else "Latest") },
-                modifier = Modifier.align(Alignment.BottomCenter).padding(bottom = 12.dp),
+                modifier = Modifier.align(Alignment.BottomCenter).padding(bottom = 12.dp)
+                    .semantics { contentDescription = if (unseen > 0) "$unseen new messages, jump to the latest" else "Jump to the latest message" },
             )
         }
     }
@@ -332,7 +333,7 @@ private fun Composer(uiState: ConversationUiState.Success, actions: Conversation
             Row(verticalAlignment = Alignment.CenterVertically) {
                 OutlinedTextField(
                     text, { text = it }, placeholder = { Text("Message") }, shape = RoundedCornerShape(24.dp),
-                    maxLines = 4, modifier = Modifier.weight(1f),
+                    maxLines = 4, modifier = Modifier.weight(1f).semantics { contentDescription = "Message" },
                 )
                 FilledIconButton(
                     onClick = { actions.onSend(text); text = "" },

@@ -73,12 +73,14 @@ fun FirstLaunchScreen(prefilledBroker: String, check: AccountCheck, onSave: (Str
         )
         OutlinedTextField(
             name, { name = it }, label = { Text("Your user name") }, singleLine = true, enabled = !testing,
-            supportingText = { Text("Others start a chat with you by this name") }, modifier = Modifier.fillMaxWidth(),
+            supportingText = { Text("Others start a chat with you by this name") },
+            modifier = Modifier.fillMaxWidth().semantics { contentDescription = "Your user name" },
         )
         OutlinedTextField(
             broker, { broker = it }, label = { Text("Broker address") }, singleLine = true, enabled = !testing,
             placeholder = { Text("192.168.1.20:1883") },
-            supportingText = { Text("As `hapticon broker` prints it") }, modifier = Modifier.fillMaxWidth(),
+            supportingText = { Text("As `hapticon broker` prints it") },
+            modifier = Modifier.fillMaxWidth().semantics { contentDescription = "Broker address" },
         )
         when (check) {
             is AccountCheck.Failed -> Text(check.reason, color = MaterialTheme.colorScheme.error, style = MaterialTheme.typography.bodyMedium)

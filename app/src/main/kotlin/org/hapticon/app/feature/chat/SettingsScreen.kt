@@ -24,6 +24,8 @@ import androidx.compose.runtime.mutableStateOf
 import androidx.compose.runtime.saveable.rememberSaveable
 import androidx.compose.runtime.setValue
 import androidx.compose.ui.Modifier
+import androidx.compose.ui.semantics.contentDescription
+import androidx.compose.ui.semantics.semantics
 import androidx.compose.ui.unit.dp
 import org.hapticon.app.data.ChatPreferences
 import org.hapticon.app.designsystem.HapticonIcons
@@ -140,7 +142,8 @@ private fun EditableField(label: String, value: String, onSave: (String) -> Stri
     if (editing) {
         OutlinedTextField(
             text, { text = it; error = null }, label = { Text(label) }, singleLine = true, isError = error != null,
-            supportingText = { Text(error ?: supporting) }, modifier = Modifier.fillMaxWidth(),
+            supportingText = { Text(error ?: supporting) },
+            modifier = Modifier.fillMaxWidth().semantics { contentDescription = label },
         )
         androidx.compose.foundation.layout.Row {
             TextButton(onClick = { error = onSave(text); if (error == null) editing = false }) { Text("Save") }
