@@ -46,13 +46,22 @@ dependencies {
     implementation(libs.androidx.compose.material3)
     implementation(libs.kotlinx.coroutines.android)
     implementation(libs.androidx.media3.exoplayer)
+    implementation(libs.material.color.utilities)
+    implementation(libs.zxing.core)
 
     testImplementation(project(":test-fixtures"))
+    // The embedded broker: "Stay reachable" is tested end to end over real MQTT.
+    testImplementation(project(":messaging:broker"))
     testImplementation(libs.junit4)
     testImplementation(libs.robolectric)
     testImplementation(libs.androidx.test.core)
     testImplementation(libs.androidx.test.ext.junit)
     testImplementation(libs.androidx.compose.ui.test.junit4)
     testImplementation(libs.kotlinx.coroutines.test)
+    testImplementation(libs.roborazzi)
+    testImplementation(libs.roborazzi.compose)
+    // ATF 3.1 also asks for Material Components 1.2.0-rc01, which is only on Google's repository and which
+    // the checks we run never load.
+    testImplementation(libs.accessibility.test.framework) { exclude(group = "com.google.android.material") }
     debugImplementation(libs.androidx.compose.ui.test.manifest)
 }

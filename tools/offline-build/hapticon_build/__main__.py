@@ -18,6 +18,9 @@ USAGE = """usage: ./build COMMAND [options]
   test [MODULE...] [--tests REGEX]
                       compile and run tests (all modules by default); the last line is
                       "N passed, N failed, N skipped"; exits 1 on any failure
+  screenshots [--tests REGEX]
+                      run the app's screenshot tests recording docs/images/screens/*.png
+                      (`./build test :app` compares against them instead)
   companion           build the companion command-line tool (used by ./hapticon)
   demo                build the APK, then run the companion demo into out/demo
   bench               build the companion and run `hapticon bench`
@@ -43,6 +46,8 @@ def main(argv: list[str]) -> int:
         build = Build(project)
         if command == "test":
             return run_tests(build, rest)
+        if command == "screenshots":
+            return record_screenshots(build, rest)
         if command == "apk":
             from .android import AndroidApp
             apk = AndroidApp(build, app_module(project)).assemble()
@@ -149,6 +154,18 @@ def run_tests(build: Build, rest: list[str]) -> int:
             print(f"{r.module}: {r.passed} passed, {r.failed} failed, {r.skipped} skipped"
                   + (" (test JVM crashed)" if r.crashed else ""))
     print(f"{passed} passed, {failed} failed, {skipped} skipped")
+    return 0 if failed == 0 else 1
+
+
+def record_screenshots(build: Build, rest: list[str]) -> int:
+    """`./build screenshots`: the app's screenshot tests (class names ending in ScreenshotTest) in record mode."""
+    from .android import AndroidApp
+    name_filter = rest[rest.index("--tests") + 1] if "--tests" in rest else r"ScreenshotTest\b"
+    result = AndroidApp(build, app_module(build.project)).test(name_filter, record_screenshots=True)
+    build.kotlinc.close()
+    failed = result.failed + (1 if result.crashed else 0)
+    print(f"{result.passed} passed, {failed} failed, {result.skipped} skipped; "
+          f"screens in {os.path.join('docs', 'images', 'screens')}")
     return 0 if failed == 0 else 1
 
 

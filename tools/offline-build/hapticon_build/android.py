@@ -344,7 +344,9 @@ class AndroidApp:
              f"targetSdk {self.target_sdk}, {len(dexes)} dex, {size / 1e6:.2f} MB")
 
     # -- tests ------------------------------------------------------------------------------------
-    def test(self, name_filter: str | None) -> TestResult:
+    def test(self, name_filter: str | None, record_screenshots: bool = False) -> TestResult:
+        """Runs the app's Robolectric tests. Screenshot tests compare with docs/images/screens/ unless
+        `record_screenshots` (./build screenshots), which passes `roborazzi.test.record=true` instead."""
         if not self.b.sources(self.m, "test"):
             return TestResult(self.m.path)
         self.b.compile_module(self.m, "main")
@@ -369,9 +371,14 @@ class AndroidApp:
         runtime = [test_classes, config, r_jar]
         runtime += [e for e in self.b.runtime_classpath(self.m, "test") if e != test_classes]
         runtime.append(self.tools.android_runtime_jar)
+        roborazzi = os.path.join(self.out, "roborazzi")  # diffs and reports: build output, never committed
+        mode = "record" if record_screenshots else "verify"
         return self.b.run_junit(self.m, test_classes, runtime, name_filter, jvm_args=[
             "-Drobolectric.offline=true", f"-Drobolectric.dependency.dir={self.tools.robolectric_sdk_dir}",
-            "-Drobolectric.logging.enabled=false"])
+            "-Drobolectric.logging.enabled=false",
+            f"-Droborazzi.test.{mode}=true", f"-Droborazzi.output.dir={roborazzi}",
+            f"-Droborazzi.compare.output.dir={roborazzi}", f"-Droborazzi.result.dir={roborazzi}/results",
+            f"-Dhapticon.screens.dir={os.path.join(self.b.root, 'docs', 'images', 'screens')}"])
 
 
 def _dex_order(path: str) -> int:

@@ -77,7 +77,7 @@ class Build:
             if d.configuration not in configurations or d.configuration == "ksp":
                 continue
             if d.library:
-                roots.append(d.library)
+                roots.append((d.library, d.excludes))
             elif d.project:
                 dep = self.project.module(d.project)
                 inherited = ("api",) if exported_only else MAIN_RUNTIME
@@ -109,10 +109,11 @@ class Build:
             configurations += TEST_COMPILE if use == "compile" else TEST_RUNTIME
         roots = self._external_roots(module, configurations, exported_only=(use == "compile"))
         unique = {}
-        for c in roots:
-            unique.setdefault((c.group, c.name, c.version), c)
+        for c, excludes in roots:
+            key = (c.group, c.name, c.version)
+            unique[key] = unique.get(key, excludes) & excludes  # excluded only if excluded on every path
         resolver = Resolver(self.repo, self.platform(module))
-        artifacts = resolver.resolve(list(unique))
+        artifacts = resolver.resolve([k + (ex,) for k, ex in unique.items()])
         files = [f for a in artifacts for f in a.files]
         paths = self.repo.fetch_all(files)
         lock = os.path.join(self.out, "resolved", f"{module.name}-{scope}.txt")

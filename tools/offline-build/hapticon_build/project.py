@@ -30,6 +30,8 @@ class Dependency:
     project: str | None = None   # ":haptics-core"
     library: Coordinate | None = None
     platform: bool = False
+    # Gradle's `{ exclude(group = "g", module = "m") }`: (group, module or "*") left out of this dependency's graph
+    excludes: frozenset = frozenset()
 
 
 @dataclass
@@ -177,6 +179,17 @@ def _value(expr: str, catalog: Catalog) -> str:
     raise BuildError(f"cannot evaluate {expr!r}: use a literal or libs.versions.x.get()")
 
 
+def _excludes(block: str, build_file: str) -> frozenset:
+    """`exclude(group = "g")` / `exclude(group = "g", module = "m")` statements (one line, `;`-separated)."""
+    found = set()
+    for stmt in filter(None, (s.strip() for s in block.split(";"))):
+        m = re.fullmatch(r'exclude\(group\s*=\s*"([^"]+)"(?:\s*,\s*module\s*=\s*"([^"]+)")?\)', stmt)
+        if not m:
+            raise BuildError(f"{build_file}: dependencies: cannot read {stmt!r} (only exclude(group = …, module = …))")
+        found.add((m.group(1), m.group(2) or "*"))
+    return frozenset(found)
+
+
 def parse_module(path: str, directory: str, catalog: Catalog) -> Module:
     build_file = os.path.join(directory, "build.gradle.kts")
     try:
@@ -196,17 +209,18 @@ def parse_module(path: str, directory: str, catalog: Catalog) -> Module:
             raise BuildError(f"{build_file}: plugins: cannot read {stmt!r} (use alias(libs.plugins.x))")
 
     for stmt in _statements(_block(text, "dependencies") or ""):
-        m = re.fullmatch(r"(\w+)\((.*)\)", stmt)
+        m = re.fullmatch(r"(\w+)\((.*?\)?)\)\s*(?:\{(.*)\})?", stmt)
         if not m or m.group(1) not in CONFIGURATIONS:
             raise BuildError(f"{build_file}: dependencies: cannot read {stmt!r}")
         conf, arg = m.group(1), m.group(2).strip()
+        excludes = _excludes(m.group(3), build_file) if m.group(3) is not None else frozenset()
         pm = re.fullmatch(r'project\("(:[\w:-]+)"\)', arg)
         lm = re.fullmatch(r"libs\.([\w.]+)", arg)
         plm = re.fullmatch(r"platform\(libs\.([\w.]+)\)", arg)
         if pm:
             module.dependencies.append(Dependency(conf, project=pm.group(1)))
         elif lm:
-            module.dependencies.append(Dependency(conf, library=catalog.library(lm.group(1))))
+            module.dependencies.append(Dependency(conf, library=catalog.library(lm.group(1)), excludes=excludes))
         elif plm:
             module.dependencies.append(Dependency(conf, library=catalog.library(plm.group(1)), platform=True))
         else:

@@ -229,8 +229,13 @@ class Resolver:
                 list(pool.map(lambda k: self.node(*k), wanted))
 
     # -- resolution -------------------------------------------------------------------------------
-    def resolve(self, roots: list[tuple[str, str, str | None]]) -> list[Artifact]:
-        """Runtime classpath of `roots` (versionless roots take their version from platforms among them)."""
+    def resolve(self, roots: list[tuple]) -> list[Artifact]:
+        """Runtime classpath of `roots` (versionless roots take their version from platforms among them).
+
+        A root is (group, name, version) or (group, name, version, excludes): Gradle's exclude rules on a
+        declared dependency, (group, module or "*") pairs left out of that dependency's graph."""
+        root_excludes = {(r[0], r[1]): (r[3] if len(r) > 3 else frozenset()) for r in roots}
+        roots = [r[:3] for r in roots]
         forced: dict[tuple, str] = {}
         previous_constraints: dict[tuple, set] = {}
         for _ in range(50):
@@ -239,7 +244,7 @@ class Resolver:
                 if v:
                     requested[(g, a)].add(v)
             seen, selected = set(), {}
-            queue = [((g, a), frozenset()) for g, a, _ in roots]
+            queue = [((g, a), root_excludes[(g, a)]) for g, a, _ in roots]
             while queue:
                 self._prefetch(queue, requested, constraints, previous_constraints, forced, seen)
                 ga, _excl = queue.pop()

@@ -84,6 +84,18 @@ class ProjectReaderTest(unittest.TestCase):
         self.assertIn("app/build.gradle.kts", str(e.exception))
         self.assertIn("okio", str(e.exception))
 
+    def test_load_project_excludeBlock_readsGroupAndModule(self):
+        self.app('    testImplementation(libs.junit4) { exclude(group = "org.hamcrest"); exclude(group = "x", module = "y") }')
+        dep = load_project(self.root).module(":app").dependencies[0]
+        self.assertEqual("junit:junit:4.13.2", str(dep.library))
+        self.assertEqual(frozenset({("org.hamcrest", "*"), ("x", "y")}), dep.excludes)
+
+    def test_load_project_unknownStatementInExcludeBlock_fails(self):
+        self.app('    testImplementation(libs.junit4) { isTransitive = false }')
+        with self.assertRaises(BuildError) as e:
+            load_project(self.root)
+        self.assertIn("isTransitive", str(e.exception))
+
     def test_load_project_undeclaredCatalogAlias_fails(self):
         self.app("    implementation(libs.not.there)")
         with self.assertRaises(BuildError) as e:
@@ -187,6 +199,12 @@ class ResolverTest(unittest.TestCase):
                  "</dependencies>")
         got = [a.name for a in Resolver(self.repo, "jvm").resolve([("g", "lib", "1")])]
         self.assertEqual(["lib"], got)
+
+    def test_resolve_rootExclude_dropsGroupFromItsGraph(self):
+        self.module("g", "atf", "3", deps=[("google", "material", "1"), ("g", "guava", "2")])
+        self.module("g", "guava", "2")
+        got = [a.name for a in Resolver(self.repo, "jvm").resolve([("g", "atf", "3", frozenset({("google", "*")}))])]
+        self.assertEqual(["atf", "guava"], got)
 
     def test_resolve_versionlessRootWithoutPlatform_fails(self):
         self.module("g", "a", "1")

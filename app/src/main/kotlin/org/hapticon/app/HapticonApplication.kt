@@ -29,6 +29,11 @@ class HapticonApplication : Application() {
         container = AppContainer.create(this)
         // The chat sync runs in the application's scope from start-up: it drains the outbox and receives.
         container.chat?.sync?.start()
+        // "Stay reachable" was on when the app last ran: keep the promise from the first start.
+        if (container.chat?.settings?.preferences?.value?.stayReachable == true) {
+            runCatching { org.hapticon.app.sync.ReachableService.start(this) }
+                .onFailure { android.util.Log.w("HapticonApplication", "cannot start Stay reachable now: ${it.message}") }
+        }
     }
 }
 

@@ -12,6 +12,8 @@ import androidx.compose.runtime.setValue
 import org.hapticon.app.designsystem.HapticonTheme
 import org.hapticon.app.navigation.HapticonApp
 import org.hapticon.app.navigation.TopLevelDestination
+import org.hapticon.app.sync.MessageNotifier
+import androidx.lifecycle.compose.collectAsStateWithLifecycle
 
 /**
  * The single activity: hosts the Compose UI. It is also what Android opens when a supported USB
@@ -32,7 +34,8 @@ class MainActivity : ComponentActivity() {
             ?: if (container.study?.settings?.preferences?.value?.activeSessionId != null) TopLevelDestination.STUDY else TopLevelDestination.ICONS
         handleIntent(intent, container)
         setContent {
-            HapticonTheme {
+            val dynamicColor = container.chat?.settings?.preferences?.collectAsStateWithLifecycle()?.value?.dynamicColor ?: false
+            HapticonTheme(dynamicColor = dynamicColor) {
                 HapticonApp(container, selected = destination, onSelect = { destination = it })
             }
         }
@@ -50,9 +53,20 @@ class MainActivity : ComponentActivity() {
     }
 
     private fun handleIntent(intent: Intent?, container: AppContainer) {
-        if (intent?.action == UsbManager.ACTION_USB_DEVICE_ATTACHED) {
-            container.usbDevices.refresh()
-            destination = TopLevelDestination.SENSORS
+        when (intent?.action) {
+            UsbManager.ACTION_USB_DEVICE_ATTACHED -> {
+                container.usbDevices.refresh()
+                destination = TopLevelDestination.SENSORS
+            }
+            // An invite link: the Chats screen checks and applies it (and says why not, for a bad one).
+            Intent.ACTION_VIEW -> intent.dataString?.let { link ->
+                container.chat?.pendingInvite?.value = link
+                destination = TopLevelDestination.CHATS
+            }
+            MessageNotifier.ACTION_OPEN_CHAT -> {
+                container.chat?.pendingConversation?.value = intent.getStringExtra(MessageNotifier.EXTRA_PEER)
+                destination = TopLevelDestination.CHATS
+            }
         }
     }
 

@@ -106,6 +106,13 @@ public enum class ReceiptState(
 
     /** Shown to the receiver. */
     READ("read"),
+
+    /**
+     * The receiver played the message's haptic icon (on arrival or by a press). Sent only for a
+     * message with an icon, and only while the receiver lets it be sent (a setting, on by default).
+     * An older client that does not know it rejects it as an unknown value and keeps the earlier state.
+     */
+    FELT("felt"),
 }
 
 internal val UUID_FORM = Regex("[0-9a-f]{8}-[0-9a-f]{4}-[0-9a-f]{4}-[0-9a-f]{4}-[0-9a-f]{12}")

@@ -76,6 +76,15 @@ class MessageCodecTest {
     }
 
     @Test
+    fun encode_feltReceipt_writesStateFelt() {
+        val receipt = Receipt(ID_1, "bob", ReceiptState.FELT, 42)
+        assertEquals(
+            """{"schema":"hapticon.receipt","version":1,"messageId":"$ID_1","from":"bob","state":"felt","at":42}""",
+            String(MessageCodec.encode(receipt), Charsets.UTF_8),
+        )
+    }
+
+    @Test
     fun decodeCapabilities_encodedCapabilities_roundTripExactly() {
         val all = listOf(
             Capabilities("bob", RendererKind.AMPLITUDE_WAVEFORM, amplitudeControl = true, apiLevel = 34, resonantFrequencyHz = 170.5),

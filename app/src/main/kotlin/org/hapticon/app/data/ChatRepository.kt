@@ -51,6 +51,18 @@ interface ChatRepository {
     /** Marks the received messages of [peer] as read at [nowMillis]; returns those that were unread. */
     suspend fun markRead(peer: String, nowMillis: Long): List<StoredMessage>
 
+    /** The message with [id], or null when there is none. */
+    suspend fun message(id: String): StoredMessage?
+
+    /** Every stored message, by conversation then time (the export). */
+    suspend fun allMessages(): List<StoredMessage>
+
+    /** Makes a failed or waiting own message due for sending now (the user tapped retry). */
+    suspend fun retryNow(messageId: String)
+
+    /** Deletes the conversation with [peer], its messages and whatever of it is still in the outbox. */
+    suspend fun deleteConversation(peer: String)
+
     /** Keeps [receipt] for [peer] until [receiptSent]: it could not be sent now. */
     suspend fun queueReceipt(peer: String, receipt: Receipt)
 
@@ -104,8 +116,12 @@ class OfflineFirstChatRepository(
             if (!row.outgoing || row.conversation != receipt.from) return@withTransaction
             when (receipt.state) {
                 ReceiptState.DELIVERED -> if (row.state in FORWARD_TO_DELIVERED) messages.updateState(row.id, MessageState.DELIVERED.name)
-                ReceiptState.READ -> if (row.state != MessageState.READ.name) {
+                ReceiptState.READ -> if (row.state != MessageState.READ.name && row.state != MessageState.FELT.name) {
                     messages.updateStateAndReadAt(row.id, MessageState.READ.name, receipt.atMillis)
+                }
+                // Felt implies read: the read time is kept when known, else the felt time stands in.
+                ReceiptState.FELT -> if (row.state != MessageState.FELT.name) {
+                    messages.updateStateAndReadAt(row.id, MessageState.FELT.name, row.readAtMillis ?: receipt.atMillis)
                 }
             }
         }
@@ -115,6 +131,22 @@ class OfflineFirstChatRepository(
         val unread = messages.unread(peer)
         for (row in unread) messages.updateStateAndReadAt(row.id, MessageState.READ.name, nowMillis)
         unread.map { it.asExternalModel() }
+    }
+
+    override suspend fun message(id: String): StoredMessage? = messages.message(id)?.asExternalModel()
+
+    override suspend fun allMessages(): List<StoredMessage> = messages.all().map { it.asExternalModel() }
+
+    override suspend fun retryNow(messageId: String) {
+        outbox.dueNow(messageId, clock.nowMillis())
+    }
+
+    override suspend fun deleteConversation(peer: String) {
+        db.withTransaction {
+            outbox.deleteFor(peer)
+            messages.deleteConversationMessages(peer)
+            conversations.deleteConversation(peer)
+        }
     }
 
     override suspend fun queueReceipt(peer: String, receipt: Receipt) {

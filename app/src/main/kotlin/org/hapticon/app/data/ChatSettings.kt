@@ -9,11 +9,23 @@ import kotlinx.coroutines.flow.asStateFlow
 data class ChatPreferences(
     /** The user name; null until the first-run screen set it. */
     val userName: String? = null,
-    val brokerUrl: String = DEFAULT_BROKER_URL,
+    /** Empty until the first-launch screen tested and saved one: no address is right for every phone. */
+    val brokerUrl: String = "",
     /** Play an arriving message's icon at once (rate-limited). Off by default: vibrating unasked surprises people. */
     val autoPlay: Boolean = false,
-    /** A renderer the user forces instead of the best available one ([org.hapticon.app.playback.Renderer] name), or null. */
+    /** A renderer the user forces instead of the best available one ([org.hapticon.messaging.RendererKind] name), or null. */
     val rendererOverride: String? = null,
+    // Added for the messenger screens (issue 18).
+    /** Android 12+ wallpaper colours instead of Hapticon's own scheme. */
+    val dynamicColor: Boolean = false,
+    /** Tell a sender when this user played their icon (the "felt" receipt); the user can switch it off. */
+    val sendFeltReceipts: Boolean = true,
+    /** Keep the broker connection in a foreground service while the app is closed ("Stay reachable"). */
+    val stayReachable: Boolean = false,
+    /** Start the "Stay reachable" service again after the phone restarts. */
+    val reachableAfterBoot: Boolean = false,
+    /** Conversations moved out of the chat list (still stored, back on a new message). */
+    val archived: Set<String> = emptySet(),
     /**
      * The broker password of [userName] (the MQTT user name is the Hapticon user name: the broker's ACL
      * ties topics to it), or null for a broker run with `--allow-anonymous`.
@@ -23,12 +35,8 @@ data class ChatPreferences(
     /** Omits the password, so that it never reaches a log. */
     override fun toString(): String =
         "ChatPreferences(userName=$userName, brokerUrl=$brokerUrl, autoPlay=$autoPlay, rendererOverride=$rendererOverride, " +
-            "brokerPassword=${if (brokerPassword == null) "none" else "***"})"
-
-    companion object {
-        /** The emulator's alias for the host machine, where a development broker runs. */
-        const val DEFAULT_BROKER_URL = "tcp://10.0.2.2:1883"
-    }
+            "dynamicColor=$dynamicColor, sendFeltReceipts=$sendFeltReceipts, stayReachable=$stayReachable, " +
+            "reachableAfterBoot=$reachableAfterBoot, archived=$archived, brokerPassword=${if (brokerPassword == null) "none" else "***"})"
 }
 
 /** Reads and writes [ChatPreferences]. */
@@ -56,6 +64,11 @@ class SharedPreferencesChatSettings(context: Context) : ChatSettingsRepository {
             .putString(BROKER, next.brokerUrl)
             .putBoolean(AUTO_PLAY, next.autoPlay)
             .putString(RENDERER, next.rendererOverride)
+            .putBoolean(DYNAMIC_COLOR, next.dynamicColor)
+            .putBoolean(FELT_RECEIPTS, next.sendFeltReceipts)
+            .putBoolean(STAY_REACHABLE, next.stayReachable)
+            .putBoolean(AFTER_BOOT, next.reachableAfterBoot)
+            .putStringSet(ARCHIVED, next.archived)
             .apply()
         credentials.edit().putString(PASSWORD, next.brokerPassword).apply()
         state.value = next
@@ -63,10 +76,15 @@ class SharedPreferencesChatSettings(context: Context) : ChatSettingsRepository {
 
     private fun read() = ChatPreferences(
         userName = prefs.getString(USER, null),
-        brokerUrl = prefs.getString(BROKER, null) ?: ChatPreferences.DEFAULT_BROKER_URL,
+        brokerUrl = prefs.getString(BROKER, null) ?: "",
         autoPlay = prefs.getBoolean(AUTO_PLAY, false),
         rendererOverride = prefs.getString(RENDERER, null),
         brokerPassword = credentials.getString(PASSWORD, null),
+        dynamicColor = prefs.getBoolean(DYNAMIC_COLOR, false),
+        sendFeltReceipts = prefs.getBoolean(FELT_RECEIPTS, true),
+        stayReachable = prefs.getBoolean(STAY_REACHABLE, false),
+        reachableAfterBoot = prefs.getBoolean(AFTER_BOOT, false),
+        archived = prefs.getStringSet(ARCHIVED, null)?.toSet() ?: emptySet(),
     )
 
     private companion object {
@@ -75,6 +93,11 @@ class SharedPreferencesChatSettings(context: Context) : ChatSettingsRepository {
         const val AUTO_PLAY = "auto_play"
         const val RENDERER = "renderer"
         const val PASSWORD = "broker_password"
+        const val DYNAMIC_COLOR = "dynamic_color"
+        const val FELT_RECEIPTS = "felt_receipts"
+        const val STAY_REACHABLE = "stay_reachable"
+        const val AFTER_BOOT = "reachable_after_boot"
+        const val ARCHIVED = "archived"
     }
 }
 

@@ -56,7 +56,7 @@ fun HapticonApp(
             saveableStates.SaveableStateProvider(selected.name) {
                 when (selected) {
                     // A container built without chat (some tests) shows an empty Chats destination.
-                    TopLevelDestination.CHATS -> container.chat?.let { ChatsRoute(it) }
+                    TopLevelDestination.CHATS -> container.chat?.let { ChatsRoute(it, onOpenStudy = { onSelect(TopLevelDestination.STUDY) }) }
                     TopLevelDestination.ICONS -> IconsRoute(container)
                     TopLevelDestination.SENSORS -> SensorsRoute(container)
                     TopLevelDestination.STUDY -> StudyRoute(container)

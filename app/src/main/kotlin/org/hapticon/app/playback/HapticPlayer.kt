@@ -1,5 +1,6 @@
 package org.hapticon.app.playback
 
+import org.hapticon.messaging.RendererKind
 import org.hapticon.core.HapticIcon
 import org.hapticon.core.render.Fidelity
 
@@ -25,30 +26,18 @@ data class PlaybackCapabilities(
     val apiLevel: Int,
 ) {
     /** The renderer this phone gets: amplitude steps when it can vary strength, else on/off. */
-    val renderer: Renderer
+    val renderer: RendererKind
         get() = when {
-            !hasVibrator -> Renderer.NONE
-            hasAmplitudeControl -> Renderer.AMPLITUDE_WAVEFORM
-            else -> Renderer.ON_OFF
+            !hasVibrator -> RendererKind.NONE
+            hasAmplitudeControl -> RendererKind.AMPLITUDE_WAVEFORM
+            else -> RendererKind.ON_OFF
         }
-}
-
-/** How an icon reaches the actuator, best first. */
-enum class Renderer(val label: String) {
-    /** The icon as audio with the haptic channel on. */
-    AUDIO_COUPLED("audio-coupled haptics"),
-
-    /** The API 36 envelope effect. */
-    ENVELOPE("envelope effect"),
-    AMPLITUDE_WAVEFORM("amplitude waveform"),
-    ON_OFF("on/off pattern"),
-    NONE("no vibrator"),
 }
 
 /** The outcome of [HapticPlayer.play]. */
 sealed interface Playback {
     /** Playing with [renderer] for [durationMillis]; [fidelity] compares it with the ideal envelope. */
-    data class Playing(val renderer: Renderer, val durationMillis: Long, val fidelity: Fidelity) : Playback
+    data class Playing(val renderer: RendererKind, val durationMillis: Long, val fidelity: Fidelity) : Playback
 
     /** Nothing plays: the phone has no vibrator. */
     data object Unsupported : Playback

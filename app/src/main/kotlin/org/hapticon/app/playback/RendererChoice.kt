@@ -57,17 +57,20 @@ data class DeviceCapabilities(
     }
 }
 
-/** How an icon reaches the actuator, best first. */
-enum class AdaptiveRenderer(val label: String) {
-    /** The icon rendered as audio and played with the haptic channel on (the icon's own carrier, on the audio clock). */
-    AUDIO_COUPLED("audio-coupled haptics"),
-
-    /** API 36 envelope effect: amplitude and frequency control points, played smoothly by the vibrator HAL. */
-    ENVELOPE("envelope effect"),
-    AMPLITUDE_WAVEFORM("amplitude waveform"),
-    ON_OFF("on/off pattern"),
-    NONE("no vibrator"),
-}
+/**
+ * What people read for a renderer. The app, the settings and the wire share one type,
+ * [RendererKind] (messaging), so a peer's announced renderer and the local choice compare directly.
+ */
+val RendererKind.label: String
+    get() = when (this) {
+        RendererKind.AUDIO_COUPLED -> "audio-coupled haptics"
+        RendererKind.ENVELOPE -> "envelope effect"
+        RendererKind.AMPLITUDE_WAVEFORM -> "amplitude waveform"
+        RendererKind.ON_OFF -> "on/off pattern"
+        RendererKind.AUDIO -> "audio (no vibrator)"
+        RendererKind.NONE -> "no vibrator"
+        RendererKind.UNKNOWN -> "a renderer this version does not know"
+    }
 
 /**
  * Picks the renderer for an icon on a phone: audio-coupled haptics where the phone and this build
@@ -76,17 +79,17 @@ enum class AdaptiveRenderer(val label: String) {
  * automatic choice stands (forcing an impossible renderer would play nothing).
  */
 object RendererChoice {
-    fun possible(device: DeviceCapabilities, icon: HapticIcon?): List<AdaptiveRenderer> = buildList {
+    fun possible(device: DeviceCapabilities, icon: HapticIcon?): List<RendererKind> = buildList {
         if (!device.hasVibrator) return@buildList
-        if (device.apiLevel >= 31 && device.hapticPlaybackSupported && device.hapticGeneratorAvailable) add(AdaptiveRenderer.AUDIO_COUPLED)
-        if (device.apiLevel >= 36 && device.envelopeEffectsSupported && (icon == null || envelopeRepresentable(icon))) add(AdaptiveRenderer.ENVELOPE)
-        if (device.hasAmplitudeControl) add(AdaptiveRenderer.AMPLITUDE_WAVEFORM)
-        add(AdaptiveRenderer.ON_OFF)
+        if (device.apiLevel >= 31 && device.hapticPlaybackSupported && device.hapticGeneratorAvailable) add(RendererKind.AUDIO_COUPLED)
+        if (device.apiLevel >= 36 && device.envelopeEffectsSupported && (icon == null || envelopeRepresentable(icon))) add(RendererKind.ENVELOPE)
+        if (device.hasAmplitudeControl) add(RendererKind.AMPLITUDE_WAVEFORM)
+        add(RendererKind.ON_OFF)
     }
 
-    fun choose(device: DeviceCapabilities, icon: HapticIcon?, override: AdaptiveRenderer? = null): AdaptiveRenderer {
+    fun choose(device: DeviceCapabilities, icon: HapticIcon?, override: RendererKind? = null): RendererKind {
         val options = possible(device, icon)
-        if (options.isEmpty()) return AdaptiveRenderer.NONE
+        if (options.isEmpty()) return RendererKind.NONE
         return if (override != null && override in options) override else options.first()
     }
 
@@ -98,39 +101,21 @@ object RendererChoice {
      * RMS error in percent of full scale (for audio-coupled haptics, the PCM16 rendering's against the ideal
      * signal: the audio path carries the icon sample by sample). Null when nothing plays.
      */
-    fun fidelityPercent(renderer: AdaptiveRenderer, icon: HapticIcon): Int? {
+    fun fidelityPercent(renderer: RendererKind, icon: HapticIcon): Int? {
         val rms = when (renderer) {
-            AdaptiveRenderer.AUDIO_COUPLED -> PcmRenderer(icon, IconAudioCache.SAMPLE_RATE).fidelity().rmsError
-            AdaptiveRenderer.ENVELOPE -> EnvelopeControlPoints.render(icon).fidelity.rmsError
-            AdaptiveRenderer.AMPLITUDE_WAVEFORM -> VibrationWaveform.render(icon).fidelity.rmsError
-            AdaptiveRenderer.ON_OFF -> VibrationWaveform.onOff(icon).fidelity.rmsError
-            AdaptiveRenderer.NONE -> return null
+            RendererKind.AUDIO_COUPLED, RendererKind.AUDIO -> PcmRenderer(icon, IconAudioCache.SAMPLE_RATE).fidelity().rmsError
+            RendererKind.ENVELOPE -> EnvelopeControlPoints.render(icon).fidelity.rmsError
+            RendererKind.AMPLITUDE_WAVEFORM -> VibrationWaveform.render(icon).fidelity.rmsError
+            RendererKind.ON_OFF -> VibrationWaveform.onOff(icon).fidelity.rmsError
+            RendererKind.NONE, RendererKind.UNKNOWN -> return null
         }
         return ((1.0 - rms).coerceIn(0.0, 1.0) * 100).roundToInt()
     }
 
-    /** The renderer a peer announced, in this app's terms. */
-    fun fromWire(kind: RendererKind): AdaptiveRenderer = when (kind) {
-        RendererKind.AMPLITUDE_WAVEFORM -> AdaptiveRenderer.AMPLITUDE_WAVEFORM
-        RendererKind.ON_OFF -> AdaptiveRenderer.ON_OFF
-        RendererKind.AUDIO_COUPLED, RendererKind.AUDIO -> AdaptiveRenderer.AUDIO_COUPLED
-        RendererKind.ENVELOPE -> AdaptiveRenderer.ENVELOPE
-        RendererKind.NONE, RendererKind.UNKNOWN -> AdaptiveRenderer.NONE
-    }
-
-    /** The wire name of [renderer]. */
-    fun toWire(renderer: AdaptiveRenderer): RendererKind = when (renderer) {
-        AdaptiveRenderer.AUDIO_COUPLED -> RendererKind.AUDIO_COUPLED
-        AdaptiveRenderer.ENVELOPE -> RendererKind.ENVELOPE
-        AdaptiveRenderer.AMPLITUDE_WAVEFORM -> RendererKind.AMPLITUDE_WAVEFORM
-        AdaptiveRenderer.ON_OFF -> RendererKind.ON_OFF
-        AdaptiveRenderer.NONE -> RendererKind.NONE
-    }
-
     /** This device's capabilities message for [user]. */
-    fun capabilitiesOf(user: String, device: DeviceCapabilities, override: AdaptiveRenderer?): Capabilities = Capabilities(
+    fun capabilitiesOf(user: String, device: DeviceCapabilities, override: RendererKind?): Capabilities = Capabilities(
         user = user,
-        renderer = toWire(choose(device, null, override)),
+        renderer = choose(device, null, override),
         amplitudeControl = device.hasAmplitudeControl,
         apiLevel = device.apiLevel,
         resonantFrequencyHz = device.resonantFrequencyHz,
@@ -146,7 +131,7 @@ object RendererChoice {
 class AdaptiveHapticPlayer(
     private val vibrator: Vibrator,
     private val device: () -> DeviceCapabilities,
-    private val override: () -> AdaptiveRenderer?,
+    private val override: () -> RendererKind?,
     private val audio: AudioCoupledOutput? = null,
     private val audioCache: IconAudioCache? = null,
 ) : HapticPlayer {
@@ -154,7 +139,7 @@ class AdaptiveHapticPlayer(
         get() = device().let { PlaybackCapabilities(it.hasVibrator, it.hasAmplitudeControl, it.apiLevel) }
 
     /** The renderer [icon] would get now: audio-coupled only with an [audio] output that is available. */
-    fun rendererFor(icon: HapticIcon): AdaptiveRenderer {
+    fun rendererFor(icon: HapticIcon): RendererKind {
         val capabilities = device()
         val audioUsable = audio != null && audioCache != null && audio.isAvailable
         return RendererChoice.choose(if (audioUsable) capabilities else capabilities.copy(hapticGeneratorAvailable = false), icon, override())
@@ -162,20 +147,21 @@ class AdaptiveHapticPlayer(
 
     override fun play(icon: HapticIcon): Playback {
         val waveform = when (rendererFor(icon)) {
-            AdaptiveRenderer.NONE -> return Playback.Unsupported
-            AdaptiveRenderer.AUDIO_COUPLED -> playAudioCoupled(icon)?.let { return it } ?: VibrationWaveform.render(icon)
-            AdaptiveRenderer.ENVELOPE -> if (Build.VERSION.SDK_INT >= 36) {
+            // choose() never returns the wire-only kinds AUDIO and UNKNOWN.
+            RendererKind.NONE, RendererKind.AUDIO, RendererKind.UNKNOWN -> return Playback.Unsupported
+            RendererKind.AUDIO_COUPLED -> playAudioCoupled(icon)?.let { return it } ?: VibrationWaveform.render(icon)
+            RendererKind.ENVELOPE -> if (Build.VERSION.SDK_INT >= 36) {
                 val points = EnvelopeControlPoints.render(icon)
                 vibrator.vibrate(points.toEnvelopeEffect())
-                return Playback.Playing(Renderer.ENVELOPE, points.totalMillis, points.fidelity)
+                return Playback.Playing(RendererKind.ENVELOPE, points.totalMillis, points.fidelity)
             } else {
                 VibrationWaveform.render(icon)
             }
-            AdaptiveRenderer.AMPLITUDE_WAVEFORM -> VibrationWaveform.render(icon)
-            AdaptiveRenderer.ON_OFF -> VibrationWaveform.onOff(icon)
+            RendererKind.AMPLITUDE_WAVEFORM -> VibrationWaveform.render(icon)
+            RendererKind.ON_OFF -> VibrationWaveform.onOff(icon)
         }
         vibrator.vibrate(waveform.toVibrationEffect())
-        val renderer = if (waveform.amplitudes().all { it == 0 || it == VibrationWaveform.MAX_AMPLITUDE }) Renderer.ON_OFF else Renderer.AMPLITUDE_WAVEFORM
+        val renderer = if (waveform.amplitudes().all { it == 0 || it == VibrationWaveform.MAX_AMPLITUDE }) RendererKind.ON_OFF else RendererKind.AMPLITUDE_WAVEFORM
         return Playback.Playing(renderer, waveform.totalMillis, waveform.fidelity)
     }
 
@@ -196,7 +182,7 @@ class AdaptiveHapticPlayer(
         vibrator.cancel()
         output.play(file)
         val samples = PcmRenderer(icon, cache.sampleRate).sampleCount
-        return Playback.Playing(Renderer.AUDIO_COUPLED, Math.round(samples * 1000.0 / cache.sampleRate), cache.fidelityOf(icon))
+        return Playback.Playing(RendererKind.AUDIO_COUPLED, Math.round(samples * 1000.0 / cache.sampleRate), cache.fidelityOf(icon))
     }
 }
 

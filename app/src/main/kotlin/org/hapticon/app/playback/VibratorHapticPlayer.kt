@@ -1,5 +1,6 @@
 package org.hapticon.app.playback
 
+import org.hapticon.messaging.RendererKind
 import android.content.Context
 import android.os.Build
 import android.os.VibrationEffect
@@ -25,11 +26,11 @@ class VibratorHapticPlayer(private val vibrator: Vibrator) : HapticPlayer {
     override fun play(icon: HapticIcon): Playback {
         val renderer = capabilities.renderer
         val waveform = when (renderer) {
-            Renderer.AMPLITUDE_WAVEFORM -> VibrationWaveform.render(icon)
-            Renderer.ON_OFF -> VibrationWaveform.onOff(icon)
+            RendererKind.AMPLITUDE_WAVEFORM -> VibrationWaveform.render(icon)
+            RendererKind.ON_OFF -> VibrationWaveform.onOff(icon)
             // PlaybackCapabilities.renderer never names these; only the adaptive player plays them.
-            Renderer.AUDIO_COUPLED, Renderer.ENVELOPE -> VibrationWaveform.render(icon)
-            Renderer.NONE -> return Playback.Unsupported
+            RendererKind.AUDIO_COUPLED, RendererKind.ENVELOPE -> VibrationWaveform.render(icon)
+            RendererKind.NONE, RendererKind.AUDIO, RendererKind.UNKNOWN -> return Playback.Unsupported
         }
         vibrator.vibrate(waveform.toVibrationEffect())
         return Playback.Playing(renderer, waveform.totalMillis, waveform.fidelity)

@@ -4,6 +4,7 @@ import android.content.Context
 import kotlinx.coroutines.CoroutineScope
 import kotlinx.coroutines.Dispatchers
 import kotlinx.coroutines.SupervisorJob
+import kotlinx.coroutines.flow.MutableStateFlow
 import org.hapticon.app.data.ChatRepository
 import org.hapticon.app.data.ChatSettingsRepository
 import org.hapticon.app.data.OfflineFirstChatRepository
@@ -13,7 +14,7 @@ import org.hapticon.app.data.database.HapticonDatabase
 import org.hapticon.app.playback.AdaptiveHapticPlayer
 import org.hapticon.app.playback.IconAudioCache
 import org.hapticon.app.playback.Media3AudioCoupledOutput
-import org.hapticon.app.playback.AdaptiveRenderer
+import org.hapticon.messaging.RendererKind
 import org.hapticon.app.playback.DeviceCapabilities
 import org.hapticon.app.playback.RendererChoice
 import org.hapticon.app.playback.defaultVibrator
@@ -33,12 +34,22 @@ class ChatComponent(
     val sync: ChatSync,
     val player: AdaptiveHapticPlayer,
     private val detectDevice: () -> DeviceCapabilities,
+    /** Tests a broker before first launch saves it; null when it answered, else the reason. */
+    val probe: org.hapticon.app.feature.chat.BrokerProbe = { _, _, _ -> null },
+    /** Posts arriving messages as notifications; null where there is none (some tests). */
+    val notifier: MessageNotifier? = null,
 ) {
+    /** An invite link opened from outside, waiting for the Chats screen to apply it. */
+    val pendingInvite: MutableStateFlow<String?> = MutableStateFlow(null)
+
+    /** A conversation to open (a tapped message notification), waiting for the Chats screen. */
+    val pendingConversation: MutableStateFlow<String?> = MutableStateFlow(null)
+
     /** What this phone can do now (the vibrator is asked again each time: cheap, and a test may change it). */
     val device: DeviceCapabilities get() = detectDevice()
 
     /** The renderer the user's override or the automatic choice gives [icon] here. */
-    fun localRenderer(icon: HapticIcon): AdaptiveRenderer = player.rendererFor(icon)
+    fun localRenderer(icon: HapticIcon): RendererKind = player.rendererFor(icon)
 
     companion object {
         fun create(
@@ -54,7 +65,7 @@ class ChatComponent(
             val device = {
                 DeviceCapabilities.detect(context, vibrator, audio.hapticPlaybackSupported, audio.hapticGeneratorAvailable)
             }
-            val override = { settings.preferences.value.rendererOverride?.let { name -> AdaptiveRenderer.entries.firstOrNull { it.name == name } } }
+            val override = { settings.preferences.value.rendererOverride?.let { name -> RendererKind.entries.firstOrNull { it.name == name } } }
             val player = AdaptiveHapticPlayer(
                 vibrator, device, override,
                 audio = Media3AudioCoupledOutput(context),
@@ -64,13 +75,17 @@ class ChatComponent(
                 repository = repository,
                 outbox = repository,
                 settings = settings,
-                messengerFactory = ::mqttMessenger,
+                messengerFactory = { user, broker, password -> mqttMessenger(user, broker, password) },
                 player = player,
                 rateLimiter = VibrationRateLimiter(Clock.MONOTONIC),
                 localCapabilities = { user -> RendererChoice.capabilitiesOf(user, device(), override()) },
                 scope = scope,
+                quietNow = { doNotDisturb(context) },
             )
-            return ChatComponent(repository, RoomIconRepository(db.iconDao()), settings, sync, player, device)
+            val notifier = MessageNotifier(context) { settings.preferences.value.userName }
+            sync.onIncoming = { message, _ -> notifier.show(message) }
+            val probe: org.hapticon.app.feature.chat.BrokerProbe = { user, broker, password -> probeBroker(settings, sync, user, broker, password) }
+            return ChatComponent(repository, RoomIconRepository(db.iconDao()), settings, sync, player, device, probe, notifier)
         }
 
         // The client id is the user name (the broker binds it to the login), so no per-device id any more.
@@ -79,6 +94,42 @@ class ChatComponent(
         } catch (e: IllegalArgumentException) {
             android.util.Log.w("ChatComponent", "no messenger for $user at $broker: ${e.message}")
             null
+        }
+
+        /**
+         * Tests [broker] for [user] through the real session: the settings are switched to it, and the answer is
+         * the first Connected or Failed state of that session within [PROBE_TIMEOUT_MILLIS]. On failure the
+         * previous settings come back, so nothing is saved. A separate probe client would be unsafe: the broker
+         * binds the client id to the user name, so a second connection as [user] would take over (and with a
+         * clean session erase) the user's queued messages; through the real session whatever arrives is stored.
+         */
+        internal suspend fun probeBroker(
+            settings: ChatSettingsRepository,
+            sync: ChatSync,
+            user: String,
+            broker: BrokerAddress,
+            password: String?,
+        ): String? {
+            val previous = settings.preferences.value
+            val target = ChatSync.SessionTarget(user, broker.toString(), password)
+            settings.update { it.copy(userName = user, brokerUrl = broker.toString(), brokerPassword = password) }
+            val state = kotlinx.coroutines.withTimeoutOrNull(PROBE_TIMEOUT_MILLIS) { sync.settledStateOf(target) }
+            if (state == org.hapticon.messaging.ConnectionState.Connected) return null
+            val lastFailure = (sync.connection.value as? org.hapticon.messaging.ConnectionState.Connecting)?.lastFailure
+            settings.update { previous }
+            return when (state) {
+                is org.hapticon.messaging.ConnectionState.Failed -> "The broker at $broker refused the connection: ${state.reason}"
+                else -> "No answer from $broker within ${PROBE_TIMEOUT_MILLIS / 1000} s. Is `hapticon broker --host ADDRESS` running, " +
+                    "and is this phone on the same network?" + (lastFailure?.let { " ($it)" } ?: "")
+            }
+        }
+
+        private const val PROBE_TIMEOUT_MILLIS = 5_000L
+
+        /** Do-not-disturb is on when the interruption filter lets less than everything through. */
+        private fun doNotDisturb(context: Context): Boolean {
+            val manager = context.getSystemService(android.app.NotificationManager::class.java) ?: return false
+            return manager.currentInterruptionFilter > android.app.NotificationManager.INTERRUPTION_FILTER_ALL
         }
     }
 }

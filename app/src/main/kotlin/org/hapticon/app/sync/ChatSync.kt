@@ -4,6 +4,7 @@ import android.util.Log
 import kotlinx.coroutines.CoroutineScope
 import kotlinx.coroutines.Job
 import kotlinx.coroutines.flow.MutableStateFlow
+import kotlinx.coroutines.flow.first
 import kotlinx.coroutines.flow.StateFlow
 import kotlinx.coroutines.flow.asStateFlow
 import kotlinx.coroutines.flow.collectLatest
@@ -61,8 +62,19 @@ class ChatSync(
     private val clock: Clock = Clock.SYSTEM,
     private val retryPolicy: RetryPolicy = RetryPolicy(),
     private val nanoClock: () -> Long = System::nanoTime,
+    /** True while the phone is in Do-not-disturb: then nothing vibrates unasked. */
+    private val quietNow: () -> Boolean = { false },
 ) : HandshakeLink {
+    /**
+     * Told once per newly stored message while its conversation is not on screen (the notifier);
+     * [played] says whether its icon was felt on arrival. Set before [start].
+     */
+    @Volatile
+    var onIncoming: (message: ChatMessage, played: Boolean) -> Unit = { _, _ -> }
+
     private val connectionState = MutableStateFlow<ConnectionState>(ConnectionState.Disconnected)
+    // The user, broker and password that connectionState belongs to; null before the first session.
+    private val sessionTarget = MutableStateFlow<SessionTarget?>(null)
     private val peers = MutableStateFlow<Map<String, Capabilities>>(emptyMap())
     private val openConversations = MutableStateFlow<Set<String>>(emptySet())
     private val hands = java.util.concurrent.ConcurrentHashMap<String, NetworkPartnerHand>()
@@ -79,6 +91,16 @@ class ChatSync(
     /** The latest capabilities each peer published (retained on the broker, so known soon after connecting). */
     val peerCapabilities: StateFlow<Map<String, Capabilities>> = peers.asStateFlow()
 
+    /** Whom a session connects as. */
+    data class SessionTarget(val user: String, val brokerUrl: String, val password: String?) {
+        override fun toString(): String = "SessionTarget($user at $brokerUrl)" // never the password
+    }
+
+    /** Suspends until the session for [target] is Connected or Failed, and returns that state. */
+    suspend fun settledStateOf(target: SessionTarget): ConnectionState =
+        kotlinx.coroutines.flow.combine(sessionTarget, connectionState) { current, state -> if (current == target) state else null }
+            .first { it == ConnectionState.Connected || it is ConnectionState.Failed }!!
+
     /** Starts syncing; reconnects with a new messenger whenever the user name, broker or password changes. Idempotent. */
     fun start() {
         if (job != null) return
@@ -88,6 +110,9 @@ class ChatSync(
                 .distinctUntilChanged()
                 .collectLatest { (user, broker, password) ->
                     if (user == null) return@collectLatest
+                    // Set before the session starts, so a waiter never takes the previous session's state for this one's.
+                    connectionState.value = ConnectionState.Connecting(null)
+                    sessionTarget.value = SessionTarget(user, broker, password)
                     val messenger = messengerFactory(user, broker, password) ?: return@collectLatest
                     runSession(messenger)
                 }
@@ -183,11 +208,51 @@ class ChatSync(
         // A repeat gets its receipt again (the first may have been lost) but never vibrates again.
         sendReceipt(messenger, message.sender, Receipt(message.id, messenger.user, ReceiptState.DELIVERED, clock.nowMillis()))
         if (!first) return
-        if (message.sender in openConversations.value) markReadAndReceipt(message.sender)
-        val icon = message.icon ?: return
-        if (!settings.preferences.value.autoPlay) return
+        // A new message brings an archived conversation back to the list, as in Signal.
+        if (message.sender in settings.preferences.value.archived) settings.update { it.copy(archived = it.archived - message.sender) }
+        val open = message.sender in openConversations.value
+        if (open) markReadAndReceipt(message.sender)
+        val played = autoPlay(messenger, message)
+        if (!open) onIncoming(message, played)
+    }
+
+    /** Plays an arriving icon when the user enabled it, within the body limits and never in Do-not-disturb. */
+    private suspend fun autoPlay(messenger: Messenger, message: ChatMessage): Boolean {
+        val icon = message.icon ?: return false
+        if (!settings.preferences.value.autoPlay) return false
+        if (quietNow()) {
+            Log.i(TAG, "auto-play of ${message.id} skipped: Do-not-disturb")
+            return false
+        }
         val decision = rateLimiter.tryAcquire(message.sender, (icon.duration * 1000).toLong())
-        if (decision == VibrationDecision.VIBRATE) player.play(icon) else Log.i(TAG, "auto-play of ${message.id} skipped: $decision")
+        if (decision != VibrationDecision.VIBRATE) {
+            Log.i(TAG, "auto-play of ${message.id} skipped: $decision")
+            return false
+        }
+        player.play(icon)
+        sendFelt(messenger, message.sender, message.id)
+        return true
+    }
+
+    /**
+     * The user played the icon of [messageId] from [peer] (a press on the bubble or "Feel again"):
+     * tells the sender with a felt receipt unless the user switched those off.
+     */
+    fun felt(peer: String, messageId: String) {
+        scope.launch {
+            val messenger = session?.messenger
+            if (messenger != null) {
+                sendFelt(messenger, peer, messageId)
+            } else if (settings.preferences.value.sendFeltReceipts) {
+                val user = settings.preferences.value.userName ?: return@launch
+                repository.queueReceipt(peer, Receipt(messageId, user, ReceiptState.FELT, clock.nowMillis()))
+            }
+        }
+    }
+
+    private suspend fun sendFelt(messenger: Messenger, peer: String, messageId: String) {
+        if (!settings.preferences.value.sendFeltReceipts) return
+        sendReceipt(messenger, peer, Receipt(messageId, messenger.user, ReceiptState.FELT, clock.nowMillis()))
     }
 
     private suspend fun markReadAndReceipt(peer: String) {

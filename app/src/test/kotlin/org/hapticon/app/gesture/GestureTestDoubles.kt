@@ -78,6 +78,10 @@ class SendRecordingChatRepository(private val peers: List<String>) : ChatReposit
     override suspend fun queueReceipt(peer: String, receipt: Receipt) = error("not used by the gesture tests")
     override suspend fun pendingReceipts(): List<PendingReceipt> = emptyList()
     override suspend fun receiptSent(receipt: Receipt) = error("not used by the gesture tests")
+    override suspend fun message(id: String): StoredMessage? = sent.firstOrNull { it.id == id }
+    override suspend fun allMessages(): List<StoredMessage> = sent.toList()
+    override suspend fun retryNow(messageId: String) = error("not used by the gesture tests")
+    override suspend fun deleteConversation(peer: String) = error("not used by the gesture tests")
 }
 
 /** Makes [dispatcher] the Main dispatcher (where viewModelScope runs) for each test, and undoes it after. */

@@ -1,5 +1,6 @@
 package org.hapticon.app.playback
 
+import org.hapticon.messaging.RendererKind
 import android.content.Context
 import android.os.Looper
 import android.os.Vibrator
@@ -61,7 +62,7 @@ class AudioCoupledHapticsTest {
     fun knock_playsItsPcm16RenderingAt48kHzThroughTheAudioPath() {
         val playback = player().play(HapticIcon.KNOCK) as Playback.Playing
 
-        assertEquals(Renderer.AUDIO_COUPLED, playback.renderer)
+        assertEquals(RendererKind.AUDIO_COUPLED, playback.renderer)
         // Knock lasts 2 · 0.27 + 0.02 = 0.56 s: 26 880 samples at 48 kHz.
         assertEquals(560L, playback.durationMillis)
         val wav = audio.played.single().inputStream().use { WavReader.read(it) }
@@ -107,7 +108,7 @@ class AudioCoupledHapticsTest {
     fun outputUnavailable_fallsBackToTheAmplitudeWaveformOnTheVibrator() {
         val playback = player(RecordingAudioOutput(isAvailable = false)).play(HapticIcon.KNOCK) as Playback.Playing
 
-        assertEquals(Renderer.AMPLITUDE_WAVEFORM, playback.renderer)
+        assertEquals(RendererKind.AMPLITUDE_WAVEFORM, playback.renderer)
         assertEquals(RecordedVibration(listOf(20L, 250L, 20L, 250L, 20L), listOf(96, 0, 96, 0, 96)), lastVibration(vibrator))
     }
 
@@ -117,7 +118,7 @@ class AudioCoupledHapticsTest {
         val playback = player(audioCache = IconAudioCache(File(blocked, "icon-audio"))).play(HapticIcon.KNOCK) as Playback.Playing
 
         assertTrue(audio.played.isEmpty())
-        assertEquals(Renderer.AMPLITUDE_WAVEFORM, playback.renderer)
+        assertEquals(RendererKind.AMPLITUDE_WAVEFORM, playback.renderer)
         assertEquals(listOf(96, 0, 96, 0, 96), lastVibration(vibrator)!!.amplitudes)
     }
 
@@ -146,6 +147,6 @@ class AudioCoupledHapticsTest {
     fun media3Output_onAPhoneWithoutHapticPlayback_isUnavailable() {
         // Robolectric's audio system reports no haptic playback, as most phones do.
         assertFalse(Media3AudioCoupledOutput(context).isAvailable)
-        assertSame(AdaptiveRenderer.AMPLITUDE_WAVEFORM, AdaptiveHapticPlayer(vibrator, { audioPhone }, { null }, Media3AudioCoupledOutput(context), cache).rendererFor(HapticIcon.KNOCK))
+        assertSame(RendererKind.AMPLITUDE_WAVEFORM, AdaptiveHapticPlayer(vibrator, { audioPhone }, { null }, Media3AudioCoupledOutput(context), cache).rendererFor(HapticIcon.KNOCK))
     }
 }

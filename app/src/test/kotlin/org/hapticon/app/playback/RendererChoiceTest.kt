@@ -13,56 +13,56 @@ class RendererChoiceTest {
 
     @Test
     fun choose_noVibrator_none() =
-        assertEquals(AdaptiveRenderer.NONE, RendererChoice.choose(base.copy(hasVibrator = false), HapticIcon.HUG))
+        assertEquals(RendererKind.NONE, RendererChoice.choose(base.copy(hasVibrator = false), HapticIcon.HUG))
 
     @Test
     fun choose_noAmplitudeControl_onOff() =
-        assertEquals(AdaptiveRenderer.ON_OFF, RendererChoice.choose(base.copy(hasAmplitudeControl = false), HapticIcon.HUG))
+        assertEquals(RendererKind.ON_OFF, RendererChoice.choose(base.copy(hasAmplitudeControl = false), HapticIcon.HUG))
 
     @Test
     fun choose_amplitudeControlApi35_amplitudeWaveform() =
-        assertEquals(AdaptiveRenderer.AMPLITUDE_WAVEFORM, RendererChoice.choose(base, HapticIcon.HUG))
+        assertEquals(RendererKind.AMPLITUDE_WAVEFORM, RendererChoice.choose(base, HapticIcon.HUG))
 
     @Test
     fun choose_api36EnvelopeSupportedSmoothIcon_envelope() =
-        assertEquals(AdaptiveRenderer.ENVELOPE, RendererChoice.choose(base.copy(apiLevel = 36, envelopeEffectsSupported = true), HapticIcon.HUG))
+        assertEquals(RendererKind.ENVELOPE, RendererChoice.choose(base.copy(apiLevel = 36, envelopeEffectsSupported = true), HapticIcon.HUG))
 
     @Test
     fun choose_api36WithoutEnvelopeSupport_amplitudeWaveform() =
-        assertEquals(AdaptiveRenderer.AMPLITUDE_WAVEFORM, RendererChoice.choose(base.copy(apiLevel = 36), HapticIcon.HUG))
+        assertEquals(RendererKind.AMPLITUDE_WAVEFORM, RendererChoice.choose(base.copy(apiLevel = 36), HapticIcon.HUG))
 
     @Test
     fun choose_envelopeFlagOnOldApi_ignored() =
-        assertEquals(AdaptiveRenderer.AMPLITUDE_WAVEFORM, RendererChoice.choose(base.copy(envelopeEffectsSupported = true), HapticIcon.HUG))
+        assertEquals(RendererKind.AMPLITUDE_WAVEFORM, RendererChoice.choose(base.copy(envelopeEffectsSupported = true), HapticIcon.HUG))
 
     @Test
     fun choose_hapticPlaybackAndGenerator_audioCoupledFirst() =
         assertEquals(
-            AdaptiveRenderer.AUDIO_COUPLED,
+            RendererKind.AUDIO_COUPLED,
             RendererChoice.choose(AUDIO_PHONE, HapticIcon.HUG),
         )
 
     @Test
     fun choose_hapticPlaybackWithoutGenerator_envelope() =
         assertEquals(
-            AdaptiveRenderer.ENVELOPE,
+            RendererKind.ENVELOPE,
             RendererChoice.choose(AUDIO_PHONE.copy(hapticGeneratorAvailable = false), HapticIcon.HUG),
         )
 
     @Test
     fun choose_audioFlagsBelowApi31_ignored() =
         assertEquals(
-            AdaptiveRenderer.AMPLITUDE_WAVEFORM,
+            RendererKind.AMPLITUDE_WAVEFORM,
             RendererChoice.choose(base.copy(apiLevel = 30, hapticPlaybackSupported = true, hapticGeneratorAvailable = true), HapticIcon.HUG),
         )
 
     @Test
     fun choose_overrideAvailable_wins() =
-        assertEquals(AdaptiveRenderer.ON_OFF, RendererChoice.choose(base, HapticIcon.HUG, override = AdaptiveRenderer.ON_OFF))
+        assertEquals(RendererKind.ON_OFF, RendererChoice.choose(base, HapticIcon.HUG, override = RendererKind.ON_OFF))
 
     @Test
     fun choose_overrideUnavailable_automaticChoice() =
-        assertEquals(AdaptiveRenderer.AMPLITUDE_WAVEFORM, RendererChoice.choose(base, HapticIcon.HUG, override = AdaptiveRenderer.ENVELOPE))
+        assertEquals(RendererKind.AMPLITUDE_WAVEFORM, RendererChoice.choose(base, HapticIcon.HUG, override = RendererKind.ENVELOPE))
 
     @Test
     fun capabilitiesOf_envelopePhone_announcesEnvelope() {
@@ -74,25 +74,27 @@ class RendererChoiceTest {
     @Test
     fun capabilitiesOf_audioPhone_announcesAudioCoupledAndTheOverrideWhenPossible() {
         assertEquals(RendererKind.AUDIO_COUPLED, RendererChoice.capabilitiesOf("alice", AUDIO_PHONE, null).renderer)
-        assertEquals(RendererKind.ON_OFF, RendererChoice.capabilitiesOf("alice", AUDIO_PHONE, AdaptiveRenderer.ON_OFF).renderer)
+        assertEquals(RendererKind.ON_OFF, RendererChoice.capabilitiesOf("alice", AUDIO_PHONE, RendererKind.ON_OFF).renderer)
     }
 
     @Test
-    fun wireNames_roundTripEveryRenderer() {
-        for (renderer in AdaptiveRenderer.entries) assertEquals(renderer, RendererChoice.fromWire(RendererChoice.toWire(renderer)))
+    fun possible_neverOffersWireOnlyKinds() {
+        // AUDIO (the CLI's WAV files) and UNKNOWN exist only on the wire: a phone never picks them for itself.
+        val options = RendererChoice.possible(AUDIO_PHONE.copy(apiLevel = 36, envelopeEffectsSupported = true), null)
+        assertEquals(listOf(RendererKind.AUDIO_COUPLED, RendererKind.ENVELOPE, RendererKind.AMPLITUDE_WAVEFORM, RendererKind.ON_OFF), options)
     }
 
     @Test
     fun fidelityPercent_audioCoupledIsThePcm16Rendering() {
         // PCM16 rounding leaves ~1e-5 RMS of full scale: 100 % after rounding to whole percent.
-        assertEquals(100, RendererChoice.fidelityPercent(AdaptiveRenderer.AUDIO_COUPLED, HapticIcon.KNOCK))
+        assertEquals(100, RendererChoice.fidelityPercent(RendererKind.AUDIO_COUPLED, HapticIcon.KNOCK))
     }
 
     @Test
     fun fidelityPercent_onOffBelowAmplitude() {
-        val amplitude = RendererChoice.fidelityPercent(AdaptiveRenderer.AMPLITUDE_WAVEFORM, HapticIcon.HUG)!!
-        val onOff = RendererChoice.fidelityPercent(AdaptiveRenderer.ON_OFF, HapticIcon.HUG)!!
+        val amplitude = RendererChoice.fidelityPercent(RendererKind.AMPLITUDE_WAVEFORM, HapticIcon.HUG)!!
+        val onOff = RendererChoice.fidelityPercent(RendererKind.ON_OFF, HapticIcon.HUG)!!
         assert(onOff < amplitude) { "on/off $onOff should be below amplitude $amplitude" }
-        assertEquals(null, RendererChoice.fidelityPercent(AdaptiveRenderer.NONE, HapticIcon.HUG))
+        assertEquals(null, RendererChoice.fidelityPercent(RendererKind.NONE, HapticIcon.HUG))
     }
 }

@@ -1,5 +1,6 @@
 package org.hapticon.app.playback
 
+import org.hapticon.messaging.RendererKind
 import android.content.Context
 import android.os.Vibrator
 import androidx.test.core.app.ApplicationProvider
@@ -37,7 +38,7 @@ class VibratorHapticPlayerTest {
             lastVibration(vibrator),
         )
         assertEquals(560L, (playback as Playback.Playing).durationMillis)
-        assertEquals(Renderer.AMPLITUDE_WAVEFORM, playback.renderer)
+        assertEquals(RendererKind.AMPLITUDE_WAVEFORM, playback.renderer)
         assertTrue(shadowOf(vibrator).isVibrating)
     }
 
@@ -61,7 +62,7 @@ class VibratorHapticPlayerTest {
 
         val playback = player.play(HapticIcon.KNOCK)
 
-        assertEquals(Renderer.ON_OFF, (playback as Playback.Playing).renderer)
+        assertEquals(RendererKind.ON_OFF, (playback as Playback.Playing).renderer)
         assertEquals(
             RecordedVibration(timings = listOf(20L, 250L, 20L, 250L, 20L), amplitudes = listOf(255, 0, 255, 0, 255)),
             lastVibration(vibrator),

@@ -6,7 +6,7 @@ import kotlinx.coroutines.flow.asStateFlow
 import org.hapticon.app.playback.HapticPlayer
 import org.hapticon.app.playback.Playback
 import org.hapticon.app.playback.PlaybackCapabilities
-import org.hapticon.app.playback.Renderer
+import org.hapticon.messaging.RendererKind
 import org.hapticon.core.HapticIcon
 import org.hapticon.core.render.Fidelity
 
@@ -19,7 +19,7 @@ class TestHapticPlayer(private val durationMillis: Long = 560) : HapticPlayer {
 
     override fun play(icon: HapticIcon): Playback {
         played += icon
-        return Playback.Playing(Renderer.AMPLITUDE_WAVEFORM, durationMillis, Fidelity(0.0, 0.0, "exact"))
+        return Playback.Playing(RendererKind.AMPLITUDE_WAVEFORM, durationMillis, Fidelity(0.0, 0.0, "exact"))
     }
 
     override fun stop() {

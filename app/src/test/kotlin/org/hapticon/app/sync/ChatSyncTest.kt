@@ -249,4 +249,74 @@ class ChatSyncTest {
         assertEquals(3, vibrations)
         assertEquals(20, repository.messages("mallory").first().size)
     }
+
+    private fun felt() = messenger.sentReceipts.value.filter { it.second.state == ReceiptState.FELT }
+
+    @Test
+    fun autoPlay_played_sendsAFeltReceiptAndTellsTheNotifierItWasFelt() = runBlocking {
+        await(messenger.state) { it == org.hapticon.messaging.ConnectionState.Connected }
+        settings.update { it.copy(autoPlay = true) }
+        val incoming = mutableListOf<Pair<String, Boolean>>()
+        sync.onIncoming = { m, played -> incoming += m.id to played }
+        val id = "0b7e7c1e-3f7b-4a57-9d3e-2f1c5a6b7c8d"
+
+        messenger.deliver(InboxEvent.MessageReceived(ChatMessage(id, "bob", now, "", icon = HapticIcon.KNOCK)))
+        messenger.deliver(InboxEvent.MessageReceived(ChatMessage(id, "bob", now, "", icon = HapticIcon.KNOCK)))
+
+        assertEquals(listOf("bob" to Receipt(id, "alice", ReceiptState.FELT, now)), felt())
+        assertEquals(listOf(id to true), incoming)
+    }
+
+    @Test
+    fun autoPlay_feltReceiptsSwitchedOff_feltButNotTold() = runBlocking {
+        await(messenger.state) { it == org.hapticon.messaging.ConnectionState.Connected }
+        settings.update { it.copy(autoPlay = true, sendFeltReceipts = false) }
+        messenger.deliver(InboxEvent.MessageReceived(ChatMessage("0b7e7c1e-3f7b-4a57-9d3e-2f1c5a6b7c8d", "bob", now, "", icon = HapticIcon.KNOCK)))
+        sync.felt("bob", "0b7e7c1e-3f7b-4a57-9d3e-2f1c5a6b7c8d")
+        kotlinx.coroutines.delay(200)
+
+        assertEquals(RecordedVibration(listOf(20L, 250L, 20L, 250L, 20L), listOf(96, 0, 96, 0, 96)), lastVibration(vibrator))
+        assertEquals(emptyList<Pair<String, Receipt>>(), felt())
+    }
+
+    @Test
+    fun autoPlay_doNotDisturb_nothingVibratesAndNoFeltReceipt() = runBlocking {
+        scope.coroutineContext[kotlinx.coroutines.Job]!!.children.forEach { it.cancelAndJoin() }
+        val quiet = ChatSync(
+            repository, repository, settings, { _, _, _ -> messenger },
+            AdaptiveHapticPlayer(vibrator, { device }, { null }), VibrationRateLimiter(Clock { now }),
+            { user -> RendererChoice.capabilitiesOf(user, device, null) }, scope, clock = { now }, quietNow = { true },
+        )
+        quiet.start()
+        await(messenger.state) { it == org.hapticon.messaging.ConnectionState.Connected }
+        settings.update { it.copy(autoPlay = true) }
+        val incoming = mutableListOf<Boolean>()
+        quiet.onIncoming = { _, played -> incoming += played }
+        messenger.deliver(InboxEvent.MessageReceived(ChatMessage("0b7e7c1e-3f7b-4a57-9d3e-2f1c5a6b7c8d", "bob", now, "", icon = HapticIcon.KNOCK)))
+
+        assertNull(lastVibration(vibrator))
+        assertEquals(emptyList<Pair<String, Receipt>>(), felt())
+        assertEquals(listOf(false), incoming)
+    }
+
+    @Test
+    fun feltReceipt_forOwnMessage_movesItToFeltAndALateReadDoesNotUndoIt() = runBlocking {
+        await(messenger.state) { it == org.hapticon.messaging.ConnectionState.Connected }
+        val own = repository.send("alice", "bob", "for you", icon = HapticIcon.HUG)
+        messenger.deliver(InboxEvent.ReceiptReceived(Receipt(own.id, "bob", ReceiptState.FELT, now + 5)))
+        messenger.deliver(InboxEvent.ReceiptReceived(Receipt(own.id, "bob", ReceiptState.READ, now + 9)))
+        messenger.deliver(InboxEvent.ReceiptReceived(Receipt(own.id, "bob", ReceiptState.DELIVERED, now + 9)))
+
+        val row = repository.messages("bob").first().single()
+        assertEquals(MessageState.FELT, row.state)
+        assertEquals(now + 5, row.readAtMillis)
+    }
+
+    @Test
+    fun newMessage_archivedConversation_comesBackToTheList() = runBlocking {
+        await(messenger.state) { it == org.hapticon.messaging.ConnectionState.Connected }
+        settings.update { it.copy(archived = setOf("bob", "carol")) }
+        messenger.deliver(InboxEvent.MessageReceived(ChatMessage("0b7e7c1e-3f7b-4a57-9d3e-2f1c5a6b7c8d", "bob", now, "hi")))
+        assertEquals(setOf("carol"), settings.preferences.value.archived)
+    }
 }

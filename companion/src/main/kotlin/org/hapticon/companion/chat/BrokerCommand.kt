@@ -10,6 +10,10 @@ import org.hapticon.messaging.broker.EmbeddedBroker
 import org.hapticon.messaging.broker.PasswordFile
 import java.io.BufferedReader
 import java.io.File
+import java.net.Inet4Address
+import java.net.NetworkInterface
+import org.hapticon.messaging.InviteLink
+import org.hapticon.messaging.mqtt.BrokerAddress
 import java.io.IOException
 import java.io.InputStreamReader
 import java.io.Reader
@@ -60,6 +64,12 @@ fun runBroker(
     val auth = if (security is BrokerSecurity.Authenticated) "users ${security.passwordFile}, ACL ${security.aclFile}" else "ANONYMOUS"
     console.out.println("broker: listening on tcp://${if (':' in host) "[$host]" else host}:${broker.port} ($auth), store in ${broker.dataDirectory}; Ctrl-C stops it")
     if (host == EmbeddedBroker.HOST) console.out.println("broker: reachable from this machine only; --host ADDRESS (e.g. this laptop's Wi-Fi address) lets phones in")
+    // The invitation a phone opens (or scans in the app) to fill in this broker: the same link the app shares.
+    val inviteHost = if (host != EmbeddedBroker.HOST) host else lanAddress()
+    inviteHost?.let {
+        val hint = if (host == EmbeddedBroker.HOST) " (start the broker with --host $it so that phones can reach it)" else ""
+        console.out.println("invite: ${InviteLink(null, BrokerAddress(it, broker.port))}$hint")
+    }
     console.out.flush()
     try {
         waitForStop()
@@ -151,5 +161,17 @@ internal fun readPasswordFile(path: String): CharArray {
 
 /** The standard MQTT port, which `hapticon broker` uses unless told otherwise. */
 const val DEFAULT_BROKER_PORT: Int = 1883
+
+/**
+ * This machine's address on the local network (the first site-local IPv4 address of an interface that
+ * is up), which a phone on the same Wi-Fi can reach; null when there is none.
+ */
+internal fun lanAddress(): String? = runCatching {
+    NetworkInterface.getNetworkInterfaces().toList()
+        .filter { it.isUp && !it.isLoopback }
+        .flatMap { it.inetAddresses.toList() }
+        .firstOrNull { it is Inet4Address && it.isSiteLocalAddress }
+        ?.hostAddress
+}.getOrNull()
 
 private fun defaultDataDirectory(): String = File(System.getProperty("user.home"), ".hapticon/broker").path

@@ -201,7 +201,13 @@ class ChatSession(
                 val r = event.receipt
                 runBlocking { sender.confirm(r) } // the message is done: it leaves the outbox
                 val what = sentTexts[r.messageId] ?: "message ${r.messageId.take(8)}"
-                say(if (r.state == ReceiptState.READ) "✓✓ ${r.from} read $what" else "✓ ${r.from} received $what")
+                say(
+                    when (r.state) {
+                        ReceiptState.FELT -> "〰 ${r.from} felt $what"
+                        ReceiptState.READ -> "✓✓ ${r.from} read $what"
+                        ReceiptState.DELIVERED -> "✓ ${r.from} received $what"
+                    },
+                )
             }
             is InboxEvent.CapabilitiesReceived -> {
                 val owner = event.capabilities.user

@@ -66,6 +66,11 @@ class BrokerCommandTest {
             }
         }
         assertEquals("broker: 2 user(s): alice, bob", out.lines.first())
+        // The invite link a phone opens, for this machine's LAN address when it has one (with a --host hint).
+        lanAddress()?.let { address ->
+            val invite = out.lines.single { it.startsWith("invite: ") }
+            assertEquals(true, invite.startsWith("invite: hapticon://invite?broker=tcp%3A%2F%2F$address%3A$port"))
+        }
         assertEquals(InboxEvent.MessageReceived(message), arrived)
         assertEquals("cannot connect to tcp://127.0.0.1:$port as alice: bad user name or password", impostor?.message)
     }

@@ -13,6 +13,10 @@ data class ConversationSummary(
     val lastText: String?,
     val lastAtMillis: Long?,
     val unread: Int,
+    /** The latest message's icon (JSON), for the preview's glyph and name; null without one. */
+    val lastIconJson: String? = null,
+    /** Whether the latest message is the user's own ("You: …"). */
+    val lastOutgoing: Boolean = false,
 )
 
 /** Conversations; the list reads their latest message and unread count in one query. */
@@ -23,6 +27,8 @@ interface ConversationDao {
         SELECT c.peer AS peer,
           (SELECT m.text FROM messages m WHERE m.conversation = c.peer ORDER BY m.sent_at DESC LIMIT 1) AS lastText,
           (SELECT MAX(m.sent_at) FROM messages m WHERE m.conversation = c.peer) AS lastAtMillis,
+          (SELECT m.icon_json FROM messages m WHERE m.conversation = c.peer ORDER BY m.sent_at DESC LIMIT 1) AS lastIconJson,
+          COALESCE((SELECT m.outgoing FROM messages m WHERE m.conversation = c.peer ORDER BY m.sent_at DESC LIMIT 1), 0) AS lastOutgoing,
           (SELECT COUNT(*) FROM messages m WHERE m.conversation = c.peer AND m.outgoing = 0 AND m.state = 'RECEIVED') AS unread
         FROM conversations c
         ORDER BY COALESCE(lastAtMillis, c.created_at) DESC
@@ -66,6 +72,12 @@ interface MessageDao {
 
     @Query("DELETE FROM messages WHERE id = :id")
     suspend fun deleteMessage(id: String)
+
+    @Query("SELECT * FROM messages ORDER BY conversation, sent_at, rowid")
+    suspend fun all(): List<MessageEntity>
+
+    @Query("DELETE FROM messages WHERE conversation = :peer")
+    suspend fun deleteConversationMessages(peer: String)
 }
 
 /** The outbox of composed, unacknowledged messages, in the order [org.hapticon.messaging.Outbox] defines. */
@@ -98,6 +110,13 @@ interface OutboxDao {
 
     @Query("SELECT * FROM outbox WHERE message_id = :id")
     suspend fun entry(id: String): OutboxEntity?
+
+    @Query("DELETE FROM outbox WHERE recipient = :peer")
+    suspend fun deleteFor(peer: String)
+
+    /** Makes an entry due at [now] (the user asked to retry it). */
+    @Query("UPDATE outbox SET next_attempt_at = :now WHERE message_id = :id")
+    suspend fun dueNow(id: String, now: Long)
 }
 
 /** The user's custom icons. */

@@ -74,7 +74,12 @@ fun IconEntity.asExternalModel(): HapticIcon = HapticIcon(name, attack, sustain,
 fun HapticIcon.asEntity(): IconEntity = IconEntity(name, attack, sustain, level, release, note, period, count)
 
 /** How far a message got. Own messages go SENDING → SENT → DELIVERED → READ, or FAILED; received ones are RECEIVED. */
-enum class MessageState { SENDING, SENT, DELIVERED, READ, FAILED, RECEIVED }
+/**
+ * An own message moves SENDING → SENT → DELIVERED → READ → FELT (FAILED after repeated send failures,
+ * still retried); a received one is RECEIVED until read (READ). FELT is only ever an own message's state:
+ * the peer played its icon.
+ */
+enum class MessageState { SENDING, SENT, DELIVERED, READ, FAILED, RECEIVED, FELT }
 
 /** A message as the UI and sync see it. */
 data class StoredMessage(

@@ -14,44 +14,79 @@ import org.hapticon.app.data.ChatSettingsRepository
 import org.hapticon.app.data.IconRepository
 import org.hapticon.app.data.database.ConversationSummary
 import org.hapticon.app.data.database.StoredMessage
-import org.hapticon.app.playback.AdaptiveRenderer
 import org.hapticon.app.playback.HapticPlayer
 import org.hapticon.app.playback.RendererChoice
 import org.hapticon.core.HapticIcon
 import org.hapticon.messaging.Capabilities
 import org.hapticon.messaging.InvalidMessageException
+import org.hapticon.messaging.InviteLink
+import org.hapticon.messaging.RendererKind
 import org.hapticon.messaging.Topics
+import org.hapticon.messaging.mqtt.BrokerAddress
 
-/** The conversation list, or the first-run account screen while there is no user name. */
+/** The conversation list, or the first-launch screen while there is no account. */
 sealed interface ChatListUiState {
     data object Loading : ChatListUiState
+
+    /** First launch: [brokerUrl] is what an opened invite filled in (empty otherwise). */
     data class NeedsAccount(val brokerUrl: String) : ChatListUiState
-    data class Success(val user: String, val conversations: List<ConversationSummary>, val preferences: ChatPreferences) : ChatListUiState
+
+    data class Success(
+        val user: String,
+        val conversations: List<ConversationSummary>,
+        val archived: Set<String> = emptySet(),
+    ) : ChatListUiState
 }
+
+/** Asks a broker whether [user] can connect; null when it can, else a one-line reason. */
+typealias BrokerProbe = suspend (user: String, broker: BrokerAddress, password: String?) -> String?
 
 class ChatListViewModel(
     private val repository: ChatRepository,
     private val settings: ChatSettingsRepository,
+    private val probe: BrokerProbe,
 ) : ViewModel() {
     val uiState: StateFlow<ChatListUiState> = combine(settings.preferences, repository.conversations()) { prefs, conversations ->
         val user = prefs.userName
-        if (user == null) ChatListUiState.NeedsAccount(prefs.brokerUrl) else ChatListUiState.Success(user, conversations, prefs)
+        if (user == null) ChatListUiState.NeedsAccount(prefs.brokerUrl) else ChatListUiState.Success(user, conversations, prefs.archived)
     }.stateIn(viewModelScope, SharingStarted.WhileSubscribed(5_000), ChatListUiState.Loading)
 
-    /** Saves the account (a blank [password] means none); returns why not when the user name or URL is not valid. */
-    fun saveAccount(userName: String, brokerUrl: String, password: String): String? {
+    /** The first-launch form's progress: null idle, else testing or the last failure. */
+    val accountCheck = MutableStateFlow<AccountCheck>(AccountCheck.Idle)
+
+    /**
+     * Tests the broker with [userName] and saves both only when it answered (first launch). A bad name
+     * or address is reported at once, without a network call.
+     */
+    fun saveAccount(userName: String, brokerUrl: String, password: String = "") {
         val name = userName.trim()
-        if (!Topics.isValidUserName(name)) return "Use 1 to 32 letters, digits, '.', '_' or '-'"
-        val url = brokerUrl.trim()
-        if (runCatching { org.hapticon.messaging.mqtt.BrokerAddress.parse(url) }.isFailure) return "Not a broker URL (e.g. tcp://10.0.2.2:1883)"
-        settings.update { it.copy(userName = name, brokerUrl = url, brokerPassword = password.takeIf { p -> p.isNotEmpty() }) }
-        return null
+        if (!Topics.isValidUserName(name)) {
+            accountCheck.value = AccountCheck.Failed("User name: use 1 to 32 letters, digits, '.', '_' or '-'")
+            return
+        }
+        val address = try {
+            BrokerAddress.parse(brokerUrl)
+        } catch (e: IllegalArgumentException) {
+            accountCheck.value = AccountCheck.Failed("Broker address: ${e.message}")
+            return
+        }
+        accountCheck.value = AccountCheck.Testing(address.toString())
+        viewModelScope.launch {
+            val secret = password.takeIf { it.isNotEmpty() }
+            val problem = probe(name, address, secret)
+            if (problem != null) {
+                accountCheck.value = AccountCheck.Failed(problem)
+            } else {
+                settings.update { it.copy(userName = name, brokerUrl = address.toString(), brokerPassword = secret) }
+                accountCheck.value = AccountCheck.Idle
+            }
+        }
     }
 
     /** Starts a conversation; returns why not when [peer] is not a valid user name. */
     fun startConversation(peer: String, onStarted: (String) -> Unit): String? {
         val name = peer.trim()
-        if (!Topics.isValidUserName(name)) return "Not a valid user name"
+        if (!Topics.isValidUserName(name)) return "Use 1 to 32 letters, digits, '.', '_' or '-'"
         viewModelScope.launch {
             repository.startConversation(name)
             onStarted(name)
@@ -59,13 +94,48 @@ class ChatListViewModel(
         return null
     }
 
-    fun setAutoPlay(enabled: Boolean) = settings.update { it.copy(autoPlay = enabled) }
+    fun archive(peer: String) = settings.update { it.copy(archived = it.archived + peer) }
 
-    fun setRendererOverride(renderer: AdaptiveRenderer?) = settings.update { it.copy(rendererOverride = renderer?.name) }
+    fun unarchive(peer: String) = settings.update { it.copy(archived = it.archived - peer) }
+
+    fun delete(peer: String) {
+        viewModelScope.launch { repository.deleteConversation(peer) }
+        settings.update { it.copy(archived = it.archived - peer) }
+    }
+}
+
+/** The first-launch connection test. */
+sealed interface AccountCheck {
+    data object Idle : AccountCheck
+    data class Testing(val broker: String) : AccountCheck
+    data class Failed(val reason: String) : AccountCheck
+}
+
+/**
+ * What opening an invite link did: the contact added and the broker filled in, or the one-line reason
+ * nothing changed. A link never replaces a broker already in use: switching brokers would cut the user
+ * off from everyone on the old one, so that stays a deliberate change in Settings.
+ */
+sealed interface InviteOutcome {
+    data class Added(val peer: String?, val brokerFilled: Boolean, val note: String?) : InviteOutcome
+    data class Rejected(val reason: String) : InviteOutcome
+}
+
+/** Applies an opened invite link: validates it fully before changing anything. */
+suspend fun applyInvite(text: String, repository: ChatRepository, settings: ChatSettingsRepository): InviteOutcome {
+    val link = InviteLink.parse(text).getOrElse { return InviteOutcome.Rejected(it.message ?: "Not a Hapticon invite") }
+    val prefs = settings.preferences.value
+    if (link.user != null && link.user == prefs.userName) return InviteOutcome.Rejected("This is your own invite")
+    val current = prefs.brokerUrl.takeIf { it.isNotEmpty() }?.let { runCatching { BrokerAddress.parse(it) }.getOrNull() }
+    val fill = current == null
+    if (fill) settings.update { it.copy(brokerUrl = link.broker.toString()) }
+    link.user?.let { repository.startConversation(it) }
+    val note = if (!fill && current != link.broker) "${link.user ?: "The invite"} uses ${link.broker}; you stay on $current (change it in Settings)" else null
+    return InviteOutcome.Added(link.user, fill, note)
 }
 
 /** What the peer's phone makes of the chosen icon ("how will this feel there"). */
-data class PeerFeel(val renderer: AdaptiveRenderer, val fidelityPercent: Int?)
+data class PeerFeel(val renderer: RendererKind, val fidelityPercent: Int?)
 
 sealed interface ConversationUiState {
     data object Loading : ConversationUiState
@@ -88,8 +158,10 @@ class ConversationViewModel(
     icons: IconRepository,
     private val player: HapticPlayer,
     peerCapabilities: StateFlow<Map<String, Capabilities>>,
-    /** Wakes the outbox sender after a message was stored. */
+    /** Wakes the outbox sender after a message was stored or a retry asked for. */
     private val onSent: () -> Unit,
+    /** Tells the sync that the user felt a received message's icon (the felt receipt). */
+    private val onFelt: (peer: String, messageId: String) -> Unit = { _, _ -> },
 ) : ViewModel() {
     private data class Draft(val icon: HapticIcon? = null, val sticker: Sticker? = null, val error: String? = null)
 
@@ -99,8 +171,7 @@ class ConversationViewModel(
         repository.messages(peer), icons.icons(), draft, peerCapabilities,
     ) { messages, iconList, draft, capabilities ->
         val feel = capabilities[peer]?.let { caps ->
-            val renderer = RendererChoice.fromWire(caps.renderer)
-            PeerFeel(renderer, draft.icon?.let { RendererChoice.fidelityPercent(renderer, it) })
+            PeerFeel(caps.renderer, draft.icon?.let { RendererChoice.fidelityPercent(caps.renderer, it) })
         }
         ConversationUiState.Success(peer, messages, iconList, draft.icon, draft.sticker, feel, draft.error)
     }.stateIn(viewModelScope, SharingStarted.WhileSubscribed(5_000), ConversationUiState.Loading)
@@ -113,9 +184,25 @@ class ConversationViewModel(
         draft.value = draft.value.copy(sticker = sticker, error = null)
     }
 
-    /** Feels [icon]: a press by the user, so not rate-limited. */
+    /** Feels [icon] on this phone (a long press in the composer): a press by the user, so not rate-limited. */
     fun play(icon: HapticIcon) {
         player.play(icon)
+    }
+
+    /** Feels a message's icon; for a received message the sender learns it was felt. */
+    fun feel(message: StoredMessage) {
+        val icon = message.icon ?: return
+        player.play(icon)
+        if (!message.outgoing) onFelt(peer, message.id)
+    }
+
+    /** Sends a failed or waiting own message now. */
+    fun retry(message: StoredMessage) {
+        if (!message.outgoing) return
+        viewModelScope.launch {
+            repository.retryNow(message.id)
+            onSent()
+        }
     }
 
     /** Stores the message with the selected sticker and icon (into the outbox), then clears the selection. */
@@ -134,3 +221,6 @@ class ConversationViewModel(
         }
     }
 }
+
+/** The settings screen's values, read from the chat settings. */
+data class SettingsUiState(val preferences: ChatPreferences, val renderers: List<RendererKind>, val connection: String)

@@ -1,5 +1,6 @@
 package org.hapticon.app.feature.icons
 
+import org.hapticon.app.playback.label
 import androidx.compose.foundation.clickable
 import androidx.compose.foundation.layout.Arrangement
 import androidx.compose.foundation.layout.Box

@@ -13,7 +13,7 @@ import kotlinx.coroutines.launch
 import org.hapticon.app.data.IconRepository
 import org.hapticon.app.playback.HapticPlayer
 import org.hapticon.app.playback.Playback
-import org.hapticon.app.playback.Renderer
+import org.hapticon.messaging.RendererKind
 import org.hapticon.core.HapticIcon
 import org.hapticon.core.render.Fidelity
 
@@ -58,11 +58,11 @@ sealed interface IconsUiState {
     data class Success(
         val icons: List<HapticIcon>,
         /** How this phone plays icons. */
-        val renderer: Renderer,
+        val renderer: RendererKind,
         /** The icon playing now, if any. */
         val nowPlaying: NowPlaying?,
     ) : IconsUiState
 }
 
 /** An icon being played, and how faithfully. */
-data class NowPlaying(val iconName: String, val renderer: Renderer, val durationMillis: Long, val fidelity: Fidelity)
+data class NowPlaying(val iconName: String, val renderer: RendererKind, val durationMillis: Long, val fidelity: Fidelity)

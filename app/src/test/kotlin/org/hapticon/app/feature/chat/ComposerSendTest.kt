@@ -10,6 +10,12 @@ import androidx.compose.ui.test.onNodeWithContentDescription
 import androidx.compose.ui.test.onNodeWithText
 import androidx.compose.ui.test.performClick
 import androidx.compose.ui.test.performTextInput
+import androidx.compose.ui.test.performTouchInput
+import androidx.compose.ui.test.longClick
+import androidx.compose.ui.test.SemanticsMatcher
+import androidx.compose.ui.test.assert
+import androidx.compose.ui.test.SemanticsNodeInteraction
+import androidx.compose.ui.semantics.SemanticsProperties
 import androidx.room.Room
 import androidx.test.core.app.ApplicationProvider
 import kotlinx.coroutines.flow.MutableStateFlow
@@ -34,6 +40,9 @@ import org.junit.runner.RunWith
 import org.robolectric.RobolectricTestRunner
 import org.robolectric.Shadows.shadowOf
 import org.robolectric.annotation.Config
+
+private fun SemanticsNodeInteraction.assertStateDescription(expected: String) =
+    this.assert(SemanticsMatcher.expectValue(SemanticsProperties.StateDescription, expected))
 
 /** The composer through its ViewModel into Room and the outbox: what a user's tap actually stores. */
 @RunWith(RobolectricTestRunner::class)
@@ -60,7 +69,13 @@ class ComposerSendTest {
         )
         compose.setContent {
             val state by viewModel.uiState.collectAsState()
-            ConversationScreen(state, {}, viewModel::send, viewModel::selectIcon, viewModel::selectSticker, viewModel::play, {})
+            ConversationScreen(
+                state,
+                ConversationActions(
+                    onSend = { viewModel.send(it) }, onSelectIcon = viewModel::selectIcon, onSelectSticker = viewModel::selectSticker,
+                    onPreview = viewModel::play, onFeel = viewModel::feel,
+                ),
+            )
         }
         compose.waitUntil(5_000) { compose.onAllNodes(hasSetTextAction()).fetchSemanticsNodes().isNotEmpty() }
     }
@@ -71,12 +86,15 @@ class ComposerSendTest {
     private fun stored() = runBlocking { repository.messages("bob").first() }
 
     @Test
-    fun textWithIcon_pressingTheIconLetsYouFeelItAndSendStoresBothAndQueuesIt() {
-        compose.onNodeWithContentDescription("Icon knock").performClick()
-        // Choosing is also feeling: the knock went to the vibrator.
+    fun textWithIcon_longPressPreviewsTapChoosesAndSendStoresBothAndQueuesIt() {
+        compose.onNodeWithContentDescription("Icon knock").performTouchInput { longClick() }
+        // A long press previews: the knock went to the vibrator, and nothing was chosen.
         assertEquals(RecordedVibration(listOf(20L, 250L, 20L, 250L, 20L), listOf(96, 0, 96, 0, 96)), lastVibration(vibrator))
+        compose.onNodeWithContentDescription("Icon knock").assertStateDescription("not selected")
+        compose.onNodeWithContentDescription("Icon knock").performClick()
+        compose.onNodeWithContentDescription("Icon knock").assertStateDescription("selected")
         compose.onNode(hasSetTextAction()).performTextInput("feel this")
-        compose.onNodeWithText("Send").performClick()
+        compose.onNodeWithContentDescription("Send").performClick()
         compose.waitUntil(5_000) { stored().isNotEmpty() }
 
         val message = stored().single()
@@ -97,7 +115,7 @@ class ComposerSendTest {
     fun stickerWithIcon_sendStoresTheStickerAndTheIcon() {
         compose.onNodeWithContentDescription("Sticker Hug").performClick()
         compose.onNodeWithContentDescription("Icon hug").performClick()
-        compose.onNodeWithText("Send").performClick()
+        compose.onNodeWithContentDescription("Send").performClick()
         compose.waitUntil(5_000) { stored().isNotEmpty() }
 
         val message = stored().single()

@@ -2,7 +2,13 @@ package org.hapticon.app.feature.chat
 
 import android.content.Context
 import android.os.Vibrator
+import androidx.compose.runtime.collectAsState
+import androidx.compose.runtime.getValue
+import androidx.compose.ui.test.assertIsDisplayed
+import androidx.compose.ui.test.onNodeWithTag
 import androidx.compose.ui.test.junit4.createComposeRule
+import androidx.compose.ui.test.performScrollToIndex
+import kotlinx.coroutines.flow.MutableStateFlow
 import androidx.compose.ui.test.onNodeWithContentDescription
 import androidx.compose.ui.test.onNodeWithText
 import androidx.compose.ui.test.performClick
@@ -10,7 +16,7 @@ import androidx.test.core.app.ApplicationProvider
 import org.hapticon.app.data.database.MessageState
 import org.hapticon.app.data.database.StoredMessage
 import org.hapticon.app.playback.AdaptiveHapticPlayer
-import org.hapticon.app.playback.AdaptiveRenderer
+import org.hapticon.messaging.RendererKind
 import org.hapticon.app.playback.DeviceCapabilities
 import org.hapticon.app.playback.RecordedVibration
 import org.hapticon.app.playback.lastVibration
@@ -44,7 +50,10 @@ class ConversationScreenTest {
         shadowOf(vibrator).setHasAmplitudeControl(true)
         val player = AdaptiveHapticPlayer(vibrator, { DeviceCapabilities(true, true, 35) }, { null })
         compose.setContent {
-            ConversationScreen(state(listOf(message(1, false, MessageState.RECEIVED, HapticIcon.KNOCK))), {}, {}, {}, {}, { player.play(it) }, {})
+            ConversationScreen(
+                state(listOf(message(1, false, MessageState.RECEIVED, HapticIcon.KNOCK))),
+                ConversationActions(onFeel = { player.play(it.icon!!) }),
+            )
         }
 
         compose.onNodeWithContentDescription("Play haptic icon knock").performClick()
@@ -55,19 +64,79 @@ class ConversationScreenTest {
     @Test
     @Config(qualifiers = "w400dp-h2000dp") // tall enough for every bubble above the composer
     fun ownMessages_everyState_visible() {
-        val states = listOf(MessageState.SENDING, MessageState.SENT, MessageState.DELIVERED, MessageState.READ, MessageState.FAILED)
+        val states = listOf(MessageState.SENDING, MessageState.SENT, MessageState.DELIVERED, MessageState.READ, MessageState.FELT, MessageState.FAILED)
         compose.setContent {
-            ConversationScreen(state(states.mapIndexed { i, s -> message(i, true, s) }), {}, {}, {}, {}, {}, {})
+            ConversationScreen(state(states.mapIndexed { i, s -> message(i, true, s) }), ConversationActions())
         }
-        for (label in listOf("Sending…", "Sent", "Delivered", "Read", "Failed, retrying")) {
+        for (label in listOf("Sending", "Sent", "Delivered", "Read", "Felt", "Not sent, tap to retry")) {
             compose.onNodeWithContentDescription("Message state: $label").assertExists()
         }
     }
 
     @Test
+    fun failedMessage_tapped_retriesThatMessage() {
+        val failed = message(2, true, MessageState.FAILED)
+        val retried = mutableListOf<String>()
+        compose.setContent {
+            ConversationScreen(state(listOf(message(1, true, MessageState.SENT), failed)), ConversationActions(onRetry = { retried += it.id }))
+        }
+        compose.onNodeWithText("m2").performClick()
+        assertEquals(listOf(failed.id), retried)
+    }
+
+    @Test
+    fun longConversation_opensAtTheLatestMessage() {
+        val messages = (1..60).map { message(it, it % 2 == 0, if (it % 2 == 0) MessageState.READ else MessageState.RECEIVED) }
+        compose.setContent { ConversationScreen(state(messages), ConversationActions()) }
+        compose.onNodeWithText("m60").assertIsDisplayed()
+        compose.onNodeWithText("m1").assertDoesNotExist()
+    }
+
+    @Test
+    fun newMessage_atTheBottom_followedButScrolledUp_jumpButtonCountsIt() {
+        val messages = MutableStateFlow((1..60).map { message(it, false, MessageState.RECEIVED) })
+        compose.setContent {
+            val current by messages.collectAsState()
+            ConversationScreen(state(current), ConversationActions())
+        }
+        messages.value = messages.value + message(61, false, MessageState.RECEIVED)
+        compose.waitForIdle()
+        compose.onNodeWithText("m61").assertIsDisplayed()
+
+        // Scrolled up to the start, a new message is not followed: a button counts it instead.
+        compose.onNodeWithTag(MESSAGE_LIST_TAG).performScrollToIndex(55)
+        compose.waitForIdle()
+        messages.value = messages.value + message(62, false, MessageState.RECEIVED)
+        compose.waitForIdle()
+        compose.onNodeWithText("m62").assertDoesNotExist()
+        compose.onNodeWithText("1 new message", useUnmergedTree = true).performClick()
+        compose.waitForIdle()
+        compose.onNodeWithText("m62").assertIsDisplayed()
+    }
+
+    @Test
+    @Config(qualifiers = "w400dp-h2000dp")
+    fun dayChange_separatorsNameTheDays() {
+        val day = 86_400_000L
+        val now = 1_767_225_600_000L + 12 * 3_600_000L // 2026-01-01 12:00 UTC
+        val messages = listOf(
+            message(1, false, MessageState.RECEIVED).copy(sentAtMillis = now - 2 * day),
+            message(2, true, MessageState.READ).copy(sentAtMillis = now - day),
+            message(3, false, MessageState.RECEIVED).copy(sentAtMillis = now - 60_000),
+        )
+        compose.setContent {
+            ConversationScreen(state(messages), ConversationActions(), ChatClock(java.time.ZoneOffset.UTC, java.util.Locale.UK), now)
+        }
+        compose.onNodeWithText("30 December 2025").assertExists()
+        compose.onNodeWithText("Yesterday").assertExists()
+        compose.onNodeWithText("Today").assertExists()
+        compose.onNodeWithText("11:59").assertExists()
+    }
+
+    @Test
     fun composer_iconSelectedPeerKnown_showsHowItWillFeelThere() {
         compose.setContent {
-            ConversationScreen(state(emptyList(), HapticIcon.HUG, PeerFeel(AdaptiveRenderer.ON_OFF, 61)), {}, {}, {}, {}, {}, {})
+            ConversationScreen(state(emptyList(), HapticIcon.HUG, PeerFeel(RendererKind.ON_OFF, 61)), ConversationActions())
         }
         compose.onNodeWithText("How hug will feel there: on/off pattern, 61% fidelity").assertExists()
     }
@@ -75,7 +144,7 @@ class ConversationScreenTest {
     @Test
     fun sticker_received_shownAsImage() {
         compose.setContent {
-            ConversationScreen(state(listOf(message(1, false, MessageState.RECEIVED, sticker = "heart"))), {}, {}, {}, {}, {}, {})
+            ConversationScreen(state(listOf(message(1, false, MessageState.RECEIVED, sticker = "heart"))), ConversationActions())
         }
         compose.onNodeWithContentDescription("Sticker: Heart").assertExists()
     }

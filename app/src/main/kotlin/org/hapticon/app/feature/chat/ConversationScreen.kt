@@ -1,0 +1,397 @@
+package org.hapticon.app.feature.chat
+
+import androidx.compose.foundation.ExperimentalFoundationApi
+import androidx.compose.foundation.Image
+import androidx.compose.foundation.border
+import androidx.compose.foundation.clickable
+import androidx.compose.foundation.combinedClickable
+import androidx.compose.foundation.layout.Arrangement
+import androidx.compose.foundation.layout.Box
+import androidx.compose.foundation.layout.Column
+import androidx.compose.foundation.layout.PaddingValues
+import androidx.compose.foundation.layout.Row
+import androidx.compose.foundation.layout.fillMaxSize
+import androidx.compose.foundation.layout.fillMaxWidth
+import androidx.compose.foundation.layout.height
+import androidx.compose.foundation.layout.imePadding
+import androidx.compose.foundation.layout.padding
+import androidx.compose.foundation.layout.size
+import androidx.compose.foundation.layout.widthIn
+import androidx.compose.foundation.layout.width
+import androidx.compose.foundation.lazy.LazyColumn
+import androidx.compose.foundation.lazy.LazyListState
+import androidx.compose.foundation.lazy.LazyRow
+import androidx.compose.foundation.lazy.items
+import androidx.compose.foundation.lazy.rememberLazyListState
+import androidx.compose.foundation.shape.CircleShape
+import androidx.compose.foundation.shape.RoundedCornerShape
+import androidx.compose.material3.AssistChip
+import androidx.compose.material3.AssistChipDefaults
+import androidx.compose.material3.CircularProgressIndicator
+import androidx.compose.material3.ExperimentalMaterial3Api
+import androidx.compose.material3.ExtendedFloatingActionButton
+import androidx.compose.material3.FilledIconButton
+import androidx.compose.material3.Icon
+import androidx.compose.material3.IconButton
+import androidx.compose.material3.MaterialTheme
+import androidx.compose.material3.OutlinedTextField
+import androidx.compose.material3.Scaffold
+import androidx.compose.material3.Surface
+import androidx.compose.material3.Text
+import androidx.compose.material3.TextButton
+import androidx.compose.material3.TopAppBar
+import androidx.compose.runtime.Composable
+import androidx.compose.runtime.LaunchedEffect
+import androidx.compose.runtime.getValue
+import androidx.compose.runtime.mutableIntStateOf
+import androidx.compose.runtime.mutableStateOf
+import androidx.compose.runtime.remember
+import androidx.compose.runtime.saveable.rememberSaveable
+import androidx.compose.runtime.setValue
+import androidx.compose.runtime.snapshotFlow
+import androidx.compose.ui.Alignment
+import androidx.compose.ui.Modifier
+import androidx.compose.ui.draw.clip
+import androidx.compose.ui.draw.drawWithContent
+import androidx.compose.ui.geometry.Offset
+import androidx.compose.ui.geometry.Size
+import androidx.compose.ui.graphics.BlendMode
+import androidx.compose.ui.graphics.Brush
+import androidx.compose.ui.graphics.Color
+import androidx.compose.ui.graphics.CompositingStrategy
+import androidx.compose.ui.graphics.graphicsLayer
+import androidx.compose.ui.graphics.vector.ImageVector
+import androidx.compose.ui.res.painterResource
+import androidx.compose.ui.semantics.contentDescription
+import androidx.compose.ui.semantics.semantics
+import androidx.compose.ui.semantics.stateDescription
+import androidx.compose.ui.platform.testTag
+import androidx.compose.ui.unit.dp
+import kotlinx.coroutines.launch
+import org.hapticon.app.data.database.MessageState
+import org.hapticon.app.data.database.StoredMessage
+import org.hapticon.app.designsystem.HapticonIcons
+import org.hapticon.app.playback.label
+import org.hapticon.app.ui.EnvelopeThumbnail
+import org.hapticon.core.HapticIcon
+
+/** What the conversation screen can ask for; the route wires each to the view model. */
+data class ConversationActions(
+    val onBack: () -> Unit = {},
+    val onSend: (String) -> Unit = {},
+    val onSelectIcon: (HapticIcon?) -> Unit = {},
+    val onSelectSticker: (Sticker?) -> Unit = {},
+    /** Feel a message's icon (a received one also sends a felt receipt). */
+    val onFeel: (StoredMessage) -> Unit = {},
+    /** Preview an icon from the composer on this phone (a long press). */
+    val onPreview: (HapticIcon) -> Unit = {},
+    val onRetry: (StoredMessage) -> Unit = {},
+    val onEditIcon: () -> Unit = {},
+)
+
+/**
+ * A conversation, laid out like Google Messages and Signal: own messages on the right in the primary
+ * container colour, received ones on the left; the time (and for own messages the state) under each
+ * bubble; a separator before each day. The list is anchored at the bottom: it opens at the latest
+ * message and follows new ones unless the user scrolled up, when a "new messages" button jumps back.
+ * The composer sits below the list in the same column with [imePadding], so neither it nor the keyboard
+ * ever covers the last bubble.
+ */
+@OptIn(ExperimentalMaterial3Api::class)
+@Composable
+fun ConversationScreen(
+    uiState: ConversationUiState,
+    actions: ConversationActions,
+    clock: ChatClock = remember { ChatClock() },
+    nowMillis: Long = System.currentTimeMillis(),
+) {
+    val title = (uiState as? ConversationUiState.Success)?.peer ?: ""
+    Scaffold(
+        topBar = {
+            TopAppBar(
+                title = {
+                    Row(verticalAlignment = Alignment.CenterVertically) {
+                        if (title.isNotEmpty()) Avatar(title, Modifier.size(36.dp))
+                        Text(title, Modifier.padding(start = 12.dp))
+                    }
+                },
+                navigationIcon = { IconButton(onClick = actions.onBack) { Icon(HapticonIcons.ArrowBack, contentDescription = "Back to chats") } },
+            )
+        },
+    ) { padding ->
+        when (uiState) {
+            ConversationUiState.Loading -> Box(Modifier.fillMaxSize().padding(padding), Alignment.Center) { CircularProgressIndicator() }
+            is ConversationUiState.Success -> Column(Modifier.fillMaxSize().padding(padding).imePadding()) {
+                MessageList(uiState, actions, clock, nowMillis, Modifier.weight(1f).fillMaxWidth())
+                Composer(uiState, actions)
+            }
+        }
+    }
+}
+
+@Composable
+private fun MessageList(
+    uiState: ConversationUiState.Success,
+    actions: ConversationActions,
+    clock: ChatClock,
+    nowMillis: Long,
+    modifier: Modifier,
+) {
+    val items = remember(uiState.messages, nowMillis / 60_000) { conversationItems(uiState.messages, clock, nowMillis) }
+    // Reversed: index 0 is the newest message at the bottom, so the list opens there.
+    val listState = rememberLazyListState()
+    var following by remember { mutableStateOf(true) }
+    var unseen by remember { mutableIntStateOf(0) }
+    val scope = androidx.compose.runtime.rememberCoroutineScope()
+    // Only the user's own scrolling decides whether to follow: an insertion must not change it.
+    LaunchedEffect(listState) {
+        snapshotFlow { listState.isScrollInProgress }.collect { scrolling ->
+            if (!scrolling) {
+                following = listState.firstVisibleItemIndex == 0
+                if (following) unseen = 0
+            }
+        }
+    }
+    val newest = uiState.messages.lastOrNull()
+    LaunchedEffect(newest?.id) {
+        if (newest == null) return@LaunchedEffect
+        if (following || newest.outgoing) {
+            listState.scrollToItem(0)
+            following = true
+            unseen = 0
+        } else {
+            unseen++
+        }
+    }
+    Box(modifier) {
+        LazyColumn(
+            state = listState,
+            reverseLayout = true,
+            modifier = Modifier.fillMaxSize().testTag(MESSAGE_LIST_TAG),
+            contentPadding = PaddingValues(horizontal = 12.dp, vertical = 8.dp),
+            verticalArrangement = Arrangement.spacedBy(6.dp),
+        ) {
+            items(items, key = { it.key }) { item ->
+                when (item) {
+                    is ConversationItem.DaySeparator -> DaySeparator(item.label)
+                    is ConversationItem.Bubble -> MessageBubble(item.message, item.time, actions)
+                }
+            }
+        }
+        if (!following) {
+            ExtendedFloatingActionButton(
+                onClick = {
+                    scope.launch {
+                        listState.animateScrollToItem(0)
+                        following = true
+                        unseen = 0
+                    }
+                },
+                icon = { Icon(HapticonIcons.ArrowDownward, contentDescription = null) },
+                text = { Text(if (unseen > 0) "$unseen new message${if (unseen == 1) "" else "s"}" else "Latest") },
+                modifier = Modifier.align(Alignment.BottomCenter).padding(bottom = 12.dp)
+                    .semantics { contentDescription = if (unseen > 0) "$unseen new messages, jump to the latest" else "Jump to the latest message" },
+            )
+        }
+    }
+}
+
+/** The message list's test tag. */
+const val MESSAGE_LIST_TAG: String = "messages"
+
+@Composable
+private fun DaySeparator(label: String) {
+    Box(Modifier.fillMaxWidth().padding(vertical = 6.dp), contentAlignment = Alignment.Center) {
+        Surface(shape = CircleShape, color = MaterialTheme.colorScheme.surfaceContainerHigh) {
+            Text(
+                label, style = MaterialTheme.typography.labelMedium, color = MaterialTheme.colorScheme.onSurfaceVariant,
+                modifier = Modifier.padding(horizontal = 12.dp, vertical = 4.dp),
+            )
+        }
+    }
+}
+
+@Composable
+private fun MessageBubble(message: StoredMessage, time: String, actions: ConversationActions) {
+    val own = message.outgoing
+    val colors = MaterialTheme.colorScheme
+    val container = if (own) colors.primaryContainer else colors.surfaceContainerHighest
+    val content = if (own) colors.onPrimaryContainer else colors.onSurface
+    // The corner nearest the sender's side is tighter, as in Messages.
+    val shape = if (own) RoundedCornerShape(20.dp, 20.dp, 4.dp, 20.dp) else RoundedCornerShape(20.dp, 20.dp, 20.dp, 4.dp)
+    val failed = own && message.state == MessageState.FAILED
+    Column(Modifier.fillMaxWidth(), horizontalAlignment = if (own) Alignment.End else Alignment.Start) {
+        Surface(
+            shape = shape, color = container, contentColor = content,
+            modifier = Modifier.widthIn(max = 300.dp)
+                .then(if (failed) Modifier.clickable(onClickLabel = "Retry sending") { actions.onRetry(message) } else Modifier),
+        ) {
+            Column(Modifier.padding(horizontal = 14.dp, vertical = 10.dp)) {
+                Sticker.of(message.sticker)?.let {
+                    Image(painterResource(it.drawable), contentDescription = "Sticker: ${it.label}", modifier = Modifier.size(72.dp))
+                } ?: message.sticker?.let { Text("[$it]") }
+                if (message.text.isNotEmpty()) Text(message.text, style = MaterialTheme.typography.bodyLarge)
+                message.icon?.let { icon ->
+                    AssistChip(
+                        onClick = { actions.onFeel(message) },
+                        label = { Text("Feel ${icon.name}") },
+                        leadingIcon = { EnvelopeThumbnail(icon, Modifier.width(32.dp).height(16.dp)) },
+                        colors = AssistChipDefaults.assistChipColors(labelColor = content),
+                        modifier = Modifier.semantics { contentDescription = "Play haptic icon ${icon.name}" },
+                    )
+                }
+            }
+        }
+        Row(
+            Modifier.padding(horizontal = 6.dp, vertical = 2.dp),
+            verticalAlignment = Alignment.CenterVertically,
+            horizontalArrangement = Arrangement.spacedBy(4.dp),
+        ) {
+            Text(time, style = MaterialTheme.typography.labelSmall, color = colors.onSurfaceVariant)
+            if (own) StateIcon(message.state)
+        }
+    }
+}
+
+/** The icon of an own message's state; its description is what a screen reader says. */
+@Composable
+private fun StateIcon(state: MessageState) {
+    val colors = MaterialTheme.colorScheme
+    val (vector: ImageVector, tint: Color) = when (state) {
+        MessageState.SENDING -> HapticonIcons.Schedule to colors.onSurfaceVariant
+        MessageState.SENT -> HapticonIcons.Check to colors.onSurfaceVariant
+        MessageState.DELIVERED -> HapticonIcons.DoneAll to colors.onSurfaceVariant
+        MessageState.READ -> HapticonIcons.DoneAll to colors.primary
+        MessageState.FELT -> HapticonIcons.Vibration to colors.primary
+        MessageState.FAILED -> HapticonIcons.Error to colors.error
+        MessageState.RECEIVED -> return
+    }
+    val label = stateLabel(state)
+    Icon(vector, contentDescription = "Message state: $label", tint = tint, modifier = Modifier.size(16.dp))
+    if (state == MessageState.FAILED) Text(label, style = MaterialTheme.typography.labelSmall, color = colors.error)
+}
+
+/** The spoken (and for failures, visible) label of an own message's state. */
+fun stateLabel(state: MessageState): String = when (state) {
+    MessageState.SENDING -> "Sending"
+    MessageState.SENT -> "Sent"
+    MessageState.DELIVERED -> "Delivered"
+    MessageState.READ -> "Read"
+    MessageState.FELT -> "Felt"
+    MessageState.FAILED -> "Not sent, tap to retry"
+    MessageState.RECEIVED -> "Received"
+}
+
+@OptIn(ExperimentalFoundationApi::class)
+@Composable
+private fun Composer(uiState: ConversationUiState.Success, actions: ConversationActions) {
+    var text by rememberSaveable { mutableStateOf("") }
+    Surface(color = MaterialTheme.colorScheme.surfaceContainer) {
+        Column(Modifier.fillMaxWidth().padding(horizontal = 8.dp, vertical = 6.dp), verticalArrangement = Arrangement.spacedBy(4.dp)) {
+            val iconRow = rememberLazyListState()
+            LazyRow(
+                state = iconRow,
+                horizontalArrangement = Arrangement.spacedBy(6.dp),
+                verticalAlignment = Alignment.CenterVertically,
+                contentPadding = PaddingValues(horizontal = 4.dp),
+                modifier = Modifier.fillMaxWidth().fadingEdges(iconRow),
+            ) {
+                items(uiState.icons, key = { it.name }) { icon ->
+                    IconChip(icon, selected = uiState.selectedIcon == icon, actions)
+                }
+                item { TextButton(onClick = actions.onEditIcon) { Text("New icon…") } }
+            }
+            val stickerRow = rememberLazyListState()
+            LazyRow(
+                state = stickerRow,
+                horizontalArrangement = Arrangement.spacedBy(6.dp),
+                contentPadding = PaddingValues(horizontal = 4.dp),
+                modifier = Modifier.fillMaxWidth().fadingEdges(stickerRow),
+            ) {
+                items(Sticker.entries) { sticker ->
+                    val selected = uiState.selectedSticker == sticker
+                    Image(
+                        painterResource(sticker.drawable),
+                        contentDescription = "Sticker ${sticker.label}",
+                        modifier = Modifier.size(40.dp).clip(RoundedCornerShape(8.dp))
+                            .then(if (selected) Modifier.border(2.dp, MaterialTheme.colorScheme.primary, RoundedCornerShape(8.dp)) else Modifier)
+                            .semantics { stateDescription = if (selected) "selected" else "not selected" }
+                            .clickable { actions.onSelectSticker(if (selected) null else sticker) },
+                    )
+                }
+            }
+            uiState.selectedIcon?.let { icon ->
+                val feel = uiState.peerFeel
+                Text(
+                    if (feel == null) "How ${icon.name} will feel there: unknown until ${uiState.peer} connects"
+                    else "How ${icon.name} will feel there: ${feel.renderer.label}" + (feel.fidelityPercent?.let { ", $it% fidelity" } ?: ""),
+                    style = MaterialTheme.typography.bodySmall, color = MaterialTheme.colorScheme.onSurfaceVariant,
+                    modifier = Modifier.padding(horizontal = 4.dp),
+                )
+            }
+            uiState.error?.let { Text(it, color = MaterialTheme.colorScheme.error, modifier = Modifier.padding(horizontal = 4.dp)) }
+            Row(verticalAlignment = Alignment.CenterVertically) {
+                OutlinedTextField(
+                    text, { text = it }, placeholder = { Text("Message") }, shape = RoundedCornerShape(24.dp),
+                    maxLines = 4, modifier = Modifier.weight(1f).semantics { contentDescription = "Message" },
+                )
+                FilledIconButton(
+                    onClick = { actions.onSend(text); text = "" },
+                    modifier = Modifier.padding(start = 8.dp).size(48.dp),
+                ) { Icon(HapticonIcons.Send, contentDescription = "Send") }
+            }
+        }
+    }
+}
+
+/** A composer icon: a tap chooses it for the next message, a long press previews it on this phone. */
+@OptIn(ExperimentalFoundationApi::class)
+@Composable
+private fun IconChip(icon: HapticIcon, selected: Boolean, actions: ConversationActions) {
+    val colors = MaterialTheme.colorScheme
+    Surface(
+        shape = RoundedCornerShape(8.dp),
+        color = if (selected) colors.secondaryContainer else colors.surfaceContainerLowest,
+        contentColor = if (selected) colors.onSecondaryContainer else colors.onSurface,
+        modifier = Modifier
+            .border(1.dp, if (selected) colors.secondaryContainer else colors.outlineVariant, RoundedCornerShape(8.dp))
+            .clip(RoundedCornerShape(8.dp))
+            .combinedClickable(
+                onClickLabel = if (selected) "Remove from message" else "Add to message",
+                onLongClickLabel = "Feel ${icon.name} here",
+                onLongClick = { actions.onPreview(icon) },
+                onClick = { actions.onSelectIcon(if (selected) null else icon) },
+            )
+            .semantics {
+                contentDescription = "Icon ${icon.name}"
+                stateDescription = if (selected) "selected" else "not selected"
+            },
+    ) {
+        Row(Modifier.padding(horizontal = 10.dp, vertical = 6.dp), verticalAlignment = Alignment.CenterVertically) {
+            EnvelopeThumbnail(icon, Modifier.width(36.dp).height(18.dp))
+            Text(icon.name, style = MaterialTheme.typography.labelLarge, modifier = Modifier.padding(start = 6.dp))
+        }
+    }
+}
+
+/**
+ * Fades the row's edge where more content lies beyond it, the cue Material uses for a horizontally
+ * scrolling row (a cut chip alone reads as a layout bug).
+ */
+fun Modifier.fadingEdges(state: LazyListState, width: androidx.compose.ui.unit.Dp = 32.dp): Modifier =
+    graphicsLayer { compositingStrategy = CompositingStrategy.Offscreen }.drawWithContent {
+        drawContent()
+        val w = width.toPx().coerceAtMost(size.width / 2)
+        if (state.canScrollForward) {
+            drawRect(
+                Brush.horizontalGradient(listOf(Color.Black, Color.Transparent), startX = size.width - w, endX = size.width),
+                topLeft = Offset(size.width - w, 0f), size = Size(w, size.height), blendMode = BlendMode.DstIn,
+            )
+        }
+        if (state.canScrollBackward) {
+            drawRect(
+                Brush.horizontalGradient(listOf(Color.Transparent, Color.Black), startX = 0f, endX = w),
+                size = Size(w, size.height), blendMode = BlendMode.DstIn,
+            )
+        }
+    }

@@ -1,0 +1,170 @@
+package org.hapticon.app.feature.chat
+
+import androidx.compose.foundation.layout.Arrangement
+import androidx.compose.foundation.layout.Column
+import androidx.compose.foundation.layout.fillMaxSize
+import androidx.compose.foundation.layout.fillMaxWidth
+import androidx.compose.foundation.layout.padding
+import androidx.compose.foundation.rememberScrollState
+import androidx.compose.foundation.verticalScroll
+import androidx.compose.material3.ExperimentalMaterial3Api
+import androidx.compose.material3.HorizontalDivider
+import androidx.compose.material3.Icon
+import androidx.compose.material3.IconButton
+import androidx.compose.material3.MaterialTheme
+import androidx.compose.material3.OutlinedButton
+import androidx.compose.material3.OutlinedTextField
+import androidx.compose.material3.Scaffold
+import androidx.compose.material3.Text
+import androidx.compose.material3.TextButton
+import androidx.compose.material3.TopAppBar
+import androidx.compose.runtime.Composable
+import androidx.compose.runtime.getValue
+import androidx.compose.runtime.mutableStateOf
+import androidx.compose.runtime.saveable.rememberSaveable
+import androidx.compose.runtime.setValue
+import androidx.compose.ui.Modifier
+import androidx.compose.ui.semantics.contentDescription
+import androidx.compose.ui.semantics.semantics
+import androidx.compose.ui.unit.dp
+import org.hapticon.app.data.ChatPreferences
+import org.hapticon.app.designsystem.HapticonIcons
+import org.hapticon.app.playback.label
+import org.hapticon.app.ui.DropdownField
+import org.hapticon.app.ui.SwitchRow
+import org.hapticon.messaging.RendererKind
+
+/** What the settings screen can change. */
+data class SettingsActions(
+    val onBack: () -> Unit = {},
+    val update: ((ChatPreferences) -> ChatPreferences) -> Unit = {},
+    /** Tests and saves a new broker address; returns why not, null when saved. */
+    val onBroker: (String) -> String? = { null },
+    /** Tests and saves a new broker password (empty = none); returns why not at once, null when the test started. */
+    val onPassword: (String) -> String? = { null },
+    /** Saves a new user name; returns why not, null when saved. */
+    val onUserName: (String) -> String? = { null },
+    /** Turns "Stay reachable" on or off (on may ask for the notification permission first). */
+    val onStayReachable: (Boolean) -> Unit = {},
+    val onExport: () -> Unit = {},
+    val onOpenStudy: () -> Unit = {},
+)
+
+/**
+ * Everything the chat list used to mix in, in one place: account and broker, how icons play, felt
+ * receipts, staying reachable, colours, data export and about.
+ */
+@OptIn(ExperimentalMaterial3Api::class)
+@Composable
+fun SettingsScreen(
+    uiState: SettingsUiState,
+    actions: SettingsActions,
+    /** The outcome of the last action that takes a moment (broker test, export, permission), one line. */
+    notice: String? = null,
+    version: String = "",
+) {
+    val prefs = uiState.preferences
+    Scaffold(
+        topBar = {
+            TopAppBar(
+                title = { Text("Settings") },
+                navigationIcon = { IconButton(onClick = actions.onBack) { Icon(HapticonIcons.ArrowBack, contentDescription = "Back to chats") } },
+            )
+        },
+    ) { padding ->
+        Column(
+            Modifier.fillMaxSize().padding(padding).verticalScroll(rememberScrollState()).padding(horizontal = 16.dp, vertical = 8.dp),
+            verticalArrangement = Arrangement.spacedBy(8.dp),
+        ) {
+            notice?.let {
+                androidx.compose.material3.Surface(color = MaterialTheme.colorScheme.secondaryContainer, shape = MaterialTheme.shapes.medium) {
+                    Text(it, style = MaterialTheme.typography.bodyMedium, modifier = Modifier.fillMaxWidth().padding(12.dp))
+                }
+            }
+            Section("Account", first = true)
+            EditableField("User name", prefs.userName ?: "", actions.onUserName, "Others start a chat with you by this name.")
+            EditableField("Broker", prefs.brokerUrl, actions.onBroker, "Connection: ${uiState.connection}")
+            EditableField(
+                "Broker password", if (prefs.brokerPassword == null) "" else "••••••••", actions.onPassword,
+                "The password `hapticon broker adduser` set for you.", secret = true,
+            )
+
+            Section("Haptic icons")
+            SwitchRow("Play icons when messages arrive", prefs.autoPlay, onCheckedChange = { on -> actions.update { it.copy(autoPlay = on) } })
+            SwitchRow("Tell senders when I felt their icon", prefs.sendFeltReceipts, onCheckedChange = { on -> actions.update { it.copy(sendFeltReceipts = on) } })
+            val selected = uiState.renderers.firstOrNull { it.name == prefs.rendererOverride }
+            DropdownField(
+                label = "Renderer",
+                options = listOf<RendererKind?>(null) + uiState.renderers,
+                selected = selected,
+                optionLabel = { it?.label ?: "Automatic (best for this phone)" },
+                onSelect = { r -> actions.update { it.copy(rendererOverride = r?.name) } },
+            )
+            Text(
+                "Masking noise is part of a study protocol; researchers set it in the Study tab.",
+                style = MaterialTheme.typography.bodyMedium, color = MaterialTheme.colorScheme.onSurfaceVariant,
+            )
+            TextButton(onClick = actions.onOpenStudy) { Text("Open Study") }
+
+            Section("Reachable")
+            SwitchRow("Stay reachable when the app is closed", prefs.stayReachable, actions.onStayReachable)
+            Text(
+                "Keeps the broker connection open with an ongoing notification, so icons reach you in your pocket.",
+                style = MaterialTheme.typography.bodyMedium, color = MaterialTheme.colorScheme.onSurfaceVariant,
+            )
+            SwitchRow(
+                "Also after the phone restarts", prefs.reachableAfterBoot, enabled = prefs.stayReachable,
+                onCheckedChange = { on -> actions.update { it.copy(reachableAfterBoot = on) } },
+            )
+
+            Section("Appearance")
+            SwitchRow("Colours from the wallpaper (Android 12+)", prefs.dynamicColor, onCheckedChange = { on -> actions.update { it.copy(dynamicColor = on) } })
+
+            Section("Data")
+            OutlinedButton(onClick = actions.onExport) { Text("Export chats as JSON…") }
+
+            Section("About")
+            Text(
+                "Hapticon $version: haptic icons as in the originating study (Table 3), felt through this phone's best renderer. " +
+                    "Messages go only through the broker you chose.",
+                style = MaterialTheme.typography.bodyMedium,
+            )
+        }
+    }
+}
+
+@Composable
+private fun Section(title: String, first: Boolean = false) {
+    if (!first) HorizontalDivider(Modifier.padding(top = 8.dp))
+    Text(title, style = MaterialTheme.typography.titleSmall, color = MaterialTheme.colorScheme.primary, modifier = Modifier.padding(top = 8.dp))
+}
+
+/** A value shown as text with a "Change" button that turns it into a field; saving may be refused with a reason. */
+@Composable
+private fun EditableField(label: String, value: String, onSave: (String) -> String?, supporting: String, secret: Boolean = false) {
+    var editing by rememberSaveable { mutableStateOf(false) }
+    // A secret starts empty: the stored one is never put back on screen.
+    var text by rememberSaveable(value) { mutableStateOf(if (secret) "" else value) }
+    var error by rememberSaveable { mutableStateOf<String?>(null) }
+    if (editing) {
+        OutlinedTextField(
+            text, { text = it; error = null }, label = { Text(label) }, singleLine = true, isError = error != null,
+            visualTransformation = if (secret) androidx.compose.ui.text.input.PasswordVisualTransformation() else androidx.compose.ui.text.input.VisualTransformation.None,
+            supportingText = { Text(error ?: supporting) },
+            modifier = Modifier.fillMaxWidth().semantics { contentDescription = label },
+        )
+        androidx.compose.foundation.layout.Row {
+            TextButton(onClick = { error = onSave(text); if (error == null) editing = false }) { Text("Save") }
+            TextButton(onClick = { editing = false; text = if (secret) "" else value; error = null }) { Text("Cancel") }
+        }
+    } else {
+        androidx.compose.foundation.layout.Row(verticalAlignment = androidx.compose.ui.Alignment.CenterVertically) {
+            Column(Modifier.weight(1f)) {
+                Text(label, style = MaterialTheme.typography.labelMedium, color = MaterialTheme.colorScheme.onSurfaceVariant)
+                Text(value.ifEmpty { "not set" }, style = MaterialTheme.typography.bodyLarge)
+                Text(supporting, style = MaterialTheme.typography.bodySmall, color = MaterialTheme.colorScheme.onSurfaceVariant)
+            }
+            TextButton(onClick = { editing = true }) { Text("Change") }
+        }
+    }
+}

@@ -1,0 +1,76 @@
+package org.hapticon.app.sync
+
+import java.io.File
+import java.util.concurrent.TimeUnit
+import org.hapticon.messaging.broker.AclFile
+import org.hapticon.messaging.broker.BrokerSecurity
+import org.hapticon.messaging.broker.EmbeddedBroker
+import org.hapticon.messaging.broker.PasswordFile
+
+/**
+ * The embedded broker in a child JVM. HiveMQ cannot start inside Robolectric's sandbox class loader
+ * (its classes have no code source there), so app tests that need a real broker run it next door:
+ * same test classpath, plain class loader. [restart] stops the process and starts it again on the
+ * same port and store, as a broker restart does. It authenticates like every Hapticon broker: the users
+ * alice, bob and carol log in with the passwords `<user>-secret` ([USERS]), held to the default ACL.
+ */
+class BrokerProcess(private val data: File, val port: Int) : AutoCloseable {
+    private var process: Process? = null
+
+    fun start() {
+        val javaBin = File(System.getProperty("java.home"), "bin/java").path
+        val p = ProcessBuilder(javaBin, "-cp", System.getProperty("java.class.path"), BrokerProcess::class.java.name, data.path, port.toString())
+            .redirectErrorStream(true)
+            .start()
+        process = p
+        val ready = p.inputStream.bufferedReader().lineSequence().firstOrNull { it.startsWith(READY) || it.startsWith(FAILED) }
+        check(ready?.startsWith(READY) == true) { "broker process did not start: $ready" }
+        // Keep draining its output so it never blocks on a full pipe.
+        Thread { runCatching { p.inputStream.copyTo(java.io.OutputStream.nullOutputStream()) } }.apply { isDaemon = true }.start()
+    }
+
+    fun stop() {
+        val p = process ?: return
+        p.destroy()
+        if (!p.waitFor(10, TimeUnit.SECONDS)) p.destroyForcibly().waitFor()
+        process = null
+    }
+
+    fun restart() {
+        stop()
+        start()
+    }
+
+    override fun close() = stop()
+
+    companion object {
+        private const val READY = "BROKER READY"
+        private const val FAILED = "BROKER FAILED"
+
+        /** The users the broker knows; each logs in with the password `<user>-secret`. */
+        val USERS: List<String> = listOf("alice", "bob", "carol")
+
+        /** Free port on the loopback interface. */
+        fun freePort(): Int = java.net.ServerSocket(0, 1, java.net.InetAddress.getByName(EmbeddedBroker.HOST)).use { it.localPort }
+
+        @JvmStatic
+        fun main(args: Array<String>) {
+            val data = File(args[0])
+            val passwords = PasswordFile(File(data, "passwd"))
+            // Few PBKDF2 rounds: the tests connect often; the format is the broker's own.
+            if (!passwords.exists) USERS.forEach { passwords.add(it, "$it-secret".toCharArray(), iterations = 1_000) }
+            val acl = File(data, "aclfile").apply { writeText(AclFile.DEFAULT_TEXT) }
+            val broker = EmbeddedBroker(File(data, "store"), args[1].toInt(), BrokerSecurity.Authenticated(passwords.file, acl))
+            try {
+                broker.start()
+            } catch (e: Exception) {
+                println("$FAILED ${e.message}")
+                return
+            }
+            Runtime.getRuntime().addShutdownHook(Thread { broker.stop() })
+            println(READY)
+            System.out.flush()
+            Thread.currentThread().join()
+        }
+    }
+}

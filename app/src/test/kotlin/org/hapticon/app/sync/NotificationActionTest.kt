@@ -1,0 +1,71 @@
+package org.hapticon.app.sync
+
+import android.content.Intent
+import android.os.Bundle
+import android.os.Looper
+import android.os.Vibrator
+import androidx.core.app.RemoteInput
+import androidx.test.core.app.ApplicationProvider
+import kotlinx.coroutines.delay
+import kotlinx.coroutines.flow.first
+import kotlinx.coroutines.runBlocking
+import kotlinx.coroutines.withTimeoutOrNull
+import org.hapticon.app.HapticonApplication
+import org.hapticon.app.data.database.MessageState
+import org.hapticon.app.playback.RecordedVibration
+import org.hapticon.app.playback.lastVibration
+import org.hapticon.core.HapticIcon
+import org.hapticon.messaging.ChatMessage
+import org.junit.Assert.assertEquals
+import org.junit.Test
+import org.junit.runner.RunWith
+import org.robolectric.RobolectricTestRunner
+import org.robolectric.Shadows.shadowOf
+import org.robolectric.annotation.Config
+
+/** The message notification's actions, delivered as Android delivers them (a broadcast to the receiver). */
+@RunWith(RobolectricTestRunner::class)
+@Config(sdk = [35])
+class NotificationActionTest {
+    private val app = ApplicationProvider.getApplicationContext<HapticonApplication>()
+    private val chat = app.container.chat!!
+
+    private fun broadcast(intent: Intent) {
+        app.sendBroadcast(intent.setClass(app, NotificationActionReceiver::class.java))
+        shadowOf(Looper.getMainLooper()).idle()
+    }
+
+    private fun awaitTrue(what: String, condition: suspend () -> Boolean) = runBlocking {
+        withTimeoutOrNull(10_000) { while (!condition()) delay(20) } ?: throw AssertionError("timed out waiting for $what")
+    }
+
+    @Test
+    fun reply_typedInTheNotification_storedAsOwnMessageInTheOutbox() {
+        chat.settings.update { it.copy(userName = "alice") }
+        val intent = Intent(MessageNotifier.ACTION_REPLY).putExtra(MessageNotifier.EXTRA_PEER, "bob")
+        RemoteInput.addResultsToIntent(
+            arrayOf(RemoteInput.Builder(MessageNotifier.KEY_REPLY).build()), intent,
+            Bundle().apply { putCharSequence(MessageNotifier.KEY_REPLY, "on my way") },
+        )
+        broadcast(intent)
+
+        awaitTrue("the reply") { chat.repository.messages("bob").first().isNotEmpty() }
+        val stored = runBlocking { chat.repository.messages("bob").first() }.single()
+        assertEquals("on my way", stored.text)
+        assertEquals(true, stored.outgoing)
+        assertEquals(MessageState.SENDING, stored.state)
+    }
+
+    @Test
+    fun feelAgain_playsTheMessagesIconThroughThePlayer() {
+        val vibrator = app.getSystemService(Vibrator::class.java)
+        shadowOf(vibrator).setHasAmplitudeControl(true)
+        val message = ChatMessage("0b7e7c1e-3f7b-4a57-9d3e-2f1c5a6b7c8d", "bob", 1_767_225_600_000, "", icon = HapticIcon.KNOCK)
+        runBlocking { chat.repository.receive(message) }
+
+        broadcast(Intent(MessageNotifier.ACTION_FEEL).putExtra(MessageNotifier.EXTRA_PEER, "bob").putExtra(MessageNotifier.EXTRA_MESSAGE, message.id))
+
+        awaitTrue("the vibration") { lastVibration(vibrator) != null }
+        assertEquals(RecordedVibration(listOf(20L, 250L, 20L, 250L, 20L), listOf(96, 0, 96, 0, 96)), lastVibration(vibrator))
+    }
+}
