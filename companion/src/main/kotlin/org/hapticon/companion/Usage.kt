@@ -10,6 +10,8 @@ val USAGE: String = """
     |  hapticon render ICON --out FILE.wav [--rate HZ] [--format f32|s16]
     |                       [--model paper|processing] [--mode exact|fast]
     |      Render ICON to a mono WAV file, streaming block by block.
+    |  hapticon replicate [ID]
+    |      Reproduce a published result (000: the haptic icons' Table 3 and procedure); without ID, list them.
     |  hapticon plot ICON --out FILE.png [--model paper|processing] [--rate HZ]
     |      Draw ICON's envelope over its carrier waveform.
     |  hapticon bench [--json] [--quick] [--messaging]
@@ -61,7 +63,8 @@ val USAGE: String = """
     |  hapticon classify --model MODEL.json --in REC.csv
     |      Classify a recording (same channels and rate as the model) live: CSV time_s,label,probability,event
     |      per decision, event 1 where a gesture is reported.
-    |  hapticon fit --in REC.wav|REC.csv [--channel NAME] [--envelope lowpass|rms] [--level peak|full-scale]
+    |  hapticon fit --in REC.wav|REC.csv [--channel NAME] [--envelope lowpass|rms]
+    |               [--reference full-scale|peak|strongest|VALUE]
     |               [--name NAME] --out ICON.json [--json]
     |      Fit a haptic icon to a gesture recording (vibration WAV, or CSV time_s,<channel>..); write it as
     |      icon JSON and print the icon and its fit report (--json: one JSON object). See docs/gesture-extraction.md.
@@ -73,7 +76,8 @@ val USAGE: String = """
     |ICON is a preset name or the path of an icon JSON file, e.g.
     |  {"schema": "hapticon.icon", "version": 1, "name": "knock", "attack": 0.005, "sustain": 0.01,
     |   "level": 0.5, "release": 0.005, "note": 57, "period": 0.27, "count": 3}
-    |Defaults: --rate $DEFAULT_SAMPLE_RATE, --format f32, --model paper, --mode exact.
+    |Defaults: --rate $DEFAULT_SAMPLE_RATE, --format f32, --model processing (what the study's participants felt;
+    |paper = the trapezoid the paper describes), --mode exact.
     |
     |Exit status: 0 success; 2 usage or validation error (one line on stderr);
     |1 internal error (set HAPTICON_DEBUG=1 for the stack trace).

@@ -6,34 +6,38 @@ import kotlin.math.ceil
 /**
  * The envelope the originating study's participants felt: Processing Sound 2.0.1–2.3.1's
  * `Env.play(input, attackTime, sustainTime, sustainLevel, releaseTime)` played through JSyn, one
- * repetition, simulated sample by sample at the render rate. The rules, with their sources (files
- * of processing/processing-sound and philburk/jsyn):
+ * repetition, simulated sample by sample at the render rate. The rules, with their sources
+ * (processing/processing-sound `src/processing/sound/Env.java` at 3ca348e; philburk/jsyn
+ * `src/main/java/com/jsyn/...`); docs/envelope-models.md has the table:
  *
- * 1. **Frames.** `Env.java` (lines 29–34 in 2.0.1–2.3.1) builds a `SegmentedEnvelope` of three
- *    (duration, target) frames: (attackTime, input.amp), (sustainTime, sustainLevel · input.amp),
- *    (releaseTime, 0.0). `input.amp` is 1 for an oscillator whose amplitude was never set; all four
- *    parameters are Java `float`s, widened to double, so every duration and the level here go
- *    through `float` first (0.01 s becomes 0.009999999776482582 s).
- * 2. **Segment rate.** `SegmentedEnvelope.getRateScaler` returns 1 / max(duration, framePeriod) and
- *    `VariableRateMonoReader.advanceToNextFrame` multiplies it by the frame period 1/fs: the phase
- *    of a segment advances by framePeriod / max(duration, framePeriod) per sample. A duration under
- *    one sample therefore lasts exactly one sample.
+ * 1. **Frames.** `Env.java` lines 29–34 build a `SegmentedEnvelope` of three (duration, target)
+ *    frames: (attackTime, input.amp), (sustainTime, sustainLevel · input.amp), (releaseTime, 0.0).
+ *    `input.amp` is 1 for an oscillator whose amplitude was never set. All four parameters are Java
+ *    `float`s widened to double (line 29), so every duration and the level go through `float` here
+ *    (0.01 s becomes 0.009999999776482582 s).
+ * 2. **Segment rate.** `data/SegmentedEnvelope.getRateScaler` returns 1 / max(duration, framePeriod)
+ *    and `unitgen/VariableRateMonoReader.java` line 106 multiplies it by the frame period 1/fs: the
+ *    phase of a segment advances by framePeriod / max(duration, framePeriod) per sample. A duration
+ *    under one sample therefore lasts exactly one sample.
  * 3. **Output and carry.** `VariableRateMonoReader.generate` outputs source + (target − source) ·
- *    phase, then adds the increment. When the phase reaches 1 it sets source = target, subtracts 1
- *    (keeping the overshoot **in phase units**) and loads the next frame, whose increment then
- *    applies: an overshoot of 0.5 attack samples becomes 0.5 · (sustain length) sustain samples.
- *    The phase is a running double sum, so the sample on which it reaches 1 is found here by the
- *    same summation; values within a segment use phase₀ + m · increment (equal to the running sum
- *    within ~1e-15 · m).
- * 4. **Start.** A new reader starts starved: its first sample outputs 0 (source = target = 0,
- *    phase 0) while it loads the attack frame.
- * 5. **End.** After the last frame the reader holds source = 0. `Env.play` also disconnects the
- *    reader from the oscillator's amplitude port at attackTime + sustainTime + releaseTime (a float
- *    sum) after its start, so the repetition contributes nothing from sample
- *    ceil(that time · fs) on; when the phase carry makes the reader run past that sample, the tail is
- *    cut there.
+ *    phase (line 78), then adds the increment (line 82). When the phase reaches 1 (lines 63–68) it
+ *    sets source = target, subtracts 1 — keeping the overshoot **in phase units** — and loads the next
+ *    frame, whose increment then applies: knock's half-sample attack overshoot at 44.1 kHz becomes a
+ *    whole sample of its twice-as-long sustain. The phase is a running double sum, so the sample on
+ *    which it reaches 1 is found here by the same summation; values within a segment use
+ *    phase₀ + m · increment (equal to the running sum within ~1e-12).
+ * 4. **Start.** A new reader starts starved (lines 70–75): its first sample outputs 0 while it loads
+ *    the attack frame.
+ * 5. **End.** After the last frame the reader holds 0. `Env.java` lines 50–53 disconnect the reader
+ *    from the oscillator's amplitude port attackTime + sustainTime + releaseTime (a float sum) after
+ *    its start, so the repetition contributes nothing from sample ceil(that time · fs) on; when the
+ *    carry makes the reader run past that sample, its tail is cut there.
  *
- * Overlapping repetitions add ([EnvelopeModel.PROCESSING]); see docs/envelope-models.md.
+ * Overlapping repetitions add: `Env.java` line 40 leaves `input.amplitude.disconnectAll()` commented
+ * out, and `ports/InputMixingBlockPart.getValues` sums every connected output ([EnvelopeTimeline]).
+ * Sound 2.4.0 (2024) disconnects the running envelope instead; Hapticon models the study's versions.
+ * Not modelled: JSyn's 8-frame block quantisation of when readers start and stop.
+ *
  * Simulating costs one addition per sample of one repetition (≤ 5.8 M for the 30 s cap at 192 kHz).
  */
 internal object ProcessingEnvelope {

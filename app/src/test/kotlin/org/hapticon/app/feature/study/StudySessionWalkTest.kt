@@ -102,6 +102,7 @@ class StudySessionWalkTest {
         val seen = ArrayList<String>()
         fun note() = when (val step = vm.active().step) {
             is StudyStep.TaskIntro -> seen += "intro ${step.task.id}"
+            is StudyStep.Explore -> seen += "explore ${step.task.id}"
             is StudyStep.Trial -> seen += "trial ${step.task.id}/${step.stimulus.id}: ${step.question}"
             is StudyStep.TaskEnd -> seen += "end ${step.task.id}"
             StudyStep.Done -> seen += "done"

@@ -1,0 +1,3 @@
+package org.hapticon.companion.replicate
+
+/** One published result reproduced by `hapticon replicate ID`. */ interface Replication { val id: String; val title: String; fun run(out: java.io.PrintStream) }
