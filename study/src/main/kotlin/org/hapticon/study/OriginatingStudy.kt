@@ -87,12 +87,9 @@ public object OriginatingStudy {
      * ([TaskPresentation.TOGETHER]), then the questionnaire items answered after the task; white-noise masking on
      * the participant's headphones.
      */
-    public val PAPER_PROTOCOL: StudyProtocol = StudyProtocol(
+    public val PAPER_PROTOCOL: StudyProtocol = PROTOCOL.copy(
         id = PAPER_ID,
         title = "Haptic icons in instant messages (the paper's procedure)",
-        scale = LikertScale.AGREEMENT_5,
-        taskOrder = OrderScheme.PAPER,
-        fixedFirst = listOf(ICONS_TASK),
         participants = PAPER_PARTICIPANTS,
         masking = Masking.WHITE,
         tasks = PROTOCOL.tasks.map { task ->

@@ -30,12 +30,12 @@ object HapticIconsReplication : Replication {
         out.println("attack = onset to the first corner, sustain = to the start of the release, release = to silence,")
         out.println("level = envelope at the start of the release, peak = largest envelope value, f = carrier from zero crossings.")
         out.println()
-        out.println(String.format(Locale.ROOT, "%-7s %-10s %8s %8s %6s %8s %6s %9s %7s %5s", "icon", "source", "attack", "sustain", "level", "release", "peak", "f (Hz)", "period", "count"))
+        out.println(String.format(Locale.ROOT, "%-7s %-16s %8s %8s %6s %8s %6s %9s %7s %5s", "icon", "source", "attack", "sustain", "level", "release", "peak", "f (Hz)", "period", "count"))
         for (icon in HapticIcon.PRESETS) {
-            out.println(row(icon.name, "paper", icon.attack, icon.sustain, icon.level, icon.release, null, icon.frequency, icon.period, icon.count))
+            out.println(row(icon.name, "Table 3", icon.attack, icon.sustain, icon.level, icon.release, null, icon.frequency, icon.period, icon.count))
             for (model in listOf(EnvelopeModel.PROCESSING, EnvelopeModel.PAPER)) {
                 val m = measure(icon, model)
-                out.println(row("", model.name.lowercase(), m.attack, m.sustain, m.level, m.release, m.peak, m.frequency, m.period, m.count))
+                out.println(row("", "${model.name.lowercase()} model", m.attack, m.sustain, m.level, m.release, m.peak, m.frequency, m.period, m.count))
             }
         }
         out.println()
@@ -46,9 +46,9 @@ object HapticIconsReplication : Replication {
         out.println("Procedure: the paper beside the built-in protocols")
         val paper = OriginatingStudy.PAPER_PROTOCOL
         val perTrial = OriginatingStudy.PROTOCOL
-        out.println(String.format(Locale.ROOT, "%-16s | %-42s | %-30s | %s", "", "paper", paper.id, perTrial.id))
+        out.println(String.format(Locale.ROOT, "%-16s | %-42s | %-32s | %s", "", "paper", paper.id, perTrial.id))
         for ((what, inPaper, of) in procedureRows()) {
-            out.println(String.format(Locale.ROOT, "%-16s | %-42s | %-30s | %s", what, inPaper, of(paper), of(perTrial)))
+            out.println(String.format(Locale.ROOT, "%-16s | %-42s | %-32s | %s", what, inPaper, of(paper), of(perTrial)))
         }
     }
 
@@ -73,7 +73,7 @@ object HapticIconsReplication : Replication {
 
     private fun row(name: String, source: String, attack: Double, sustain: Double, level: Double, release: Double, peak: Double?, f: Double, period: Double, count: Int) =
         String.format(
-            Locale.ROOT, "%-7s %-10s %8.4f %8.4f %6.3f %8.4f %6s %9.2f %7.3f %5d",
+            Locale.ROOT, "%-7s %-16s %8.5f %8.5f %6.3f %8.5f %6s %9.2f %7.3f %5d",
             name, source, attack, sustain, level, release, peak?.let { String.format(Locale.ROOT, "%.3f", it) } ?: "—", f, period, count,
         )
 
@@ -88,8 +88,10 @@ object HapticIconsReplication : Replication {
         val fs = SAMPLE_RATE.toDouble()
         val single = IconRenderer(icon.copy(count = 1, period = 0.0), SAMPLE_RATE, model)
         val e = DoubleArray(single.sampleCount.toInt()) { single.envelopeAt(it.toLong()) }
-        // Corners: where the slope changes by more than rounding (second difference).
-        val corners = (1 until e.size - 1).filter { abs(e[it + 1] - 2 * e[it] + e[it - 1]) > 1e-9 }
+        // Corners: where the slope changes by more than rounding (second difference). A boundary between samples
+        // bends two neighbouring differences; the later sample, the new segment's first, stands for both.
+        val bends = (1 until e.size - 1).filter { abs(e[it + 1] - 2 * e[it] + e[it - 1]) > 1e-9 }
+        val corners = bends.filterIndexed { i, n -> i == bends.lastIndex || bends[i + 1] != n + 1 }
         val end = e.indexOfLast { it > 0.0 } + 1
         val attackEnd = corners.firstOrNull { it > 0 } ?: 0
         val releaseStart = corners.lastOrNull { it < end - 1 && it > attackEnd } ?: attackEnd

@@ -103,4 +103,18 @@ class ProcessingEnvelopeTest {
         assertEquals(0.3f.toDouble() - 1.0, segments[1].slope * 44_100, 1e-9)
         assertEquals(0.30000001192092896, 0.3f.toDouble(), 0.0)
     }
+
+    @Test
+    fun outputs_summedEnvelopeAboveOne_areClippedToFullScaleAndTheVibratorCap() {
+        // Six overlapping 2.4375 s envelopes every 0.4375 s add far above 1, as JSyn's mixer would before the DAC.
+        val icon = HapticIcon.LONGEST_ALLOWED
+        val renderer = IconRenderer(icon, 8_000, PROCESSING)
+        val peak = (0 until renderer.sampleCount).maxOf { renderer.envelopeAt(it) }
+        assertEquals(3.2, peak, 0.1)
+        val pcm = PcmRenderer(icon, 8_000, PROCESSING).render()
+        assertEquals(32_767, pcm.maxOf { it.toInt() })
+        assertEquals(-32_767, pcm.minOf { it.toInt() })
+        val waveform = VibrationWaveform.render(icon, PROCESSING)
+        assertEquals(VibrationWaveform.MAX_AMPLITUDE, waveform.amplitudes().max())
+    }
 }

@@ -1,10 +1,14 @@
 package org.hapticon.app.feature.study
 
 import android.content.Context
+import androidx.compose.ui.semantics.SemanticsProperties
+import androidx.compose.ui.test.SemanticsMatcher
+import androidx.compose.ui.test.assert
 import androidx.compose.ui.test.junit4.createComposeRule
 import androidx.compose.ui.test.onNodeWithContentDescription
 import androidx.compose.ui.test.onNodeWithText
 import androidx.compose.ui.test.performClick
+import androidx.compose.ui.test.performScrollTo
 import androidx.room.Room
 import androidx.test.core.app.ApplicationProvider
 import kotlinx.coroutines.Dispatchers
@@ -139,10 +143,13 @@ class PaperProtocolSessionTest {
             }
         }
         for (n in 1..4) rule.onNodeWithContentDescription("Play haptic icon $n").assertExists()
-        rule.onNodeWithContentDescription("Play haptic icon 3").performClick()
-        rule.onNodeWithContentDescription("Play haptic icon 1").performClick()
+        rule.onNodeWithContentDescription("Play haptic icon 3").performScrollTo().performClick()
+        rule.onNodeWithContentDescription("Play haptic icon 1").performScrollTo().performClick()
         assertEquals(listOf("knock", "stroke"), pressed)
-        rule.onNodeWithText("Go to the questions").performClick()
+        // Icon 2 (hit) was felt already, the others not yet.
+        rule.onNodeWithContentDescription("Play haptic icon 2").assert(SemanticsMatcher.expectValue(SemanticsProperties.StateDescription, "felt"))
+        rule.onNodeWithContentDescription("Play haptic icon 4").assert(SemanticsMatcher.expectValue(SemanticsProperties.StateDescription, "not felt yet"))
+        rule.onNodeWithText("Go to the questions").performScrollTo().performClick()
         assertEquals(1, finished)
     }
 }
