@@ -74,7 +74,7 @@ class ComposerSendTest {
     fun textWithIcon_pressingTheIconLetsYouFeelItAndSendStoresBothAndQueuesIt() {
         compose.onNodeWithContentDescription("Icon knock").performClick()
         // Choosing is also feeling: the knock went to the vibrator.
-        assertEquals(RecordedVibration(listOf(20L, 250L, 20L, 250L, 20L), listOf(96, 0, 96, 0, 96)), lastVibration(vibrator))
+        assertEquals(RecordedVibration(listOf(10L, 10L, 250L, 10L, 10L, 250L, 10L, 10L), listOf(175, 111, 0, 175, 111, 0, 175, 111)), lastVibration(vibrator))
         compose.onNode(hasSetTextAction()).performTextInput("feel this")
         compose.onNodeWithText("Send").performClick()
         compose.waitUntil(5_000) { stored().isNotEmpty() }
