@@ -7,6 +7,7 @@ import org.hapticon.companion.gesture.runClassifyBench
 import org.hapticon.companion.gesture.runTrain
 import org.hapticon.companion.gesture.runFit
 import org.hapticon.companion.gesture.runFitBench
+import org.hapticon.companion.replicate.runReplicate
 import org.hapticon.companion.sensors.runDecode
 import org.hapticon.companion.sensors.runGrains
 import org.hapticon.companion.sensors.runHandshake
@@ -76,6 +77,7 @@ private fun dispatch(args: List<String>, console: Console) {
     }
     when (command) {
         "icons" -> runIcons(rest, console)
+        "replicate" -> runReplicate(rest, console)
         "render" -> runRender(rest, console)
         "convert" -> runConvert(rest, console)
         "plot" -> runPlot(rest, console)

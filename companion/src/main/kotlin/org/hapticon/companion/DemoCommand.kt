@@ -23,7 +23,7 @@ fun runDemo(args: List<String>, console: Console) {
 }
 
 /**
- * Writes the demo into [dir]: each preset as `<name>.wav` (float32, 44.1 kHz, paper model) and
+ * Writes the demo into [dir]: each preset as `<name>.wav` (float32, 44.1 kHz, processing model, the default) and
  * `<name>.png`, then `envelope-models.png`, then the [SensorDemo] files, then the [MessagingDemo] exchange
  * and `received-knock.wav`, then the [StudyDemo] (`study/`) and the [GestureDemo] (`gesture/`); reports each
  * file and the [apk]

@@ -10,7 +10,7 @@ import java.io.File
 fun runPlot(args: List<String>, console: Console) {
     val arguments = Arguments.parse("plot", args, valueOptions = setOf("out", "model", "rate"))
     val spec = arguments.single("an ICON (a preset name or an icon JSON file)")
-    val model = arguments.choice("model", MODEL_CHOICES, EnvelopeModel.PAPER)
+    val model = arguments.choice("model", MODEL_CHOICES, EnvelopeModel.DEFAULT)
     val rate = arguments.int("rate", DEFAULT_SAMPLE_RATE)
     val file = File(arguments.required("out"))
     val icon = IconSource.load(spec)

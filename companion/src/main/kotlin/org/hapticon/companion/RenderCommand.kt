@@ -12,7 +12,7 @@ fun runRender(args: List<String>, console: Console) {
     val settings = AudioSettings(
         sampleRate = arguments.int("rate", DEFAULT_SAMPLE_RATE),
         encoding = arguments.choice("format", FORMAT_CHOICES, WavEncoding.FLOAT32),
-        model = arguments.choice("model", MODEL_CHOICES, EnvelopeModel.PAPER),
+        model = arguments.choice("model", MODEL_CHOICES, EnvelopeModel.DEFAULT),
         mode = arguments.choice("mode", MODE_CHOICES, RenderMode.EXACT),
     )
     val file = File(arguments.required("out"))

@@ -89,7 +89,8 @@ val USAGE: String = """
     |      Classify a recording (same channels and rate as the model) live: CSV time_s,label,probability,event
     |      per decision, event 1 where a gesture is reported. With a social-touch model: label,probability
     |      of the one message in REC.csv.
-    |  hapticon fit --in REC.wav|REC.csv [--channel NAME] [--envelope lowpass|rms] [--level peak|full-scale]
+    |  hapticon fit --in REC.wav|REC.csv [--channel NAME] [--envelope lowpass|rms]
+    |               [--reference full-scale|peak|strongest|VALUE]
     |               [--name NAME] --out ICON.json [--json]
     |      Fit a haptic icon to a gesture recording (vibration WAV, or CSV time_s,<channel>..); write it as
     |      icon JSON and print the icon and its fit report (--json: one JSON object). See docs/gesture-extraction.md.
@@ -104,7 +105,8 @@ val USAGE: String = """
     |ICON is a preset name or the path of an icon JSON file, e.g.
     |  {"schema": "hapticon.icon", "version": 1, "name": "knock", "attack": 0.005, "sustain": 0.01,
     |   "level": 0.5, "release": 0.005, "note": 57, "period": 0.27, "count": 3}
-    |Defaults: --rate $DEFAULT_SAMPLE_RATE, --format f32, --model paper, --mode exact.
+    |Defaults: --rate $DEFAULT_SAMPLE_RATE, --format f32, --model processing (what the study's participants felt;
+    |paper = the trapezoid the paper describes), --mode exact.
     |
     |Exit status: 0 success; 2 usage or validation error (one line on stderr);
     |1 internal error (set HAPTICON_DEBUG=1 for the stack trace).

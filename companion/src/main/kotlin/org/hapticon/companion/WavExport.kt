@@ -15,7 +15,7 @@ import java.util.Locale
 data class AudioSettings(
     val sampleRate: Int = DEFAULT_SAMPLE_RATE,
     val encoding: WavEncoding = WavEncoding.FLOAT32,
-    val model: EnvelopeModel = EnvelopeModel.PAPER,
+    val model: EnvelopeModel = EnvelopeModel.DEFAULT,
     val mode: RenderMode = RenderMode.EXACT,
 )
 

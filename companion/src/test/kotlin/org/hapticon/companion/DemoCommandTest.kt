@@ -25,7 +25,7 @@ class DemoCommandTest {
         assertEquals(expectedFiles.sorted(), dir.list()!!.sorted())
         val lines = result.stdout.lines().dropLast(1)
         assertEquals(25, lines.size)
-        assertEquals("wrote ${File(dir, "stroke.wav")}: stroke, 476280 samples, 10.800 s at 44100 Hz, f32, paper model, exact mode", lines[0])
+        assertEquals("wrote ${File(dir, "stroke.wav")}: stroke, 476280 samples, 10.800 s at 44100 Hz, f32, processing model, exact mode", lines[0])
         assertEquals("wrote ${File(dir, "envelope-models.png")}: 1200×1224 PNG", lines[8])
         assertEquals("wrote ${File(dir, "fsr-press.bin")}: framed stream from hapticon-demo-fsr, device info + 2000 FSR samples at 1000 Hz, 28036 bytes", lines[9])
         assertEquals(true, Regex("messaging: embedded MQTT broker on tcp://127\\.0\\.0\\.1:\\d+, users alice and bob with passwords, the shipped ACL").matches(lines[15]))
@@ -34,7 +34,7 @@ class DemoCommandTest {
                 "level 0.5, note 57 (220.0 Hz), 3× every 0.27 s, 0.560 s; bob received it intact",
             lines[16],
         )
-        assertEquals("wrote ${File(dir, "received-knock.wav")}: knock, 24696 samples, 0.560 s at 44100 Hz, f32, paper model, exact mode", lines[17])
+        assertEquals("wrote ${File(dir, "received-knock.wav")}: knock, 24696 samples, 0.560 s at 44100 Hz, f32, processing model, exact mode", lines[17])
         assertEquals("messaging: bob's delivered receipt reached alice", lines[18])
         assertEquals(
             "wrote ${File(dir, "study/results.csv")}: 144 responses of 12 simulated participants (the originating study's protocol)",

@@ -40,7 +40,7 @@ class RenderCommandTest {
         val out = File(temp.root, "knock.wav")
         val result = cli("render", "knock", "--out", out.path)
         assertEquals(result.toString(), 0, result.exitCode)
-        assertEquals("wrote $out: knock, 24696 samples, 0.560 s at 44100 Hz, f32, paper model, exact mode\n", result.stdout)
+        assertEquals("wrote $out: knock, 24696 samples, 0.560 s at 44100 Hz, f32, processing model, exact mode\n", result.stdout)
 
         val bytes = out.readBytes()
         assertEquals(58 + 24_696 * 4, bytes.size)

@@ -52,12 +52,22 @@ public class Recording(
  * One named series of a [Recording]. [unit] says what the numbers are ("N", "V", "deg", "g", "px", or
  * "" for a normalised signal). Non-finite samples are allowed here — a CSV may hold a gap — and each
  * consumer says how it treats them.
+ *
+ * [fullScale] is the largest value the input can hold, in [unit]: 1.0 for a normalised channel (a float WAV's
+ * 1.0; a PCM16 WAV's 32767, which is read as 1.0), a sensor's calibrated maximum when its source knows it, null
+ * when unknown (a CSV in physical units). A fitted icon's level is measured against it by default.
  */
-public class Channel(public val name: String, public val unit: String, samples: DoubleArray) {
+public class Channel(
+    public val name: String,
+    public val unit: String,
+    samples: DoubleArray,
+    public val fullScale: Double? = if (unit.isEmpty()) 1.0 else null,
+) {
     private val values: DoubleArray = samples.copyOf()
 
     init {
         require(name.isNotBlank()) { "a channel needs a name" }
+        require(fullScale == null || (fullScale.isFinite() && fullScale > 0.0)) { "full scale must be finite and > 0, was $fullScale" }
     }
 
     /** Number of samples. */
@@ -70,7 +80,7 @@ public class Channel(public val name: String, public val unit: String, samples: 
     public fun toDoubleArray(): DoubleArray = values.copyOf()
 
     /** Samples `[from, to)` as a new channel. */
-    public fun slice(from: Int, to: Int): Channel = Channel(name, unit, values.copyOfRange(from, to))
+    public fun slice(from: Int, to: Int): Channel = Channel(name, unit, values.copyOfRange(from, to), fullScale)
 
     override fun toString(): String = "Channel($name, $size samples${if (unit.isEmpty()) "" else " in $unit"})"
 }

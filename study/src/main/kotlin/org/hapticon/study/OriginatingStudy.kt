@@ -4,7 +4,11 @@ import org.hapticon.core.HapticIcon
 import org.hapticon.study.design.OrderScheme
 
 /**
- * The default protocol: the study the haptic icons come from. A virtual partner "has already sent" the messages;
+ * The built-in protocols of the study the haptic icons come from (Wei et al.): [PROTOCOL], the default, rates each
+ * icon in its own trial; [PAPER_PROTOCOL] runs the paper's own procedure. Both play the `processing` envelopes, what
+ * the study's participants felt.
+ *
+ * [PROTOCOL]: the study the haptic icons come from. A virtual partner "has already sent" the messages;
  * the participant plays each icon and rates a statement on a 5-point agreement scale.
  *
  * 1. `icons`: the four preset icons alone, "Haptic icon N feels like stroking / hitting / knocking / hugging", one
@@ -34,7 +38,13 @@ public object OriginatingStudy {
         Gesture(HapticIcon.HUG, "hugging", "I missed you so much!"),
     )
 
-    /** The protocol; see the type's description. */
+    /** Id of [PAPER_PROTOCOL]. */
+    public const val PAPER_ID: String = "hapticon-icons-paper"
+
+    /** Participants in the originating study. */
+    public const val PAPER_PARTICIPANTS: Int = 16
+
+    /** The per-trial protocol; see the type's description. */
     public val PROTOCOL: StudyProtocol = StudyProtocol(
         id = ID,
         title = "Haptic icons in instant messages",
@@ -68,6 +78,37 @@ public object OriginatingStudy {
             ),
         ),
     )
+
+    /**
+     * The originating study's procedure, read-only in the app: [PAPER_PARTICIPANTS] participants; task 1 (the icons)
+     * first, tasks 2 (text) and 3 (stickers) counterbalanced as in the paper (2-3 for one participant, 3-2 for the
+     * next); the icons numbered as in the paper (icon 1 = stroke, 2 = hit, 3 = knock, 4 = hug) rather than by their
+     * position; in every task the four icons shown together on one chat screen and pressed freely
+     * ([TaskPresentation.TOGETHER]), then the questionnaire items answered after the task; white-noise masking on
+     * the participant's headphones.
+     */
+    public val PAPER_PROTOCOL: StudyProtocol = PROTOCOL.copy(
+        id = PAPER_ID,
+        title = "Haptic icons in instant messages (the paper's procedure)",
+        participants = PAPER_PARTICIPANTS,
+        masking = Masking.WHITE,
+        tasks = PROTOCOL.tasks.map { task ->
+            task.copy(
+                instructions = task.instructions.replace("Press each icon to feel it, then rate the statement.", "Press the icons freely, as often as you like; then rate the statements.")
+                    .replace("Read each message, feel its icon, then rate the statement.", "Read the messages and press their icons freely; then rate the statements.")
+                    .replace("Look at each sticker, feel its icon, then rate the statement.", "Look at the stickers and press their icons freely; then rate the statements."),
+                // Rated after the task, so each item names its icon by number.
+                question = task.question.replace("This haptic icon", "Haptic icon {n}").replace("of the text", "of its text")
+                    .replace("of the sticker", "of its sticker"),
+                stimulusOrder = OrderScheme.FIXED,
+                presentation = TaskPresentation.TOGETHER,
+                stimuli = task.stimuli.mapIndexed { i, stimulus -> stimulus.copy(number = i + 1) },
+            )
+        },
+    )
+
+    /** The built-in protocols, the default first. */
+    public val BUILT_IN: List<StudyProtocol> = listOf(PROTOCOL, PAPER_PROTOCOL)
 
     private class Gesture(val icon: HapticIcon, val verb: String, val text: String)
 }

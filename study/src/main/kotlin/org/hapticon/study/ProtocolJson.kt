@@ -5,25 +5,30 @@ import org.hapticon.core.io.IconJson
 import org.hapticon.core.io.Json
 import org.hapticon.core.io.JsonArray
 import org.hapticon.core.io.JsonException
+import org.hapticon.core.io.JsonNull
 import org.hapticon.core.io.JsonNumber
 import org.hapticon.core.io.JsonObject
 import org.hapticon.core.io.JsonString
 import org.hapticon.core.io.JsonValue
+import org.hapticon.core.render.EnvelopeModel
 import org.hapticon.study.design.OrderScheme
 
 /**
  * Study protocols as JSON, schema `hapticon.study` version 1 (see docs/study.md):
  *
  * ```
- * {"schema": "hapticon.study", "version": 1, "id": "…", "revision": 1, "title": "…",
+ * {"schema": "hapticon.study", "version": 1, "id": "…", "revision": 1, "title": "…", "envelopeModel": "processing",
+ *  "participants": 16, "masking": "white",
  *  "scale": {"points": 5, "labels": ["strongly disagree", …]}, "taskOrder": "paper", "fixedFirst": ["icons"],
  *  "tasks": [{"id": "…", "title": "…", "instructions": "…", "question": "Haptic icon {n} feels like {label}",
- *             "stimulusOrder": "williams", "stimuli": [{"id": "…", "text": "…", "sticker": "…", "label": "…",
+ *             "stimulusOrder": "williams", "presentation": "together",
+ *             "stimuli": [{"id": "…", "number": 1, "text": "…", "sticker": "…", "label": "…",
  *             "icon": {icon JSON}}]}]}
  * ```
  *
- * Decoding is strict about what it uses and ignores unknown members. `revision` defaults to 1, `taskOrder` and
- * `stimulusOrder` to `fixed`, `fixedFirst` and `labels` to empty, `instructions` to "". Every problem is a
+ * Decoding is strict about what it uses and ignores unknown members. `revision` defaults to 1, `envelopeModel` to `processing`
+ * (what the originating study's participants felt; `paper` is the trapezoid its text describes), `taskOrder` and
+ * `stimulusOrder` to `fixed`, `participants` to none, `masking` to `none`, `presentation` to `per-trial`, `fixedFirst` and `labels` to empty, `instructions` to "". Every problem is a
  * [ProtocolException] whose path names the member, for example `tasks[0].stimuli[2].icon.attack`.
  */
 public object ProtocolJson {
@@ -41,6 +46,9 @@ public object ProtocolJson {
             "id" to JsonString(protocol.id),
             "revision" to JsonNumber(protocol.revision),
             "title" to JsonString(protocol.title),
+            "envelopeModel" to JsonString(modelName(protocol.envelopeModel)),
+            "participants" to (protocol.participants?.let { JsonNumber(it) } ?: JsonNull),
+            "masking" to JsonString(protocol.masking.jsonName),
             "scale" to JsonObject(
                 linkedMapOf("points" to JsonNumber(protocol.scale.points), "labels" to JsonArray(protocol.scale.labels.map(::JsonString))),
             ),
@@ -63,6 +71,9 @@ public object ProtocolJson {
             id = doc.string("id"),
             revision = doc.optionalInt("revision") ?: 1,
             title = doc.string("title"),
+            envelopeModel = model(doc),
+            participants = doc.optionalInt("participants"),
+            masking = named(doc, "masking", Masking.NONE, Masking.entries.map { it.jsonName }, Masking::fromJsonName),
             scale = LikertScale(scale.int("points"), scale.strings("labels") ?: emptyList()),
             taskOrder = scheme(doc, "taskOrder"),
             fixedFirst = doc.strings("fixedFirst") ?: emptyList(),
@@ -73,6 +84,7 @@ public object ProtocolJson {
                     instructions = task.optionalString("instructions") ?: "",
                     question = task.string("question"),
                     stimulusOrder = scheme(task, "stimulusOrder"),
+                    presentation = named(task, "presentation", TaskPresentation.PER_TRIAL, TaskPresentation.entries.map { it.jsonName }, TaskPresentation::fromJsonName),
                     stimuli = task.objects("stimuli") { stimulus ->
                         Stimulus(
                             id = stimulus.string("id"),
@@ -80,6 +92,7 @@ public object ProtocolJson {
                             text = stimulus.optionalString("text"),
                             sticker = stimulus.optionalString("sticker"),
                             label = stimulus.optionalString("label"),
+                            number = stimulus.optionalInt("number"),
                         )
                     },
                 )
@@ -103,6 +116,7 @@ public object ProtocolJson {
             "instructions" to JsonString(task.instructions),
             "question" to JsonString(task.question),
             "stimulusOrder" to JsonString(task.stimulusOrder.jsonName),
+            "presentation" to JsonString(task.presentation.jsonName),
             "stimuli" to JsonArray(task.stimuli.map(::stimulusJson)),
         ),
     )
@@ -113,6 +127,7 @@ public object ProtocolJson {
         stimulus.text?.let { members["text"] = JsonString(it) }
         stimulus.sticker?.let { members["sticker"] = JsonString(it) }
         stimulus.label?.let { members["label"] = JsonString(it) }
+        stimulus.number?.let { members["number"] = JsonNumber(it) }
         members["icon"] = IconJson.toJsonValue(stimulus.icon)
         return JsonObject(members)
     }
@@ -122,6 +137,19 @@ public object ProtocolJson {
     } catch (e: IconValidationException) {
         val path = stimulus.at("icon")
         throw ProtocolException(if (e.field == "icon") path else "$path.${e.field}", e.message.orEmpty().removePrefix("${e.field}: "))
+    }
+
+    /** The JSON (and CSV, CLI) name of [model]: `paper` or `processing`. */
+    public fun modelName(model: EnvelopeModel): String = model.name.lowercase()
+
+    private fun model(fields: JsonFields): EnvelopeModel =
+        named(fields, "envelopeModel", EnvelopeModel.DEFAULT, EnvelopeModel.entries.map(::modelName)) { name ->
+            EnvelopeModel.entries.firstOrNull { modelName(it) == name }
+        }
+
+    private fun <T> named(fields: JsonFields, member: String, default: T, names: List<String>, parse: (String) -> T?): T {
+        val name = fields.optionalString(member) ?: return default
+        return parse(name) ?: throw ProtocolException(fields.at(member), "expected ${names.joinToString(", ") { "\"$it\"" }}, got \"${name.take(40)}\"")
     }
 
     private fun scheme(fields: JsonFields, member: String): OrderScheme {

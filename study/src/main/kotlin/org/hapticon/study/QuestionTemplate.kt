@@ -1,7 +1,8 @@
 package org.hapticon.study
 
 /**
- * The placeholders of a task's question: `{n}` is the stimulus's position in the participant's order (1-based),
+ * The placeholders of a task's question: `{n}` is the stimulus's [number][Stimulus.number] when it has one (the
+ * paper's "icon 1" is stroke whatever the order), else its position in the participant's order (1-based),
  * `{label}`, `{icon}`, `{text}` and `{sticker}` are the stimulus's label, icon name, text and sticker id (empty when
  * absent). For example "Haptic icon {n} feels like {label}" becomes "Haptic icon 2 feels like hitting".
  */
@@ -22,7 +23,7 @@ public object QuestionTemplate {
     public fun fill(template: String, stimulus: Stimulus, position: Int): String =
         PLACEHOLDER.replace(template) { match ->
             when (match.groupValues[1]) {
-                "n" -> position.toString()
+                "n" -> (stimulus.number ?: position).toString()
                 "label" -> stimulus.label.orEmpty()
                 "icon" -> stimulus.icon.name
                 "text" -> stimulus.text.orEmpty()

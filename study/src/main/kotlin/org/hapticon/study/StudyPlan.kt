@@ -4,8 +4,9 @@ import org.hapticon.study.design.ParticipantSchedule
 import org.hapticon.study.log.StudyEvent
 
 /**
- * A participant's session as an ordered list of [steps]: for each task of their [schedule], its intro, one trial
- * per stimulus in their order, its end; then [StudyStep.Done].
+ * A participant's session as an ordered list of [steps]: for each task of their [schedule], its intro, for a
+ * [TaskPresentation.TOGETHER] task the screen of all its stimuli ([StudyStep.Explore]), one trial per stimulus in
+ * their order, its end; then [StudyStep.Done].
  */
 public class StudyPlan private constructor(
     /** The protocol the plan expands. */
@@ -31,6 +32,10 @@ public class StudyPlan private constructor(
             schedule.tasks.forEachIndexed { t, task ->
                 val position = t + 1
                 steps += StudyStep.TaskIntro(task, position)
+                if (task.presentation == TaskPresentation.TOGETHER) {
+                    val shown = task.stimuli.withIndex().sortedBy { (i, s) -> s.number ?: (i + 1) }.map { it.value }
+                    steps += StudyStep.Explore(task, position, shown)
+                }
                 schedule.stimuli.getValue(task.id).forEachIndexed { s, stimulus ->
                     steps += StudyStep.Trial(task, position, s + 1, stimulus, QuestionTemplate.fill(task.question, stimulus, s + 1))
                 }

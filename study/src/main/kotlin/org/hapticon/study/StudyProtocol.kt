@@ -1,11 +1,37 @@
 package org.hapticon.study
 
+import org.hapticon.core.render.EnvelopeModel
 import org.hapticon.study.design.OrderScheme
+
+/** Noise played on the participant's headphones during a session, masking the actuator's sound. */
+public enum class Masking(
+    /** The name in protocol JSON. */
+    public val jsonName: String,
+) {
+    /** No masking. */
+    NONE("none"),
+
+    /** White noise, as in the originating study. */
+    WHITE("white"),
+
+    /** Pink noise. */
+    PINK("pink"),
+    ;
+
+    public companion object {
+        /** The masking called [name] in protocol JSON, or null. */
+        public fun fromJsonName(name: String): Masking? = entries.firstOrNull { it.jsonName == name }
+    }
+}
 
 /**
  * A counterbalanced user study: [tasks] rated on [scale]. The tasks named in [fixedFirst] come first, in that order,
  * for every participant; the others follow in an order [taskOrder] counterbalances across participants.
  * [revision] is the protocol's own version (exported as `protocol_version`), distinct from the JSON schema version.
+ * [envelopeModel] is how every stimulus's envelope is rendered for the participants (exported as `envelope_model`):
+ * [EnvelopeModel.PROCESSING], what the originating study's participants felt, unless the researcher picks `paper`.
+ * [participants] is the planned sample size when the protocol fixes one (null: open), and [masking] the noise played
+ * on the participant's headphones to mask the actuator's sound.
  *
  * A value is always valid: the constructor throws [ProtocolException] naming the path of the first problem: a
  * blank or malformed id (ids are 1..64 of `A-Z a-z 0-9 _ . -`), a duplicate task or stimulus id, a task without
@@ -19,11 +45,15 @@ public data class StudyProtocol(
     val taskOrder: OrderScheme = OrderScheme.FIXED,
     val fixedFirst: List<String> = emptyList(),
     val revision: Int = 1,
+    val envelopeModel: EnvelopeModel = EnvelopeModel.DEFAULT,
+    val participants: Int? = null,
+    val masking: Masking = Masking.NONE,
 ) {
     init {
         requireId(id, "id")
         requireText(title, "title")
         if (revision < 1) throw ProtocolException("revision", "must be >= 1, was $revision")
+        if (participants != null && participants < 1) throw ProtocolException("participants", "must be >= 1, was $participants")
         if (tasks.isEmpty()) throw ProtocolException("tasks", "a study needs at least one task")
         val taskIds = HashSet<String>()
         tasks.forEachIndexed { t, task -> checkTask(task, "tasks[$t]", taskIds) }

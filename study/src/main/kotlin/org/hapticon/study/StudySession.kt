@@ -12,7 +12,8 @@ public class StudySession(
     public val plan: StudyPlan,
 ) {
     /**
-     * The first step of the plan that [events] have not completed: a task intro until its TaskStarted, a trial until
+     * The first step of the plan that [events] have not completed: a task intro until its TaskStarted, an
+     * exploration until its ExplorationEnded, a trial until
      * its Answer, a task end until its TaskEnded; [StudyStep.Done] when all are. Events that match no step (for example
      * presses and playback) do not move the session. Does not throw.
      */
@@ -35,6 +36,7 @@ public class StudySession(
     private fun completedKeys(events: List<StudyEvent>): Set<String> = events.mapNotNullTo(HashSet()) { event ->
         when (event) {
             is StudyEvent.TaskStarted -> "intro/${event.taskId}"
+            is StudyEvent.ExplorationEnded -> "explore/${event.taskId}"
             is StudyEvent.Answer -> "trial/${event.taskId}/${event.stimulusId}"
             is StudyEvent.TaskEnded -> "end/${event.taskId}"
             else -> null
@@ -43,6 +45,7 @@ public class StudySession(
 
     private fun key(step: StudyStep): String? = when (step) {
         is StudyStep.TaskIntro -> "intro/${step.task.id}"
+        is StudyStep.Explore -> "explore/${step.task.id}"
         is StudyStep.Trial -> "trial/${step.task.id}/${step.stimulus.id}"
         is StudyStep.TaskEnd -> "end/${step.task.id}"
         StudyStep.Done -> null

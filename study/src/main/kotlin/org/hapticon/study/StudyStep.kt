@@ -6,6 +6,13 @@ public sealed interface StudyStep {
     public data class TaskIntro(val task: StudyTask, val taskPosition: Int) : StudyStep
 
     /**
+     * Every stimulus of [task] (a [TaskPresentation.TOGETHER] task, the [taskPosition]-th) on one chat screen, in
+     * [stimuli] order (by number when they have one), pressed freely; left by an ExplorationEnded event, after
+     * which the task's trials ask its questions.
+     */
+    public data class Explore(val task: StudyTask, val taskPosition: Int, val stimuli: List<Stimulus>) : StudyStep
+
+    /**
      * One rating: [stimulus] at 1-based [trial] within [task] (the [taskPosition]-th task), asking [question] (the
      * task's template filled in); left by an Answer event.
      */

@@ -40,6 +40,7 @@ class ProtocolJsonTest {
                "tasks":[{"id":"a","title":"A","question":"Q","stimuli":[{"id":"x","extra":true,"icon":${knock()}}]}]}""",
         )
         assertEquals(1, p.revision)
+        assertEquals(org.hapticon.core.render.EnvelopeModel.PROCESSING, p.envelopeModel)
         assertEquals(OrderScheme.FIXED, p.taskOrder)
         assertEquals(OrderScheme.FIXED, p.tasks[0].stimulusOrder)
         assertEquals(emptyList<String>(), p.fixedFirst)
@@ -69,7 +70,17 @@ class ProtocolJsonTest {
         expect("tasks: a study needs at least one task") { it.replace(Regex("\"tasks\":\\[.*]}$"), "\"tasks\":[]}") }
         expect("tasks[0].stimuli[0].sticker: expected 1..64 of A-Z a-z 0-9 _ . -, got \"a b\"") { it.replace("\"id\":\"x\",", "\"id\":\"x\",\"sticker\":\"a b\",") }
         expect("scale.labels: expected none, 2 anchors or 5 labels, got 3") { it.replace("\"labels\":[]", "\"labels\":[\"a\",\"b\",\"c\"]") }
+        expect("envelopeModel: expected \"paper\", \"processing\", got \"jsyn\"") { it.replace("\"title\":\"T\",", "\"title\":\"T\",\"envelopeModel\":\"jsyn\",") }
         expect("tasks[1]: expected an object, got 3") { it.replace(Regex("(\"tasks\":\\[\\{.*?}]}),\\{.*]}$"), "$1,3]}") }
+    }
+
+    @Test
+    fun envelopeModel_paperRoundTripsAndIsWrittenByName() {
+        val paper = OriginatingStudy.PROTOCOL.copy(envelopeModel = org.hapticon.core.render.EnvelopeModel.PAPER)
+        val text = ProtocolJson.encode(paper, "")
+        assertTrue(text, text.contains("\"envelopeModel\":\"paper\""))
+        assertEquals(paper, ProtocolJson.decode(text))
+        assertTrue(ProtocolJson.encode(OriginatingStudy.PROTOCOL, "").contains("\"envelopeModel\":\"processing\""))
     }
 
     @Test

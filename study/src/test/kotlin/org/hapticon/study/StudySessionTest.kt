@@ -68,6 +68,7 @@ class StudySessionTest {
             now += 10
             when (step) {
                 is StudyStep.TaskIntro -> log.append(StudyEvent.TaskStarted(step.task.id), now)
+                is StudyStep.Explore -> log.append(StudyEvent.ExplorationEnded(step.task.id), now)
                 is StudyStep.Trial -> {
                     log.append(StudyEvent.StimulusShown(step.task.id, step.stimulus.id), now)
                     log.append(StudyEvent.IconPressed(step.task.id, step.stimulus.id), now + 1)

@@ -1,7 +1,12 @@
 package org.hapticon.app.gesture
 
 /** One channel a [GestureSource] delivers: [name] as written in recordings and model files, [unit] as in the gesture module ("" when none). */
-data class GestureChannel(val name: String, val unit: String = "")
+/**
+ * One channel a [GestureSource] delivers: its [name], [unit] ("" for a normalised value) and [fullScale], the
+ * largest value the source can deliver (1.0 for a normalised value; null when the source cannot say, such as raw
+ * sensor-board values or a velocity): a fitted icon's level is measured against it when known.
+ */
+data class GestureChannel(val name: String, val unit: String = "", val fullScale: Double? = if (unit.isEmpty()) 1.0 else null)
 
 /** Receives frames from a [GestureSource] on the source's background thread. */
 fun interface GestureSink {

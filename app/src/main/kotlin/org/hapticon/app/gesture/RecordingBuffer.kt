@@ -57,7 +57,7 @@ class RecordingBuffer(
     /** The frames so far as a recording, or null before the second frame (a recording needs a length). */
     fun toRecording(): Recording? = synchronized(lock) {
         if (frames < 2) return null
-        Recording(sampleRate, channels.mapIndexed { c, channel -> Channel(channel.name, channel.unit, data[c].copyOf(frames)) })
+        Recording(sampleRate, channels.mapIndexed { c, channel -> Channel(channel.name, channel.unit, data[c].copyOf(frames), channel.fullScale) })
     }
 
     private companion object {

@@ -31,7 +31,8 @@ class SensorHubGestureSource(private val hub: SensorHub) : GestureSource {
         val info = snapshot.info ?: return null
         if (info.channelCount == 0) return null
         val rate = info.sampleRateHz?.toDouble() ?: snapshot.measuredRateHz ?: return null
-        return safeNames(info.channelNames).map { GestureChannel(it) } to rate
+        // The board's values are raw (ADC counts, newtons): their full scale is not known here.
+        return safeNames(info.channelNames).map { GestureChannel(it, fullScale = null) } to rate
     }
 
     override fun start(sink: GestureSink) {

@@ -127,7 +127,8 @@ class TouchGestureSource(
 
         /** The channels delivered, in order. */
         val CHANNELS: List<GestureChannel> = listOf(
-            GestureChannel("pressure"), GestureChannel("size"), GestureChannel("velocity_x"), GestureChannel("velocity_y"),
+            // Pressure and size are normalised by Android (nominally 0..1); a velocity has no full scale.
+            GestureChannel("pressure"), GestureChannel("size"), GestureChannel("velocity_x", fullScale = null), GestureChannel("velocity_y", fullScale = null),
         )
     }
 }

@@ -17,6 +17,7 @@ import java.security.MessageDigest
 import org.hapticon.core.HapticIcon
 import org.hapticon.core.io.IconJson
 import org.hapticon.core.io.WavWriter
+import org.hapticon.core.render.EnvelopeModel
 import org.hapticon.core.render.Fidelity
 import org.hapticon.core.render.PcmRenderer
 
@@ -37,14 +38,16 @@ interface AudioCoupledOutput {
 }
 
 /**
- * Renders icons into PCM16 WAV files in [directory], once per distinct icon and rate: the name is a hash
- * of the icon's JSON, so a repeat plays from disk at once. At most [maxFiles] are kept (oldest first out),
+ * Renders icons into PCM16 WAV files in [directory], once per distinct icon, rate and [model] (the study's
+ * `processing` envelope by default): the name is a hash of those and the icon's JSON, so a repeat plays from
+ * disk at once and a file rendered with another model is never reused. At most [maxFiles] are kept (oldest first out),
  * because an icon is at most 30 s × 48 kHz × 2 bytes ≈ 2.9 MB.
  */
 class IconAudioCache(
     private val directory: File,
     val sampleRate: Int = SAMPLE_RATE,
     private val maxFiles: Int = 32,
+    val model: EnvelopeModel = EnvelopeModel.DEFAULT,
 ) {
     /** The WAV file of [icon], rendered now if it is not cached. */
     @Throws(IOException::class)
@@ -54,7 +57,7 @@ class IconAudioCache(
             file.setLastModified(System.currentTimeMillis())
             return file
         }
-        writeWholeFile(file) { WavWriter.write(PcmRenderer(icon, sampleRate).stream(), it) }
+        writeWholeFile(file) { WavWriter.write(PcmRenderer(icon, sampleRate, model).stream(), it) }
         evict()
         return file
     }
@@ -66,10 +69,10 @@ class IconAudioCache(
 
     /** How faithfully the PCM16 file of [icon] carries it; measured on first use and remembered. */
     @Synchronized
-    fun fidelityOf(icon: HapticIcon): Fidelity = fidelities.getOrPut(keyOf(icon)) { PcmRenderer(icon, sampleRate).fidelity() }
+    fun fidelityOf(icon: HapticIcon): Fidelity = fidelities.getOrPut(keyOf(icon)) { PcmRenderer(icon, sampleRate, model).fidelity() }
 
     private fun keyOf(icon: HapticIcon): String {
-        val digest = MessageDigest.getInstance("SHA-256").digest("$sampleRate:${IconJson.encode(icon)}".toByteArray())
+        val digest = MessageDigest.getInstance("SHA-256").digest("$sampleRate:${model.name}:${IconJson.encode(icon)}".toByteArray())
         return digest.take(12).joinToString("") { "%02x".format(it) }
     }
 

@@ -38,6 +38,15 @@ data class StoredProtocol(
     companion object {
         /** The originating study, always present and read-only. */
         val DEFAULT: StoredProtocol = StoredProtocol(OriginatingStudy.PROTOCOL, readOnly = true)
+
+        /**
+         * The originating study's own procedure ([OriginatingStudy.PAPER_PROTOCOL]), always present and read-only,
+         * with the paper's white-noise masking on.
+         */
+        val PAPER: StoredProtocol = StoredProtocol(OriginatingStudy.PAPER_PROTOCOL, masking = MaskingSetting(NoiseColor.WHITE), readOnly = true)
+
+        /** The built-in protocols, the default first. */
+        val BUILT_IN: List<StoredProtocol> = listOf(DEFAULT, PAPER)
     }
 }
 
@@ -65,7 +74,7 @@ data class SessionSummary(
 
 /** Protocols, sessions and their append-only event logs. */
 interface StudyRepository {
-    /** The default protocol first, then the stored ones by id; emits again on every change. */
+    /** The built-in protocols first (the default, then the paper's procedure), then the stored ones by id; emits again on every change. */
     fun protocols(): Flow<List<StoredProtocol>>
 
     /** The protocol [id]: the default or a stored one; null when there is none. */
@@ -107,16 +116,16 @@ class RoomStudyRepository(private val db: HapticonDatabase) : StudyRepository {
 
     override fun protocols(): Flow<List<StoredProtocol>> = protocols.protocols().map { rows ->
         // A row that no longer parses (a stricter future rule) is left out rather than crashing the list.
-        listOf(StoredProtocol.DEFAULT) + rows.mapNotNull { runCatching { it.asStoredProtocol() }.getOrNull() }
+        StoredProtocol.BUILT_IN + rows.mapNotNull { runCatching { it.asStoredProtocol() }.getOrNull() }
     }
 
     override suspend fun protocol(id: String): StoredProtocol? =
-        if (id == StoredProtocol.DEFAULT.protocol.id) StoredProtocol.DEFAULT else protocols.protocol(id)?.asStoredProtocol()
+        StoredProtocol.BUILT_IN.firstOrNull { it.protocol.id == id } ?: protocols.protocol(id)?.asStoredProtocol()
 
     override suspend fun saveProtocol(protocol: StoredProtocol) {
         require(!protocol.readOnly) { "protocol ${protocol.protocol.id} is read-only; duplicate it to edit" }
-        require(protocol.protocol.id != StoredProtocol.DEFAULT.protocol.id) {
-            "the id ${protocol.protocol.id} belongs to the default protocol; choose another id"
+        require(StoredProtocol.BUILT_IN.none { it.protocol.id == protocol.protocol.id }) {
+            "the id ${protocol.protocol.id} belongs to a built-in protocol; choose another id"
         }
         protocols.upsert(
             StudyProtocolEntity(

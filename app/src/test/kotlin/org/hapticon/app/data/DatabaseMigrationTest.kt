@@ -106,7 +106,7 @@ class DatabaseMigrationTest {
             val study = RoomStudyRepository(db)
             val own = StoredProtocol(OriginatingStudy.PROTOCOL.copy(id = "mine"), seed = 7, masking = MaskingSetting(NoiseColor.WHITE, -40.0))
             study.saveProtocol(own)
-            assertEquals(listOf(StoredProtocol.DEFAULT, own), study.protocols().first())
+            assertEquals(StoredProtocol.BUILT_IN + own, study.protocols().first())
             val session = study.startSession(own, 1_700_000_000_000L)
             assertEquals("P000-A", session.participant)
             assertEquals(listOf("session_started"), study.entries(session.id).map { it.type })

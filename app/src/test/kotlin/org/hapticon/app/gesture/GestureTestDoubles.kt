@@ -48,7 +48,7 @@ class TestGestureSource(override val channels: List<GestureChannel>, override va
     }
 
     companion object {
-        fun of(recording: Recording) = TestGestureSource(recording.channels.map { GestureChannel(it.name, it.unit) }, recording.sampleRate)
+        fun of(recording: Recording) = TestGestureSource(recording.channels.map { GestureChannel(it.name, it.unit, it.fullScale) }, recording.sampleRate)
     }
 }
 

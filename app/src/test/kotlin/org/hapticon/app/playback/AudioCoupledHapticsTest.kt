@@ -109,7 +109,7 @@ class AudioCoupledHapticsTest {
         val playback = player(RecordingAudioOutput(isAvailable = false)).play(HapticIcon.KNOCK) as Playback.Playing
 
         assertEquals(RendererKind.AMPLITUDE_WAVEFORM, playback.renderer)
-        assertEquals(RecordedVibration(listOf(20L, 250L, 20L, 250L, 20L), listOf(96, 0, 96, 0, 96)), lastVibration(vibrator))
+        assertEquals(RecordedVibration(listOf(10L, 10L, 250L, 10L, 10L, 250L, 10L, 10L), listOf(175, 111, 0, 175, 111, 0, 175, 111)), lastVibration(vibrator))
     }
 
     @Test
@@ -119,7 +119,7 @@ class AudioCoupledHapticsTest {
 
         assertTrue(audio.played.isEmpty())
         assertEquals(RendererKind.AMPLITUDE_WAVEFORM, playback.renderer)
-        assertEquals(listOf(96, 0, 96, 0, 96), lastVibration(vibrator)!!.amplitudes)
+        assertEquals(listOf(175, 111, 0, 175, 111, 0, 175, 111), lastVibration(vibrator)!!.amplitudes)
     }
 
     @Test

@@ -29,32 +29,74 @@ import java.util.Locale
 /** `--envelope` values. */
 val ENVELOPE_CHOICES: Map<String, EnvelopeMethod> = linkedMapOf("lowpass" to EnvelopeMethod.LOWPASS, "rms" to EnvelopeMethod.RMS)
 
-/** `--level` values. */
-val LEVEL_CHOICES: Map<String, LevelReference> = linkedMapOf("peak" to LevelReference.GESTURE_PEAK, "full-scale" to LevelReference.FULL_SCALE)
+/** What `--reference` asked for: one fixed [LevelReference], or the strongest gesture of the batch. */
+private sealed class ReferenceChoice {
+    class Fixed(val reference: LevelReference) : ReferenceChoice()
+    object Strongest : ReferenceChoice()
+}
+
+/** `--reference full-scale|peak|strongest|VALUE`; full-scale (the input's full scale) by default. */
+private fun referenceOf(text: String?): ReferenceChoice = when (text) {
+    null, "full-scale" -> ReferenceChoice.Fixed(LevelReference.FullScale)
+    "peak" -> ReferenceChoice.Fixed(LevelReference.GesturePeak)
+    "strongest" -> ReferenceChoice.Strongest
+    else -> {
+        val value = text.toDoubleOrNull()?.takeIf { it.isFinite() && it > 0.0 }
+            ?: throw UsageException("--reference must be full-scale, peak, strongest or a number > 0, got '${text.take(40)}'")
+        ReferenceChoice.Fixed(LevelReference.Value(value))
+    }
+}
 
 /**
- * `hapticon fit --in REC.wav|REC.csv [--channel NAME] [--envelope lowpass|rms] [--level peak|full-scale]
- * [--name NAME] --out ICON.json [--json]`: fits an icon to the recording, writes it as icon JSON, and prints
- * the icon and its fit report (text, or one JSON object with `--json`).
+ * `hapticon fit --in REC.wav|REC.csv|DIR [--channel NAME] [--envelope lowpass|rms]
+ * [--reference full-scale|peak|strongest|VALUE] [--name NAME] --out ICON.json|DIR [--json]`: fits an icon to the
+ * recording, writes it as icon JSON, and prints the icon and its fit report (text, or one JSON object with
+ * `--json`). The level is measured against the input's full scale unless `--reference` names another: a value in
+ * the channel's units (e.g. a sensor's calibrated maximum), `peak` (the gesture's own peak: full strength), or
+ * `strongest` (a batch: every `.wav`/`.csv` in the directory `--in`, written to the directory `--out`, the strongest
+ * gesture being level 1).
  */
 fun runFit(args: List<String>, console: Console) {
-    val arguments = Arguments.parse("fit", args, valueOptions = setOf("in", "channel", "envelope", "level", "name", "out"), flagOptions = setOf("json"))
+    val arguments = Arguments.parse("fit", args, valueOptions = setOf("in", "channel", "envelope", "reference", "name", "out"), flagOptions = setOf("json"))
     arguments.requireNoPositionals()
     val path = arguments.required("in")
     val out = File(arguments.required("out"))
     val input = File(path)
-    val options = try {
-        FitOptions(
-            envelope = arguments.choice("envelope", ENVELOPE_CHOICES, EnvelopeMethod.LOWPASS),
-            levelReference = arguments.choice("level", LEVEL_CHOICES, LevelReference.GESTURE_PEAK),
-            name = arguments.value("name") ?: input.nameWithoutExtension.take(64).ifBlank { "gesture" },
-        )
+    val reference = referenceOf(arguments.value("reference"))
+    val envelope = arguments.choice("envelope", ENVELOPE_CHOICES, EnvelopeMethod.LOWPASS)
+    fun options(name: String, levelReference: LevelReference = LevelReference.FullScale) = try {
+        FitOptions(envelope = envelope, levelReference = levelReference, name = name)
     } catch (e: IllegalArgumentException) {
         throw UsageException("--name: ${e.message}")
     }
+    val defaultName = input.nameWithoutExtension.take(64).ifBlank { "gesture" }
+    if (input.isDirectory) {
+        if (reference !is ReferenceChoice.Strongest) throw UsageException("--in: $input is a directory; a batch needs --reference strongest")
+        val files = input.listFiles { f -> f.isFile && f.extension.lowercase() in setOf("wav", "csv") }?.sortedBy { it.name }.orEmpty()
+        if (files.isEmpty()) throw UsageException("--in: $input holds no .wav or .csv recording")
+        val recordings = files.map(::readRecording)
+        val fits = try {
+            // One set of options for the batch; each icon is then named after its file.
+            IconFitter.fitBatch(recordings, arguments.value("channel"), options("gesture")).mapIndexed { i, fit ->
+                IconFit(fit.icon.copy(name = files[i].nameWithoutExtension.take(64).ifBlank { "gesture" }), fit.report)
+            }
+        } catch (e: IllegalArgumentException) {
+            throw UsageException("$path: ${e.message}")
+        }
+        OutputFiles.ensureDirectory(out)
+        for ((i, fit) in fits.withIndex()) {
+            OutputFiles.write(File(out, files[i].nameWithoutExtension + ".json")) { it.write((IconJson.encode(fit.icon, "  ") + "\n").toByteArray(Charsets.UTF_8)) }
+            if (arguments.flag("json")) console.out.println(Json.encode(fitJson(fit), "  ")) else console.out.print("${files[i].name}: " + describeFit(fit))
+        }
+        return
+    }
     val recording = readRecording(input)
     val fit = try {
-        IconFitter.fit(recording, arguments.value("channel"), options)
+        when (reference) {
+            is ReferenceChoice.Fixed -> IconFitter.fit(recording, arguments.value("channel"), options(arguments.value("name") ?: defaultName, reference.reference))
+            // A single recording is a batch of one: its own gesture is the strongest.
+            is ReferenceChoice.Strongest -> IconFitter.fitBatch(listOf(recording), arguments.value("channel"), options(arguments.value("name") ?: defaultName)).single()
+        }
     } catch (e: IllegalArgumentException) {
         throw UsageException("$path: ${e.message}")
     }
@@ -100,6 +142,7 @@ internal fun describeFit(fit: IconFit): String {
         icon.name, icon.attack, icon.sustain, icon.level, icon.release, icon.note, icon.period, icon.count))
     out.append(String.format(Locale.ROOT, "channel %s at %.1f Hz: %s, dominant %.2f Hz%n", r.channel, r.sampleRate, r.kind.name.lowercase(), r.dominantFrequencyHz))
     out.append("envelope: ${r.envelopeMethod.name.lowercase()}, ${r.envelopeSetting}\n")
+    out.append("level reference: ${r.levelReference}\n")
     for (p in r.parameters) {
         out.append(String.format(Locale.ROOT, "  %-8s %10.4f%s  %s%n", p.name, p.value, if (p.clamped) String.format(Locale.ROOT, " (measured %.4f)", p.measured) else "", p.how))
     }
@@ -121,6 +164,8 @@ internal fun fitJson(fit: IconFit): JsonObject {
         "envelope" to JsonString(r.envelopeMethod.name.lowercase()),
         "envelope_setting" to JsonString(r.envelopeSetting),
         "envelope_peak" to JsonNumber(r.envelopePeak),
+        "level_reference" to JsonString(r.levelReference),
+        "level_reference_value" to JsonNumber(r.levelReferenceValue),
         "parameters" to JsonArray(r.parameters.map {
             JsonObject(linkedMapOf("name" to JsonString(it.name), "value" to JsonNumber(it.value), "measured" to JsonNumber(it.measured), "how" to JsonString(it.how)))
         }),

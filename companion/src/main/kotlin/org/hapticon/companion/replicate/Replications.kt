@@ -4,6 +4,7 @@ import org.hapticon.testing.gestures.NaoSyntheticPeople
 
 /** Every replication `hapticon replicate` knows, in id order. */
 val allReplications: List<Replication> = listOf(
+    HapticIconsReplication,
     ComplianceGrainsReplication,
     NaoGesturesReplication { NaoSyntheticPeople.sessions(count = 8, takesPerClass = 3) },
     HandshakeCalibrationReplication,

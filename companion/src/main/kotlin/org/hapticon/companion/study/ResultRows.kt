@@ -33,7 +33,7 @@ class ParsedUpload(val rows: List<ResultRow>, val lines: List<Int>)
 object ResultRows {
     /** The header, exactly; the app writes these columns in this order. */
     val HEADER: List<String> = listOf(
-        "study_id", "protocol_version", "participant", "participant_index", "task", "task_position", "trial",
+        "study_id", "protocol_version", "envelope_model", "participant", "participant_index", "task", "task_position", "trial",
         "stimulus", "icon", "text", "sticker", "question", "response", "response_time_ms", "icon_presses", "answered_at",
     )
 
@@ -41,7 +41,7 @@ object ResultRows {
     val INTEGER_COLUMNS: Set<String> = setOf("participant_index", "task_position", "trial")
 
     private val COUNT_COLUMNS = setOf("participant_index", "task_position", "trial", "response_time_ms", "icon_presses")
-    private val NON_EMPTY_COLUMNS = setOf("study_id", "protocol_version", "participant", "task", "question")
+    private val NON_EMPTY_COLUMNS = setOf("study_id", "protocol_version", "envelope_model", "participant", "task", "question")
 
     /** Index of column [name] in [HEADER]. */
     fun column(name: String): Int = HEADER.indexOf(name).also { require(it >= 0) { "no column $name" } }

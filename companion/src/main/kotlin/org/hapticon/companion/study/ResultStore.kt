@@ -16,6 +16,20 @@ class ResultStore(private val jdbcUrl: String) {
     init {
         connect().use { c ->
             c.createStatement().use { it.executeUpdate(CREATE_TABLE) }
+            addEnvelopeModelColumn(c)
+        }
+    }
+
+    /**
+     * A table made before results carried `envelope_model` gets the column, its old rows reading `unknown`: nothing
+     * stored is lost, and nobody is told which model those participants felt when it was never recorded.
+     */
+    private fun addEnvelopeModelColumn(c: Connection) {
+        val columns = c.metaData.getColumns(null, null, "study_results", null).use { r ->
+            buildSet { while (r.next()) add(r.getString("COLUMN_NAME").lowercase()) }
+        }
+        if (columns.isNotEmpty() && "envelope_model" !in columns) {
+            c.createStatement().use { it.executeUpdate("ALTER TABLE study_results ADD COLUMN envelope_model TEXT NOT NULL DEFAULT 'unknown'") }
         }
     }
 

@@ -53,6 +53,11 @@ object StudyDemo {
                 now += 1_000L + random.nextInt(2_000)
                 when (step) {
                     is StudyStep.TaskIntro -> log.append(StudyEvent.TaskStarted(step.task.id), now)
+                    // The simulated participant presses each icon once on the shared screen, then goes on.
+                    is StudyStep.Explore -> {
+                        for (stimulus in step.stimuli) log.append(StudyEvent.IconPressed(step.task.id, stimulus.id), now + 500)
+                        log.append(StudyEvent.ExplorationEnded(step.task.id), now + 1_000)
+                    }
                     is StudyStep.Trial -> {
                         val task = step.task.id
                         val stimulus = step.stimulus.id

@@ -40,7 +40,7 @@ class ChatCommandTest {
         runBlocking { phone.send(alice, hello) }
         chat.out.awaitLine("$bob: hello alice [icon knock: attack 0.005 s, sustain 0.01 s, release 0.005 s, level 0.5, note 57 (220.0 Hz), 3× every 0.27 s, 0.560 s]")
         val wav = File(wavDir, "$bob-${hello.id.take(8)}-knock.wav")
-        chat.out.awaitLine("  wrote $wav: knock, 24696 samples, 0.560 s at 44100 Hz, f32, paper model, exact mode")
+        chat.out.awaitLine("  wrote $wav: knock, 24696 samples, 0.560 s at 44100 Hz, f32, processing model, exact mode")
         assertEquals(24_696L, wav.inputStream().use { WavReader.read(it) }.frames.toLong())
         val delivered = bobEvents.nextNonCapabilities() as InboxEvent.ReceiptReceived
         assertEquals(hello.id to ReceiptState.DELIVERED, delivered.receipt.messageId to delivered.receipt.state)

@@ -38,7 +38,7 @@ class IconPlotTest {
 
     @Test
     fun plot_knock_drawsTheEnvelopeAndItsMirrorAtTheSustainLevel() {
-        val image = plot("knock")
+        val image = plot("knock", "--model", "paper")
         val area = IconPlot.area(HapticIcon.KNOCK.duration)
         val x = area.x(0.010) // inside the first pulse's 5..15 ms sustain at 0.5
         assertTrue(Pixels.anyNear(image, x, area.y(0.5), PlotStyle.ENVELOPE))
@@ -57,7 +57,7 @@ class IconPlotTest {
 
     @Test
     fun plot_stroke_showsTheCarrierAsABandWithinTheEnvelope() {
-        val image = plot("stroke")
+        val image = plot("stroke", "--model", "paper")
         val area = IconPlot.area(HapticIcon.STROKE.duration)
         val x = area.x(1.5) // sustain at 0.3; one column spans 10 ms, 3.5 carrier cycles
         val bandRows = Pixels.countInColumn(image, x, area.y(0.25), area.y(-0.25), PlotStyle.WAVEFORM)
@@ -68,8 +68,8 @@ class IconPlotTest {
 
     @Test
     fun plot_processingModel_peaksAtOneWherePaperHoldsTheLevel() {
-        val processing = plot("hug", "--model", "processing")
-        val paper = plot("hug")
+        val processing = plot("hug") // processing is the default
+        val paper = plot("hug", "--model", "paper")
         val area = IconPlot.area(HapticIcon.HUG.duration)
         val x = area.x(1.5) // end of hug's attack: processing 1.0, paper 0.5
         assertTrue(Pixels.anyNear(processing, x, area.y(1.0), PlotStyle.ENVELOPE))
@@ -111,7 +111,7 @@ class IconPlotTest {
     @Test
     fun renderColumns_everyColumnOfALongIconHasSamples() {
         val area = IconPlot.area(TestIcons.LONGEST.duration)
-        val columns = RenderColumns.scan(IconRenderer(TestIcons.LONGEST, 8_000), area)
+        val columns = RenderColumns.scan(IconRenderer(TestIcons.LONGEST, 8_000, EnvelopeModel.PAPER), area)
         for (c in 0 until area.width) assertTrue("column $c", columns.waveform.hasValues(c))
         // 64 overlapping repetitions of level 0.7: the envelope never exceeds it.
         assertEquals(0.7, columns.peak, 1e-12)

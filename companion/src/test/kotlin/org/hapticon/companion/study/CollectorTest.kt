@@ -93,7 +93,7 @@ class CollectorTest {
             assertEquals("{\"error\":\"line 1: no rows after the header\",\"line\":1}\n", h.upload(upload.lines().first() + "\n").body())
             val time = h.upload(editLine(2) { it.replace("2026-11-20T10:00:00Z", "yesterday") })
             assertEquals("{\"error\":\"line 2: answered_at 'yesterday' is not an ISO-8601 time such as 2026-11-22T02:00:00Z\",\"line\":2}\n", time.body())
-            val count = h.upload(editLine(2) { it.replace("demo-study,1,P01,0,", "demo-study,1,P01,-1,") })
+            val count = h.upload(editLine(2) { it.replace("demo-study,1,processing,P01,0,", "demo-study,1,processing,P01,-1,") })
             assertEquals("{\"error\":\"line 2: participant_index '-1' is not a whole number ≥ 0\",\"line\":2}\n", count.body())
             assertEquals(404, h.get("/v1/studies/../results.csv").statusCode())
             assertEquals(405, h.get("/v1/results").statusCode())

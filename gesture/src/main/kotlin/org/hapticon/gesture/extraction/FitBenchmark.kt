@@ -58,7 +58,7 @@ public object FitBenchmark {
                 // The same icons and noise for every method, so the methods are compared on equal inputs.
                 val icons = Random(seed)
                 val noise = Random(seed * 31 + s)
-                val options = FitOptions(envelope = method, levelReference = LevelReference.FULL_SCALE)
+                val options = FitOptions(envelope = method, levelReference = LevelReference.FullScale)
                 val acc = Accumulator()
                 repeat(trials) {
                     val icon = SyntheticGestures.randomIcon(icons)

@@ -64,6 +64,10 @@ public class FitReport(
      * sustain amplitude — robust to single noise excursions.
      */
     public val envelopePeak: Double,
+    /** What the level is relative to, in words with its value, e.g. "the input's full scale 1". */
+    public val levelReference: String,
+    /** The reference amplitude in the channel's units: the fitted level is the sustain amplitude divided by it. */
+    public val levelReferenceValue: Double,
     /** The seven icon parameters in icon order: attack, sustain, level, release, note, period, count. */
     public val parameters: List<ParameterFit>,
     /** Onset of each repetition in seconds (the fitted attack start, aligned by threshold crossing). */

@@ -10,13 +10,37 @@ import kotlin.math.log10
 import kotlin.math.roundToInt
 import kotlin.math.sqrt
 
-/** What the [level][HapticIcon.level] of a fitted icon is relative to. */
-public enum class LevelReference {
-    /** The gesture's own envelope peak: level says how the sustain compares with the strongest moment. */
-    GESTURE_PEAK,
+/**
+ * What the [level][HapticIcon.level] of a fitted icon is relative to. The originating study's levels (stroke
+ * 0.3, hit 1.0) say how strong each gesture was, so a fitted level must be measured against a stated
+ * reference, not against the gesture's own peak (which makes every icon full strength).
+ */
+public sealed class LevelReference {
+    /**
+     * The input's full scale ([Channel.fullScale]): 1.0 for a float WAV, 32767 for PCM16 (both read as 1.0),
+     * the sensor's calibrated maximum when the source knows it. The default. Fitting a channel with no known
+     * full scale throws, asking for a [Value] or [Strongest].
+     */
+    public object FullScale : LevelReference() {
+        override fun toString(): String = "full scale"
+    }
 
-    /** Full scale 1.0 of a normalised channel (a WAV): level is the sustain amplitude itself. */
-    FULL_SCALE,
+    /** A given amplitude [value] in the channel's units counts as level 1; [label] names it in the fit report. */
+    public data class Value(val value: Double, val label: String = "the given reference") : LevelReference() {
+        init {
+            require(value.isFinite() && value > 0.0) { "reference must be finite and > 0, was $value" }
+        }
+
+        override fun toString(): String = "value $value"
+    }
+
+    /**
+     * The gesture's own envelope peak: level says how the sustain compares with the strongest moment of this
+     * recording. A batch uses it through [IconFitter.fitBatch], scaled so the strongest gesture of the batch is 1.
+     */
+    public object GesturePeak : LevelReference() {
+        override fun toString(): String = "gesture peak"
+    }
 }
 
 /**
@@ -36,7 +60,7 @@ public class FitOptions(
     /** Onsets closer than this to the previous one are the same repetition. */
     public val minGapSeconds: Double = 0.05,
     /** What the fitted level is relative to. */
-    public val levelReference: LevelReference = LevelReference.GESTURE_PEAK,
+    public val levelReference: LevelReference = LevelReference.FullScale,
     /** Name of the fitted icon (1..64 characters). */
     public val name: String = "gesture",
 ) {
@@ -51,6 +75,10 @@ public class FitOptions(
         require(minGapSeconds.isFinite() && minGapSeconds >= 0.0) { "minimum gap must be finite and >= 0 s, was $minGapSeconds" }
         require(name.isNotBlank() && name.length <= HapticIcon.MAX_NAME_LENGTH) { "icon name must be 1..${HapticIcon.MAX_NAME_LENGTH} characters, was '$name'" }
     }
+
+    /** These options with [reference] as the level reference. */
+    public fun withReference(reference: LevelReference): FitOptions =
+        FitOptions(envelope, cutoffHz, rmsWindowSeconds, onThreshold, offThreshold, minGapSeconds, reference, name)
 
     public companion object {
         /** Default low-pass cutoff for a force signal: keeps a 20 ms tap's ramps, drops tremor and mains hum. */
@@ -85,6 +113,20 @@ public object IconFitter {
      */
     public fun fit(recording: Recording, channelName: String? = null, options: FitOptions = FitOptions()): IconFit {
         return fit(recording.requireChannel(channelName), recording.sampleRate, options)
+    }
+
+    /**
+     * Fits a batch of [recordings] of one sensor so that their levels compare: each gesture's envelope peak
+     * ([FitReport.envelopePeak], in the channel's units) is measured first, and the largest — the strongest
+     * gesture of the batch — is the reference every level is relative to (its icon's peak is level 1, a gesture
+     * half as strong fits about half its level). [FitOptions.levelReference] is ignored. Throws as [fit] does,
+     * and [IllegalArgumentException] for an empty batch.
+     */
+    public fun fitBatch(recordings: List<Recording>, channelName: String? = null, options: FitOptions = FitOptions()): List<IconFit> {
+        require(recordings.isNotEmpty()) { "a batch needs at least one recording" }
+        val peaks = recordings.map { fit(it, channelName, options.withReference(LevelReference.GesturePeak)).report.envelopePeak }
+        val strongest = LevelReference.Value(peaks.max(), "the strongest gesture of the batch of ${recordings.size}")
+        return recordings.map { fit(it, channelName, options.withReference(strongest)) }
     }
 
     /**
@@ -139,9 +181,16 @@ public object IconFitter {
         val release = (trapezoid.releaseEnd - trapezoid.sustainEnd) / rate
         val period = if (anchors.size > 1) median(anchors.zipWithNext { a, b -> (b - a).toDouble() }) / rate else 0.0
         val gesturePeak = robustPeak(average, trapezoid)
-        val reference = when (options.levelReference) {
-            LevelReference.GESTURE_PEAK -> gesturePeak
-            LevelReference.FULL_SCALE -> 1.0
+        val (reference, referenceHow) = when (val chosen = options.levelReference) {
+            is LevelReference.GesturePeak -> gesturePeak to "the gesture's envelope peak ${format(gesturePeak)}"
+            is LevelReference.Value -> chosen.value to "${chosen.label} ${format(chosen.value)}${unitSuffix(channel.unit)}"
+            is LevelReference.FullScale -> {
+                val fullScale = channel.fullScale ?: throw IllegalArgumentException(
+                    "channel ${channel.name} is in ${channel.unit.ifEmpty { "unknown units" }} with no known full scale: " +
+                        "give a reference (--reference VALUE, e.g. the sensor's calibrated maximum, or --reference strongest)",
+                )
+                fullScale to "the input's full scale ${format(fullScale)}${unitSuffix(channel.unit)}"
+            }
         }
         val level = trapezoid.level / reference
         val note: Int
@@ -159,7 +208,7 @@ public object IconFitter {
         clipping(x, channel.unit, warnings)
 
         val measured = Measured(attack, sustain, level, release, note, period, anchors.size)
-        val (icon, parameters) = SafeIcon.build(measured, options.name, warnings, how(setting, options, anchors.size, noteHow))
+        val (icon, parameters) = SafeIcon.build(measured, options.name, warnings, how(setting, options, anchors.size, noteHow, referenceHow))
         val report = FitReport(
             channel = channel.name,
             sampleRate = rate,
@@ -168,6 +217,8 @@ public object IconFitter {
             envelopeMethod = options.envelope,
             envelopeSetting = setting,
             envelopePeak = gesturePeak,
+            levelReference = referenceHow,
+            levelReferenceValue = reference,
             parameters = parameters,
             onsets = onsets,
             fitRmsError = trapezoid.rmsError / gesturePeak,
@@ -178,10 +229,12 @@ public object IconFitter {
         return IconFit(icon, report)
     }
 
-    private fun how(setting: String, options: FitOptions, count: Int, noteHow: String): Map<String, String> = mapOf(
+    private fun unitSuffix(unit: String) = if (unit.isEmpty()) "" else " $unit"
+
+    private fun how(setting: String, options: FitOptions, count: Int, noteHow: String, referenceHow: String): Map<String, String> = mapOf(
         "attack" to "trapezoid fit (segmented least squares) of the ${if (count > 1) "average of $count aligned repetitions" else "one repetition"}; $setting",
         "sustain" to "trapezoid fit: attack end to sustain end",
-        "level" to "trapezoid sustain amplitude relative to ${if (options.levelReference == LevelReference.GESTURE_PEAK) "the envelope peak" else "full scale 1.0"}",
+        "level" to "trapezoid sustain amplitude relative to $referenceHow",
         "release" to "trapezoid fit: sustain end to release end",
         "note" to noteHow,
         "period" to if (count > 1) "median onset-to-onset time" else "one repetition: 0",

@@ -2,6 +2,7 @@ package org.hapticon.gesture.extraction
 
 import org.hapticon.core.HapticIcon
 import org.hapticon.core.render.IconRenderer
+import org.hapticon.core.render.EnvelopeModel
 import org.hapticon.gesture.Channel
 import org.hapticon.gesture.Recording
 import java.util.Random
@@ -64,7 +65,8 @@ public object SyntheticGestures {
      */
     public fun render(icon: HapticIcon, snrDb: Double, random: Random, sampleRate: Int = 44_100): SyntheticGesture {
         require(!snrDb.isNaN()) { "SNR must be a number of dB, was NaN" }
-        val renderer = IconRenderer(icon, sampleRate)
+        // The fitter recovers the paper trapezoid (a held level), so the synthetic gestures are rendered with it.
+        val renderer = IconRenderer(icon, sampleRate, EnvelopeModel.PAPER)
         val pad = (PAD_SECONDS * sampleRate).roundToInt()
         val length = renderer.sampleCount.toInt()
         val samples = DoubleArray(length + 2 * pad)

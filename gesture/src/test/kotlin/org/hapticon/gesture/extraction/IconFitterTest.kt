@@ -13,7 +13,8 @@ import kotlin.math.PI
 import kotlin.math.sin
 
 class IconFitterTest {
-    private val fullScale = FitOptions(levelReference = LevelReference.FULL_SCALE)
+    private val fullScale = FitOptions(levelReference = LevelReference.FullScale)
+    private val peak = FitOptions(levelReference = LevelReference.GesturePeak)
 
     @Test fun recoversThePresetsFromCleanRenders() {
         for (preset in listOf(HapticIcon.HIT, HapticIcon.KNOCK, HapticIcon.STROKE, HapticIcon.HUG)) {
@@ -54,14 +55,53 @@ class IconFitterTest {
         assertEquals(30.0, row.estimatedSnrDb!!, 1.0)
     }
 
-    @Test fun levelIsRelativeToTheGesturePeakByDefault() {
+    @Test fun fit_defaultReference_isTheInputsFullScaleSoLevelsKeepTheGesturesStrength() {
+        // Stroke (level 0.3) and knock (0.5) recorded as normalised WAV-like signals at 40 dB SNR.
+        for (preset in listOf(HapticIcon.STROKE, HapticIcon.KNOCK)) {
+            val fit = IconFitter.fit(SyntheticGestures.render(preset, 40.0, Random(3)).toRecording())
+            assertEquals(preset.name, preset.level, fit.icon.level, 0.02)
+            assertEquals(preset.name, "the input's full scale 1.000", fit.report.levelReference)
+            assertEquals(preset.name, 1.0, fit.report.levelReferenceValue, 0.0)
+            assertTrue(preset.name, fit.report.parameter("level").how.endsWith("relative to the input's full scale 1.000"))
+        }
+    }
+
+    @Test fun fit_gesturePeakReference_makesEveryIconFullStrength() {
         val gesture = SyntheticGestures.render(HapticIcon.STROKE, 40.0, Random(3))
-        val fit = IconFitter.fit(gesture.toRecording())
+        val fit = IconFitter.fit(gesture.toRecording(), options = peak)
         // A flat sustain with noise reads about 2 envelope-noise σ below its own 99th percentile.
         assertEquals(0.98, fit.icon.level, 0.02)
         assertEquals(HapticIcon.STROKE.level, fit.report.envelopePeak, 0.01)
         assertEquals("level", fit.report.parameters[2].name)
         assertEquals(listOf("attack", "sustain", "level", "release", "note", "period", "count"), fit.report.parameters.map { it.name })
+    }
+
+    @Test fun fit_valueReference_dividesTheLevelByIt() {
+        val recording = SyntheticGestures.render(HapticIcon.KNOCK, 40.0, Random(5)).toRecording()
+        val fit = IconFitter.fit(recording, options = FitOptions(levelReference = LevelReference.Value(0.625)))
+        assertEquals(0.8, fit.icon.level, 0.02)
+        assertEquals("the given reference 0.6250", fit.report.levelReference)
+    }
+
+    @Test fun fit_channelInPhysicalUnitsWithoutFullScale_asksForAReference() {
+        val x = DoubleArray(2000) { i -> if (i in 500 until 700) 2.0 else 0.1 }
+        val error = assertThrows(IllegalArgumentException::class.java) { IconFitter.fit(Recording(500.0, listOf(Channel("force", "N", x)))) }
+        assertEquals(
+            "channel force is in N with no known full scale: give a reference (--reference VALUE, e.g. the sensor's calibrated maximum, or --reference strongest)",
+            error.message,
+        )
+    }
+
+    @Test fun fitBatch_strongestGestureIsLevelOneAndTheOthersKeepTheirRatio() {
+        val strong = SyntheticGestures.render(HapticIcon.KNOCK, 40.0, Random(1)).toRecording()
+        val weak = SyntheticGestures.render(HapticIcon.KNOCK.copy(level = 0.25), 40.0, Random(2)).toRecording()
+        val (strongFit, weakFit) = IconFitter.fitBatch(listOf(strong, weak))
+        assertEquals(1.0, strongFit.icon.level, 0.03)
+        assertEquals(0.5, weakFit.icon.level, 0.03)
+        assertEquals(strongFit.report.levelReferenceValue, weakFit.report.levelReferenceValue, 0.0)
+        assertEquals(0.5, weakFit.report.levelReferenceValue, 0.02)
+        assertTrue(weakFit.report.levelReference, weakFit.report.levelReference.startsWith("the strongest gesture of the batch of 2 "))
+        assertThrows(IllegalArgumentException::class.java) { IconFitter.fitBatch(emptyList()) }
     }
 
     @Test fun allZerosConstantAndTooShortAreNoGesture() {
@@ -112,7 +152,10 @@ class IconFitterTest {
             val start = 1_800_000 + 2000 * k
             for (j in 0 until 500) x[start + j] += 4.0 * trapezoid(j / rate, press)
         }
-        val fit = IconFitter.fit(Recording(rate, listOf(Channel("force", "N", x))))
+        // A 20 N load cell: its calibrated maximum is the full scale, so the 4 N press fits level 0.2.
+        val fit = IconFitter.fit(Recording(rate, listOf(Channel("force", "N", x, fullScale = 20.0))))
+        assertEquals(0.2, fit.icon.level, 0.005)
+        assertEquals("the input's full scale 20.00 N", fit.report.levelReference)
         assertEquals(SignalKind.FORCE, fit.report.kind)
         assertEquals(3, fit.icon.count)
         assertEquals(2.0, fit.icon.period, 0.002)
@@ -129,13 +172,13 @@ class IconFitterTest {
     @Test fun moreThan64TapsAndOverlongHoldsAreClampedWithWarnings() {
         val rate = 1000.0
         val taps = DoubleArray(10_000) { i -> if (i % 100 in 10 until 40) 3.0 else 0.0 }
-        val many = IconFitter.fit(Recording(rate, listOf(Channel("force", "N", taps))))
+        val many = IconFitter.fit(Recording(rate, listOf(Channel("force", "N", taps))), options = peak)
         assertEquals(HapticIcon.MAX_COUNT, many.icon.count)
         assertEquals(100.0, many.report.parameter("count").measured, 0.0)
         assertTrue(many.report.warnings.toString(), many.report.warnings.contains("count 100 clamped to 64"))
 
         val hold = DoubleArray(50_000) { i -> if (i in 1000 until 46_000) 5.0 else 0.0 }
-        val held = IconFitter.fit(Recording(rate, listOf(Channel("force", "N", hold))))
+        val held = IconFitter.fit(Recording(rate, listOf(Channel("force", "N", hold))), options = peak)
         assertEquals(HapticIcon.MAX_DURATION_SECONDS, held.icon.duration, 1e-9)
         assertEquals(45.0, held.report.parameter("sustain").measured, 0.05)
         assertTrue(held.report.warnings.toString(), held.report.warnings.any { it.contains("clamped to the 30.0 s duration cap") })
@@ -144,7 +187,7 @@ class IconFitterTest {
     @Test fun aForceChannelWithAnUnknownUnitGetsAMidFirmnessNote() {
         val rate = 500.0
         val x = DoubleArray(2000) { i -> if (i in 500 until 700) 2.0 else 0.1 }
-        val fit = IconFitter.fit(Recording(rate, listOf(Channel("bend", "deg", x))))
+        val fit = IconFitter.fit(Recording(rate, listOf(Channel("bend", "deg", x))), options = FitOptions(levelReference = LevelReference.Value(90.0)))
         assertEquals(SignalKind.FORCE, fit.report.kind)
         val contact = fit.icon.attack + fit.icon.sustain + fit.icon.release
         assertEquals(ForceNote.note(0.5, contact).toDouble(), fit.icon.note, 0.0)

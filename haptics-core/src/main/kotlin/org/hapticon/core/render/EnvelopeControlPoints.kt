@@ -70,7 +70,7 @@ public class EnvelopeControlPoints private constructor(
          */
         public fun render(
             icon: HapticIcon,
-            model: EnvelopeModel = EnvelopeModel.PAPER,
+            model: EnvelopeModel = EnvelopeModel.DEFAULT,
             maxPoints: Int = DEFAULT_MAX_POINTS,
             minSegmentMillis: Int = MIN_SEGMENT_MILLIS,
         ): EnvelopeControlPoints {

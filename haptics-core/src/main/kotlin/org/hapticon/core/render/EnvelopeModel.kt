@@ -1,15 +1,32 @@
 package org.hapticon.core.render
 
-/** How an icon's attack/sustain/level/release become an amplitude envelope. */
+/**
+ * How an icon's attack/sustain/level/release become an amplitude envelope. Both models are defined
+ * once, as the per-repetition pieces of [envelopeSegments] combined by [EnvelopeTimeline]; every
+ * output (PCM, the vibrator's amplitude steps and control points, plots) samples that definition.
+ */
 public enum class EnvelopeModel {
-    /** 0→level over attack, hold level for sustain, level→0 over release (the study's description). */
+    /**
+     * 0→level over attack, hold level for sustain, level→0 over release: the trapezoid the study's text
+     * describes. Overlapping repetitions combine by maximum.
+     */
     PAPER,
 
     /**
-     * Processing Sound 2.3's `Env.play(SinOsc, A, S, L, R)`, which rendered the study's stimuli:
-     * 0→1 over attack, 1→level over sustain, level→0 over release, evaluated per sample.
+     * What the study's participants felt: Processing Sound 2.0.1–2.3.1's `Env.play(SinOsc, A, S, L, R)`
+     * through JSyn, sample for sample — 0→1 over attack, 1→level over sustain, level→0 over release,
+     * each segment's phase advancing by 1/(duration · fs) per sample with the overshoot carried into the
+     * next segment, durations under one sample lasting one sample, and overlapping repetitions **added**
+     * (JSyn's `InputMixingBlockPart` sums every reader connected to the amplitude port). See
+     * [ProcessingEnvelope] and docs/envelope-models.md. The default.
      */
     PROCESSING,
+    ;
+
+    public companion object {
+        /** The model presets are played and rendered with unless the user picks another: [PROCESSING]. */
+        public val DEFAULT: EnvelopeModel = PROCESSING
+    }
 }
 
 /** How the carrier sine is computed. */

@@ -3,32 +3,51 @@ package org.hapticon.core.render
 import org.hapticon.core.HapticIcon
 
 /**
- * The whole-icon envelope at sample resolution, as consecutive runs covering [0, sampleCount).
+ * The whole-icon envelope at sample resolution, as consecutive runs covering [0, sampleCount): the
+ * one definition of an icon's envelope that every renderer samples ([IconRenderer] and [PcmRenderer]
+ * sample by sample, [HapticIcon.envelope] — and through it [VibrationWaveform], [EnvelopeControlPoints]
+ * and the plots — in continuous time via [valueAtTime]).
  *
- * A run is a stretch [start, end) over which the envelope is the larger of two lines in
- * m = index − start (see [runValue]): a rising line (the oldest repetition still in its attack) and
- * a falling line (the youngest repetition past its attack). An absent line is the zero line, which
- * is harmless under max because envelopes are never negative. The run boundaries are 0,
+ * Repetition k starts at sample onset(k) = round(k · period · fs), which never decreases with k, and
+ * follows the pieces of [envelopeSegments] from there. Overlapping repetitions combine per the model:
+ * PAPER by maximum, PROCESSING by sum (JSyn's `InputMixingBlockPart.getValues` adds every output
+ * connected to an input port, and Processing Sound 2.0.1–2.3.1's `Env.play` never disconnects the
+ * previous repetition's reader; see [ProcessingEnvelope]).
+ *
+ * A run is a stretch [start, end) over which the envelope is max(rising line, falling line) in
+ * m = index − start ([runValue]), which is what the sample loop consumes. The run boundaries are 0,
  * sampleCount and every onset + segment boundary between them, so within a run no repetition
- * crosses a segment boundary and both candidates are fixed lines.
+ * crosses a segment boundary and every repetition's value is a fixed line.
  *
- * Repetition k starts at sample onset(k) = round(k · period · fs), which never decreases with k.
- * Every repetition rises during its attack and never rises afterwards, so the maximum over all
- * repetitions is the maximum of two candidates: among repetitions in their attack the one
- * furthest in (smallest k), and among repetitions past it the one least far in (largest k).
+ * SUM: the rising line is the sum of the lines of every repetition playing in the run and the falling
+ * line is the zero line (harmless: the sum is never negative).
+ *
+ * MAX: every repetition rises during its attack and never rises afterwards, so the maximum over all
+ * repetitions is the maximum of two candidates: among repetitions in their attack the one furthest
+ * in (smallest k), and among repetitions past it the one least far in (largest k). An absent line is
+ * the zero line.
  *
  * Nothing is built up front. For each boundary d of one repetition (0, the attack's end, …, the
  * envelope's end; [offsets]) let count_d(t) = #{k : onset(k) + d ≤ t}, a pointer into the sorted
  * onsets. At a run start t the repetitions in their attack are k in [count_attack(t), count_0(t))
  * and those past it are k in [count_end(t), count_attack(t)): contiguous ranges, so the rising
- * candidate is k = count_attack(t) and the falling one k = count_attack(t) − 1. The next run
- * starts at the smallest onset(count_d(t)) + d over all d. An [EnvelopeSweep] moves the pointers
- * forward as a stream advances (amortised O(1) per run, no allocation); [valueAt] finds them by
- * binary search for random access. Both evaluate a run with the same code from the same start,
- * so they agree bit for bit.
+ * candidate is k = count_attack(t), the falling one k = count_attack(t) − 1, and the playing ones
+ * k in [count_end(t), count_0(t)). The next run starts at the smallest onset(count_d(t)) + d over all
+ * d. An [EnvelopeSweep] moves the pointers forward as a stream advances (amortised O(1) per run, no
+ * allocation); [valueAt] finds them by binary search for random access. Both evaluate a run with the
+ * same code from the same start, so they agree bit for bit.
  */
-internal class EnvelopeTimeline(icon: HapticIcon, model: EnvelopeModel, sampleRate: Int, val sampleCount: Long) {
-    private val segments: Array<EnvelopeSegment> = envelopeSegments(icon, model, sampleRate).toTypedArray()
+internal class EnvelopeTimeline(icon: HapticIcon, model: EnvelopeModel, private val sampleRate: Int, val sampleCount: Long) {
+    private val pieces: List<EnvelopeSegment> = envelopeSegments(icon, model, sampleRate)
+
+    // An empty piece may carry a division by zero; it is never evaluated, so drop it here.
+    private val segments: Array<EnvelopeSegment> = pieces.filter { it.endSample > it.firstSample }.toTypedArray()
+
+    /** The pieces with a positive span in continuous time, for [valueAtTime]. */
+    private val spans: Array<EnvelopeSegment> = pieces.filter { it.to > it.from }.toTypedArray()
+
+    /** True when overlapping repetitions add (PROCESSING), false when the larger wins (PAPER). */
+    val sums: Boolean = model == EnvelopeModel.PROCESSING
 
     /** onset(k), non-decreasing in k. */
     private val onsets = LongArray(icon.count) { k -> Math.round(k * icon.period * sampleRate) }
@@ -72,6 +91,7 @@ internal class EnvelopeTimeline(icon: HapticIcon, model: EnvelopeModel, sampleRa
             if (j == attackOffset) attacking = count
             if (j == endOffset) ended = count
         }
+        if (sums) return runValue(sumOfValues(ended, started, start), sumOfSlopes(ended, started, start), 0.0, 0.0, (index - start).toDouble())
         val rising = risingRepetition(started, attacking)
         val falling = fallingRepetition(attacking, ended)
         return runValue(
@@ -100,6 +120,49 @@ internal class EnvelopeTimeline(icon: HapticIcon, model: EnvelopeModel, sampleRa
 
     /** Repetition [k]'s slope per sample at [start], where it lies inside one of its segments. */
     fun lineSlope(k: Int, start: Long): Double = segmentAt(start - onsets[k]).slope
+
+    /** Σ lineValue(k, start) over the repetitions k in [from, until), in increasing k. */
+    fun sumOfValues(from: Int, until: Int, start: Long): Double {
+        var sum = 0.0
+        for (k in from until until) sum += lineValue(k, start)
+        return sum
+    }
+
+    /** Σ lineSlope(k, start) over the repetitions k in [from, until), in increasing k. */
+    fun sumOfSlopes(from: Int, until: Int, start: Long): Double {
+        var sum = 0.0
+        for (k in from until until) sum += lineSlope(k, start)
+        return sum
+    }
+
+    /**
+     * The envelope at [seconds] in continuous time: each playing repetition's piece evaluated at the
+     * fractional position seconds · fs after its onset (PAPER's exact trapezoid; PROCESSING's reader
+     * lines, exact at every sample and straight between), combined as the samples are. 0 outside
+     * [0, sampleCount / fs) and for a non-finite time.
+     */
+    fun valueAtTime(seconds: Double): Double {
+        if (spans.isEmpty() || !seconds.isFinite()) return 0.0
+        val x = seconds * sampleRate
+        if (x < 0.0 || x >= sampleCount) return 0.0
+        val spanEnd = spans.last().to
+        var result = 0.0
+        // Onsets are whole samples, so onset ≤ x exactly when onset ≤ floor(x); older repetitions end first.
+        var k = countAtOrBefore(Math.floor(x).toLong()) - 1
+        while (k >= 0) {
+            val local = x - onsets[k]
+            if (local >= spanEnd) break
+            val value = spanAt(local).valueAt(local)
+            result = if (sums) result + value else maxOf(result, value)
+            k--
+        }
+        return result
+    }
+
+    private fun spanAt(local: Double): EnvelopeSegment {
+        for (span in spans) if (local < span.to) return span
+        return spans.last()
+    }
 
     /** How many onsets are ≤ [t]. */
     private fun countAtOrBefore(t: Long): Int {
@@ -171,6 +234,12 @@ internal class EnvelopeSweep(private val timeline: EnvelopeTimeline) {
             return
         }
         val attacking = counts[t.attackOffset]
+        if (t.sums) {
+            risingValue = t.sumOfValues(counts[t.endOffset], counts[0], runStart)
+            risingSlope = t.sumOfSlopes(counts[t.endOffset], counts[0], runStart)
+            fallingValue = 0.0; fallingSlope = 0.0
+            return
+        }
         val rising = t.risingRepetition(counts[0], attacking)
         val falling = t.fallingRepetition(attacking, counts[t.endOffset])
         risingValue = if (rising < 0) 0.0 else t.lineValue(rising, runStart)

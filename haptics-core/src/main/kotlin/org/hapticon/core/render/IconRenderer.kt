@@ -9,14 +9,14 @@ import org.hapticon.core.signal.sineOfCycles
  * and there are [sampleCount] = round(duration · sampleRate) samples (half up; 0 for a
  * zero-duration icon).
  *
- * Envelope ([model]): repetition k starts at sample round(k · period · sampleRate) — exactly
- * k · period whenever that is a whole number of samples (every preset at 8, 44.1, 48, 96 and
- * 192 kHz), otherwise on the nearest sample, so every repetition has the same samples and a step
- * onset (attack 0) can never be lost to rounding. Overlapping repetitions combine by maximum.
- * PAPER samples each repetition's continuous shape (as in [envelope]) at n / fs after its onset; PROCESSING
- * puts its segment boundaries at round(A·fs), round((A+S)·fs), round((A+S+R)·fs) samples after
- * each onset (cumulative times rounded half up) and ramps start + (target − start) · n /
- * (duration · fs) within a segment; a segment rounded to 0 samples is skipped.
+ * Envelope ([model], one definition for every output: [EnvelopeTimeline]): repetition k starts at
+ * sample round(k · period · sampleRate) — exactly k · period whenever that is a whole number of
+ * samples (every preset at 8, 44.1, 48, 96 and 192 kHz), otherwise on the nearest sample, so every
+ * repetition has the same samples and a step onset (attack 0) can never be lost to rounding.
+ * PAPER samples each repetition's continuous trapezoid at n / fs after its onset, overlapping
+ * repetitions taking the maximum. PROCESSING is Processing Sound 2.0.1–2.3.1 + JSyn sample for
+ * sample ([ProcessingEnvelope]: per-sample phase increments with the overshoot carried into the next
+ * segment, durations under one sample lasting one sample), overlapping repetitions added.
  *
  * Carrier: PAPER is one continuous sine with phase 0 at sample 0 (sample 0 is 0). PROCESSING
  * reproduces Processing's SinOsc, which advances its phase by f/fs cycles before each sample, so
@@ -43,7 +43,7 @@ import org.hapticon.core.signal.sineOfCycles
 public class IconRenderer(
     public val icon: HapticIcon,
     public val sampleRate: Int,
-    public val model: EnvelopeModel = EnvelopeModel.PAPER,
+    public val model: EnvelopeModel = EnvelopeModel.DEFAULT,
     public val mode: RenderMode = RenderMode.EXACT,
 ) {
     init {

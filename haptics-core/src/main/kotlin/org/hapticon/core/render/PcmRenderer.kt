@@ -18,7 +18,7 @@ import kotlin.math.sqrt
 public class PcmRenderer(
     public val icon: HapticIcon,
     public val sampleRate: Int,
-    public val model: EnvelopeModel = EnvelopeModel.PAPER,
+    public val model: EnvelopeModel = EnvelopeModel.DEFAULT,
     public val mode: RenderMode = RenderMode.EXACT,
 ) {
     private val renderer = IconRenderer(icon, sampleRate, model, mode)

@@ -77,7 +77,7 @@ public class VibrationWaveform private constructor(
          */
         public fun render(
             icon: HapticIcon,
-            model: EnvelopeModel = EnvelopeModel.PAPER,
+            model: EnvelopeModel = EnvelopeModel.DEFAULT,
             stepMillis: Int = DEFAULT_STEP_MILLIS,
             maxEntries: Int = DEFAULT_MAX_ENTRIES,
         ): VibrationWaveform {
@@ -93,7 +93,7 @@ public class VibrationWaveform private constructor(
          */
         public fun onOff(
             icon: HapticIcon,
-            model: EnvelopeModel = EnvelopeModel.PAPER,
+            model: EnvelopeModel = EnvelopeModel.DEFAULT,
             threshold: Double = 0.5,
             stepMillis: Int = DEFAULT_STEP_MILLIS,
             maxEntries: Int = DEFAULT_MAX_ENTRIES,

@@ -38,7 +38,7 @@ class EnvelopeControlPointsTest {
 
     @Test
     fun render_hug_isItsThreeCornersExactly() {
-        val result = EnvelopeControlPoints.render(HapticIcon.HUG)
+        val result = EnvelopeControlPoints.render(HapticIcon.HUG, EnvelopeModel.PAPER)
         assertPoints(listOf(0.5 to 1500L, 0.5 to 1000L, 0.0 to 500L), result, midiNoteToHz(50.0))
         assertEquals(0.0, result.fidelity.rmsError, 1e-12)
         assertEquals(0.0, result.fidelity.maxError, 1e-12)
@@ -47,7 +47,7 @@ class EnvelopeControlPointsTest {
 
     @Test
     fun render_stroke_followsOverlappingRepetitionsExactly() {
-        val result = EnvelopeControlPoints.render(HapticIcon.STROKE)
+        val result = EnvelopeControlPoints.render(HapticIcon.STROKE, EnvelopeModel.PAPER)
         // Repetitions every 2.6 s overlap: the release of one and the attack of the next cross at 0.06.
         val expected = listOf(0.3 to 1000L, 0.3 to 1000L) +
             (1..3).flatMap { listOf(0.06 to 800L, 0.3 to 800L, 0.3 to 1000L) } +
@@ -60,7 +60,7 @@ class EnvelopeControlPointsTest {
 
     @Test
     fun render_knock_cannotFollowTwentyMillisecondPulses() {
-        val result = EnvelopeControlPoints.render(HapticIcon.KNOCK)
+        val result = EnvelopeControlPoints.render(HapticIcon.KNOCK, EnvelopeModel.PAPER)
         // Ends of segments must lie on the envelope 20 ms apart: only the middle pulse is caught, as a
         // 40 ms triangle; the first and last pulses are lost.
         assertPoints(listOf(0.0 to 260L, 0.5 to 20L, 0.0 to 20L, 0.0 to 260L), result, midiNoteToHz(57.0))
@@ -74,7 +74,7 @@ class EnvelopeControlPointsTest {
 
     @Test
     fun render_hit_usesTheWholeBudgetAndIsNotRepresentable() {
-        val result = EnvelopeControlPoints.render(HapticIcon.HIT)
+        val result = EnvelopeControlPoints.render(HapticIcon.HIT, EnvelopeModel.PAPER)
         assertValid(result, 16, 1540)
         assertEquals(16, result.points.size)
         assertTrue(result.relativeRmsError > EnvelopeControlPoints.REPRESENTABLE_RELATIVE_ERROR)
@@ -96,7 +96,7 @@ class EnvelopeControlPointsTest {
 
     @Test
     fun render_shorterMinimumSegment_followsKnockExactly() {
-        val result = EnvelopeControlPoints.render(HapticIcon.KNOCK, minSegmentMillis = 5)
+        val result = EnvelopeControlPoints.render(HapticIcon.KNOCK, EnvelopeModel.PAPER, minSegmentMillis = 5)
         // Three trapezoids: 4 corners each, the first starting at the implicit 0 → 11 points.
         assertEquals(11, result.points.size)
         assertEquals(0.0, result.fidelity.rmsError, 1e-12)
@@ -107,7 +107,7 @@ class EnvelopeControlPointsTest {
     fun render_morePointsNeverFitWorse() {
         var previous = Double.POSITIVE_INFINITY
         for (maxPoints in 1..16) {
-            val error = EnvelopeControlPoints.render(HapticIcon.HIT, maxPoints = maxPoints).fidelity.rmsError
+            val error = EnvelopeControlPoints.render(HapticIcon.HIT, EnvelopeModel.PAPER, maxPoints = maxPoints).fidelity.rmsError
             assertTrue(error <= previous + 1e-12)
             previous = error
         }
@@ -115,7 +115,7 @@ class EnvelopeControlPointsTest {
 
     @Test
     fun render_singlePoint_isSilenceOverTheDuration() {
-        val result = EnvelopeControlPoints.render(HapticIcon.HUG, maxPoints = 1)
+        val result = EnvelopeControlPoints.render(HapticIcon.HUG, EnvelopeModel.PAPER, maxPoints = 1)
         assertPoints(listOf(0.0 to 3000L), result, midiNoteToHz(50.0))
         assertEquals(1.0, result.relativeRmsError, 1e-9)
         assertFalse(result.isRepresentable)
@@ -141,9 +141,9 @@ class EnvelopeControlPointsTest {
 
     @Test
     fun render_invalidParameters_areRejected() {
-        assertRejected("maxPoints must be in 1..256, was 0") { EnvelopeControlPoints.render(HapticIcon.HUG, maxPoints = 0) }
-        assertRejected("maxPoints must be in 1..256, was 257") { EnvelopeControlPoints.render(HapticIcon.HUG, maxPoints = 257) }
-        assertRejected("minSegmentMillis must be >= 1, was 0") { EnvelopeControlPoints.render(HapticIcon.HUG, minSegmentMillis = 0) }
+        assertRejected("maxPoints must be in 1..256, was 0") { EnvelopeControlPoints.render(HapticIcon.HUG, EnvelopeModel.PAPER, maxPoints = 0) }
+        assertRejected("maxPoints must be in 1..256, was 257") { EnvelopeControlPoints.render(HapticIcon.HUG, EnvelopeModel.PAPER, maxPoints = 257) }
+        assertRejected("minSegmentMillis must be >= 1, was 0") { EnvelopeControlPoints.render(HapticIcon.HUG, EnvelopeModel.PAPER, minSegmentMillis = 0) }
         assertRejected("frequencyHz must be finite and > 0, was NaN") { EnvelopeControlPoints.render({ 0.5 }, 1.0, Double.NaN) }
         assertRejected("duration 31.0 s exceeds the 30.0 s safety cap") { EnvelopeControlPoints.render({ 0.5 }, 31.0, 100.0) }
     }

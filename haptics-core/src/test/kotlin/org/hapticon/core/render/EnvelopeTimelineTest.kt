@@ -22,7 +22,7 @@ class EnvelopeTimelineTest {
         val starts = sortedSetOf(0L)
         for (k in 0 until icon.count) {
             val onset = Math.round(k * icon.period * fs)
-            for (segment in envelopeSegments(icon, model, fs)) {
+            for (segment in envelopeSegments(icon, model, fs).filter { it.endSample > it.firstSample }) {
                 starts += onset + segment.firstSample
                 starts += onset + segment.endSample
             }

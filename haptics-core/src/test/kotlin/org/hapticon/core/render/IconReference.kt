@@ -40,38 +40,76 @@ internal object IconReference {
         }
     }
 
-    /** PROCESSING: one envelope at local sample n, boundaries at rounded cumulative times. */
+    /**
+     * PROCESSING: one repetition at local sample n, transliterated line by line from JSyn's
+     * `VariableRateMonoReader.generate` (starved start, running double phase sum, `while (phase >= 1.0)`
+     * carry) and `SegmentedEnvelope.getRateScaler` (1 / max(duration, framePeriod)), playing Processing
+     * Sound's `Env.play` frames built from float parameters, and cut at ceil((A+S+R as floats) · fs).
+     */
     fun processingSingle(icon: HapticIcon, n: Long, sampleRate: Int): Double {
-        val fs = sampleRate.toDouble()
-        val a = icon.attack
-        val s = icon.sustain
-        val r = icon.release
-        val l = icon.level
-        val b1 = Math.round(a * fs)
-        val b2 = Math.round((a + s) * fs)
-        val b3 = Math.round((a + s + r) * fs)
-        return when {
-            n < 0 -> 0.0
-            n < b1 -> 0.0 + (1.0 - 0.0) * n / (a * fs)
-            n < b2 -> 1.0 + (l - 1.0) * (n - b1) / (s * fs)
-            n < b3 -> l + (0.0 - l) * (n - b2) / (r * fs)
-            else -> 0.0
+        val values = processingCache.getOrPut(icon to sampleRate) { processingRepetition(icon, sampleRate) }
+        return if (n < 0 || n >= values.size) 0.0 else values[n.toInt()]
+    }
+
+    private val processingCache = HashMap<Pair<HapticIcon, Int>, DoubleArray>()
+
+    private fun processingRepetition(icon: HapticIcon, sampleRate: Int): DoubleArray {
+        val framePeriod = 1.0 / sampleRate
+        val frames = ArrayDeque(
+            listOf(
+                icon.attack.toFloat().toDouble() to 1.0,
+                icon.sustain.toFloat().toDouble() to (icon.level.toFloat() * 1.0f).toDouble(),
+                icon.release.toFloat().toDouble() to 0.0,
+            ),
+        )
+        val disconnect = Math.ceil((icon.attack.toFloat() + icon.sustain.toFloat() + icon.release.toFloat()).toDouble() * sampleRate).toLong()
+        val out = DoubleArray(disconnect.toInt())
+        var phase = 0.0
+        var source = 0.0
+        var target = 0.0
+        var current = 0.0
+        var baseIncrement: Double
+        fun advanceToNextFrame(): Double {
+            val frame = frames.removeFirstOrNull() ?: run { phase = 0.0; return 0.0 }
+            target = frame.second
+            var duration = frame.first
+            if (duration < framePeriod) duration = framePeriod
+            return framePeriod * (1.0 / duration)
         }
+        // i == 0 of the reader's first block, starved: source = target = current, phase 0.
+        source = current
+        target = current
+        baseIncrement = advanceToNextFrame()
+        var i = 0
+        while (i < out.size) {
+            if (i > 0 && phase >= 1.0) {
+                while (phase >= 1.0) {
+                    source = target
+                    phase -= 1.0
+                    baseIncrement = advanceToNextFrame()
+                }
+            }
+            current = ((target - source) * phase) + source
+            out[i] = current
+            phase += baseIncrement * 1.0
+            i++
+        }
+        return out
     }
 
     /** Repetition k starts on the sample nearest to k · period (the documented rendering rule). */
     fun onset(icon: HapticIcon, k: Int, sampleRate: Int): Long = Math.round(k * icon.period * sampleRate)
 
     fun envelope(icon: HapticIcon, model: EnvelopeModel, index: Long, sampleRate: Int): Double {
-        var max = 0.0
+        // PAPER: the larger repetition wins; PROCESSING: JSyn's InputMixingBlockPart adds every connected reader.
+        var combined = 0.0
         for (k in 0 until icon.count) {
-            val value = when (model) {
-                EnvelopeModel.PAPER -> paperSingle(icon, (index - onset(icon, k, sampleRate)).toDouble() / sampleRate)
-                EnvelopeModel.PROCESSING -> processingSingle(icon, index - onset(icon, k, sampleRate), sampleRate)
+            combined = when (model) {
+                EnvelopeModel.PAPER -> maxOf(combined, paperSingle(icon, (index - onset(icon, k, sampleRate)).toDouble() / sampleRate))
+                EnvelopeModel.PROCESSING -> combined + processingSingle(icon, index - onset(icon, k, sampleRate), sampleRate)
             }
-            max = maxOf(max, value)
         }
-        return max
+        return combined
     }
 
     fun carrier(icon: HapticIcon, model: EnvelopeModel, index: Long, sampleRate: Int): Double {

@@ -44,19 +44,22 @@ class RendererExtremesTest {
     }
 
     @Test
-    fun envelopeAt_subSampleAttack_paperSamplesTheRampProcessingSkipsIt() {
+    fun envelopeAt_subSampleAttack_paperSamplesTheRampProcessingLastsOneSample() {
         // attack 0.3 sample at 8 kHz, then 1 ms sustain at 0.8.
         val icon = HapticIcon("tiny", 0.3 / 8_000, 0.001, 0.8, 0.0, 60.0)
         assertEquals(0.0, IconRenderer(icon, 8_000, EnvelopeModel.PAPER).envelopeAt(0), 0.0)
         assertEquals(0.8, IconRenderer(icon, 8_000, EnvelopeModel.PAPER).envelopeAt(1), 0.0)
-        // PROCESSING: round(0.3) = 0 attack samples, so sample 0 is the sustain start, 1.
-        assertEquals(1.0, IconRenderer(icon, 8_000, EnvelopeModel.PROCESSING).envelopeAt(0), 0.0)
+        // PROCESSING: JSyn clamps a duration under one frame period to one sample: sample 0 outputs the
+        // reader's start (0), sample 1 starts the sustain at the attack target 1.
+        val processing = IconRenderer(icon, 8_000, EnvelopeModel.PROCESSING)
+        assertEquals(0.0, processing.envelopeAt(0), 0.0)
+        assertEquals(1.0, processing.envelopeAt(1), 1e-12)
     }
 
     @Test
     fun constructor_note127At44100_isAcceptedAndRendersIts12543HzCarrier() {
         val icon = HapticIcon("high", 0.0, 0.01, 1.0, 0.0, 127.0)
-        val renderer = IconRenderer(icon, 44_100)
+        val renderer = IconRenderer(icon, 44_100, EnvelopeModel.PAPER)
         assertEquals(12_543.853951415975, icon.frequency, 1e-9)
         for (i in listOf(1L, 2L, 200L, 440L)) {
             assertEquals(IconReference.sample(icon, EnvelopeModel.PAPER, i, 44_100), renderer.sampleAt(i), 1e-12)
@@ -112,7 +115,7 @@ class RendererExtremesTest {
 
     @Test
     fun sampleAt_longestIconAt192000_hasThirtySecondsAndExactPhaseAtTheEnd() {
-        val renderer = IconRenderer(longest, 192_000)
+        val renderer = IconRenderer(longest, 192_000, EnvelopeModel.PAPER)
         assertEquals(5_760_000L, renderer.sampleCount)
         for (i in listOf(5_759_999L, 5_000_001L, 2_880_000L)) {
             assertEquals("sample $i", IconReference.sample(longest, EnvelopeModel.PAPER, i, 192_000), renderer.sampleAt(i), 1e-11)

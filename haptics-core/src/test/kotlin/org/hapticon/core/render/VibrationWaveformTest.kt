@@ -33,7 +33,7 @@ class VibrationWaveformTest {
 
     @Test
     fun render_knock_isThreeTwentyMillisecondPulses() {
-        val waveform = VibrationWaveform.render(HapticIcon.KNOCK)
+        val waveform = VibrationWaveform.render(HapticIcon.KNOCK, EnvelopeModel.PAPER)
         // Each pulse spans two 10 ms steps whose mean envelope is 0.375: round(0.375 · 255) = 96.
         assertArrayEquals(longArrayOf(20, 250, 20, 250, 20), waveform.timings())
         assertArrayEquals(intArrayOf(96, 0, 96, 0, 96), waveform.amplitudes())
@@ -43,7 +43,7 @@ class VibrationWaveformTest {
 
     @Test
     fun render_knock_fidelityMatchesTheAnalyticError() {
-        val fidelity = VibrationWaveform.render(HapticIcon.KNOCK).fidelity
+        val fidelity = VibrationWaveform.render(HapticIcon.KNOCK, EnvelopeModel.PAPER).fidelity
         // Per pulse ∫(c − e)² = 2·(5c² − 2.5c + 5/12) + 10·(c − 0.5)² with c = 96/255 (ms · amplitude²).
         val c = 96.0 / 255
         val perPulse = 2 * (5 * c * c - 2.5 * c + 5.0 / 12) + 10 * (c - 0.5) * (c - 0.5)
@@ -58,7 +58,7 @@ class VibrationWaveformTest {
 
     @Test
     fun render_hit_followsEachRampStepByStep() {
-        val waveform = VibrationWaveform.render(HapticIcon.HIT)
+        val waveform = VibrationWaveform.render(HapticIcon.HIT, EnvelopeModel.PAPER)
         // Attack step mean 0.5 → 128; hold → 255; release steps 5/6, 1/2, 1/6 → 213, 128, 43; 60 ms off.
         val pulseTimings = listOf(10L, 100, 10, 10, 10)
         val pulseAmplitudes = listOf(128, 255, 213, 128, 43)
@@ -72,14 +72,16 @@ class VibrationWaveformTest {
     @Test
     fun render_processingModel_changesTheShape() {
         val waveform = VibrationWaveform.render(HapticIcon.KNOCK, EnvelopeModel.PROCESSING)
-        // 0→1 over 5 ms, 1→0.5 over 10 ms, 0.5→0 over 5 ms: step means 0.6875 and 0.4375.
+        // 0→1 over 5 ms, 1→0.5 over 10 ms, 0.5→0 over 5 ms: step means 0.6875 and 0.4375 (111.6 of 255) in
+        // continuous time. Processing at 44.1 kHz carries the attack's half-sample overshoot into the sustain,
+        // which then ends one sample (22.7 µs) early, pulling the second step's mean just below 111.5.
         assertArrayEquals(longArrayOf(10, 10, 250, 10, 10, 250, 10, 10), waveform.timings())
-        assertArrayEquals(intArrayOf(175, 112, 0, 175, 112, 0, 175, 112), waveform.amplitudes())
+        assertArrayEquals(intArrayOf(175, 111, 0, 175, 111, 0, 175, 111), waveform.amplitudes())
     }
 
     @Test
     fun render_hug_holdsLevelAndKeepsErrorWithinQuantisation() {
-        val waveform = VibrationWaveform.render(HapticIcon.HUG)
+        val waveform = VibrationWaveform.render(HapticIcon.HUG, EnvelopeModel.PAPER)
         assertPlayable(waveform, 3000)
         val timings = waveform.timings()
         val amplitudes = waveform.amplitudes()
@@ -106,7 +108,7 @@ class VibrationWaveformTest {
 
     @Test
     fun render_stroke_hasPlayableRampsAtMostItsLevel() {
-        val waveform = VibrationWaveform.render(HapticIcon.STROKE)
+        val waveform = VibrationWaveform.render(HapticIcon.STROKE, EnvelopeModel.PAPER)
         assertPlayable(waveform, 10_800)
         assertEquals(77, waveform.amplitudes().max()) // round(0.3 · 255 = 76.5)
         assertTrue(waveform.fidelity.rmsError < 0.002)
@@ -114,12 +116,12 @@ class VibrationWaveformTest {
 
     @Test
     fun render_tooManyEntries_doublesTheStepUntilTheyFit() {
-        val waveform = VibrationWaveform.render(HapticIcon.HUG, maxEntries = 10)
+        val waveform = VibrationWaveform.render(HapticIcon.HUG, EnvelopeModel.PAPER, maxEntries = 10)
         assertPlayable(waveform, 3000)
         assertTrue(waveform.size <= 10)
-        assertTrue(VibrationWaveform.render(HapticIcon.HUG, stepMillis = 160).size > 10)
+        assertTrue(VibrationWaveform.render(HapticIcon.HUG, EnvelopeModel.PAPER, stepMillis = 160).size > 10)
         assertEquals(320, waveform.stepMillis) // 10 → 20 → … → 320 ms, the first to give at most 10 entries
-        val coarser = VibrationWaveform.render(HapticIcon.HUG, maxEntries = 1)
+        val coarser = VibrationWaveform.render(HapticIcon.HUG, EnvelopeModel.PAPER, maxEntries = 1)
         assertArrayEquals(longArrayOf(3000), coarser.timings())
         assertEquals(3000, coarser.stepMillis)
     }
@@ -167,15 +169,15 @@ class VibrationWaveformTest {
 
     @Test
     fun render_invalidParameters_areRejected() {
-        assertRejected("stepMillis must be >= 1, was 0") { VibrationWaveform.render(HapticIcon.KNOCK, stepMillis = 0) }
-        assertRejected("maxEntries must be >= 1, was 0") { VibrationWaveform.render(HapticIcon.KNOCK, maxEntries = 0) }
-        assertRejected("threshold must be in (0, 1], was 0.0") { VibrationWaveform.onOff(HapticIcon.KNOCK, threshold = 0.0) }
-        assertRejected("threshold must be in (0, 1], was 1.5") { VibrationWaveform.onOff(HapticIcon.KNOCK, threshold = 1.5) }
+        assertRejected("stepMillis must be >= 1, was 0") { VibrationWaveform.render(HapticIcon.KNOCK, EnvelopeModel.PAPER, stepMillis = 0) }
+        assertRejected("maxEntries must be >= 1, was 0") { VibrationWaveform.render(HapticIcon.KNOCK, EnvelopeModel.PAPER, maxEntries = 0) }
+        assertRejected("threshold must be in (0, 1], was 0.0") { VibrationWaveform.onOff(HapticIcon.KNOCK, EnvelopeModel.PAPER, threshold = 0.0) }
+        assertRejected("threshold must be in (0, 1], was 1.5") { VibrationWaveform.onOff(HapticIcon.KNOCK, EnvelopeModel.PAPER, threshold = 1.5) }
     }
 
     @Test
     fun timings_returnsACopy() {
-        val waveform = VibrationWaveform.render(HapticIcon.KNOCK)
+        val waveform = VibrationWaveform.render(HapticIcon.KNOCK, EnvelopeModel.PAPER)
         waveform.timings()[0] = 99
         waveform.amplitudes()[0] = 999
         assertEquals(20L, waveform.timings()[0])
@@ -184,14 +186,14 @@ class VibrationWaveformTest {
 
     @Test
     fun onOff_knock_isFullStrengthDuringEachPulse() {
-        val waveform = VibrationWaveform.onOff(HapticIcon.KNOCK)
+        val waveform = VibrationWaveform.onOff(HapticIcon.KNOCK, EnvelopeModel.PAPER)
         assertArrayEquals(longArrayOf(20, 250, 20, 250, 20), waveform.timings())
         assertArrayEquals(intArrayOf(255, 0, 255, 0, 255), waveform.amplitudes())
     }
 
     @Test
     fun onOff_hug_isOnWhileAboveHalfItsPeak() {
-        val waveform = VibrationWaveform.onOff(HapticIcon.HUG)
+        val waveform = VibrationWaveform.onOff(HapticIcon.HUG, EnvelopeModel.PAPER)
         // The envelope reaches 0.25 at 750 ms on the way up and at 2750 ms on the way down.
         assertArrayEquals(longArrayOf(750, 2000, 250), waveform.timings())
         assertArrayEquals(intArrayOf(0, 255, 0), waveform.amplitudes())
@@ -201,7 +203,7 @@ class VibrationWaveformTest {
 
     @Test
     fun onOff_hit_mergesAttackHoldAndUpperRelease() {
-        val waveform = VibrationWaveform.onOff(HapticIcon.HIT)
+        val waveform = VibrationWaveform.onOff(HapticIcon.HIT, EnvelopeModel.PAPER)
         // Steps with mean ≥ 0.5: attack (0.5), hold, release 5/6 and 1/2 → 130 ms on, 70 ms off.
         val timings = (1..7).flatMap { listOf(130L, 70L) } + listOf(130L, 10L)
         assertArrayEquals(timings.toLongArray(), waveform.timings())
@@ -211,7 +213,7 @@ class VibrationWaveformTest {
     @Test
     fun onOff_thresholdIsRelativeToThePeak() {
         // Stroke peaks at 0.3; an absolute threshold of 0.5 would never switch on.
-        val waveform = VibrationWaveform.onOff(HapticIcon.STROKE, threshold = 0.5)
+        val waveform = VibrationWaveform.onOff(HapticIcon.STROKE, EnvelopeModel.PAPER, threshold = 0.5)
         assertArrayEquals(longArrayOf(500, 2000, 600, 2000, 600, 2000, 600, 2000, 500), waveform.timings())
     }
 

@@ -8,7 +8,7 @@ package org.hapticon.study.export
 public object ResponseCsv {
     /** The header line, without its line end. */
     public const val HEADER: String =
-        "study_id,protocol_version,participant,participant_index,task,task_position,trial,stimulus,icon,text,sticker," +
+        "study_id,protocol_version,envelope_model,participant,participant_index,task,task_position,trial,stimulus,icon,text,sticker," +
             "question,response,response_time_ms,icon_presses,answered_at"
 
     private val COLUMNS = HEADER.split(',')
@@ -18,7 +18,7 @@ public object ResponseCsv {
         val out = StringBuilder(HEADER).append("\r\n")
         for (row in rows) {
             val fields = listOf(
-                row.studyId, row.protocolVersion.toString(), row.participant, row.participantIndex.toString(), row.task,
+                row.studyId, row.protocolVersion.toString(), row.envelopeModel, row.participant, row.participantIndex.toString(), row.task,
                 row.taskPosition.toString(), row.trial.toString(), row.stimulus, row.icon, row.text.orEmpty(), row.sticker.orEmpty(),
                 row.question, row.response.toString(), row.responseTimeMillis?.toString().orEmpty(), row.iconPresses.toString(),
                 row.answeredAtMillis.toString(),
@@ -45,20 +45,21 @@ public object ResponseCsv {
             ResponseRow(
                 studyId = record.text(0),
                 protocolVersion = record.int(1),
-                participant = record.text(2),
-                participantIndex = record.int(3),
-                task = record.text(4),
-                taskPosition = record.int(5),
-                trial = record.int(6),
-                stimulus = record.text(7),
-                icon = record.text(8),
-                text = record.optionalText(9),
-                sticker = record.optionalText(10),
-                question = record.text(11),
-                response = record.int(12),
-                responseTimeMillis = record.optionalLong(13),
-                iconPresses = record.int(14),
-                answeredAtMillis = record.long(15),
+                envelopeModel = record.text(2),
+                participant = record.text(3),
+                participantIndex = record.int(4),
+                task = record.text(5),
+                taskPosition = record.int(6),
+                trial = record.int(7),
+                stimulus = record.text(8),
+                icon = record.text(9),
+                text = record.optionalText(10),
+                sticker = record.optionalText(11),
+                question = record.text(12),
+                response = record.int(13),
+                responseTimeMillis = record.optionalLong(14),
+                iconPresses = record.int(15),
+                answeredAtMillis = record.long(16),
             )
         }
     }

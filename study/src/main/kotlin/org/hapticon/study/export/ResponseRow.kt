@@ -5,6 +5,7 @@ package org.hapticon.study.export
  *
  * @property studyId the protocol id (`study_id`).
  * @property protocolVersion the protocol's revision (`protocol_version`).
+ * @property envelopeModel the envelope model the participant felt (`envelope_model`: `processing` or `paper`).
  * @property participant the pseudonymous participant id.
  * @property participantIndex the 0-based participant index.
  * @property task the task id.
@@ -23,6 +24,7 @@ package org.hapticon.study.export
 public data class ResponseRow(
     val studyId: String,
     val protocolVersion: Int,
+    val envelopeModel: String,
     val participant: String,
     val participantIndex: Int,
     val task: String,

@@ -1,5 +1,6 @@
 package org.hapticon.study.export
 
+import org.hapticon.study.ProtocolJson
 import org.hapticon.study.StudyPlan
 import org.hapticon.study.StudyProtocol
 import org.hapticon.study.log.LogEntry
@@ -39,6 +40,7 @@ public object ResponseRows {
                     rows += ResponseRow(
                         studyId = protocol.id,
                         protocolVersion = protocol.revision,
+                        envelopeModel = ProtocolJson.modelName(protocol.envelopeModel),
                         participant = entry.participantId,
                         participantIndex = plan.schedule.participantIndex,
                         task = trial.task.id,

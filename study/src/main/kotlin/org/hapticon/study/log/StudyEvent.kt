@@ -30,6 +30,11 @@ public sealed interface StudyEvent {
         override val type: String get() = TASK_STARTED
     }
 
+    /** The participant left the screen showing every stimulus of [taskId] together, going on to its questions. */
+    public data class ExplorationEnded(val taskId: String) : StudyEvent {
+        override val type: String get() = EXPLORATION_ENDED
+    }
+
     /** The participant left the end screen of [taskId]. */
     public data class TaskEnded(val taskId: String) : StudyEvent {
         override val type: String get() = TASK_ENDED
@@ -69,6 +74,9 @@ public sealed interface StudyEvent {
         public const val TASK_STARTED: String = "task_started"
         /** `type` of [TaskEnded]. */
         public const val TASK_ENDED: String = "task_ended"
+
+        /** Type of [ExplorationEnded]. */
+        public const val EXPLORATION_ENDED: String = "exploration_ended"
         /** `type` of [StimulusShown]. */
         public const val STIMULUS_SHOWN: String = "stimulus_shown"
         /** `type` of [IconPressed]. */
@@ -92,6 +100,7 @@ public sealed interface StudyEvent {
                 SessionEnded -> linkedMapOf()
                 is TaskStarted -> linkedMapOf("task" to JsonString(event.taskId))
                 is TaskEnded -> linkedMapOf("task" to JsonString(event.taskId))
+                is ExplorationEnded -> linkedMapOf("task" to JsonString(event.taskId))
                 is StimulusShown -> trial(event.taskId, event.stimulusId)
                 is IconPressed -> trial(event.taskId, event.stimulusId)
                 is PlaybackStarted -> trial(event.taskId, event.stimulusId)
@@ -114,6 +123,7 @@ public sealed interface StudyEvent {
                 SESSION_ENDED -> SessionEnded
                 TASK_STARTED -> TaskStarted(p.string("task"))
                 TASK_ENDED -> TaskEnded(p.string("task"))
+                EXPLORATION_ENDED -> ExplorationEnded(p.string("task"))
                 STIMULUS_SHOWN -> StimulusShown(p.string("task"), p.string("stimulus"))
                 ICON_PRESSED -> IconPressed(p.string("task"), p.string("stimulus"))
                 PLAYBACK_STARTED -> PlaybackStarted(p.string("task"), p.string("stimulus"))

@@ -27,6 +27,7 @@ class ExportTest {
             now += 10_000
             when (val step = StudySession(plan).nextStep(log.events)) {
                 is StudyStep.TaskIntro -> log.append(StudyEvent.TaskStarted(step.task.id), now)
+                is StudyStep.Explore -> log.append(StudyEvent.ExplorationEnded(step.task.id), now)
                 is StudyStep.Trial -> {
                     log.append(StudyEvent.StimulusShown(step.task.id, step.stimulus.id), now)
                     repeat(presses) {
@@ -51,7 +52,7 @@ class ExportTest {
         val first = rows[0]
         assertEquals(
             ResponseRow(
-                studyId = "hapticon-icons", protocolVersion = 1, participant = "P001-D", participantIndex = 1, task = "icons", taskPosition = 1,
+                studyId = "hapticon-icons", protocolVersion = 1, envelopeModel = "processing", participant = "P001-D", participantIndex = 1, task = "icons", taskPosition = 1,
                 trial = 1, stimulus = "hit", icon = "hit", text = null, sticker = null, question = "Haptic icon 1 feels like hitting",
                 response = 2, responseTimeMillis = 1_501, iconPresses = 2, answeredAtMillis = first.answeredAtMillis,
             ),
@@ -105,7 +106,7 @@ class ExportTest {
         val tricky = rows[0].copy(text = "Say \"hi\",\nthen\r\nleave", sticker = null, question = "a,b", responseTimeMillis = null)
         val written = ResponseCsv.write(listOf(tricky))
         assertEquals(
-            ResponseCsv.HEADER + "\r\nhapticon-icons,1,P000-A,0,icons,1,1,stroke,stroke,\"Say \"\"hi\"\",\nthen\r\nleave\",,\"a,b\",2,,0," +
+            ResponseCsv.HEADER + "\r\nhapticon-icons,1,processing,P000-A,0,icons,1,1,stroke,stroke,\"Say \"\"hi\"\",\nthen\r\nleave\",,\"a,b\",2,,0," +
                 "${tricky.answeredAtMillis}\r\n",
             written,
         )
@@ -115,15 +116,25 @@ class ExportTest {
     }
 
     @Test
+    fun csv_envelopeModel_namesTheModelTheProtocolPlayed() {
+        val paper = protocol.copy(envelopeModel = org.hapticon.core.render.EnvelopeModel.PAPER)
+        val processingRows = ResponseRows.of(protocol, session(0))
+        val paperRows = ResponseRows.of(paper, session(0))
+        assertEquals(setOf("processing"), processingRows.map { it.envelopeModel }.toSet())
+        assertEquals(setOf("paper"), paperRows.map { it.envelopeModel }.toSet())
+        assertEquals("hapticon-icons,1,paper,", ResponseCsv.write(paperRows).lines()[1].substring(0, 23))
+    }
+
+    @Test
     fun csv_read_errorsNameLineAndColumn() {
         val good = ResponseCsv.write(ResponseRows.of(protocol, session(0)).take(2))
         expect("empty CSV: expected the header ${ResponseCsv.HEADER}") { ResponseCsv.read("") }
         expect("line 1: header must be exactly ${ResponseCsv.HEADER}") { ResponseCsv.read(good.replace("study_id", "study")) }
         expect("line 3, column response: expected an integer, got 'x'") { ResponseCsv.read(good.replace(Regex("(hitting,)3,"), "$1x,")) }
-        expect("line 2: expected 16 fields, got 15") { ResponseCsv.read(good.replaceFirst(",icons,", ",")) }
+        expect("line 2: expected 17 fields, got 16") { ResponseCsv.read(good.replaceFirst(",icons,", ",")) }
         expect("line 2: unterminated quoted field") { ResponseCsv.read(ResponseCsv.HEADER + "\r\n\"open") }
         expect("line 2: text after a closing quote") { ResponseCsv.read(ResponseCsv.HEADER + "\r\n\"a\"b") }
-        expect("line 2, column study_id: must not be empty") { ResponseCsv.read(good.replace("\r\nhapticon-icons,1,P000-A,0,icons,1,1,", "\r\n,1,P000-A,0,icons,1,1,")) }
+        expect("line 2, column study_id: must not be empty") { ResponseCsv.read(good.replace("\r\nhapticon-icons,1,processing,P000-A,0,icons,1,1,", "\r\n,1,processing,P000-A,0,icons,1,1,")) }
         expect("line 2, column answered_at: expected an integer, got ''") { ResponseCsv.read(good.replace(Regex(",\\d+\r\n"), ",\r\n")) }
     }
 

@@ -246,6 +246,7 @@ fun FitReportView(report: FitReport) {
     Column(verticalArrangement = Arrangement.spacedBy(2.dp)) {
         LabeledValue("RMS error", String.format(Locale.ROOT, "%.1f %% of peak", 100 * report.fitRmsError))
         LabeledValue("R²", String.format(Locale.ROOT, "%.3f", report.rSquared))
+        LabeledValue("Level relative to", report.levelReference)
         LabeledValue("Onsets", report.onsets.joinToString { String.format(Locale.ROOT, "%.3f s", it) })
         LabeledValue("Signal", "${report.kind.name.lowercase()} on ${report.channel}")
         report.snrDb?.let { LabeledValue("SNR", String.format(Locale.ROOT, "%.1f dB", it)) }

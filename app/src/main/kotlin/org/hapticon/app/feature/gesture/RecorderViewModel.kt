@@ -27,6 +27,7 @@ import org.hapticon.gesture.Recording
 import org.hapticon.gesture.extraction.FitOptions
 import org.hapticon.gesture.extraction.IconFit
 import org.hapticon.gesture.extraction.IconFitter
+import org.hapticon.gesture.extraction.LevelReference
 import org.hapticon.gesture.recognition.GestureLabel
 import java.io.InputStream
 
@@ -168,7 +169,11 @@ class RecorderViewModel(
         val name = current.iconName.trim().ifEmpty { "gesture" }
         state.update { it.copy(fitting = true, fit = null, message = null) }
         viewModelScope.launch {
-            val result = withContext(work) { runCatching { IconFitter.fit(trimmed, current.fitChannel, FitOptions(name = name)) } }
+            // Level against the channel's full scale when its source states one, so a light gesture stays light;
+            // otherwise against the gesture's own peak. The report names the reference either way.
+            val fullScale = trimmed.channel(current.fitChannel ?: trimmed.channels.first().name)?.fullScale
+            val reference = if (fullScale != null) LevelReference.FullScale else LevelReference.GesturePeak
+            val result = withContext(work) { runCatching { IconFitter.fit(trimmed, current.fitChannel, FitOptions(levelReference = reference, name = name)) } }
             state.update {
                 // IconFitter reports a bad input as IllegalArgumentException (NoGestureException included), with a message.
                 it.copy(fitting = false, fit = result.getOrNull(), message = result.exceptionOrNull()?.let { e -> e.message ?: e.javaClass.simpleName })

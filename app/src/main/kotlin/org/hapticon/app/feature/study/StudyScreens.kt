@@ -84,6 +84,8 @@ fun StudyRoute(container: AppContainer) {
                 sessionState,
                 onStartTask = { session.startTask() },
                 onPressIcon = { session.pressIcon() },
+                onPressStimulus = { session.pressIcon(it) },
+                onFinishExploring = { session.finishExploring() },
                 onSelect = { session.select(it) },
                 onNext = { session.next() },
                 onFinishTask = { session.finishTask() },
@@ -163,8 +165,9 @@ internal fun ErrorText(message: String) {
 }
 
 /**
- * The participant's screens: task intro, trials (the partner's message as a chat bubble, the icon chip, the statement
- * and the rating scale), task end, done. The only way out is the "Researcher" button, which asks for the PIN.
+ * The participant's screens: task intro, for a task that shows its icons together the chat screen of all of them
+ * (pressed freely, then on to the questions), trials (the partner's message as a chat bubble, the icon chip, the
+ * statement and the rating scale), task end, done. The only way out is the "Researcher" button, which asks for the PIN.
  */
 @Composable
 fun SessionScreen(
@@ -176,6 +179,8 @@ fun SessionScreen(
     onFinishTask: () -> Unit,
     onExit: (String) -> Unit,
     pinError: String?,
+    onPressStimulus: (String) -> Unit = {},
+    onFinishExploring: () -> Unit = {},
 ) {
     var asking by rememberSaveable { mutableStateOf(false) }
     Column(Modifier.fillMaxSize().padding(16.dp).verticalScroll(rememberScrollState()), verticalArrangement = Arrangement.spacedBy(16.dp)) {
@@ -195,6 +200,7 @@ fun SessionScreen(
                 )
                 when (val step = state.step) {
                     is StudyStep.TaskIntro -> StepText("Task ${step.taskPosition}: ${step.task.title}", step.task.instructions, "Start", onStartTask)
+                    is StudyStep.Explore -> ExploreContent(state, step, onPressStimulus, onFinishExploring)
                     is StudyStep.Trial -> TrialContent(state, step, onPressIcon, onSelect, onNext)
                     is StudyStep.TaskEnd -> StepText("Task ${step.taskPosition} done", "Thank you. Take a short break if you like.", "Continue", onFinishTask)
                     StudyStep.Done -> StepText("All done", "Thank you for taking part! Please hand the phone back to the researcher.", null) {}
@@ -230,16 +236,29 @@ private fun StepText(title: String, body: String, button: String?, onClick: () -
 @Composable
 private fun TrialContent(state: SessionUiState.Active, step: StudyStep.Trial, onPressIcon: () -> Unit, onSelect: (Int) -> Unit, onNext: () -> Unit) {
     Text("${step.task.title} · ${step.trial} of ${step.task.stimuli.size}", style = MaterialTheme.typography.titleMedium)
-    PartnerMessage(step.stimulus, step.trial, state.playing, state.iconPressed, onPressIcon)
+    PartnerMessage(step.stimulus, step.stimulus.number ?: step.trial, state.playing, state.iconPressed, onPressIcon)
     Text(step.question, style = MaterialTheme.typography.titleLarge)
     LikertScaleControl(state.scale, state.selected, onSelect)
     if (!state.iconPressed) Text("Press the haptic icon to feel it first.", style = MaterialTheme.typography.bodyMedium)
     Button(onClick = onNext, enabled = state.canContinue, modifier = Modifier.fillMaxWidth()) { Text("Next") }
 }
 
+/**
+ * The paper's chat screen: every message of the task with its numbered icon, pressed freely; then on to the questions.
+ */
+@Composable
+private fun ExploreContent(state: SessionUiState.Active, step: StudyStep.Explore, onPressStimulus: (String) -> Unit, onFinishExploring: () -> Unit) {
+    Text("Task ${step.taskPosition}: ${step.task.title}", style = MaterialTheme.typography.titleMedium, modifier = Modifier.semantics { heading() })
+    Text(step.task.instructions, style = MaterialTheme.typography.bodyLarge)
+    step.stimuli.forEachIndexed { i, stimulus ->
+        PartnerMessage(stimulus, stimulus.number ?: (i + 1), playing = false, pressed = stimulus.id in state.pressedStimuli) { onPressStimulus(stimulus.id) }
+    }
+    Button(onClick = onFinishExploring, modifier = Modifier.fillMaxWidth()) { Text("Go to the questions") }
+}
+
 /** The virtual partner's message: a received chat bubble with its text and/or sticker, and the icon chip. */
 @Composable
-private fun PartnerMessage(stimulus: Stimulus, trial: Int, playing: Boolean, pressed: Boolean, onPressIcon: () -> Unit) {
+private fun PartnerMessage(stimulus: Stimulus, number: Int, playing: Boolean, pressed: Boolean, onPressIcon: () -> Unit) {
     Card(
         shape = RoundedCornerShape(topStart = 4.dp, topEnd = 16.dp, bottomEnd = 16.dp, bottomStart = 16.dp),
         colors = CardDefaults.cardColors(containerColor = MaterialTheme.colorScheme.secondaryContainer),
@@ -258,10 +277,10 @@ private fun PartnerMessage(stimulus: Stimulus, trial: Int, playing: Boolean, pre
             }
             AssistChip(
                 onClick = onPressIcon,
-                label = { Text("Haptic icon $trial") },
+                label = { Text("Haptic icon $number") },
                 leadingIcon = { Icon(HapticonIcons.Vibration, contentDescription = null) },
                 modifier = Modifier.semantics {
-                    contentDescription = "Play haptic icon $trial"
+                    contentDescription = "Play haptic icon $number"
                     stateDescription = when {
                         playing -> "playing"
                         pressed -> "felt"

@@ -15,7 +15,9 @@ import org.hapticon.app.playback.Playback
 import org.hapticon.app.study.MaskingNoisePlayer
 import org.hapticon.app.study.SessionRecord
 import org.hapticon.app.study.StudyRepository
+import org.hapticon.core.render.EnvelopeModel
 import org.hapticon.study.LikertScale
+import org.hapticon.study.ProtocolJson
 import org.hapticon.study.StudyPlan
 import org.hapticon.study.StudySession
 import org.hapticon.study.StudyStep
@@ -26,7 +28,7 @@ import org.hapticon.study.log.StudyEvent
  * A participant's session walk. Where the participant is comes only from the event log ([StudySession.nextStep]),
  * so a new ViewModel on the same database (after a crash or kill) resumes at the exact next step. Every event is
  * appended through the study module's hash chain ([EventLog]) and stored before the screen moves on; a mutex keeps
- * appends in order. The masking noise plays while a task's trials are on screen.
+ * appends in order. The masking noise plays while a task's trials (or the screen of all its icons) are on screen.
  *
  * Actions return their [Job] so that callers (tests) can wait for the write.
  */
@@ -62,6 +64,13 @@ class StudySessionViewModel(
             } catch (e: IllegalArgumentException) {
                 return@withLock fail("this session cannot continue: ${e.message}")
             }
+            // The players render icons with the default model; a protocol asking for another must not run as if it did.
+            if (found.protocol.envelopeModel != EnvelopeModel.DEFAULT) {
+                return@withLock fail(
+                    "this protocol asks for the ${ProtocolJson.modelName(found.protocol.envelopeModel)} envelope model, but the app plays " +
+                        "${ProtocolJson.modelName(EnvelopeModel.DEFAULT)} envelopes; render paper stimuli with the hapticon CLI instead",
+                )
+            }
             record = found
             enter()
         }
@@ -75,27 +84,42 @@ class StudySessionViewModel(
      * is done (after the playback's duration). The returned job completes after PlaybackFinished; the screen stays
      * usable meanwhile.
      */
-    fun pressIcon(): Job = viewModelScope.launch {
-        var finish: Pair<StudyStep.Trial, Long>? = null
+    fun pressIcon(): Job = pressStimulus(null)
+
+    /**
+     * Plays icon [stimulusId] of the screen showing all of a task's icons together ([StudyStep.Explore]), logging as
+     * [pressIcon] does; any icon, in any order, as often as the participant likes.
+     */
+    fun pressIcon(stimulusId: String): Job = pressStimulus(stimulusId)
+
+    private fun pressStimulus(stimulusId: String?): Job = viewModelScope.launch {
+        var finish: Triple<String, String, Long>? = null
         act { step ->
-            if (step !is StudyStep.Trial) return@act
-            append(StudyEvent.IconPressed(step.task.id, step.stimulus.id))
-            val playback = player.play(step.stimulus.icon)
+            val (taskId, stimulus) = when (step) {
+                is StudyStep.Trial -> step.task.id to step.stimulus
+                is StudyStep.Explore -> step.task.id to (step.stimuli.firstOrNull { it.id == stimulusId } ?: return@act)
+                else -> return@act
+            }
+            append(StudyEvent.IconPressed(taskId, stimulus.id))
+            val playback = player.play(stimulus.icon)
             if (playback is Playback.Playing) {
-                append(StudyEvent.PlaybackStarted(step.task.id, step.stimulus.id))
+                append(StudyEvent.PlaybackStarted(taskId, stimulus.id))
                 playing = true
-                finish = step to playback.durationMillis
+                finish = Triple(taskId, stimulus.id, playback.durationMillis)
             }
             publish()
         }.join()
-        val (step, duration) = finish ?: return@launch
+        val (taskId, id, duration) = finish ?: return@launch
         delay(duration)
         mutex.withLock {
-            append(StudyEvent.PlaybackFinished(step.task.id, step.stimulus.id))
+            append(StudyEvent.PlaybackFinished(taskId, id))
             playing = false
             publish()
         }
     }
+
+    /** Leaves the screen of all the task's icons: logs ExplorationEnded and shows the task's first question. */
+    fun finishExploring(): Job = leave { step -> (step as? StudyStep.Explore)?.let { StudyEvent.ExplorationEnded(it.task.id) } }
 
     /** Selects [value] on the scale; nothing is logged until [next]. */
     fun select(value: Int): Job = act { step ->
@@ -127,7 +151,7 @@ class StudySessionViewModel(
     /** The app is back: the noise resumes if a task is under way. */
     fun resume(): Job = act { step ->
         paused = false
-        if (step is StudyStep.Trial) startNoise()
+        if (step is StudyStep.Trial || step is StudyStep.Explore) startNoise()
     }
 
     override fun onCleared() {
@@ -158,6 +182,7 @@ class StudySessionViewModel(
                 append(StudyEvent.StimulusShown(step.task.id, step.stimulus.id))
                 if (!paused) startNoise()
             }
+            is StudyStep.Explore -> if (!paused) startNoise()
             is StudyStep.TaskIntro, is StudyStep.TaskEnd -> stopNoise()
             StudyStep.Done -> {
                 stopNoise()
@@ -185,6 +210,9 @@ class StudySessionViewModel(
         repository.append(sessionId, entry)
     }
 
+    private fun pressedIn(taskId: String): Set<String> =
+        log.events.mapNotNullTo(HashSet()) { (it as? StudyEvent.IconPressed)?.takeIf { e -> e.taskId == taskId }?.stimulusId }
+
     private fun pressed(step: StudyStep.Trial): Boolean = log.events.any {
         it is StudyEvent.IconPressed && it.taskId == step.task.id && it.stimulusId == step.stimulus.id
     }
@@ -200,6 +228,7 @@ class StudySessionViewModel(
             trials = session.plan.trials.size,
             selected = selection,
             iconPressed = step is StudyStep.Trial && pressed(step),
+            pressedStimuli = if (step is StudyStep.Explore) pressedIn(step.task.id) else emptySet(),
             playing = playing,
         )
     }
@@ -230,6 +259,8 @@ sealed interface SessionUiState {
         val iconPressed: Boolean,
         /** Whether the icon is playing now. */
         val playing: Boolean,
+        /** On the screen of all a task's icons ([StudyStep.Explore]): the stimuli pressed so far. */
+        val pressedStimuli: Set<String> = emptySet(),
     ) : SessionUiState {
         /** Next is enabled once the icon was pressed and a value chosen. */
         val canContinue: Boolean get() = step is StudyStep.Trial && iconPressed && selected != null

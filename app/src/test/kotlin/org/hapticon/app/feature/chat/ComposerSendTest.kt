@@ -89,7 +89,8 @@ class ComposerSendTest {
     fun textWithIcon_longPressPreviewsTapChoosesAndSendStoresBothAndQueuesIt() {
         compose.onNodeWithContentDescription("Icon knock").performTouchInput { longClick() }
         // A long press previews: the knock went to the vibrator, and nothing was chosen.
-        assertEquals(RecordedVibration(listOf(20L, 250L, 20L, 250L, 20L), listOf(96, 0, 96, 0, 96)), lastVibration(vibrator))
+        // The processing knock (the default model): 10 ms at 175, 10 ms at 111, then 250 ms off, three times.
+        assertEquals(RecordedVibration(listOf(10L, 10L, 250L, 10L, 10L, 250L, 10L, 10L), listOf(175, 111, 0, 175, 111, 0, 175, 111)), lastVibration(vibrator))
         compose.onNodeWithContentDescription("Icon knock").assertStateDescription("not selected")
         compose.onNodeWithContentDescription("Icon knock").performClick()
         compose.onNodeWithContentDescription("Icon knock").assertStateDescription("selected")

@@ -58,7 +58,7 @@ class ConversationScreenTest {
 
         compose.onNodeWithContentDescription("Play haptic icon knock").performClick()
 
-        assertEquals(RecordedVibration(listOf(20L, 250L, 20L, 250L, 20L), listOf(96, 0, 96, 0, 96)), lastVibration(vibrator))
+        assertEquals(RecordedVibration(listOf(10L, 10L, 250L, 10L, 10L, 250L, 10L, 10L), listOf(175, 111, 0, 175, 111, 0, 175, 111)), lastVibration(vibrator))
     }
 
     @Test

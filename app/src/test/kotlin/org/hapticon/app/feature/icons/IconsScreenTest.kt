@@ -58,7 +58,7 @@ class IconsScreenTest {
         rule.waitForIdle()
 
         assertEquals(
-            RecordedVibration(timings = listOf(20L, 250L, 20L, 250L, 20L), amplitudes = listOf(96, 0, 96, 0, 96)),
+            RecordedVibration(timings = listOf(10L, 10L, 250L, 10L, 10L, 250L, 10L, 10L), amplitudes = listOf(175, 111, 0, 175, 111, 0, 175, 111)),
             lastVibration(vibrator),
         )
         rule.onNodeWithContentDescription("Play knock")

@@ -102,6 +102,7 @@ class StudySessionWalkTest {
         val seen = ArrayList<String>()
         fun note() = when (val step = vm.active().step) {
             is StudyStep.TaskIntro -> seen += "intro ${step.task.id}"
+            is StudyStep.Explore -> seen += "explore ${step.task.id}"
             is StudyStep.Trial -> seen += "trial ${step.task.id}/${step.stimulus.id}: ${step.question}"
             is StudyStep.TaskEnd -> seen += "end ${step.task.id}"
             StudyStep.Done -> seen += "done"
@@ -166,18 +167,18 @@ class StudySessionWalkTest {
         val export = StudyExporter(folder.root, clock = { 42L }).export(protocol.protocol, listOf(record to entries))
         val t = 1_700_000_000_000L
         val lines = listOf(
-            "hapticon-icons,1,P001-D,1,icons,1,1,hit,hit,,,Haptic icon 1 feels like hitting,5,4000,1,${t + 7_000}",
-            "hapticon-icons,1,P001-D,1,icons,1,2,knock,knock,,,Haptic icon 2 feels like knocking,4,4000,1,${t + 12_000}",
-            "hapticon-icons,1,P001-D,1,icons,1,3,stroke,stroke,,,Haptic icon 3 feels like stroking,3,4000,1,${t + 17_000}",
-            "hapticon-icons,1,P001-D,1,icons,1,4,hug,hug,,,Haptic icon 4 feels like hugging,2,4000,1,${t + 22_000}",
-            "hapticon-icons,1,P001-D,1,stickers,2,1,sticker_hit,hit,,sticker_hit,This haptic icon enhances the touch effect of the sticker,1,4000,1,${t + 29_000}",
-            "hapticon-icons,1,P001-D,1,stickers,2,2,sticker_knock,knock,,sticker_knock,This haptic icon enhances the touch effect of the sticker,2,4000,1,${t + 34_000}",
-            "hapticon-icons,1,P001-D,1,stickers,2,3,sticker_stroke,stroke,,sticker_stroke,This haptic icon enhances the touch effect of the sticker,3,4000,1,${t + 39_000}",
-            "hapticon-icons,1,P001-D,1,stickers,2,4,sticker_hug,hug,,sticker_hug,This haptic icon enhances the touch effect of the sticker,4,4000,1,${t + 44_000}",
-            "hapticon-icons,1,P001-D,1,text,3,1,text_hit,hit,Take that!,,This haptic icon enhances the effect of the text,5,4000,1,${t + 51_000}",
-            "hapticon-icons,1,P001-D,1,text,3,2,text_knock,knock,\"Hey, are you there?\",,This haptic icon enhances the effect of the text,5,4000,1,${t + 56_000}",
-            "hapticon-icons,1,P001-D,1,text,3,3,text_stroke,stroke,\"There, there. It'll be fine.\",,This haptic icon enhances the effect of the text,1,4000,1,${t + 61_000}",
-            "hapticon-icons,1,P001-D,1,text,3,4,text_hug,hug,I missed you so much!,,This haptic icon enhances the effect of the text,1,4000,1,${t + 66_000}",
+            "hapticon-icons,1,processing,P001-D,1,icons,1,1,hit,hit,,,Haptic icon 1 feels like hitting,5,4000,1,${t + 7_000}",
+            "hapticon-icons,1,processing,P001-D,1,icons,1,2,knock,knock,,,Haptic icon 2 feels like knocking,4,4000,1,${t + 12_000}",
+            "hapticon-icons,1,processing,P001-D,1,icons,1,3,stroke,stroke,,,Haptic icon 3 feels like stroking,3,4000,1,${t + 17_000}",
+            "hapticon-icons,1,processing,P001-D,1,icons,1,4,hug,hug,,,Haptic icon 4 feels like hugging,2,4000,1,${t + 22_000}",
+            "hapticon-icons,1,processing,P001-D,1,stickers,2,1,sticker_hit,hit,,sticker_hit,This haptic icon enhances the touch effect of the sticker,1,4000,1,${t + 29_000}",
+            "hapticon-icons,1,processing,P001-D,1,stickers,2,2,sticker_knock,knock,,sticker_knock,This haptic icon enhances the touch effect of the sticker,2,4000,1,${t + 34_000}",
+            "hapticon-icons,1,processing,P001-D,1,stickers,2,3,sticker_stroke,stroke,,sticker_stroke,This haptic icon enhances the touch effect of the sticker,3,4000,1,${t + 39_000}",
+            "hapticon-icons,1,processing,P001-D,1,stickers,2,4,sticker_hug,hug,,sticker_hug,This haptic icon enhances the touch effect of the sticker,4,4000,1,${t + 44_000}",
+            "hapticon-icons,1,processing,P001-D,1,text,3,1,text_hit,hit,Take that!,,This haptic icon enhances the effect of the text,5,4000,1,${t + 51_000}",
+            "hapticon-icons,1,processing,P001-D,1,text,3,2,text_knock,knock,\"Hey, are you there?\",,This haptic icon enhances the effect of the text,5,4000,1,${t + 56_000}",
+            "hapticon-icons,1,processing,P001-D,1,text,3,3,text_stroke,stroke,\"There, there. It'll be fine.\",,This haptic icon enhances the effect of the text,1,4000,1,${t + 61_000}",
+            "hapticon-icons,1,processing,P001-D,1,text,3,4,text_hug,hug,I missed you so much!,,This haptic icon enhances the effect of the text,1,4000,1,${t + 66_000}",
         )
         val expected = (listOf(org.hapticon.study.export.ResponseCsv.HEADER) + lines).joinToString("") { "$it\r\n" }
         assertEquals(expected, export.csv)

@@ -1,0 +1,148 @@
+package org.hapticon.companion.replicate
+
+import org.hapticon.core.HapticIcon
+import org.hapticon.core.render.EnvelopeModel
+import org.hapticon.core.render.IconRenderer
+import org.hapticon.study.OriginatingStudy
+import org.hapticon.study.ProtocolJson
+import org.hapticon.study.StudyProtocol
+import org.hapticon.study.TaskPresentation
+import java.io.PrintStream
+import java.util.Locale
+import kotlin.math.abs
+
+/**
+ * 000 — the haptic icons of Wei et al.: the paper's Table 3 beside what Hapticon renders (the envelope times, levels
+ * and carrier frequencies measured on the samples, in both envelope models), and the paper's procedure beside the
+ * built-in protocols. Measured at Processing Sound's 44.1 kHz.
+ */
+object HapticIconsReplication : Replication {
+    override val id: String = "000"
+    override val title: String = "Haptic icons (Wei et al.): Table 3 stimuli and the study procedure"
+
+    /** The rate the study's Processing sketch played at. */
+    const val SAMPLE_RATE: Int = 44_100
+
+    override fun run(out: PrintStream) {
+        out.println("000 — $title")
+        out.println()
+        out.println("Table 3 (paper) beside the rendered stimuli, measured on the samples at $SAMPLE_RATE Hz:")
+        out.println("attack = onset to the first corner, sustain = to the start of the release, release = to silence,")
+        out.println("level = envelope at the start of the release, peak = largest envelope value, f = carrier from zero crossings.")
+        out.println()
+        out.println(String.format(Locale.ROOT, "%-7s %-16s %8s %8s %6s %8s %6s %9s %7s %5s", "icon", "source", "attack", "sustain", "level", "release", "peak", "f (Hz)", "period", "count"))
+        for (icon in HapticIcon.PRESETS) {
+            out.println(row(icon.name, "Table 3", icon.attack, icon.sustain, icon.level, icon.release, null, icon.frequency, icon.period, icon.count))
+            for (model in listOf(EnvelopeModel.PROCESSING, EnvelopeModel.PAPER)) {
+                val m = measure(icon, model)
+                out.println(row("", "${model.name.lowercase()} model", m.attack, m.sustain, m.level, m.release, m.peak, m.frequency, m.period, m.count))
+            }
+        }
+        out.println()
+        out.println("processing is what the participants felt (Processing Sound 2.0.1–2.3.1 + JSyn; docs/envelope-models.md):")
+        out.println("its attack always peaks at 1 and its 'sustain' ramps from 1 to the level; paper holds the level.")
+        out.println("Periods (median spacing) and counts are measured from where the whole render's envelope starts rising.")
+        out.println()
+        out.println("Procedure: the paper beside the built-in protocols")
+        val paper = OriginatingStudy.PAPER_PROTOCOL
+        val perTrial = OriginatingStudy.PROTOCOL
+        out.println(String.format(Locale.ROOT, "%-16s | %-42s | %-32s | %s", "", "paper", paper.id, perTrial.id))
+        for ((what, inPaper, of) in procedureRows()) {
+            out.println(String.format(Locale.ROOT, "%-16s | %-42s | %-32s | %s", what, inPaper, of(paper), of(perTrial)))
+        }
+    }
+
+    private fun procedureRows(): List<Triple<String, String, (StudyProtocol) -> String>> = listOf(
+        Triple("participants", "16", { p -> p.participants?.toString() ?: "open" }),
+        Triple("task order", "1 (icons) first; 2, 3 counterbalanced", { p -> "${p.fixedFirst.joinToString()} first; rest ${p.taskOrder.jsonName}" }),
+        Triple("icon numbering", "icon 1 = stroke, 2 hit, 3 knock, 4 hug", { p ->
+            val numbers = p.tasks.first().stimuli.map { it.number }
+            if (numbers.all { it != null }) p.tasks.first().stimuli.joinToString(", ") { "${it.number} ${it.icon.name}" } else "by position in the order"
+        }),
+        Triple("presentation", "4 icons on one chat screen, pressed freely", { p ->
+            if (p.tasks.all { it.presentation == TaskPresentation.TOGETHER }) "all together, pressed freely" else "one icon per trial"
+        }),
+        Triple("questionnaire", "items after each task", { p ->
+            if (p.tasks.all { it.presentation == TaskPresentation.TOGETHER }) "items after each task" else "one item per trial"
+        }),
+        Triple("stimulus order", "fixed (numbered)", { p -> p.tasks.joinToString(", ") { it.stimulusOrder.jsonName }.let { o -> o.split(", ").distinct().joinToString() } }),
+        Triple("masking", "white noise on headphones", { p -> p.masking.jsonName }),
+        Triple("scale", "5-point agreement", { p -> "${p.scale.points}-point" }),
+        Triple("envelopes", "Processing Sound (JSyn)", { p -> ProtocolJson.modelName(p.envelopeModel) }),
+    )
+
+    private fun row(name: String, source: String, attack: Double, sustain: Double, level: Double, release: Double, peak: Double?, f: Double, period: Double, count: Int) =
+        String.format(
+            Locale.ROOT, "%-7s %-16s %8.5f %8.5f %6.3f %8.5f %6s %9.2f %7.3f %5d",
+            name, source, attack, sustain, level, release, peak?.let { String.format(Locale.ROOT, "%.3f", it) } ?: "—", f, period, count,
+        )
+
+    /** What one render shows. */
+    class Measured(val attack: Double, val sustain: Double, val level: Double, val release: Double, val peak: Double, val frequency: Double, val period: Double, val count: Int)
+
+    /**
+     * Measures [icon] rendered with [model]: the shape on one repetition rendered alone (stroke's repetitions
+     * overlap), onsets and count on the whole icon, the carrier's frequency from its zero crossings.
+     */
+    fun measure(icon: HapticIcon, model: EnvelopeModel): Measured {
+        val fs = SAMPLE_RATE.toDouble()
+        val single = IconRenderer(icon.copy(count = 1, period = 0.0), SAMPLE_RATE, model)
+        val e = DoubleArray(single.sampleCount.toInt()) { single.envelopeAt(it.toLong()) }
+        // Corners: where the slope changes by more than rounding (second difference). A boundary between samples
+        // bends two neighbouring differences; the later sample, the new segment's first, stands for both.
+        val bends = (1 until e.size - 1).filter { abs(e[it + 1] - 2 * e[it] + e[it - 1]) > 1e-9 }
+        val corners = bends.filterIndexed { i, n -> i == bends.lastIndex || bends[i + 1] != n + 1 }
+        val end = e.indexOfLast { it > 0.0 } + 1
+        val attackEnd = corners.firstOrNull { it > 0 } ?: 0
+        val releaseStart = corners.lastOrNull { it < end - 1 && it > attackEnd } ?: attackEnd
+        val whole = IconRenderer(icon, SAMPLE_RATE, model)
+        val onsets = onsets(whole)
+        // The median spacing: paper's stroke repetitions combine by maximum, so its second attack only shows
+        // where it overtakes the first's release (2.8 s), while later spacings are the period.
+        val spacings = onsets.zipWithNext { a, b -> (b - a) / fs }.sorted()
+        val period = if (spacings.isEmpty()) 0.0 else spacings[spacings.size / 2]
+        return Measured(
+            attack = attackEnd / fs,
+            sustain = (releaseStart - attackEnd) / fs,
+            level = e[releaseStart],
+            release = (end - releaseStart) / fs,
+            peak = e.max(),
+            frequency = zeroCrossingFrequency(single, attackEnd, end),
+            period = period,
+            count = onsets.size,
+        )
+    }
+
+    /** Samples where a repetition starts: the envelope rises from a sample at or below the one before after falling. */
+    private fun onsets(renderer: IconRenderer): List<Long> {
+        val onsets = ArrayList<Long>()
+        var previous = 0.0
+        var falling = true
+        for (i in 0 until renderer.sampleCount) {
+            val v = renderer.envelopeAt(i)
+            if (falling && v > previous) onsets += maxOf(0L, i - 1)
+            falling = v < previous || (v == 0.0)
+            previous = v
+        }
+        return onsets
+    }
+
+    /** Carrier frequency from the rising zero crossings between samples [from] and [to] (linear interpolation). */
+    private fun zeroCrossingFrequency(renderer: IconRenderer, from: Int, to: Int): Double {
+        var first = Double.NaN
+        var last = Double.NaN
+        var crossings = 0
+        var previous = renderer.sampleAt(from.toLong())
+        for (i in from + 1 until to) {
+            val v = renderer.sampleAt(i.toLong())
+            if (previous < 0.0 && v >= 0.0) {
+                val at = i - 1 + previous / (previous - v)
+                if (crossings == 0) first = at
+                last = at
+                crossings++
+            }
+            previous = v
+        }
+        return if (crossings < 2) Double.NaN else (crossings - 1) * SAMPLE_RATE / (last - first)
+    }
+}
