@@ -2,6 +2,7 @@ package org.hapticon.testing
 
 import org.hapticon.core.HapticIcon
 import org.hapticon.core.IconValidationException
+import org.hapticon.core.render.EnvelopeModel
 import org.hapticon.core.render.IconRenderer
 import org.junit.Assert.assertEquals
 import org.junit.Assert.assertTrue
@@ -51,7 +52,8 @@ class TestIconsTest {
 
     @Test
     fun stepOnset_startsAtItsLevelOnTheFirstSample() {
-        val renderer = IconRenderer(TestIcons.STEP_ONSET, 48_000)
+        // The paper's trapezoid; under the processing model a new envelope reader's first sample is 0 (JSyn).
+        val renderer = IconRenderer(TestIcons.STEP_ONSET, 48_000, EnvelopeModel.PAPER)
         assertEquals(0.8, renderer.envelopeAt(0), 0.0)
         assertEquals(0.8, renderer.envelopeAt(9_600), 0.0) // second repetition's onset at 0.2 s
     }

@@ -99,7 +99,8 @@ class ReplicateCommandTest {
     fun replicate_withoutId_listsTheReplications() {
         val result = cli("replicate")
         assertEquals(result.toString(), EXIT_OK, result.exitCode)
-        assertTrue(result.stdout, result.stdout.startsWith("000  Haptic icons (Wei et al.)\n001  "))
+        assertTrue(result.stdout, result.stdout.startsWith("000  Haptic icons (Wei et al.)"))
+        assertTrue(result.stdout, result.stdout.contains("\n001  Shaping Compliance"))
     }
 
     @Test

@@ -213,7 +213,7 @@ class CollectorSecurityTest {
         val texts = hostile + "ok"
         val body = upload.lineSequence().first() + "\n" + texts.mapIndexed { i, text ->
             val response = if (text == "ok") "-1" else "3"
-            listOf("demo-study", "1", "P01", "0", "calm", "0", "$i", "text", "", text, "", "q", response, "10", "0", "2026-11-20T10:00:00Z")
+            listOf("demo-study", "1", "processing", "P01", "0", "calm", "0", "$i", "text", "", text, "", "q", response, "10", "0", "2026-11-20T10:00:00Z")
                 .joinToString(",", postfix = "\n") { Csv.field(it) }
         }.joinToString("")
         CollectorHarness(sqlite()).use { h ->
