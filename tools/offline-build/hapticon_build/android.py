@@ -283,7 +283,8 @@ class AndroidApp:
         with Stage(f"R8 ({len(library_jars)} library jars, {len(consumer_rules)} consumer rule files)"):
             run([self.tools.java, "-Xmx3g", "-cp", self.tools.r8, "com.android.tools.r8.R8", *args, program,
                  *library_jars], "R8", log=os.path.join(work, "r8.log"))
-        dex_files = sorted((os.path.join(dex_out, f) for f in os.listdir(dex_out)), key=_dex_order)
+        # R8 also writes the Java resources it kept (kotlin/*.kotlin_builtins, …) next to the dex files.
+        dex_files = sorted((os.path.join(dex_out, f) for f in os.listdir(dex_out) if f.endswith(".dex")), key=_dex_order)
         with Stage("smoke check of the R8 output"):
             checked = smoke_check(dex_files, required_classes(program, os.path.join(work, "AndroidManifest.xml")))
             info(f"{checked} classes found under their own names in the R8 output")
