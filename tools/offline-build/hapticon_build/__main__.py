@@ -15,6 +15,10 @@ from .project import load_project
 
 USAGE = """usage: ./build COMMAND [options]
   apk                 build and verify the signed debug APK (out/app/hapticon-debug.apk)
+  apk --release [--keystore PATH --key-alias ALIAS]
+                      R8-shrunk release APK (out/app/hapticon-release.apk), signed with a release
+                      key (passwords from HAPTICON_RELEASE_STORE_PASSWORD / _KEY_PASSWORD; see
+                      docs/release.md), verified, and its R8 output smoke-checked
   test [MODULE...] [--tests REGEX]
                       compile and run tests (all modules by default); the last line is
                       "N passed, N failed, N skipped"; exits 1 on any failure
@@ -49,8 +53,13 @@ def main(argv: list[str]) -> int:
         if command == "screenshots":
             return record_screenshots(build, rest)
         if command == "apk":
-            from .android import AndroidApp
-            apk = AndroidApp(build, app_module(project)).assemble()
+            from .android import AndroidApp, Signing
+            app = AndroidApp(build, app_module(project))
+            if "--release" in rest:
+                signing = Signing.from_args(rest)  # before any work: a missing key fails at once
+                apk = app.assemble_release(signing)
+            else:
+                apk = app.assemble()
             print(apk)
         elif command == "companion":
             companion_classpath(build)

@@ -5,7 +5,7 @@ import tempfile
 import textwrap
 import unittest
 
-from hapticon_build.android import excluded
+from hapticon_build.android import REFLECTIVE_CLASSES, Signing, excluded, required_classes
 from hapticon_build.errors import BuildError
 from hapticon_build.maven import Repository
 from hapticon_build.project import Catalog, load_project
@@ -226,3 +226,45 @@ class PackagingTest(unittest.TestCase):
 
 if __name__ == "__main__":
     unittest.main()
+
+
+class ReleaseTest(unittest.TestCase):
+    def setUp(self):
+        self.dir = tempfile.mkdtemp()
+        self.keystore = os.path.join(self.dir, "release.jks")
+        open(self.keystore, "w").close()
+
+    def test_signing_fromArgs_optionsWinOverEnvironment_passwordsOnlyFromEnvironment(self):
+        env = {"HAPTICON_RELEASE_KEYSTORE": "/nowhere.jks", "HAPTICON_RELEASE_KEY_ALIAS": "env-alias",
+               "HAPTICON_RELEASE_STORE_PASSWORD": "s3cret"}
+        signing = Signing.from_args(["--release", "--keystore", self.keystore, "--key-alias", "hapticon"], env)
+        self.assertEqual(Signing(self.keystore, "hapticon", "s3cret", "s3cret"), signing)
+
+    def test_signing_fromArgs_noPassword_failsNamingTheVariables(self):
+        with self.assertRaises(BuildError) as e:
+            Signing.from_args(["--keystore", self.keystore, "--key-alias", "a"], {})
+        self.assertIn("HAPTICON_RELEASE_STORE_PASSWORD", str(e.exception))
+
+    def test_signing_fromArgs_missingKeystoreFile_fails(self):
+        with self.assertRaises(BuildError) as e:
+            Signing.from_args(["--keystore", self.keystore + ".gone", "--key-alias", "a"],
+                              {"HAPTICON_RELEASE_STORE_PASSWORD": "x"})
+        self.assertIn("not found", str(e.exception))
+
+    def test_requiredClasses_roomImplsManifestComponentsAndReflectiveClasses(self):
+        import zipfile
+        program = os.path.join(self.dir, "program.jar")
+        with zipfile.ZipFile(program, "w") as z:
+            for n in ("org/x/data/AppDatabase_Impl.class", "org/x/data/MessageDao_Impl.class",
+                      "org/x/data/MessageDao_Impl$1.class", "org/x/Other.class"):
+                z.writestr(n, b"")
+        manifest = os.path.join(self.dir, "AndroidManifest.xml")
+        with open(manifest, "w") as f:
+            f.write('<manifest package="org.x"><application android:name=".App">'
+                    '<activity android:exported="true"\n android:name="org.x.MainActivity"/></application></manifest>')
+        got = required_classes(program, manifest)
+        for name in ("org.x.data.AppDatabase_Impl", "org.x.data.MessageDao_Impl", "org.x.App", "org.x.MainActivity",
+                     *REFLECTIVE_CLASSES):
+            self.assertIn(name, got)
+        self.assertNotIn("org.x.Other", got)
+        self.assertFalse(any("$" in n for n in got))

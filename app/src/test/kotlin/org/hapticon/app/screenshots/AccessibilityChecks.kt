@@ -34,10 +34,12 @@ import kotlin.math.roundToInt
  * Google's Accessibility Test Framework (ATF) checks, run on a Compose screen.
  *
  * ATF 3.1 (the newest on Maven Central) walks Android Views; it does not see inside a ComposeView. So the
- * merged Compose semantics tree — what TalkBack reads — is translated into ATF's own hierarchy format
- * (`AccessibilityHierarchyProto`, the format ATF itself serialises hierarchies to) with the classes a
- * View-based screen would report (a clickable node is a Button, text is a TextView, a switch a Switch…),
- * and ATF's checks then run unchanged on it together with the rendered bitmap:
+ * unmerged Compose semantics tree (pass `onRoot(useUnmergedTree = true)`) is translated into ATF's own
+ * hierarchy format (`AccessibilityHierarchyProto`, the format ATF itself serialises hierarchies to) with the
+ * classes a View-based screen would report (a clickable node is a Button, text is a TextView, a switch a
+ * CompoundButton…), and ATF's checks then run unchanged on it together with the rendered bitmap. Unmerged,
+ * as Views are: ATF reads a control's name from its non-focusable children as TalkBack does, and measures
+ * each text's contrast within the text's own bounds (a merged button's bounds would include its outline):
  * - [TouchTargetSizeCheck]: every clickable target at least 48×48 dp (ATF's threshold);
  * - [SpeakableTextPresentCheck]: every control has text or a content description;
  * - [TextContrastCheck] / [ImageContrastCheck]: WCAG contrast (4.5:1 text, 3:1 large text and images),
@@ -104,16 +106,19 @@ object AccessibilityChecks {
         val window = WindowHierarchyElementProto.newBuilder().setId(0).setWindowId(0).setType(1).setLayer(0)
             .setFocused(true).setBoundsInScreen(rect(screen))
         var nextId = 0
-        fun add(node: SemanticsNode, parentId: Int?): Int {
+        // A disabled control disables its text too (unmerged, the Text is a child of the Button): WCAG 1.4.3
+        // exempts inactive components from contrast, and ATF skips disabled elements.
+        fun add(node: SemanticsNode, parentId: Int?, parentDisabled: Boolean): Int {
             val id = nextId++
-            val builder = element(node, id, parentId, screen, density)
+            val disabled = parentDisabled || node.config.contains(SemanticsProperties.Disabled)
+            val builder = element(node, id, parentId, screen, density).setEnabled(!disabled)
             val index = window.viewsCount
             window.addViews(builder)
-            val childIds = node.children.map { add(it, id) }
+            val childIds = node.children.map { add(it, id, disabled) }
             window.setViews(index, window.getViews(index).toBuilder().addAllChildIds(childIds))
             return id
         }
-        add(root, null)
+        add(root, null, parentDisabled = false)
         val metrics = DisplayInfoMetricsProto.newBuilder().setDensity(density).setScaledDensity(density)
             .setDensityDpi((density * 160).roundToInt()).setWidthPixels(screenshot.width)
             .setHeightPixels(screenshot.height).setXDpi(density * 160).setYDpi(density * 160)
@@ -173,7 +178,6 @@ object AccessibilityChecks {
             .setFocusable(clickable || toggleable || editable || adjustable || config.isMergingSemanticsOfDescendants)
             .setEditable(editable)
             .setCheckable(toggleable)
-            .setEnabled(!config.contains(SemanticsProperties.Disabled))
             .setDrawingOrder(id)
         parentId?.let { builder.setParentId(it) }
         text?.let { builder.setText(CharSequenceProto.newBuilder().setText(it)) }

@@ -68,13 +68,15 @@ abstract class ScreenshotTest {
     val compose: ComposeContentTestRule = createComposeRule()
 
     /**
-     * Renders [content] once per variant and records/compares `NAME[suffix].png`; [accessibility] runs the
-     * ATF checks on every variant (turn off only for a picture that is not a screen, with a reason).
+     * Renders [content] once per variant and records/compares `NAME[suffix].png`; [prepare] runs once after
+     * the content is set (to drive a route with its ViewModel); [accessibility] runs the ATF checks on every
+     * variant (turn off only for a picture that is not a screen, with a reason).
      */
     fun screen(
         name: String,
         variants: List<Variant> = Variant.THEMES,
         accessibility: Boolean = true,
+        prepare: () -> Unit = {},
         content: @Composable () -> Unit,
     ) {
         require(Regex("[a-z0-9-]+").matches(name)) { "screenshot names are lower-case-with-dashes: $name" }
@@ -82,6 +84,7 @@ abstract class ScreenshotTest {
         compose.setContent {
             ScreenFrame(variant) { content() }
         }
+        prepare()  // drive a stateful screen (clicks, readings) to the state to picture
         val failures = mutableListOf<String>()
         for (v in variants) {
             variant = v
@@ -90,7 +93,7 @@ abstract class ScreenshotTest {
             compose.onRoot().captureRoboImage(file, roborazziOptions())
             if (accessibility) {
                 val bitmap = compose.onRoot().captureToImage().asAndroidBitmap()
-                val root = compose.onRoot().fetchSemanticsNode()
+                val root = compose.onRoot(useUnmergedTree = true).fetchSemanticsNode()
                 failures += AccessibilityChecks.run(root, bitmap).map { "${file.name}: $it" }
             }
         }

@@ -64,7 +64,7 @@ fun IconsScreen(uiState: IconsUiState, onPlay: (HapticIcon) -> Unit) {
             ) {
                 item {
                     Text(
-                        "This phone plays icons as: ${uiState.renderer.label}",
+                        "Tap an icon to feel it. This phone plays icons as: ${uiState.renderer.label}.",
                         style = MaterialTheme.typography.bodyMedium,
                     )
                 }
@@ -110,10 +110,15 @@ private fun IconCard(icon: HapticIcon, playing: NowPlaying?, onPlay: (HapticIcon
     }
 }
 
-/** One line with every parameter, e.g. "A 0.005 s · S 0.01 s · L 0.5 · R 0.005 s · note 57 (220.0 Hz) · 3× every 0.27 s". */
+/**
+ * One line with every parameter, e.g. "A 0.005 s · S 0.01 s · L 0.5 · R 0.005 s · note 57 (220.0 Hz) · 3× every 0.27 s".
+ * Each value is joined to its letter and unit by no-break spaces, so a narrow screen or a large font wraps
+ * between parameters, never between a number and its unit.
+ */
 internal fun describe(icon: HapticIcon): String {
     fun n(x: Double) = if (x == Math.floor(x) && x < 1e6) x.toLong().toString() else x.toString()
-    val repeat = if (icon.count > 1) " · ${icon.count}× every ${n(icon.period)} s" else ""
-    return "A ${n(icon.attack)} s · S ${n(icon.sustain)} s · L ${n(icon.level)} · R ${n(icon.release)} s · " +
-        "note ${n(icon.note)} (${"%.1f".format(Locale.ROOT, icon.frequency)} Hz)$repeat"
+    val nb = '\u00A0'
+    val repeat = if (icon.count > 1) " · ${icon.count}×${nb}every$nb${n(icon.period)}${nb}s" else ""
+    return "A$nb${n(icon.attack)}${nb}s · S$nb${n(icon.sustain)}${nb}s · L$nb${n(icon.level)} · R$nb${n(icon.release)}${nb}s · " +
+        "note$nb${n(icon.note)}$nb(${"%.1f".format(Locale.ROOT, icon.frequency)}${nb}Hz)$repeat"
 }

@@ -46,6 +46,7 @@ import androidx.compose.ui.semantics.semantics
 import androidx.compose.ui.semantics.stateDescription
 import androidx.compose.ui.text.input.KeyboardType
 import androidx.compose.ui.text.input.PasswordVisualTransformation
+import androidx.compose.ui.text.style.TextAlign
 import androidx.compose.ui.unit.dp
 import androidx.lifecycle.Lifecycle
 import androidx.lifecycle.compose.LifecycleEventEffect
@@ -297,7 +298,7 @@ internal fun stickerOf(id: String): Sticker? = Sticker.of(id.removePrefix("stick
 
 /**
  * A Likert item: one radio button per point (1..points) in a selectable group, each read as "N of points" with its
- * label when the scale has one per point, and the end anchors written under the ends.
+ * label when the scale has one per point. A label per point is written under each point; two anchors under the ends.
  */
 @Composable
 fun LikertScaleControl(scale: LikertScale, selected: Int?, onSelect: (Int) -> Unit, modifier: Modifier = Modifier) {
@@ -314,10 +315,20 @@ fun LikertScaleControl(scale: LikertScale, selected: Int?, onSelect: (Int) -> Un
                 ) {
                     RadioButton(selected = selected == value, onClick = null)
                     Text("$value", style = MaterialTheme.typography.labelLarge)
+                    // A fully labelled scale shows every point's label under it, as the instrument was published
+                    // (showing only the ends would put a different scale in front of the participant).
+                    if (scale.labels.size == scale.points) {
+                        Text(
+                            scale.labels[value - 1],
+                            style = MaterialTheme.typography.bodySmall,
+                            textAlign = TextAlign.Center,
+                            modifier = Modifier.padding(horizontal = 2.dp),
+                        )
+                    }
                 }
             }
         }
-        if (scale.labels.isNotEmpty()) {
+        if (scale.labels.size == 2) {
             Row(Modifier.fillMaxWidth(), horizontalArrangement = Arrangement.SpaceBetween) {
                 Text(scale.labels.first(), style = MaterialTheme.typography.bodySmall, modifier = Modifier.weight(1f))
                 Box(Modifier.weight(1f), contentAlignment = Alignment.CenterEnd) {

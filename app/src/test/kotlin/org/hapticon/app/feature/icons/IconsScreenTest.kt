@@ -41,10 +41,10 @@ class IconsScreenTest {
             scrollTo(hasContentDescription("Play $name"))
             rule.onNodeWithContentDescription("Play $name").assertExists()
         }
-        val knock = "A 0.005 s · S 0.01 s · L 0.5 · R 0.005 s · note 57 (220.0 Hz) · 3× every 0.27 s"
+        val knock = "A 0.005 s · S 0.01 s · L 0.5 · R 0.005 s · note 57 (220.0 Hz) · 3× every 0.27 s".replace(' ', '\u00A0').replace("\u00A0·\u00A0", " · ")
         scrollTo(hasText(knock))
         rule.onNodeWithText(knock).assertExists()
-        val hug = "A 1.5 s · S 1 s · L 0.5 · R 0.5 s · note 50 (146.8 Hz)"
+        val hug = "A 1.5 s · S 1 s · L 0.5 · R 0.5 s · note 50 (146.8 Hz)".replace(' ', '\u00A0').replace("\u00A0·\u00A0", " · ")
         scrollTo(hasText(hug))
         rule.onNodeWithText(hug).assertExists()
     }
