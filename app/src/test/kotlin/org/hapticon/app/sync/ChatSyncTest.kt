@@ -275,7 +275,7 @@ class ChatSyncTest {
         sync.felt("bob", "0b7e7c1e-3f7b-4a57-9d3e-2f1c5a6b7c8d")
         kotlinx.coroutines.delay(200)
 
-        assertEquals(RecordedVibration(listOf(20L, 250L, 20L, 250L, 20L), listOf(96, 0, 96, 0, 96)), lastVibration(vibrator))
+        assertEquals(RecordedVibration(listOf(10L, 10L, 250L, 10L, 10L, 250L, 10L, 10L), listOf(175, 111, 0, 175, 111, 0, 175, 111)), lastVibration(vibrator))
         assertEquals(emptyList<Pair<String, Receipt>>(), felt())
     }
 

@@ -66,6 +66,6 @@ class NotificationActionTest {
         broadcast(Intent(MessageNotifier.ACTION_FEEL).putExtra(MessageNotifier.EXTRA_PEER, "bob").putExtra(MessageNotifier.EXTRA_MESSAGE, message.id))
 
         awaitTrue("the vibration") { lastVibration(vibrator) != null }
-        assertEquals(RecordedVibration(listOf(20L, 250L, 20L, 250L, 20L), listOf(96, 0, 96, 0, 96)), lastVibration(vibrator))
+        assertEquals(RecordedVibration(listOf(10L, 10L, 250L, 10L, 10L, 250L, 10L, 10L), listOf(175, 111, 0, 175, 111, 0, 175, 111)), lastVibration(vibrator))
     }
 }

@@ -136,7 +136,7 @@ class ReachableDeliveryTest {
         assertEquals("chat-bob", posted.channelId)
         assertEquals(listOf("Reply", "Feel knock again"), posted.actions.map { it.title.toString() })
         // Autoplay felt it through the normal renderer: the knock's exact amplitude steps.
-        assertEquals(RecordedVibration(listOf(20L, 250L, 20L, 250L, 20L), listOf(96, 0, 96, 0, 96)), lastVibration(vibrator))
+        assertEquals(RecordedVibration(listOf(10L, 10L, 250L, 10L, 10L, 250L, 10L, 10L), listOf(175, 111, 0, 175, 111, 0, 175, 111)), lastVibration(vibrator))
         awaitTrue("felt receipt") { receipts(ReceiptState.FELT) == listOf(first.id) }
 
         // MQTT is at-least-once: the same message again is stored, shown and felt no second time.

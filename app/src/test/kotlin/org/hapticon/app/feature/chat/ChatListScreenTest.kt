@@ -6,6 +6,7 @@ import androidx.compose.ui.test.longClick
 import androidx.compose.ui.test.onNodeWithContentDescription
 import androidx.compose.ui.test.onNodeWithText
 import androidx.compose.ui.test.performClick
+import androidx.compose.ui.test.performScrollTo
 import androidx.compose.ui.test.performTextInput
 import androidx.compose.ui.test.performTouchInput
 import java.time.ZoneOffset
@@ -41,7 +42,7 @@ class ChatListScreenTest {
         compose.onNodeWithText("Your user name").performTextInput("alice")
         compose.onNodeWithText("Broker address").performTextInput("192.168.1.20")
         compose.onNodeWithText("Broker password").performTextInput("alice-secret")
-        compose.onNodeWithText("Test connection and start").performClick()
+        compose.onNodeWithText("Test connection and start").performScrollTo().performClick()
 
         assertEquals(listOf(Triple("alice", "192.168.1.20", "alice-secret")), saved)
         // The password is masked on screen.
@@ -52,7 +53,7 @@ class ChatListScreenTest {
     @Test
     fun firstLaunch_failedTest_showsTheReason() {
         compose.setContent { FirstLaunchScreen("", AccountCheck.Failed("No answer from tcp://10.1.1.1:1883 within 5 s")) { _, _, _ -> } }
-        compose.onNodeWithText("No answer from tcp://10.1.1.1:1883 within 5 s").assertIsDisplayed()
+        compose.onNodeWithText("No answer from tcp://10.1.1.1:1883 within 5 s").performScrollTo().assertIsDisplayed()
     }
 
     @Test
