@@ -22,11 +22,14 @@ class GloveScreenshotTest : ScreenshotTest() {
         CalibrationRoute(viewModel, onBack = {})
     }
 
-    /** Every pose held for 25 readings of a thumb with α 0.017/°, β 15.5 kΩ: the fit and its R². */
+    /**
+     * Every pose held twice (the paper's calibration takes each pose twice and averages) for 25 readings of a
+     * thumb with α 0.017/°, β 15.5 kΩ: the fit and its R².
+     */
     @Test
     fun calibration_thumbFitted() = screen("glove-calibration-fitted", prepare = {
         val truth = FlexCalibration(0.017, 15.5)
-        for (pose in listOf(0, 30, 50, 70, 90)) {
+        for (pose in listOf(0, 30, 50, 70, 90) + listOf(0, 30, 50, 70, 90)) {
             compose.onNodeWithText("Start $pose° pose").performScrollTo().performClick()
             compose.waitForIdle()
             val volts = glove.voltsAt(pose.toDouble(), truth)

@@ -1,33 +1,26 @@
 package org.hapticon.core.pattern
 
 import org.hapticon.core.HapticIcon
+import org.hapticon.core.render.EnvelopeModel
 import kotlin.math.abs
 
 /**
- * How overlapping repetitions of an icon combine when it becomes a [HapticPattern].
- */
-public enum class Overlap {
-    /**
-     * Overlapping envelopes add: Processing Sound 2.0.1–2.3.1 `Env.play()` connects a new envelope reader to
-     * the oscillator's amplitude port without disconnecting the running one, and JSyn's input port sums every
-     * connected output (see docs/envelope-models.md). What the study's participants felt.
-     */
-    SUM,
-
-    /** The louder envelope wins: the paper's trapezoids drawn over each other. */
-    MAX,
-}
-
-/**
- * This icon as a pattern: a constant carrier at the icon's note and an amplitude curve with the corners of
- * every repetition's trapezoid (attack from 0 to level, sustain, release to 0), overlapping repetitions
- * combined by [overlap], summed values capped at 1 (the icon's own amplitude limit).
+ * This icon as a pattern: a constant carrier at the icon's note and an amplitude curve with the corners of every
+ * repetition's envelope, under [model]:
  *
- * The curve is exact in continuous time: between consecutive corners every repetition is a straight line, so
- * their sum is one; for [Overlap.MAX] the crossing points of the lines are added as corners. Sample-level rules
- * of the Processing model (phase carry, one-sample minimum) belong to the PCM renderer, not to the pattern.
+ * - [EnvelopeModel.PROCESSING] (the default, what the study's participants felt): Processing Sound's
+ *   `Env.play` envelope — attack from 0 to full amplitude, a straight decay to `level` across the sustain time,
+ *   release to 0 (processing-sound `Env.java`, "gradual decay towards sustain level across entire sustain
+ *   period") — with overlapping repetitions **added**, as JSyn sums every envelope reader connected to the
+ *   oscillator's amplitude port (docs/envelope-models.md). A sum above 1 is capped at 1.
+ * - [EnvelopeModel.PAPER]: the paper's trapezoid (attack to `level`, flat sustain, release), the louder
+ *   repetition winning where they overlap (the crossing points become corners).
+ *
+ * The curve is exact in continuous time: between consecutive corners every repetition is a straight line.
+ * Sample-level rules of the Processing model (phase carry, one-sample minimum, float parameters) belong to the
+ * PCM renderer ([org.hapticon.core.render.IconRenderer]), not to the pattern.
  */
-public fun HapticIcon.toPattern(overlap: Overlap = Overlap.SUM): HapticPattern {
+public fun HapticIcon.toPattern(model: EnvelopeModel = EnvelopeModel.DEFAULT): HapticPattern {
     val starts = DoubleArray(count) { it * period }
     val corners = sortedSetOf<Double>()
     for (start in starts) {
@@ -37,24 +30,25 @@ public fun HapticIcon.toPattern(overlap: Overlap = Overlap.SUM): HapticPattern {
         corners += start + envelopeDuration
     }
     val times = corners.toDoubleArray()
-    val combine: (DoubleArray) -> Double = when (overlap) {
-        Overlap.SUM -> { values -> values.sum() }
-        Overlap.MAX -> { values -> values.max() }
+    val peak = if (model == EnvelopeModel.PROCESSING) 1.0 else level
+    val combine: (DoubleArray) -> Double = when (model) {
+        EnvelopeModel.PROCESSING -> { values -> values.sum() }
+        EnvelopeModel.PAPER -> { values -> values.max() }
     }
     val keys = ArrayList<AmplitudeKey>(2 * times.size)
     for (i in times.indices) {
         val t = times[i]
         // A zero-length attack or release is a step: the value just before and just after the corner differ.
-        val before = combine(DoubleArray(count) { valueBefore(t, starts[it]) })
-        val after = combine(DoubleArray(count) { valueAfter(t, starts[it]) })
+        val before = combine(DoubleArray(count) { valueBefore(t, starts[it], peak) })
+        val after = combine(DoubleArray(count) { valueAfter(t, starts[it], peak) })
         // (Rounding in the corner arithmetic leaves ~1e-16 differences that are not steps.)
         if (i > 0 && abs(before - after) > 1e-9) keys += AmplitudeKey(t, minOf(1.0, before))
         keys += AmplitudeKey(t, minOf(1.0, after))
-        if (overlap == Overlap.MAX && i < times.lastIndex) {
+        if (model == EnvelopeModel.PAPER && i < times.lastIndex) {
             // Between corners every repetition is a straight line; the louder of two swaps where they cross.
             val next = times[i + 1]
-            val from = DoubleArray(count) { valueAfter(t, starts[it]) }
-            val to = DoubleArray(count) { valueBefore(next, starts[it]) }
+            val from = DoubleArray(count) { valueAfter(t, starts[it], peak) }
+            val to = DoubleArray(count) { valueBefore(next, starts[it], peak) }
             for (crossing in crossingsOfMax(t, next, from, to)) {
                 keys += AmplitudeKey(crossing, minOf(1.0, lineMax(crossing, t, next, from, to)))
             }
@@ -63,21 +57,23 @@ public fun HapticIcon.toPattern(overlap: Overlap = Overlap.SUM): HapticPattern {
     return HapticPattern(name, dropCollinear(keys), listOf(FrequencyKey(0.0, frequency)))
 }
 
-// One repetition's trapezoid at absolute time t, the repetition starting at [start], as the limit from the
-// right (valueAfter) and from the left (valueBefore); they differ only at a zero-length attack or release.
+// One repetition's envelope at absolute time t (the repetition starting at [start]) rising to [peak] (1 for
+// Processing, level for the paper) and reaching level at the end of the sustain: the limit from the right
+// (valueAfter) and from the left (valueBefore), which differ only at a zero-length attack, sustain or release.
 // Corners are computed exactly as toPattern computes them, so a corner time compares equal to itself.
-private fun HapticIcon.valueAfter(t: Double, start: Double): Double = when {
+private fun HapticIcon.valueAfter(t: Double, start: Double, peak: Double): Double = when {
     t < start -> 0.0
-    t < start + attack -> level * (t - start) / attack
-    t < start + attack + sustain -> level
+    t < start + attack -> peak * (t - start) / attack
+    t < start + attack + sustain -> peak + (level - peak) * (t - start - attack) / sustain
     t < start + envelopeDuration -> level * (start + envelopeDuration - t) / release
     else -> 0.0
 }
 
-private fun HapticIcon.valueBefore(t: Double, start: Double): Double = when {
+private fun HapticIcon.valueBefore(t: Double, start: Double, peak: Double): Double = when {
     t <= start -> 0.0
-    t < start + attack -> level * (t - start) / attack
-    t <= start + attack + sustain -> level
+    t < start + attack -> peak * (t - start) / attack
+    t == start + attack -> peak
+    t <= start + attack + sustain -> peak + (level - peak) * (t - start - attack) / sustain
     t <= start + envelopeDuration -> level * (start + envelopeDuration - t) / release
     else -> 0.0
 }

@@ -69,7 +69,8 @@ fun FirstLaunchScreen(prefilledBroker: String, check: AccountCheck, onSave: (Str
         Text("Welcome to Hapticon", style = MaterialTheme.typography.headlineMedium)
         Text(
             "Hapticon passes messages through a broker, a small server you run yourself, so no company sees them. " +
-                "Run `hapticon broker` on a computer on the same Wi-Fi: it prints the address to type here and an invite link to open instead.",
+                "Run `hapticon broker --host ADDRESS` on a computer on the same Wi-Fi and add yourself with `hapticon broker adduser NAME`: " +
+                "it prints the address to type here and an invite link to open instead.",
             style = MaterialTheme.typography.bodyLarge,
         )
         OutlinedTextField(
