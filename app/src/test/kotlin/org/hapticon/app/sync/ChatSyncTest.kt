@@ -319,4 +319,30 @@ class ChatSyncTest {
         messenger.deliver(InboxEvent.MessageReceived(ChatMessage("0b7e7c1e-3f7b-4a57-9d3e-2f1c5a6b7c8d", "bob", now, "hi")))
         assertEquals(setOf("carol"), settings.preferences.value.archived)
     }
+
+    @Test
+    fun probe_answeringBroker_connectsTheRealSessionAndKeepsTheSettings() = runBlocking {
+        val broker = org.hapticon.messaging.mqtt.BrokerAddress.parse("tcp://192.168.1.20:1883")
+        val problem = ChatComponent.probeBroker(settings, sync, "alice", broker, "alice-secret")
+        assertNull(problem)
+        val saved = settings.preferences.value
+        assertEquals(listOf("alice", "tcp://192.168.1.20:1883", "alice-secret"), listOf(saved.userName, saved.brokerUrl, saved.brokerPassword))
+    }
+
+    @Test
+    fun probe_brokerThatNeverAnswers_restoresThePreviousSettingsAndSaysWhy() = runBlocking {
+        scope.coroutineContext[kotlinx.coroutines.Job]!!.children.forEach { it.cancelAndJoin() }
+        // A factory that cannot make a messenger: no session ever settles, as with an unreachable broker.
+        val silent = ChatSync(
+            repository, repository, settings, { _, _, _ -> null },
+            AdaptiveHapticPlayer(vibrator, { device }, { null }), VibrationRateLimiter(Clock { now }),
+            { user -> RendererChoice.capabilitiesOf(user, device, null) }, scope, clock = { now },
+        )
+        silent.start()
+        val before = settings.preferences.value
+        val broker = org.hapticon.messaging.mqtt.BrokerAddress.parse("tcp://10.1.1.1:1883")
+        val problem = ChatComponent.probeBroker(settings, silent, "carol", broker, null)
+        assertEquals(true, problem!!.startsWith("No answer from tcp://10.1.1.1:1883 within 5 s."))
+        assertEquals(before, settings.preferences.value)
+    }
 }

@@ -3,6 +3,7 @@ package org.hapticon.app.feature.chat
 import androidx.compose.ui.test.assertIsDisplayed
 import androidx.compose.ui.test.junit4.createComposeRule
 import androidx.compose.ui.test.longClick
+import androidx.compose.ui.test.assert
 import androidx.compose.ui.test.onNodeWithContentDescription
 import androidx.compose.ui.test.onNodeWithText
 import androidx.compose.ui.test.performClick
@@ -45,8 +46,9 @@ class ChatListScreenTest {
         compose.onNodeWithText("Test connection and start").performScrollTo().performClick()
 
         assertEquals(listOf(Triple("alice", "192.168.1.20", "alice-secret")), saved)
-        // The password is masked on screen.
-        compose.onNodeWithText("alice-secret").assertDoesNotExist()
+        // The password field is a password field (masked on screen, announced as a password by TalkBack).
+        compose.onNodeWithContentDescription("Broker password")
+            .assert(androidx.compose.ui.test.SemanticsMatcher.keyIsDefined(androidx.compose.ui.semantics.SemanticsProperties.Password))
         assertEquals("", ChatPreferences().brokerUrl)
     }
 
