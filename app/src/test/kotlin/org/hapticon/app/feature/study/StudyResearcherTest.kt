@@ -244,9 +244,13 @@ class StudyResearcherTest {
         }
         fun failed(message: String) = UploadState.Failed("$message: enter the upload token of study 'hapticon-icons' and upload again")
 
+        // Export first, so that an export problem shows as itself rather than as an upload that never ran.
+        vm.export().join()
+        advanceUntilIdle()
+        val export = checkNotNull(vm.uiState.value.export) { "no export: ${vm.uiState.value.message}" }
         vm.setCollector(url, "")
         assertEquals(failed("the collector needs a token"), uploadState())
-        val export = vm.uiState.value.export!!
+        assertEquals(export, vm.uiState.value.export)
         vm.setCollector(url, DOWNLOAD_TOKEN)
         assertEquals(failed("the collector refused this token (this token may only download, not upload)"), uploadState())
         vm.setCollector(url, "hct1.ffffffffffffffff.wrong")
