@@ -246,8 +246,8 @@ class StudyResearcherTest {
 
         // Export first, so that an export problem shows as itself rather than as an upload that never ran.
         vm.export().join()
-        advanceUntilIdle()
-        val export = checkNotNull(vm.uiState.value.export) { "no export: ${vm.uiState.value.message}" }
+        // uiState combines Room flows, which first emit from Room's own threads: wait for them, not for the scheduler.
+        val export = vm.uiState.first { it.export != null || it.message != null }.let { checkNotNull(it.export) { "no export: ${it.message}" } }
         vm.setCollector(url, "")
         assertEquals(failed("the collector needs a token"), uploadState())
         assertEquals(export, vm.uiState.value.export)
