@@ -21,19 +21,24 @@ import java.io.IOException
  * [UsageException] line naming the file and, for a bad member, its path in the file.
  */
 object PatternSource {
-    /** Whether [spec] is a pattern rather than an icon: an `.ahap`/`.haptic` file or a `hapticon.pattern` JSON file. */
-    fun isPattern(spec: String): Boolean {
-        if (HapticIcon.preset(spec) != null) return false
-        val format = PatternFormat.ofFileName(spec) ?: return false
-        if (format != PatternFormat.JSON) return true
+    /**
+     * The pattern [spec] names when it is one rather than an icon (an `.ahap`/`.haptic` file, or a `.json` file
+     * whose schema is `hapticon.pattern`), read once; null for a preset or an icon file, which [IconSource] reads.
+     */
+    fun loadIfPattern(spec: String, mapping: FrequencyMapping = FrequencyMapping.DEFAULT): PatternImport? {
+        if (HapticIcon.preset(spec) != null) return null
+        val format = PatternFormat.ofFileName(spec) ?: return null
+        if (format != PatternFormat.JSON) return load(spec, mapping)
         val file = File(spec)
-        if (!file.isFile || file.length() > Json.DEFAULT_MAX_LENGTH) return false
+        if (!file.isFile || file.length() > Json.DEFAULT_MAX_LENGTH) return null
+        val bytes = readBytes(spec, file)
         val root = try {
-            Json.decodeUtf8(file.readBytes())
+            Json.decodeUtf8(bytes)
         } catch (e: JsonException) {
-            return false // IconSource reports the JSON error
+            return null // IconSource reports the JSON error
         }
-        return root is JsonObject && root["schema"] == JsonString(PatternJson.SCHEMA)
+        if (root !is JsonObject || root["schema"] != JsonString(PatternJson.SCHEMA)) return null
+        return parse(spec, file, PatternFormat.JSON, bytes, mapping)
     }
 
     /** The pattern [spec] names, with the reader's notes; [mapping] turns sharpness/normalised frequency into Hz. */
@@ -44,17 +49,20 @@ object PatternSource {
             ?: throw UsageException("cannot tell the format of $spec: expected a preset or a .json, .ahap or .haptic file")
         if (!file.isFile) throw UsageException("no such pattern file: $spec")
         if (file.length() > Json.DEFAULT_MAX_LENGTH) throw UsageException("pattern file $spec is larger than ${Json.DEFAULT_MAX_LENGTH} bytes")
-        val bytes = try {
-            file.readBytes()
-        } catch (e: IOException) {
-            throw UsageException("cannot read pattern file $spec: ${e.message}")
-        }
-        return try {
-            PatternFiles.read(bytes, format, file.nameWithoutExtension.take(HapticIcon.MAX_NAME_LENGTH).ifBlank { "pattern" }, mapping)
-        } catch (e: JsonException) {
-            throw UsageException("$spec is not valid JSON: ${e.message}")
-        } catch (e: PatternException) {
-            throw UsageException("$spec: ${e.message}")
-        }
+        return parse(spec, file, format, readBytes(spec, file), mapping)
+    }
+
+    private fun readBytes(spec: String, file: File): ByteArray = try {
+        file.readBytes()
+    } catch (e: IOException) {
+        throw UsageException("cannot read pattern file $spec: ${e.message}")
+    }
+
+    private fun parse(spec: String, file: File, format: PatternFormat, bytes: ByteArray, mapping: FrequencyMapping): PatternImport = try {
+        PatternFiles.read(bytes, format, file.nameWithoutExtension.take(HapticIcon.MAX_NAME_LENGTH).ifBlank { "pattern" }, mapping)
+    } catch (e: JsonException) {
+        throw UsageException("$spec is not valid JSON: ${e.message}")
+    } catch (e: PatternException) {
+        throw UsageException("$spec: ${e.message}")
     }
 }

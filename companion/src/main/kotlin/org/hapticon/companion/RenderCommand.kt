@@ -16,9 +16,9 @@ fun runRender(args: List<String>, console: Console) {
         mode = arguments.choice("mode", MODE_CHOICES, RenderMode.EXACT),
     )
     val file = File(arguments.required("out"))
-    if (PatternSource.isPattern(spec)) {
+    val imported = PatternSource.loadIfPattern(spec)
+    if (imported != null) {
         // A pattern has no envelope model or render mode: its curves are sampled as they are.
-        val imported = PatternSource.load(spec)
         imported.notes.forEach { console.err.println("hapticon: note: $it") }
         console.out.println(writeWav(imported.pattern, file, settings.sampleRate, settings.encoding))
         return

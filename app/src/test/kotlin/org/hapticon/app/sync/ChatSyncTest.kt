@@ -65,14 +65,21 @@ class ChatSyncTest {
     }
 
     private fun start(limiter: VibrationRateLimiter) {
-        sync = ChatSync(
-            repository, repository, settings, { _, _, _ -> messenger },
-            AdaptiveHapticPlayer(vibrator, { device }, { null }), limiter,
-            { user -> RendererChoice.capabilitiesOf(user, device, null) }, scope, clock = { now },
-            retryPolicy = RetryPolicy(initialDelayMillis = 10, maxDelayMillis = 10, jitter = 0.0),
-        )
+        sync = newSync(limiter)
         sync.start()
     }
+
+    /** A sync over this test's repository, settings and vibrator; [factory] and [quietNow] as a test needs them. */
+    private fun newSync(
+        limiter: VibrationRateLimiter = VibrationRateLimiter(Clock { now }),
+        factory: (String, String, String?) -> org.hapticon.messaging.Messenger? = { _, _, _ -> messenger },
+        quietNow: () -> Boolean = { false },
+    ) = ChatSync(
+        repository, repository, settings, factory,
+        AdaptiveHapticPlayer(vibrator, { device }, { null }), limiter,
+        { user -> RendererChoice.capabilitiesOf(user, device, null) }, scope, clock = { now },
+        retryPolicy = RetryPolicy(initialDelayMillis = 10, maxDelayMillis = 10, jitter = 0.0), quietNow = quietNow,
+    )
 
     @After
     fun tearDown() {
@@ -282,11 +289,7 @@ class ChatSyncTest {
     @Test
     fun autoPlay_doNotDisturb_nothingVibratesAndNoFeltReceipt() = runBlocking {
         scope.coroutineContext[kotlinx.coroutines.Job]!!.children.forEach { it.cancelAndJoin() }
-        val quiet = ChatSync(
-            repository, repository, settings, { _, _, _ -> messenger },
-            AdaptiveHapticPlayer(vibrator, { device }, { null }), VibrationRateLimiter(Clock { now }),
-            { user -> RendererChoice.capabilitiesOf(user, device, null) }, scope, clock = { now }, quietNow = { true },
-        )
+        val quiet = newSync(quietNow = { true })
         quiet.start()
         await(messenger.state) { it == org.hapticon.messaging.ConnectionState.Connected }
         settings.update { it.copy(autoPlay = true) }
@@ -333,11 +336,7 @@ class ChatSyncTest {
     fun probe_brokerThatNeverAnswers_restoresThePreviousSettingsAndSaysWhy() = runBlocking {
         scope.coroutineContext[kotlinx.coroutines.Job]!!.children.forEach { it.cancelAndJoin() }
         // A factory that cannot make a messenger: no session ever settles, as with an unreachable broker.
-        val silent = ChatSync(
-            repository, repository, settings, { _, _, _ -> null },
-            AdaptiveHapticPlayer(vibrator, { device }, { null }), VibrationRateLimiter(Clock { now }),
-            { user -> RendererChoice.capabilitiesOf(user, device, null) }, scope, clock = { now },
-        )
+        val silent = newSync(factory = { _, _, _ -> null })
         silent.start()
         val before = settings.preferences.value
         val broker = org.hapticon.messaging.mqtt.BrokerAddress.parse("tcp://10.1.1.1:1883")

@@ -100,14 +100,16 @@ public object MetaHaptic {
             if (keys.isEmpty()) keys += AmplitudeKey(0.0, 0.0)
             keys += AmplitudeKey(end, 0.0)
         }
+        fun indexAt(t: Double) = keys.indexOfFirst { abs(it.time - t) < 1e-9 }
+        // First a breakpoint at every transient's time (on the curve), then the emphasis on it.
+        for (tap in pattern.transients) {
+            if (indexAt(tap.time) >= 0) continue
+            val at = keys.indexOfFirst { it.time > tap.time }.let { if (it < 0) keys.size else it }
+            keys.add(at, AmplitudeKey(tap.time, pattern.amplitudeAt(tap.time)))
+        }
         val emphasis = HashMap<Int, Transient>()
         for (tap in pattern.transients) {
-            var index = keys.indexOfFirst { abs(it.time - tap.time) < 1e-9 }
-            if (index < 0) {
-                index = keys.indexOfFirst { it.time > tap.time }.let { if (it < 0) keys.size else it }
-                keys.add(index, AmplitudeKey(tap.time, pattern.amplitudeAt(tap.time)))
-                emphasis.keys.filter { it >= index }.sortedDescending().forEach { emphasis[it + 1] = emphasis.remove(it)!! }
-            }
+            val index = indexAt(tap.time)
             val earlier = emphasis[index]
             if (earlier != null) {
                 notes += "two transients at ${seconds(tap.time)}: the stronger one kept"

@@ -1,9 +1,9 @@
 package org.hapticon.core.pattern
 
 import org.hapticon.core.signal.Signal
+import org.hapticon.core.signal.fractionOf
 import kotlin.math.PI
 import kotlin.math.cos
-import kotlin.math.floor
 import kotlin.math.sin
 
 /**
@@ -20,11 +20,12 @@ public fun HapticPattern.signal(mapping: FrequencyMapping = FrequencyMapping.DEF
 
 private class PatternSignal(private val pattern: HapticPattern, mapping: FrequencyMapping) : Signal {
     private val keys = pattern.frequency
+    private val keyTimes = DoubleArray(keys.size) { keys[it].time }
     // Cycles accumulated at each frequency key, as a fraction of a cycle.
     private val phaseAtKey = DoubleArray(keys.size).also { phase ->
         for (i in 1 until keys.size) {
             val span = keys[i].time - keys[i - 1].time
-            phase[i] = fraction(phase[i - 1] + 0.5 * (keys[i - 1].hertz + keys[i].hertz) * span)
+            phase[i] = fractionOf(phase[i - 1] + 0.5 * (keys[i - 1].hertz + keys[i].hertz) * span)
         }
     }
     private val tapTimes = DoubleArray(pattern.transients.size) { pattern.transients[it].time }
@@ -44,36 +45,31 @@ private class PatternSignal(private val pattern: HapticPattern, mapping: Frequen
             val tau = t - tapTimes[i]
             val window = 0.5 - 0.5 * cos(2.0 * PI * tau / Transient.DURATION_SECONDS)
             val peak = pattern.transients[i].intensity
-            value += peak * peak * window * sin(2.0 * PI * fraction(tapHertz[i] * tau))
+            value += peak * peak * window * sin(2.0 * PI * fractionOf(tapHertz[i] * tau))
             i--
         }
         return value
     }
 
     private fun cyclesAt(t: Double): Double {
-        val i = lastAtOrBefore(DoubleArray(0), t, keys.size) { keys[it].time }
-        if (i < 0) return fraction(keys[0].hertz * t)
+        val i = lastAtOrBefore(keyTimes, t)
+        if (i < 0) return fractionOf(keys[0].hertz * t)
         val tau = t - keys[i].time
-        if (i == keys.lastIndex) return fraction(phaseAtKey[i] + keys[i].hertz * tau)
+        if (i == keys.lastIndex) return fractionOf(phaseAtKey[i] + keys[i].hertz * tau)
         val span = keys[i + 1].time - keys[i].time
         val slope = (keys[i + 1].hertz - keys[i].hertz) / span
-        return fraction(phaseAtKey[i] + keys[i].hertz * tau + 0.5 * slope * tau * tau)
+        return fractionOf(phaseAtKey[i] + keys[i].hertz * tau + 0.5 * slope * tau * tau)
     }
 }
 
-private fun fraction(x: Double): Double {
-    val f = x - floor(x)
-    return if (f < 1.0) f else 0.0
-}
-
-/** Index of the last element ≤ [t] in ascending [times] (or of [size] elements read through [timeOf]); −1 if none. */
-private inline fun lastAtOrBefore(times: DoubleArray, t: Double, size: Int = times.size, timeOf: (Int) -> Double = { times[it] }): Int {
+/** Index of the last element ≤ [t] in ascending [times]; −1 if none. */
+private fun lastAtOrBefore(times: DoubleArray, t: Double): Int {
     var lo = 0
-    var hi = size - 1
+    var hi = times.size - 1
     var found = -1
     while (lo <= hi) {
         val mid = (lo + hi) ushr 1
-        if (timeOf(mid) <= t) {
+        if (times[mid] <= t) {
             found = mid
             lo = mid + 1
         } else {
