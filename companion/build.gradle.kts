@@ -22,7 +22,6 @@ dependencies {
     implementation(libs.postgresql) // the study collector's optional store
     implementation(libs.jetty.server) // the study collector's HTTP server
     implementation(libs.logback.classic) // to quiet Jetty's INFO lines (HiveMQ's logback.xml prints them to stdout)
-    implementation(project(":test-fixtures")) // synthetic gestures for classify-bench
 
     testImplementation(project(":test-fixtures"))
     testImplementation(libs.junit4)

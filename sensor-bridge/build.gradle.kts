@@ -1,4 +1,4 @@
-// Sensor protocols, models and safety limits: pure Kotlin, testable on the JVM. The Android USB
+// Sensor protocols, models, safety limits and the live session: pure Kotlin, testable on the JVM. The Android USB
 // transport lives in :sensor-bridge:usb and only moves bytes.
 plugins {
     alias(libs.plugins.kotlin.jvm)
@@ -11,6 +11,7 @@ kotlin {
 
 dependencies {
     api(project(":haptics-core"))
+    api(libs.kotlinx.coroutines.core) // the live session's state flows (live/, grains/, glove/)
 
     testImplementation(project(":test-fixtures"))
     testImplementation(libs.junit4)

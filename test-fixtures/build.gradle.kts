@@ -1,4 +1,5 @@
-// Shared test doubles and recorded data, used by the tests of every other module.
+// Shared test doubles and recorded data, used only by the tests of every other module (testImplementation):
+// no main code depends on it (docs/architecture.md), and it hands JUnit to nobody.
 plugins {
     alias(libs.plugins.kotlin.jvm)
 }
@@ -9,6 +10,6 @@ kotlin {
 
 dependencies {
     api(project(":haptics-core"))
-    api(libs.junit4)
-    implementation(project(":gesture")) // the gesture label types of the synthetic gestures
+
+    testImplementation(libs.junit4)
 }

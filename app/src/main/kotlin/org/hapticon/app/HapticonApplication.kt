@@ -3,22 +3,22 @@ package org.hapticon.app
 import android.app.Application
 import android.content.Context
 import org.hapticon.app.data.IconRepository
+import org.hapticon.app.data.database.HapticonDatabase
 import org.hapticon.app.gesture.GestureComponent
 import org.hapticon.app.playback.HapticPlayer
 import org.hapticon.app.playback.VibrationOutput
 import org.hapticon.app.playback.VibratorVibrationOutput
 import org.hapticon.app.sensors.AndroidUsbDevices
 import org.hapticon.app.sensors.CalibrationStore
-import org.hapticon.app.sensors.GrainEngine
-import org.hapticon.app.sensors.HubGloveSource
-import org.hapticon.app.sensors.PartnerHand
-import org.hapticon.app.sensors.SensorHub
 import org.hapticon.app.sensors.SharedPreferencesCalibrationStore
-import org.hapticon.app.sensors.SimulatedPartner
-import org.hapticon.app.sensors.UsbDevices
 import org.hapticon.app.study.StudyComponent
 import org.hapticon.app.sync.ChatComponent
-import org.hapticon.app.data.database.HapticonDatabase
+import org.hapticon.sensor.glove.HubGloveSource
+import org.hapticon.sensor.glove.PartnerHand
+import org.hapticon.sensor.glove.SimulatedPartner
+import org.hapticon.sensor.grains.GrainEngine
+import org.hapticon.sensor.live.SensorSession
+import org.hapticon.sensor.live.UsbDevices
 
 /** Holds the app's long-lived objects; tests replace them through [container]. */
 class HapticonApplication : Application() {
@@ -48,7 +48,7 @@ class AppContainer(
     val player: HapticPlayer,
     val vibration: VibrationOutput,
     val usbDevices: UsbDevices,
-    val sensorHub: SensorHub,
+    val sensorHub: SensorSession,
     val grainEngine: GrainEngine,
     val glove: HubGloveSource,
     val calibrations: CalibrationStore,
@@ -69,7 +69,7 @@ class AppContainer(
             vibration: VibrationOutput = VibratorVibrationOutput.create(context),
             calibrations: CalibrationStore = SharedPreferencesCalibrationStore(context),
         ): AppContainer {
-            val hub = SensorHub(usbDevices)
+            val hub = SensorSession(usbDevices)
             val grains = GrainEngine(vibration).also { hub.addFrameListener(it) }
             // One database for chat and study: two Room instances on one file would not see each other's writes.
             val db = HapticonDatabase.create(context)

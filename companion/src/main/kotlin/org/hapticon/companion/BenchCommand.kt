@@ -1,5 +1,8 @@
 package org.hapticon.companion
 
+import org.hapticon.companion.cli.Arguments
+import org.hapticon.companion.cli.Console
+import org.hapticon.companion.cli.UsageException
 import org.hapticon.companion.bench.BenchConfig
 import org.hapticon.companion.bench.BenchReport
 import org.hapticon.companion.bench.Benchmark

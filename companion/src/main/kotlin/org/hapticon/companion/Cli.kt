@@ -1,5 +1,7 @@
 package org.hapticon.companion
 
+import org.hapticon.companion.cli.Console
+import org.hapticon.companion.cli.UsageException
 import org.hapticon.companion.chat.runBroker
 import org.hapticon.companion.chat.runChat
 import org.hapticon.companion.gesture.runClassify
@@ -25,9 +27,6 @@ const val EXIT_INTERNAL_ERROR: Int = 1
 
 /** Exit status for a usage or validation error: the user can fix the command line or the input. */
 const val EXIT_USAGE: Int = 2
-
-/** Where a command writes: results to [out], progress and diagnostics to [err]. */
-class Console(val out: PrintStream, val err: PrintStream)
 
 /**
  * Runs one `hapticon` command in-process and returns its exit status: [EXIT_OK], [EXIT_USAGE] with one line

@@ -1,5 +1,12 @@
 package org.hapticon.companion
 
+import org.hapticon.companion.cli.Arguments
+import org.hapticon.companion.cli.Console
+import org.hapticon.companion.cli.DEFAULT_SAMPLE_RATE
+import org.hapticon.companion.cli.FORMAT_CHOICES
+import org.hapticon.companion.cli.OutputFiles
+import org.hapticon.companion.cli.UsageException
+import org.hapticon.companion.cli.cliName
 import org.hapticon.core.io.WavEncoding
 import org.hapticon.core.io.WavWriter
 import org.hapticon.core.pattern.FrequencyMapping

@@ -1,5 +1,12 @@
 package org.hapticon.companion
 
+import org.hapticon.companion.cli.Arguments
+import org.hapticon.companion.cli.AudioSettings
+import org.hapticon.companion.cli.Console
+import org.hapticon.companion.cli.DEFAULT_SAMPLE_RATE
+import org.hapticon.companion.cli.OutputFiles
+import org.hapticon.companion.cli.UsageException
+import org.hapticon.companion.cli.WavExport
 import org.hapticon.companion.chat.MessagingDemo
 import org.hapticon.companion.gesture.GestureDemo
 import org.hapticon.companion.plot.IconPlot

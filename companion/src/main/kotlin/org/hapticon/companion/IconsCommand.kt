@@ -1,5 +1,7 @@
 package org.hapticon.companion
 
+import org.hapticon.companion.cli.Arguments
+import org.hapticon.companion.cli.Console
 import org.hapticon.core.HapticIcon
 import org.hapticon.core.io.IconJson
 

@@ -1,5 +1,11 @@
 package org.hapticon.companion
 
+import org.hapticon.companion.cli.renderable
+import org.hapticon.companion.cli.Arguments
+import org.hapticon.companion.cli.Console
+import org.hapticon.companion.cli.DEFAULT_SAMPLE_RATE
+import org.hapticon.companion.cli.IconSource
+import org.hapticon.companion.cli.MODEL_CHOICES
 import org.hapticon.companion.plot.IconPlot
 import org.hapticon.companion.plot.PngExport
 import org.hapticon.core.render.EnvelopeModel

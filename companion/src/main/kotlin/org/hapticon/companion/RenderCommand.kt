@@ -1,5 +1,14 @@
 package org.hapticon.companion
 
+import org.hapticon.companion.cli.Arguments
+import org.hapticon.companion.cli.AudioSettings
+import org.hapticon.companion.cli.Console
+import org.hapticon.companion.cli.DEFAULT_SAMPLE_RATE
+import org.hapticon.companion.cli.FORMAT_CHOICES
+import org.hapticon.companion.cli.IconSource
+import org.hapticon.companion.cli.MODEL_CHOICES
+import org.hapticon.companion.cli.MODE_CHOICES
+import org.hapticon.companion.cli.WavExport
 import org.hapticon.core.io.WavEncoding
 import org.hapticon.core.render.EnvelopeModel
 import org.hapticon.core.render.RenderMode

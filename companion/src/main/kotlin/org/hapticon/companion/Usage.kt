@@ -1,5 +1,7 @@
 package org.hapticon.companion
 
+import org.hapticon.companion.cli.DEFAULT_SAMPLE_RATE
+
 /** The text `hapticon help` prints. */
 val USAGE: String = """
     |hapticon - render, plot and benchmark haptic icons

@@ -1,5 +1,6 @@
 package org.hapticon.companion
 
+import org.hapticon.companion.cli.UsageException
 import org.hapticon.core.HapticIcon
 import org.hapticon.core.io.IconJson
 import org.junit.Assert.assertEquals

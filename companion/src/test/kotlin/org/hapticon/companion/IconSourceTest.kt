@@ -1,5 +1,7 @@
 package org.hapticon.companion
 
+import org.hapticon.companion.cli.IconSource
+import org.hapticon.companion.cli.UsageException
 import org.hapticon.core.HapticIcon
 import org.hapticon.core.io.IconJson
 import org.hapticon.testing.TestIcons

@@ -2,8 +2,8 @@ package org.hapticon.app.gesture
 
 import android.content.Context
 import android.hardware.SensorManager
-import org.hapticon.app.sensors.SensorHub
 import java.io.File
+import org.hapticon.sensor.live.SensorSession
 
 /** The kinds of live source the Gestures screens offer (a file is imported, not streamed). */
 enum class GestureSourceKind(val label: String) {
@@ -36,7 +36,7 @@ class GestureComponent(
 
     companion object {
         /** Recordings in `filesDir/recordings`, the model in `filesDir/gesture-model.json`. */
-        fun create(context: Context, hub: SensorHub): GestureComponent {
+        fun create(context: Context, hub: SensorSession): GestureComponent {
             val sensors = context.getSystemService(SensorManager::class.java)
             val accelerometer = sensors?.let { AccelerometerGestureSource(it) }?.takeIf { it.available }
             return GestureComponent(

@@ -1,9 +1,9 @@
 package org.hapticon.app.gesture
 
-import org.hapticon.app.sensors.ChannelHistory
-import org.hapticon.app.sensors.LiveFrame
 import org.hapticon.gesture.Channel
 import org.hapticon.gesture.Recording
+import org.hapticon.sensor.live.ChannelHistory
+import org.hapticon.sensor.live.LiveFrame
 
 /**
  * Collects the frames of one recording from a [GestureSource] (a [GestureSink], written on the source's

@@ -1,9 +1,9 @@
 package org.hapticon.app.gesture
 
-import org.hapticon.app.sensors.ConnectionState
-import org.hapticon.app.sensors.FrameListener
-import org.hapticon.app.sensors.SensorHub
 import java.io.Closeable
+import org.hapticon.sensor.live.ConnectionState
+import org.hapticon.sensor.live.FrameListener
+import org.hapticon.sensor.live.SensorSession
 
 /**
  * The sensor board stream the Sensors tab connected (FSR, glove) as a gesture source: every decoded frame
@@ -11,7 +11,7 @@ import java.io.Closeable
  * for CSV headers) and the rate is the board's declared rate, else the rate measured over the last
  * second — both fixed when recording starts, so connect and let it stream for a second first.
  */
-class SensorHubGestureSource(private val hub: SensorHub) : GestureSource {
+class SensorHubGestureSource(private val hub: SensorSession) : GestureSource {
     // Held while a frame is delivered and while stopping, so no frame arrives after stop() returns.
     private val lock = Any()
     private var subscription: Closeable? = null

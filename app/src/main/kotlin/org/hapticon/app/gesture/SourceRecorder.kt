@@ -1,7 +1,7 @@
 package org.hapticon.app.gesture
 
-import org.hapticon.app.sensors.ChannelHistory
 import org.hapticon.gesture.Recording
+import org.hapticon.sensor.live.ChannelHistory
 
 /**
  * Records from one [GestureSource] at a time into a [RecordingBuffer] of at most [maxSeconds], plotting

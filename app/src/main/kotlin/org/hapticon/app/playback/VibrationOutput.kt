@@ -6,18 +6,20 @@ import android.os.VibrationEffect
 import android.os.Vibrator
 import android.os.VibratorManager
 import org.hapticon.core.render.VibrationWaveform
+import org.hapticon.sensor.grains.GrainSink
 import org.hapticon.sensor.safety.SafetyLimits
 
 /**
  * Sensor-driven vibration on the phone: short bursts (compliance grains) and a held level that is
  * renewed continuously (handshake pressure). Callable from any thread (the sensor's reading thread).
+ * It is sensor-bridge's [GrainSink]: the grain engine's bursts end here, on the phone's vibrator.
  */
-interface VibrationOutput {
+interface VibrationOutput : GrainSink {
     /** What the phone's vibrator can do. */
     val capabilities: PlaybackCapabilities
 
     /** Plays [waveform] at once, replacing whatever this output was playing. */
-    fun play(waveform: VibrationWaveform)
+    override fun play(waveform: VibrationWaveform)
 
     /**
      * Vibrates at [amplitude] (1..255) for [durationMillis], replacing whatever was playing.

@@ -8,6 +8,9 @@ import java.io.IOException
 import kotlinx.coroutines.flow.Flow
 import kotlinx.coroutines.flow.map
 import kotlinx.coroutines.flow.onStart
+import org.hapticon.sensor.live.SensorDevice
+import org.hapticon.sensor.live.UsbAccessDeniedException
+import org.hapticon.sensor.live.UsbDevices
 import org.hapticon.sensor.port.LineSettings
 import org.hapticon.sensor.port.SerialPort
 import org.hapticon.sensor.usb.AttachedSerialDevice

@@ -3,6 +3,7 @@ package org.hapticon.app.sensors
 import kotlinx.coroutines.flow.Flow
 import kotlinx.coroutines.flow.flowOf
 import org.hapticon.messaging.HandPose
+import org.hapticon.sensor.glove.PartnerHand
 
 /**
  * A tele-handshake partner on the other end of the chat: their thumb and middle angles as their

@@ -2,7 +2,6 @@ package org.hapticon.app.study
 
 import android.content.Context
 import java.io.File
-import org.hapticon.app.data.database.HapticonDatabase
 
 /** Everything the user-study feature needs, built once in the [org.hapticon.app.AppContainer]. */
 class StudyComponent(
@@ -18,7 +17,7 @@ class StudyComponent(
 ) {
     companion object {
         /** The production component on [db]: exports go to cacheDir/exports, noise files to cacheDir/masking-noise. */
-        fun create(context: Context, db: HapticonDatabase): StudyComponent = StudyComponent(
+        fun create(context: Context, db: StudyDatabase): StudyComponent = StudyComponent(
             repository = RoomStudyRepository(db),
             settings = SharedPreferencesStudySettings(context),
             pin = PinGate(context),

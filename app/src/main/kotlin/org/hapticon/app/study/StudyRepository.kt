@@ -1,9 +1,7 @@
 package org.hapticon.app.study
 
-import androidx.room.withTransaction
 import kotlinx.coroutines.flow.Flow
 import kotlinx.coroutines.flow.map
-import org.hapticon.app.data.database.HapticonDatabase
 import org.hapticon.study.OriginatingStudy
 import org.hapticon.study.ParticipantId
 import org.hapticon.study.ProtocolJson
@@ -108,8 +106,21 @@ interface StudyRepository {
     suspend fun append(sessionId: Long, entry: LogEntry)
 }
 
+/**
+ * The study tables' DAOs, as the app's Room database provides them. The study feature reads the database
+ * only through this, so `data.database` may depend on `study` (for the entities) and not the reverse.
+ */
+interface StudyDatabase {
+    fun studyProtocolDao(): StudyProtocolDao
+    fun studySessionDao(): StudySessionDao
+    fun studyEventDao(): StudyEventDao
+
+    /** Runs [block] in one database transaction (Room's `withTransaction`). */
+    suspend fun <R> inTransaction(block: suspend () -> R): R
+}
+
 /** [StudyRepository] on Room. */
-class RoomStudyRepository(private val db: HapticonDatabase) : StudyRepository {
+class RoomStudyRepository(private val db: StudyDatabase) : StudyRepository {
     private val protocols = db.studyProtocolDao()
     private val sessions = db.studySessionDao()
     private val events = db.studyEventDao()
@@ -151,7 +162,7 @@ class RoomStudyRepository(private val db: HapticonDatabase) : StudyRepository {
         }
     }
 
-    override suspend fun startSession(protocol: StoredProtocol, nowMillis: Long): SessionRecord = db.withTransaction {
+    override suspend fun startSession(protocol: StoredProtocol, nowMillis: Long): SessionRecord = db.inTransaction {
         val index = (sessions.lastParticipantIndex(protocol.protocol.id) ?: -1) + 1
         val participant = ParticipantId.of(index)
         val entity = StudySessionEntity(

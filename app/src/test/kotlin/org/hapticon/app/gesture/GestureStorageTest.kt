@@ -1,14 +1,15 @@
 package org.hapticon.app.gesture
 
-import org.hapticon.app.sensors.ChannelHistory
-import org.hapticon.app.sensors.SensorHub
-import org.hapticon.app.sensors.TestUsbDevices
+import java.io.File
 import org.hapticon.app.feature.gesture.RecordingPlotSource
+import org.hapticon.app.sensors.TestUsbDevices
 import org.hapticon.gesture.Channel
 import org.hapticon.gesture.Recording
 import org.hapticon.gesture.recognition.GestureLabel
 import org.hapticon.gesture.recognition.PersonalTrainer
-import org.hapticon.testing.gestures.SyntheticGestures
+import org.hapticon.sensor.live.ChannelHistory
+import org.hapticon.sensor.live.SensorSession
+import org.hapticon.gesture.synthetic.SyntheticGestures
 import org.junit.Assert.assertArrayEquals
 import org.junit.Assert.assertEquals
 import org.junit.Assert.assertFalse
@@ -20,7 +21,6 @@ import org.junit.Test
 import org.junit.rules.TemporaryFolder
 import org.junit.runner.RunWith
 import org.robolectric.RobolectricTestRunner
-import java.io.File
 
 /** Recording and model files, imports, the bounded recording buffer and the sensor-board source's edges. */
 @RunWith(RobolectricTestRunner::class)
@@ -113,7 +113,7 @@ class GestureStorageTest {
 
     @Test
     fun sensorBoard_withoutAStreamSaysWhereToConnect_namesMadeSafe() {
-        val source = SensorHubGestureSource(SensorHub(TestUsbDevices()))
+        val source = SensorHubGestureSource(SensorSession(TestUsbDevices()))
         assertEquals(emptyList<GestureChannel>(), source.channels)
         val e = assertThrows(IllegalStateException::class.java) { source.start {} }
         assertEquals("No sensor board is streaming: connect one in the Sensors tab and let it run for a second", e.message)

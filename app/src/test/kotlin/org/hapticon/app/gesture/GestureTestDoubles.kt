@@ -17,7 +17,7 @@ import org.hapticon.core.HapticIcon
 import org.hapticon.gesture.Recording
 import org.hapticon.messaging.ChatMessage
 import org.hapticon.messaging.Receipt
-import org.hapticon.testing.gestures.SyntheticGestures
+import org.hapticon.gesture.synthetic.SyntheticGestures
 import org.junit.rules.TestWatcher
 import org.junit.runner.Description
 import java.io.File

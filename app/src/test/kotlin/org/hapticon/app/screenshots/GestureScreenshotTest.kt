@@ -11,12 +11,12 @@ import org.hapticon.app.feature.gesture.TeachUiState
 import org.hapticon.app.feature.iconeditor.IconEditorScreen
 import org.hapticon.app.feature.iconeditor.IconEditorViewModel
 import org.hapticon.app.feature.iconeditor.IconField
-import org.hapticon.app.sensors.EmptyPlotSource
 import org.hapticon.core.HapticIcon
 import org.hapticon.gesture.extraction.FitOptions
 import org.hapticon.gesture.extraction.IconFitter
 import org.hapticon.gesture.extraction.SyntheticGestures
 import org.hapticon.gesture.recognition.GestureLabel
+import org.hapticon.sensor.live.EmptyPlotSource
 import org.junit.Test
 
 /** The Gestures tab (recorder with a fitted icon, teach, live recognition) and the icon editor. */

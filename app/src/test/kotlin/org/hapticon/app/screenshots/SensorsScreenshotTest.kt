@@ -9,14 +9,14 @@ import org.hapticon.app.feature.sensors.SensorsActions
 import org.hapticon.app.feature.sensors.SensorsScreen
 import org.hapticon.app.feature.sensors.SensorsUiState
 import org.hapticon.app.feature.sensors.StreamUi
-import org.hapticon.app.sensors.ChannelHistory
-import org.hapticon.app.sensors.ConnectionState
-import org.hapticon.app.sensors.LiveFrame
-import org.hapticon.app.sensors.SensorProtocol
-import org.hapticon.app.sensors.StopCause
-import org.hapticon.app.sensors.StreamCounters
 import org.hapticon.app.sensors.TEST_UNO
 import org.hapticon.sensor.grains.BinDistribution
+import org.hapticon.sensor.live.ChannelHistory
+import org.hapticon.sensor.live.ConnectionState
+import org.hapticon.sensor.live.LiveFrame
+import org.hapticon.sensor.live.StopCause
+import org.hapticon.sensor.live.StreamCounters
+import org.hapticon.sensor.protocol.SensorProtocol
 import org.junit.Test
 
 /** The Sensors tab: no USB host, no board yet, a live stream with plots, an unplugged board. */

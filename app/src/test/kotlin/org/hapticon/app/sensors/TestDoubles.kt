@@ -12,7 +12,13 @@ import org.hapticon.app.playback.VibrationOutput
 import org.hapticon.core.render.VibrationWaveform
 import org.hapticon.sensor.glove.FlexCalibration
 import org.hapticon.sensor.glove.FlexDivider
+import org.hapticon.sensor.glove.ForceFeedbackSink
 import org.hapticon.sensor.glove.GloveFinger
+import org.hapticon.sensor.glove.GloveListener
+import org.hapticon.sensor.glove.GloveSource
+import org.hapticon.sensor.glove.PartnerHand
+import org.hapticon.sensor.live.SensorDevice
+import org.hapticon.sensor.live.UsbDevices
 import org.hapticon.sensor.port.LineSettings
 import org.hapticon.sensor.port.SerialPort
 

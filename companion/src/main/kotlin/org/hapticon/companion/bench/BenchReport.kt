@@ -7,7 +7,6 @@ import org.hapticon.core.io.JsonNumber
 import org.hapticon.core.io.JsonObject
 import org.hapticon.core.io.JsonString
 import org.hapticon.core.io.JsonValue
-import org.hapticon.sensor.protocol.ProtocolBenchmark
 import java.util.Locale
 
 /** Formats a [BenchResult] as a human-readable table or as one JSON object. */

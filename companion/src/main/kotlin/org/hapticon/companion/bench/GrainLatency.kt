@@ -7,7 +7,9 @@ import org.hapticon.sensor.grains.GrainDecider
 import org.hapticon.sensor.grains.GrainSettings
 import org.hapticon.sensor.port.FakeSerialPort
 import org.hapticon.sensor.port.SensorReader
-import org.hapticon.sensor.protocol.framed.FramedDecoder
+import org.hapticon.sensor.protocol.ProtocolListener
+import org.hapticon.sensor.protocol.SensorProtocol
+import org.hapticon.sensor.protocol.decoderFor
 import org.hapticon.sensor.protocol.framed.FramedEncoder
 import org.hapticon.sensor.protocol.framed.FramedProtocol
 import org.hapticon.sensor.protocol.framed.SampleFrame
@@ -62,7 +64,7 @@ class GrainLatency(private val samples: Int, private val warmupSamples: Int) {
         val port = FakeSerialPort()
         val path = GrainPath(port, writtenAt, latencies, handled, warmupSamples, total)
         var failure: Throwable? = null
-        val reader = SensorReader(port, FramedDecoder(path), { _, cause -> failure = cause }, bufferSize = READ_BYTES)
+        val reader = SensorReader(port, decoderFor(SensorProtocol.FRAMED, path), { _, cause -> failure = cause }, bufferSize = READ_BYTES)
         reader.start("hapticon-bench-grain-latency")
         try {
             port.enqueue(frames.deviceInfo)
@@ -93,7 +95,7 @@ class GrainLatency(private val samples: Int, private val warmupSamples: Int) {
         private val handled: AtomicInteger,
         private val warmupSamples: Int,
         private val total: Int,
-    ) : FramedDecoder.Listener {
+    ) : ProtocolListener {
         private val threads = ManagementFactory.getThreadMXBean() as com.sun.management.ThreadMXBean
         private val counting = threads.isThreadAllocatedMemorySupported && threads.isThreadAllocatedMemoryEnabled
 

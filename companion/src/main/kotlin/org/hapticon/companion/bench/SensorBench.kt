@@ -2,7 +2,6 @@ package org.hapticon.companion.bench
 
 import org.hapticon.sensor.grains.SensorBenchmarkResult
 import org.hapticon.sensor.grains.SensorModelBenchmark
-import org.hapticon.sensor.protocol.ProtocolBenchmark
 
 /**
  * The sensor figures of one bench run: decoding speed and allocation per protocol ([decode], from

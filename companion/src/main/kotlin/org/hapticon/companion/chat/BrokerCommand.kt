@@ -1,8 +1,8 @@
 package org.hapticon.companion.chat
 
-import org.hapticon.companion.Arguments
-import org.hapticon.companion.Console
-import org.hapticon.companion.UsageException
+import org.hapticon.companion.cli.Arguments
+import org.hapticon.companion.cli.Console
+import org.hapticon.companion.cli.UsageException
 import org.hapticon.messaging.Topics
 import org.hapticon.messaging.broker.AclFile
 import org.hapticon.messaging.broker.BrokerSecurity

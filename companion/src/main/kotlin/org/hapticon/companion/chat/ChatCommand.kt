@@ -1,10 +1,10 @@
 package org.hapticon.companion.chat
 
+import org.hapticon.companion.cli.Arguments
+import org.hapticon.companion.cli.Console
+import org.hapticon.companion.cli.OutputFiles
+import org.hapticon.companion.cli.UsageException
 import kotlinx.coroutines.runBlocking
-import org.hapticon.companion.Arguments
-import org.hapticon.companion.Console
-import org.hapticon.companion.OutputFiles
-import org.hapticon.companion.UsageException
 import org.hapticon.messaging.BoundedDeduplicator
 import org.hapticon.messaging.Clock
 import org.hapticon.messaging.InboxGate

@@ -1,5 +1,9 @@
 package org.hapticon.companion.chat
 
+import org.hapticon.companion.cli.AudioSettings
+import org.hapticon.companion.cli.IconSource
+import org.hapticon.companion.cli.UsageException
+import org.hapticon.companion.cli.WavExport
 import kotlinx.coroutines.CoroutineScope
 import kotlinx.coroutines.Deferred
 import kotlinx.coroutines.NonCancellable
@@ -16,10 +20,6 @@ import kotlinx.coroutines.runBlocking
 import kotlinx.coroutines.selects.select
 import kotlinx.coroutines.withContext
 import kotlinx.coroutines.withTimeoutOrNull
-import org.hapticon.companion.AudioSettings
-import org.hapticon.companion.IconSource
-import org.hapticon.companion.UsageException
-import org.hapticon.companion.WavExport
 import org.hapticon.core.HapticIcon
 import org.hapticon.messaging.Admission
 import org.hapticon.messaging.Capabilities

@@ -1,5 +1,6 @@
 package org.hapticon.companion.chat
 
+import org.hapticon.companion.cli.Console
 import kotlinx.coroutines.runBlocking
 import org.hapticon.core.HapticIcon
 import org.hapticon.core.io.Json
@@ -140,7 +141,7 @@ object MessagingBenchmark {
 }
 
 /** `hapticon bench --messaging [--quick] [--json]`: the [MessagingBenchmark] figures to stdout, progress to stderr. */
-fun runMessagingBench(quick: Boolean, json: Boolean, console: org.hapticon.companion.Console) {
+fun runMessagingBench(quick: Boolean, json: Boolean, console: Console) {
     val config = if (quick) MessagingBenchmark.Config.QUICK else MessagingBenchmark.Config.FULL
     val result = MessagingBenchmark.run(config) { step -> console.err.println("bench: $step") }
     console.out.println(if (json) MessagingBenchmark.json(result) else MessagingBenchmark.table(result))

@@ -1,10 +1,10 @@
 package org.hapticon.companion.chat
 
+import org.hapticon.companion.cli.AudioSettings
+import org.hapticon.companion.cli.WavExport
 import kotlinx.coroutines.channels.Channel
 import kotlinx.coroutines.runBlocking
 import kotlinx.coroutines.withTimeout
-import org.hapticon.companion.AudioSettings
-import org.hapticon.companion.WavExport
 import org.hapticon.core.HapticIcon
 import org.hapticon.messaging.ChatMessage
 import org.hapticon.messaging.InboxEvent

@@ -1,7 +1,7 @@
 package org.hapticon.companion.gesture
 
-import org.hapticon.companion.Console
-import org.hapticon.companion.OutputFiles
+import org.hapticon.companion.cli.Console
+import org.hapticon.companion.cli.OutputFiles
 import org.hapticon.core.HapticIcon
 import org.hapticon.gesture.extraction.SyntheticGestures
 import org.hapticon.gesture.io.RecordingWav

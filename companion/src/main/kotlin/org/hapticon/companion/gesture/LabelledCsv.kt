@@ -1,6 +1,6 @@
 package org.hapticon.companion.gesture
 
-import org.hapticon.companion.UsageException
+import org.hapticon.companion.cli.UsageException
 import org.hapticon.gesture.Channel
 import org.hapticon.gesture.Recording
 import org.hapticon.gesture.recognition.GestureLabel

@@ -7,9 +7,9 @@ import org.hapticon.gesture.recognition.LabelledWindows
 import org.hapticon.gesture.recognition.LiveRecognizer
 import org.hapticon.gesture.recognition.PersonalTrainer
 import org.hapticon.gesture.recognition.WindowConfig
-import org.hapticon.testing.gestures.SimulatedPerson
-import org.hapticon.testing.gestures.SyntheticGestures
-import org.hapticon.testing.gestures.SyntheticTake
+import org.hapticon.gesture.synthetic.SimulatedPerson
+import org.hapticon.gesture.synthetic.SyntheticGestures
+import org.hapticon.gesture.synthetic.SyntheticTake
 import java.util.stream.Collectors
 import kotlin.math.sqrt
 

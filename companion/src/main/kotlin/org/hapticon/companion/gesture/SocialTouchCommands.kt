@@ -1,8 +1,8 @@
 package org.hapticon.companion.gesture
 
-import org.hapticon.companion.Console
-import org.hapticon.companion.OutputFiles
-import org.hapticon.companion.UsageException
+import org.hapticon.companion.cli.Console
+import org.hapticon.companion.cli.OutputFiles
+import org.hapticon.companion.cli.UsageException
 import org.hapticon.companion.sensors.InputFiles
 import org.hapticon.gesture.social.ContactCsv
 import org.hapticon.gesture.social.LogitBoost

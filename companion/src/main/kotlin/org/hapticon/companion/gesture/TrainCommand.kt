@@ -1,9 +1,9 @@
 package org.hapticon.companion.gesture
 
-import org.hapticon.companion.Arguments
-import org.hapticon.companion.Console
-import org.hapticon.companion.OutputFiles
-import org.hapticon.companion.UsageException
+import org.hapticon.companion.cli.Arguments
+import org.hapticon.companion.cli.Console
+import org.hapticon.companion.cli.OutputFiles
+import org.hapticon.companion.cli.UsageException
 import org.hapticon.companion.sensors.InputFiles
 import org.hapticon.gesture.recognition.ForestParams
 import org.hapticon.gesture.recognition.GestureModel

@@ -1,6 +1,6 @@
 package org.hapticon.companion.plot
 
-import org.hapticon.companion.cliName
+import org.hapticon.companion.cli.cliName
 import org.hapticon.core.render.IconRenderer
 import java.awt.image.BufferedImage
 import kotlin.math.max

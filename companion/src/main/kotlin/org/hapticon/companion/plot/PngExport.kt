@@ -1,6 +1,6 @@
 package org.hapticon.companion.plot
 
-import org.hapticon.companion.OutputFiles
+import org.hapticon.companion.cli.OutputFiles
 import java.awt.image.BufferedImage
 import java.io.File
 import javax.imageio.ImageIO
@@ -13,7 +13,7 @@ object PngExport {
 
     /**
      * Writes [image] to [file] as PNG and returns a one-line summary. Throws
-     * [org.hapticon.companion.UsageException] when the file cannot be written.
+     * [org.hapticon.companion.cli.UsageException] when the file cannot be written.
      */
     fun write(image: BufferedImage, file: File): String {
         OutputFiles.write(file) { out ->

@@ -1,7 +1,8 @@
 package org.hapticon.companion.replicate
 
-import org.hapticon.companion.Console
-import org.hapticon.companion.UsageException
+import org.hapticon.companion.cli.Console
+import org.hapticon.companion.cli.UsageException
+
 
 /**
  * `hapticon replicate ID`: runs the [Replication] with that id from [allReplications] and prints ours beside the

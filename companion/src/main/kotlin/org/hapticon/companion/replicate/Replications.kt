@@ -1,6 +1,6 @@
 package org.hapticon.companion.replicate
 
-import org.hapticon.testing.gestures.NaoSyntheticPeople
+import org.hapticon.gesture.synthetic.NaoSyntheticPeople
 
 /** Every replication `hapticon replicate` knows, in id order. */
 val allReplications: List<Replication> = listOf(

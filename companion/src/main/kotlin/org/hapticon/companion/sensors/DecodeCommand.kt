@@ -1,9 +1,10 @@
 package org.hapticon.companion.sensors
 
-import org.hapticon.companion.Arguments
-import org.hapticon.companion.Console
-import org.hapticon.companion.UsageException
+import org.hapticon.companion.cli.Arguments
+import org.hapticon.companion.cli.Console
+import org.hapticon.companion.cli.UsageException
 import org.hapticon.sensor.port.ReplayPort
+import org.hapticon.sensor.protocol.SensorProtocol
 import java.io.BufferedWriter
 import java.io.FileInputStream
 import java.io.IOException
@@ -13,8 +14,8 @@ import java.io.OutputStreamWriter
 fun runDecode(args: List<String>, console: Console) {
     val arguments = Arguments.parse("decode", args, valueOptions = setOf("protocol", "in"))
     arguments.requireNoPositionals()
-    val protocol = arguments.choice<DecodeProtocol?>("protocol", DecodeProtocol.CHOICES, null)
-        ?: throw UsageException("decode needs --protocol ${DecodeProtocol.CHOICES.keys.joinToString("|")}")
+    val protocol = arguments.choice<SensorProtocol?>("protocol", SensorProtocol.CLI_CHOICES, null)
+        ?: throw UsageException("decode needs --protocol ${SensorProtocol.CLI_CHOICES.keys.joinToString("|")}")
     val file = InputFiles.existing("in", arguments.required("in"))
     // Not closed: it wraps stdout, which belongs to the caller.
     val out = BufferedWriter(OutputStreamWriter(console.out, Charsets.UTF_8), StreamToJsonLines.READ_BYTES)

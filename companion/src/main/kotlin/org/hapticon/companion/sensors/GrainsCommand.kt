@@ -1,8 +1,8 @@
 package org.hapticon.companion.sensors
 
-import org.hapticon.companion.Arguments
-import org.hapticon.companion.Console
-import org.hapticon.companion.UsageException
+import org.hapticon.companion.cli.Arguments
+import org.hapticon.companion.cli.Console
+import org.hapticon.companion.cli.UsageException
 import org.hapticon.sensor.grains.BinDistribution
 import org.hapticon.sensor.grains.GrainSettings
 import org.hapticon.sensor.glove.SensorCsvException

@@ -1,7 +1,7 @@
 package org.hapticon.companion.sensors
 
-import org.hapticon.companion.Arguments
-import org.hapticon.companion.Console
+import org.hapticon.companion.cli.Arguments
+import org.hapticon.companion.cli.Console
 import org.hapticon.sensor.glove.HandshakeCsv
 
 /**

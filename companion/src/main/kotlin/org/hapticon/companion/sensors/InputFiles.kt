@@ -1,6 +1,6 @@
 package org.hapticon.companion.sensors
 
-import org.hapticon.companion.UsageException
+import org.hapticon.companion.cli.UsageException
 import org.hapticon.sensor.glove.SensorCsvException
 import java.io.File
 import java.io.IOException

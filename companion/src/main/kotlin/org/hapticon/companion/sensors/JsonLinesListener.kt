@@ -2,18 +2,16 @@ package org.hapticon.companion.sensors
 
 import org.hapticon.core.io.Json
 import org.hapticon.core.io.JsonObject
-import org.hapticon.sensor.protocol.csv.CsvDecoder
+import org.hapticon.sensor.protocol.ProtocolListener
 import org.hapticon.sensor.protocol.csv.CsvSample
 import org.hapticon.sensor.protocol.framed.AckStatus
 import org.hapticon.sensor.protocol.framed.DeviceInfo
-import org.hapticon.sensor.protocol.framed.FramedDecoder
 import org.hapticon.sensor.protocol.framed.SampleFrame
-import org.hapticon.sensor.protocol.lucid.LucidGloveDecoder
 import org.hapticon.sensor.protocol.lucid.LucidGloveFrame
 import java.io.Writer
 
 /** Listens to any of the decoders and writes each frame to [out] as one line of compact JSON ([FrameJson]). */
-class JsonLinesListener(private val out: Writer) : CsvDecoder.Listener, LucidGloveDecoder.Listener, FramedDecoder.Listener {
+class JsonLinesListener(private val out: Writer) : ProtocolListener {
     override fun onSample(sample: CsvSample) = write(FrameJson.csv(sample))
 
     override fun onFrame(frame: LucidGloveFrame) = write(FrameJson.lucid(frame))

@@ -1,13 +1,15 @@
 package org.hapticon.companion.sensors
 
-import org.hapticon.companion.OutputFiles
+import org.hapticon.companion.cli.OutputFiles
 import org.hapticon.sensor.glove.HandshakeCsv
 import org.hapticon.sensor.grains.GrainSettings
 import org.hapticon.sensor.port.ReplayPort
+import org.hapticon.sensor.protocol.ProtocolListener
+import org.hapticon.sensor.protocol.SensorProtocol
 import org.hapticon.sensor.protocol.StreamStats
+import org.hapticon.sensor.protocol.decoderFor
 import org.hapticon.sensor.protocol.framed.ChannelUnit
 import org.hapticon.sensor.protocol.framed.DeviceInfo
-import org.hapticon.sensor.protocol.framed.FramedDecoder
 import org.hapticon.sensor.protocol.framed.FramedEncoder
 import org.hapticon.sensor.protocol.framed.FramedProtocol
 import org.hapticon.sensor.protocol.framed.SampleFrame
@@ -43,7 +45,7 @@ object SensorDemo {
         var stats: StreamStats? = null
         OutputFiles.write(decoded) { stream ->
             val out = OutputStreamWriter(stream, Charsets.UTF_8)
-            stats = ReplayPort(recording).use { StreamToJsonLines.decode(it, DecodeProtocol.FRAMED, out) }
+            stats = ReplayPort(recording).use { StreamToJsonLines.decode(it, SensorProtocol.FRAMED, out) }
             out.flush()
         }
         val decodedStats = checkNotNull(stats)
@@ -92,7 +94,7 @@ object SensorDemo {
     /** The samples of a framed [recording] as a `time_s,voltage` CSV: device time in seconds, counts in volts. */
     fun voltageCsv(recording: ByteArray): String {
         val csv = StringBuilder("time_s,voltage\n")
-        val decoder = FramedDecoder(object : FramedDecoder.Listener {
+        val decoder = decoderFor(SensorProtocol.FRAMED, object : ProtocolListener {
             override fun onSample(frame: SampleFrame) {
                 val volts = SyntheticPress.voltsOfCounts(frame.values[0])
                 csv.append(String.format(Locale.ROOT, "%.6f,%.5f\n", frame.timestampMicros / 1e6, volts))

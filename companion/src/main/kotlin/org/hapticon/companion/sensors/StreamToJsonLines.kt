@@ -2,7 +2,9 @@ package org.hapticon.companion.sensors
 
 import org.hapticon.sensor.port.SensorReader
 import org.hapticon.sensor.port.SerialPort
+import org.hapticon.sensor.protocol.SensorProtocol
 import org.hapticon.sensor.protocol.StreamStats
+import org.hapticon.sensor.protocol.decoderFor
 import java.io.Writer
 
 /** The work of `hapticon decode`: a byte source in, JSON lines out. */
@@ -16,9 +18,9 @@ object StreamToJsonLines {
      * stream is counted, not thrown. Returns the decoder's statistics. The port is not closed.
      * @throws java.io.IOException when reading the port (or writing [out]) fails.
      */
-    fun decode(port: SerialPort, protocol: DecodeProtocol, out: Writer): StreamStats {
+    fun decode(port: SerialPort, protocol: SensorProtocol, out: Writer): StreamStats {
         val listener = JsonLinesListener(out)
-        val decoder = protocol.decoder(listener)
+        val decoder = decoderFor(protocol, listener)
         var failure: Throwable? = null
         val reason = SensorReader(port, decoder, { _, cause -> failure = cause }, bufferSize = READ_BYTES).run()
         // A recording only ends; anything else is the failure the reader caught (an I/O error, or a bug).

@@ -1,8 +1,8 @@
 package org.hapticon.companion.study
 
-import org.hapticon.companion.Arguments
-import org.hapticon.companion.Console
-import org.hapticon.companion.UsageException
+import org.hapticon.companion.cli.Arguments
+import org.hapticon.companion.cli.Console
+import org.hapticon.companion.cli.UsageException
 import java.io.IOException
 import java.sql.SQLException
 

@@ -1,7 +1,7 @@
 package org.hapticon.companion.study
 
-import org.hapticon.companion.Console
-import org.hapticon.companion.OutputFiles
+import org.hapticon.companion.cli.Console
+import org.hapticon.companion.cli.OutputFiles
 import org.hapticon.study.OriginatingStudy
 import org.hapticon.study.StudyPlan
 import org.hapticon.study.StudySession

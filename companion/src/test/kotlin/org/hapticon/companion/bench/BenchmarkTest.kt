@@ -11,7 +11,6 @@ import org.hapticon.core.io.JsonString
 import org.hapticon.core.render.EnvelopeModel
 import org.hapticon.core.render.IconRenderer
 import org.hapticon.sensor.grains.SensorBenchmarkResult
-import org.hapticon.sensor.protocol.ProtocolBenchmark
 import org.hapticon.testing.TestIcons
 import org.hapticon.testing.readAllSamples
 import org.junit.Assert.assertEquals

@@ -1,7 +1,7 @@
 package org.hapticon.companion.chat
 
+import org.hapticon.companion.cli.Console
 import kotlinx.coroutines.runBlocking
-import org.hapticon.companion.Console
 import org.hapticon.companion.cli
 import org.hapticon.messaging.ChatMessage
 import org.hapticon.messaging.InboxEvent

@@ -1,7 +1,7 @@
 package org.hapticon.companion.chat
 
+import org.hapticon.companion.cli.Console
 import kotlinx.coroutines.runBlocking
-import org.hapticon.companion.Console
 import org.hapticon.companion.EXIT_OK
 import org.hapticon.companion.reportFailure
 import org.hapticon.messaging.InboxEvent

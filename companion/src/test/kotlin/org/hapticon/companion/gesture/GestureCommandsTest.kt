@@ -1,11 +1,11 @@
 package org.hapticon.companion.gesture
 
-import org.hapticon.companion.UsageException
+import org.hapticon.companion.cli.UsageException
 import org.hapticon.companion.cli
 import org.hapticon.gesture.Recording
 import org.hapticon.gesture.recognition.GestureLabel
 import org.hapticon.gesture.recognition.GestureModel
-import org.hapticon.testing.gestures.SyntheticGestures
+import org.hapticon.gesture.synthetic.SyntheticGestures
 import org.junit.Assert.assertEquals
 import org.junit.Assert.assertThrows
 import org.junit.Assert.assertTrue

@@ -1,7 +1,7 @@
 package org.hapticon.companion.replicate
 
-import org.hapticon.companion.Console
-import org.hapticon.companion.UsageException
+import org.hapticon.companion.cli.Console
+import org.hapticon.companion.cli.UsageException
 import org.hapticon.companion.cli
 import org.hapticon.core.render.EnvelopeModel
 import org.hapticon.core.HapticIcon

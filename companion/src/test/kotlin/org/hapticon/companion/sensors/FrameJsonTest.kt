@@ -1,5 +1,7 @@
 package org.hapticon.companion.sensors
 
+import org.hapticon.sensor.protocol.SensorProtocol
+import org.hapticon.sensor.protocol.decoderFor
 import org.hapticon.sensor.protocol.framed.AckStatus
 import org.hapticon.sensor.protocol.framed.FramedEncoder
 import org.hapticon.sensor.protocol.framed.FramedProtocol
@@ -8,9 +10,9 @@ import org.junit.Test
 import java.io.StringWriter
 
 class FrameJsonTest {
-    private fun decode(protocol: DecodeProtocol, bytes: ByteArray): List<String> {
+    private fun decode(protocol: SensorProtocol, bytes: ByteArray): List<String> {
         val out = StringWriter()
-        val decoder = protocol.decoder(JsonLinesListener(out))
+        val decoder = decoderFor(protocol, JsonLinesListener(out))
         decoder.feed(bytes)
         decoder.finish()
         return out.toString().lines().dropLast(1)
@@ -18,13 +20,13 @@ class FrameJsonTest {
 
     @Test
     fun lucid_joystickWithOnlyX_writesNullForY() {
-        val lines = decode(DecodeProtocol.LUCID, "A1B2C3D4E5F7\n".toByteArray())
+        val lines = decode(SensorProtocol.LUCID_GLOVES, "A1B2C3D4E5F7\n".toByteArray())
         assertEquals(listOf("""{"type":"lucid","fingers":[1,2,3,4,5],"joystick":[7,null]}"""), lines)
     }
 
     @Test
     fun lucid_partialSplay_writesNullForFingersWithout() {
-        val lines = decode(DecodeProtocol.LUCID, "A1B2C3D4E5(CB)300(AB)100O\n".toByteArray())
+        val lines = decode(SensorProtocol.LUCID_GLOVES, "A1B2C3D4E5(CB)300(AB)100O\n".toByteArray())
         assertEquals(listOf("""{"type":"lucid","fingers":[1,2,3,4,5],"buttons":["calibrate"],"splay":[100,null,300,null,null]}"""), lines)
     }
 
@@ -32,12 +34,12 @@ class FrameJsonTest {
     fun ack_rejection_namesTheStatusInLowerCase() {
         val frame = ByteArray(FramedProtocol.MAX_ENCODED_FRAME_LENGTH)
         val length = FramedEncoder(firstSequence = 40).ack(sequence = 9, status = AckStatus.OUT_OF_RANGE, detail = 3, destination = frame)
-        assertEquals(listOf("""{"type":"ack","command_seq":9,"status":"out_of_range","detail":3}"""), decode(DecodeProtocol.FRAMED, frame.copyOf(length)))
+        assertEquals(listOf("""{"type":"ack","command_seq":9,"status":"out_of_range","detail":3}"""), decode(SensorProtocol.FRAMED, frame.copyOf(length)))
     }
 
     @Test
     fun csv_decimalAndNegativeValues_keepTheirForm() {
-        val lines = decode(DecodeProtocol.CSV, "-1.5,2,1e3\n0.25,-0,7\n".toByteArray())
+        val lines = decode(SensorProtocol.CSV, "-1.5,2,1e3\n0.25,-0,7\n".toByteArray())
         assertEquals(listOf("""{"type":"csv","values":[-1.5,2,1000]}""", """{"type":"csv","values":[0.25,-0,7]}"""), lines)
     }
 }

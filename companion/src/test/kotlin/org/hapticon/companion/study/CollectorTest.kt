@@ -1,6 +1,6 @@
 package org.hapticon.companion.study
 
-import org.hapticon.companion.Console
+import org.hapticon.companion.cli.Console
 import org.hapticon.companion.cli
 import org.hapticon.testing.StudyResults
 import org.junit.Assert.assertEquals

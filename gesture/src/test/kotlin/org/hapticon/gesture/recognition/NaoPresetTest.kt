@@ -1,6 +1,6 @@
 package org.hapticon.gesture.recognition
 
-import org.hapticon.testing.gestures.NaoSyntheticPeople
+import org.hapticon.gesture.synthetic.NaoSyntheticPeople
 import org.junit.Assert.assertEquals
 import org.junit.Assert.assertTrue
 import org.junit.Assert.fail

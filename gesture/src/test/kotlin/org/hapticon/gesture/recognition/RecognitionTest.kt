@@ -2,7 +2,7 @@ package org.hapticon.gesture.recognition
 
 import org.hapticon.gesture.Channel
 import org.hapticon.gesture.Recording
-import org.hapticon.testing.gestures.SyntheticGestures
+import org.hapticon.gesture.synthetic.SyntheticGestures
 import org.junit.Assert.assertArrayEquals
 import org.junit.Assert.assertEquals
 import org.junit.Assert.assertThrows

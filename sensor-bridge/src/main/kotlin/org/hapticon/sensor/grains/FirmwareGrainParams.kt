@@ -4,10 +4,11 @@ import org.hapticon.sensor.electrotactile.AmplitudeSteps
 import org.hapticon.sensor.electrotactile.ElectrodePattern
 import org.hapticon.sensor.electrotactile.TimeDivisionScan
 import org.hapticon.sensor.electrotactile.PulseTrain
+import org.hapticon.sensor.protocol.framed.FramedEncoder
 
 /**
  * The compliance-grain parameters the reference firmware renders stand-alone (firmware/hapticon_ref/grains.h),
- * sent with the framed protocol's SET_GRAINS command ([org.hapticon.sensor.protocol.framed.FramedEncoder.setGrains]).
+ * sent with the framed protocol's SET_GRAINS command ([setGrains]).
  *
  * [grainCount] grains (bins = grains + 1, as [GrainSettings]) over [minForce]..[maxForce] in the force channel's
  * own units (the board bins what it samples), [pattern] with at least 4 electrodes, each electrode's amplitude
@@ -59,3 +60,12 @@ public data class FirmwareGrainParams(
         public const val PAYLOAD_LENGTH: Int = 21
     }
 }
+
+/**
+ * Encodes a SET_GRAINS command giving the firmware's stand-alone grain renderer [params] (checked here; the
+ * device checks them again and NACKs with OUT_OF_RANGE and grains.h's reason as detail) into [destination]
+ * at [offset]; returns the encoded length. An extension here rather than a member of [FramedEncoder], so the
+ * protocol package does not depend on the grain model (docs/architecture.md).
+ */
+public fun FramedEncoder.setGrains(params: FirmwareGrainParams, destination: ByteArray, offset: Int = 0): Int =
+    setGrainsPayload(params.payload(), destination, offset)

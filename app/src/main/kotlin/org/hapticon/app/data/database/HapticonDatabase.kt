@@ -5,9 +5,11 @@ import androidx.room.AutoMigration
 import androidx.room.Database
 import androidx.room.Room
 import androidx.room.RoomDatabase
+import androidx.room.withTransaction
 import org.hapticon.app.study.StudyEventDao
 import org.hapticon.app.study.StudyEventEntity
 import org.hapticon.app.study.StudyProtocolDao
+import org.hapticon.app.study.StudyDatabase
 import org.hapticon.app.study.StudyProtocolEntity
 import org.hapticon.app.study.StudySessionDao
 import org.hapticon.app.study.StudySessionEntity
@@ -28,15 +30,17 @@ import org.hapticon.app.study.StudySessionEntity
     exportSchema = true,
     autoMigrations = [AutoMigration(from = 1, to = 2), AutoMigration(from = 2, to = 3), AutoMigration(from = 3, to = 4)],
 )
-abstract class HapticonDatabase : RoomDatabase() {
+abstract class HapticonDatabase : RoomDatabase(), StudyDatabase {
     abstract fun conversationDao(): ConversationDao
     abstract fun messageDao(): MessageDao
     abstract fun outboxDao(): OutboxDao
     abstract fun iconDao(): IconDao
     abstract fun pendingReceiptDao(): PendingReceiptDao
-    abstract fun studyProtocolDao(): StudyProtocolDao
-    abstract fun studySessionDao(): StudySessionDao
-    abstract fun studyEventDao(): StudyEventDao
+    abstract override fun studyProtocolDao(): StudyProtocolDao
+    abstract override fun studySessionDao(): StudySessionDao
+    abstract override fun studyEventDao(): StudyEventDao
+
+    override suspend fun <R> inTransaction(block: suspend () -> R): R = withTransaction(block)
 
     companion object {
         const val NAME = "hapticon.db"

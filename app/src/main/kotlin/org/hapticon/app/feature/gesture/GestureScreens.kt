@@ -44,12 +44,13 @@ import androidx.lifecycle.compose.collectAsStateWithLifecycle
 import androidx.lifecycle.viewmodel.compose.viewModel
 import androidx.lifecycle.viewmodel.initializer
 import androidx.lifecycle.viewmodel.viewModelFactory
+import java.io.FileNotFoundException
+import java.util.Locale
 import org.hapticon.app.AppContainer
 import org.hapticon.app.feature.sensors.LivePlot
 import org.hapticon.app.gesture.GestureComponent
 import org.hapticon.app.gesture.GestureSourceKind
 import org.hapticon.app.gesture.TouchGestureSource
-import org.hapticon.app.sensors.PlotSource
 import org.hapticon.app.ui.DropdownField
 import org.hapticon.app.ui.EnvelopeThumbnail
 import org.hapticon.app.ui.LabeledValue
@@ -57,8 +58,7 @@ import org.hapticon.app.ui.SwitchRow
 import org.hapticon.gesture.Recording
 import org.hapticon.gesture.extraction.FitReport
 import org.hapticon.gesture.recognition.GestureLabel
-import java.io.FileNotFoundException
-import java.util.Locale
+import org.hapticon.sensor.live.PlotSource
 
 /** The Gestures destination's three parts, in tab order. */
 enum class GestureTab(val label: String) { RECORD("Record"), TEACH("Teach"), RECOGNISE("Recognise") }

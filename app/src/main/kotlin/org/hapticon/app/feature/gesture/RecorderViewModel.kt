@@ -2,6 +2,7 @@ package org.hapticon.app.feature.gesture
 
 import androidx.lifecycle.ViewModel
 import androidx.lifecycle.viewModelScope
+import java.io.InputStream
 import kotlinx.coroutines.CoroutineDispatcher
 import kotlinx.coroutines.Dispatchers
 import kotlinx.coroutines.Job
@@ -20,7 +21,6 @@ import org.hapticon.app.gesture.RecordingImport
 import org.hapticon.app.gesture.SavedRecording
 import org.hapticon.app.gesture.SourceRecorder
 import org.hapticon.app.playback.HapticPlayer
-import org.hapticon.app.sensors.PlotSource
 import org.hapticon.core.HapticIcon
 import org.hapticon.core.IconValidationException
 import org.hapticon.gesture.Recording
@@ -29,7 +29,7 @@ import org.hapticon.gesture.extraction.IconFit
 import org.hapticon.gesture.extraction.IconFitter
 import org.hapticon.gesture.extraction.LevelReference
 import org.hapticon.gesture.recognition.GestureLabel
-import java.io.InputStream
+import org.hapticon.sensor.live.PlotSource
 
 /** What the recorder shows: the source, the live or recorded take, the trim, the fitted icon and the saved recordings. */
 data class RecorderUiState(

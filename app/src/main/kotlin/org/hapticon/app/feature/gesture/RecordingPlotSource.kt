@@ -1,7 +1,7 @@
 package org.hapticon.app.feature.gesture
 
-import org.hapticon.app.sensors.PlotSource
 import org.hapticon.gesture.Recording
+import org.hapticon.sensor.live.PlotSource
 
 /**
  * A whole recorded take as a [PlotSource], so the trim view draws it with the same [org.hapticon.app.feature.sensors.LivePlot]

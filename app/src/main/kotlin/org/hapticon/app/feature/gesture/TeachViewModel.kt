@@ -2,6 +2,7 @@ package org.hapticon.app.feature.gesture
 
 import androidx.lifecycle.ViewModel
 import androidx.lifecycle.viewModelScope
+import java.io.InputStream
 import kotlinx.coroutines.CoroutineDispatcher
 import kotlinx.coroutines.Dispatchers
 import kotlinx.coroutines.Job
@@ -18,13 +19,12 @@ import org.hapticon.app.gesture.GestureSourceKind
 import org.hapticon.app.gesture.GestureSpans
 import org.hapticon.app.gesture.SourceRecorder
 import org.hapticon.app.gesture.readLimited
-import org.hapticon.app.sensors.PlotSource
 import org.hapticon.gesture.Recording
 import org.hapticon.gesture.recognition.GestureLabel
 import org.hapticon.gesture.recognition.GestureModel
 import org.hapticon.gesture.recognition.LabelledWindows
 import org.hapticon.gesture.recognition.PersonalTrainer
-import java.io.InputStream
+import org.hapticon.sensor.live.PlotSource
 
 /** How a personal model trained: window accuracy on its own examples and on the held-out last take of each label. */
 data class TrainingResult(

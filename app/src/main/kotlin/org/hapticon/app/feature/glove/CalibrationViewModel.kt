@@ -9,13 +9,13 @@ import kotlinx.coroutines.flow.StateFlow
 import kotlinx.coroutines.flow.combine
 import kotlinx.coroutines.flow.stateIn
 import org.hapticon.app.sensors.CalibrationStore
-import org.hapticon.app.sensors.GloveListener
-import org.hapticon.app.sensors.GloveSource
 import org.hapticon.app.sensors.SavedCalibration
 import org.hapticon.sensor.glove.CalibrationState
 import org.hapticon.sensor.glove.DividerReading
 import org.hapticon.sensor.glove.FlexCalibrationFlow
 import org.hapticon.sensor.glove.GloveFinger
+import org.hapticon.sensor.glove.GloveListener
+import org.hapticon.sensor.glove.GloveSource
 import org.hapticon.sensor.glove.SensorFault
 
 /**

@@ -18,18 +18,18 @@ import kotlinx.coroutines.flow.stateIn
 import org.hapticon.app.playback.ContinuousVibration
 import org.hapticon.app.playback.VibrationOutput
 import org.hapticon.app.sensors.CalibrationStore
-import org.hapticon.app.sensors.ForceFeedbackStream
-import org.hapticon.app.sensors.GloveListener
-import org.hapticon.app.sensors.GloveSource
 import org.hapticon.app.sensors.HandshakeLink
 import org.hapticon.app.sensors.NetworkPartnerHand
 import org.hapticon.app.sensors.NoHandshakeLink
-import org.hapticon.app.sensors.NoPartner
-import org.hapticon.app.sensors.PartnerHand
 import org.hapticon.sensor.glove.FlexCalibration
+import org.hapticon.sensor.glove.ForceFeedbackStream
 import org.hapticon.sensor.glove.GloveFinger
+import org.hapticon.sensor.glove.GloveListener
+import org.hapticon.sensor.glove.GloveSource
 import org.hapticon.sensor.glove.HandRegion
 import org.hapticon.sensor.glove.HandshakeSession
+import org.hapticon.sensor.glove.NoPartner
+import org.hapticon.sensor.glove.PartnerHand
 
 /**
  * A tele-handshake for one glove: the wearer's thumb and middle angles (from the glove, through the

@@ -14,7 +14,7 @@ import androidx.compose.ui.semantics.contentDescription
 import androidx.compose.ui.semantics.semantics
 import androidx.compose.ui.unit.Dp
 import androidx.compose.ui.unit.dp
-import org.hapticon.app.sensors.PlotSource
+import org.hapticon.sensor.live.PlotSource
 
 /** How much of the past a live plot shows. */
 const val PLOT_WINDOW_SECONDS: Int = 5

@@ -40,11 +40,11 @@ import androidx.compose.runtime.saveable.rememberSaveable
 import androidx.compose.runtime.setValue
 import androidx.compose.ui.Alignment
 import androidx.compose.ui.Modifier
+import androidx.compose.ui.semantics.LiveRegionMode
 import androidx.compose.ui.semantics.Role
 import androidx.compose.ui.semantics.contentDescription
 import androidx.compose.ui.semantics.heading
 import androidx.compose.ui.semantics.liveRegion
-import androidx.compose.ui.semantics.LiveRegionMode
 import androidx.compose.ui.semantics.semantics
 import androidx.compose.ui.semantics.stateDescription
 import androidx.compose.ui.unit.dp
@@ -58,17 +58,17 @@ import org.hapticon.app.AppContainer
 import org.hapticon.app.designsystem.HapticonIcons
 import org.hapticon.app.feature.glove.CalibrationRoute
 import org.hapticon.app.feature.glove.HandshakeRoute
-import org.hapticon.app.sensors.BAUD_RATES
-import org.hapticon.app.sensors.ConnectionState
-import org.hapticon.app.sensors.ForceInput
-import org.hapticon.app.sensors.GloveChannels
-import org.hapticon.app.sensors.SensorProtocol
-import org.hapticon.app.sensors.StopCause
 import org.hapticon.app.ui.DropdownField
 import org.hapticon.app.ui.LabeledValue
 import org.hapticon.app.ui.SwitchRow
+import org.hapticon.sensor.glove.GloveChannels
 import org.hapticon.sensor.grains.BinDistribution
+import org.hapticon.sensor.grains.ForceInput
 import org.hapticon.sensor.grains.GrainSettings
+import org.hapticon.sensor.live.ConnectionState
+import org.hapticon.sensor.live.StopCause
+import org.hapticon.sensor.protocol.BAUD_RATES
+import org.hapticon.sensor.protocol.SensorProtocol
 
 /** The screens inside the Sensors destination. */
 private enum class SensorsPane { STREAM, CALIBRATION, HANDSHAKE }

@@ -1,13 +1,13 @@
 package org.hapticon.app.feature.sensors
 
 import androidx.compose.runtime.Immutable
-import org.hapticon.app.sensors.ConnectionState
-import org.hapticon.app.sensors.ForceInput
-import org.hapticon.app.sensors.PlotSource
-import org.hapticon.app.sensors.SensorDevice
-import org.hapticon.app.sensors.SensorProtocol
-import org.hapticon.app.sensors.StreamCounters
 import org.hapticon.sensor.grains.BinDistribution
+import org.hapticon.sensor.grains.ForceInput
+import org.hapticon.sensor.live.ConnectionState
+import org.hapticon.sensor.live.PlotSource
+import org.hapticon.sensor.live.SensorDevice
+import org.hapticon.sensor.live.StreamCounters
+import org.hapticon.sensor.protocol.SensorProtocol
 
 /** What the Sensors screen shows. */
 sealed interface SensorsUiState {

@@ -16,21 +16,21 @@ import kotlinx.coroutines.flow.flow
 import kotlinx.coroutines.flow.flowOf
 import kotlinx.coroutines.flow.stateIn
 import kotlinx.coroutines.launch
-import org.hapticon.app.sensors.ConnectionState
-import org.hapticon.app.sensors.ForceInput
-import org.hapticon.app.sensors.GloveChannels
-import org.hapticon.app.sensors.GrainConfig
-import org.hapticon.app.sensors.GrainEngine
-import org.hapticon.app.sensors.GrainStatus
-import org.hapticon.app.sensors.HubGloveSource
-import org.hapticon.app.sensors.SensorDevice
-import org.hapticon.app.sensors.SensorHub
-import org.hapticon.app.sensors.SensorProtocol
-import org.hapticon.app.sensors.StreamInfo
-import org.hapticon.app.sensors.StreamSnapshot
-import org.hapticon.app.sensors.UsbDevices
+import org.hapticon.sensor.glove.GloveChannels
+import org.hapticon.sensor.glove.HubGloveSource
 import org.hapticon.sensor.grains.BinDistribution
+import org.hapticon.sensor.grains.ForceInput
+import org.hapticon.sensor.grains.GrainConfig
+import org.hapticon.sensor.grains.GrainEngine
 import org.hapticon.sensor.grains.GrainSettings
+import org.hapticon.sensor.grains.GrainStatus
+import org.hapticon.sensor.live.ConnectionState
+import org.hapticon.sensor.live.SensorDevice
+import org.hapticon.sensor.live.SensorSession
+import org.hapticon.sensor.live.StreamInfo
+import org.hapticon.sensor.live.StreamSnapshot
+import org.hapticon.sensor.live.UsbDevices
+import org.hapticon.sensor.protocol.SensorProtocol
 import org.hapticon.sensor.protocol.framed.ChannelUnit
 
 /**
@@ -43,7 +43,7 @@ import org.hapticon.sensor.protocol.framed.ChannelUnit
 @OptIn(ExperimentalCoroutinesApi::class)
 class SensorsViewModel(
     private val usb: UsbDevices,
-    private val hub: SensorHub,
+    private val hub: SensorSession,
     private val grains: GrainEngine,
     private val glove: HubGloveSource,
     private val refreshMillis: Long = DEFAULT_REFRESH_MILLIS,

@@ -4,17 +4,17 @@ import androidx.compose.ui.test.assertIsNotEnabled
 import androidx.compose.ui.test.junit4.createComposeRule
 import androidx.compose.ui.test.onNodeWithContentDescription
 import androidx.compose.ui.test.onNodeWithText
-import org.hapticon.app.sensors.EmptyPlotSource
+import java.util.Random
 import org.hapticon.core.HapticIcon
 import org.hapticon.gesture.extraction.FitOptions
 import org.hapticon.gesture.extraction.IconFitter
 import org.hapticon.gesture.extraction.SyntheticGestures
 import org.hapticon.gesture.recognition.GestureLabel
+import org.hapticon.sensor.live.EmptyPlotSource
 import org.junit.Rule
 import org.junit.Test
 import org.junit.runner.RunWith
 import org.robolectric.RobolectricTestRunner
-import java.util.Random
 
 /** What the gesture screens show for given states. */
 @RunWith(RobolectricTestRunner::class)

@@ -14,7 +14,7 @@ import org.hapticon.app.gesture.testGestureComponent
 import org.hapticon.core.HapticIcon
 import org.hapticon.gesture.recognition.GestureLabel
 import org.hapticon.gesture.recognition.PersonalTrainer
-import org.hapticon.testing.gestures.SyntheticGestures
+import org.hapticon.gesture.synthetic.SyntheticGestures
 import org.junit.Assert.assertEquals
 import org.junit.Assert.assertFalse
 import org.junit.Assert.assertNull

@@ -11,7 +11,7 @@ import org.hapticon.app.gesture.TestGestureSource
 import org.hapticon.app.gesture.syntheticSource
 import org.hapticon.app.gesture.testGestureComponent
 import org.hapticon.gesture.recognition.GestureLabel
-import org.hapticon.testing.gestures.SyntheticGestures
+import org.hapticon.gesture.synthetic.SyntheticGestures
 import org.junit.Assert.assertEquals
 import org.junit.Assert.assertNotNull
 import org.junit.Assert.assertNull

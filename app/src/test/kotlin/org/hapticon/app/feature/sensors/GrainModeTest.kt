@@ -18,14 +18,14 @@ import org.hapticon.app.playback.RecordedVibration
 import org.hapticon.app.playback.VibratorVibrationOutput
 import org.hapticon.app.playback.defaultVibrator
 import org.hapticon.app.playback.lastVibration
-import org.hapticon.app.sensors.ForceInput
-import org.hapticon.app.sensors.GrainEngine
-import org.hapticon.app.sensors.HubGloveSource
 import org.hapticon.app.sensors.RecordingVibrationOutput
-import org.hapticon.app.sensors.SensorHub
 import org.hapticon.app.sensors.TEST_UNO
 import org.hapticon.app.sensors.TestUsbDevices
+import org.hapticon.sensor.glove.HubGloveSource
 import org.hapticon.sensor.grains.BinDistribution
+import org.hapticon.sensor.grains.ForceInput
+import org.hapticon.sensor.grains.GrainEngine
+import org.hapticon.sensor.live.SensorSession
 import org.hapticon.sensor.port.FakeSerialPort
 import org.junit.After
 import org.junit.Assert.assertEquals
@@ -48,7 +48,7 @@ class GrainModeTest {
     private val vibrator: Vibrator = defaultVibrator(context)
     private val output = RecordingVibrationOutput(VibratorVibrationOutput(vibrator)) { lastVibration(vibrator) }
     private val usb = TestUsbDevices()
-    private val hub = SensorHub(usb)
+    private val hub = SensorSession(usb)
     private val grains = GrainEngine(output).also { hub.addFrameListener(it) }
     private lateinit var viewModel: SensorsViewModel
 

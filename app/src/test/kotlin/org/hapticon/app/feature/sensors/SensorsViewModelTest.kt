@@ -12,18 +12,18 @@ import kotlinx.coroutines.test.runTest
 import kotlinx.coroutines.test.setMain
 import org.hapticon.app.playback.PlaybackCapabilities
 import org.hapticon.app.playback.VibrationOutput
-import org.hapticon.app.sensors.ChannelHistory
-import org.hapticon.app.sensors.ConnectionState
-import org.hapticon.app.sensors.GrainEngine
-import org.hapticon.app.sensors.HubGloveSource
-import org.hapticon.app.sensors.SensorHub
-import org.hapticon.app.sensors.SensorProtocol
-import org.hapticon.app.sensors.StopCause
-import org.hapticon.app.sensors.StreamCounters
 import org.hapticon.app.sensors.TEST_UNO
 import org.hapticon.app.sensors.TestUsbDevices
 import org.hapticon.core.render.VibrationWaveform
+import org.hapticon.sensor.glove.HubGloveSource
+import org.hapticon.sensor.grains.GrainEngine
+import org.hapticon.sensor.live.ChannelHistory
+import org.hapticon.sensor.live.ConnectionState
+import org.hapticon.sensor.live.SensorSession
+import org.hapticon.sensor.live.StopCause
+import org.hapticon.sensor.live.StreamCounters
 import org.hapticon.sensor.port.FakeSerialPort
+import org.hapticon.sensor.protocol.SensorProtocol
 import org.hapticon.testing.RecordedStreams
 import org.junit.After
 import org.junit.Assert.assertEquals
@@ -37,7 +37,7 @@ import org.junit.Test
 class SensorsViewModelTest {
     private val dispatcher = StandardTestDispatcher()
     private val usb = TestUsbDevices()
-    private val hub = SensorHub(usb)
+    private val hub = SensorSession(usb)
     private val grains = GrainEngine(SilentVibration).also { hub.addFrameListener(it) }
     private lateinit var viewModel: SensorsViewModel
 

@@ -75,13 +75,14 @@ public class FramedEncoder(firstSequence: Int = 0) {
     }
 
     /**
-     * A command giving the firmware's stand-alone grain renderer new parameters (checked by
-     * [org.hapticon.sensor.grains.FirmwareGrainParams]; the device checks them again and NACKs with
-     * [AckStatus.OUT_OF_RANGE] and grains.h's reason as detail).
+     * A command giving the firmware's stand-alone grain renderer new parameters: [payload] as
+     * `FirmwareGrainParams.payload()` makes it (callers use the typed `FramedEncoder.setGrains(params, …)` of
+     * sensor-bridge's grains package, so the protocol does not depend on the grain model; the device checks
+     * the values again and NACKs with [AckStatus.OUT_OF_RANGE] and grains.h's reason as detail).
      */
-    public fun setGrains(params: org.hapticon.sensor.grains.FirmwareGrainParams, destination: ByteArray, offset: Int = 0): Int {
+    internal fun setGrainsPayload(payload: ByteArray, destination: ByteArray, offset: Int): Int {
         begin(FramedProtocol.TYPE_SET_GRAINS)
-        for (b in params.payload()) u8(b.toInt() and 0xFF)
+        for (b in payload) u8(b.toInt() and 0xFF)
         return finish(destination, offset)
     }
 

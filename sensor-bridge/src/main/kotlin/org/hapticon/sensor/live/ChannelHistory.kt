@@ -1,20 +1,20 @@
-package org.hapticon.app.sensors
+package org.hapticon.sensor.live
 
-import androidx.compose.runtime.Stable
-
-/** Where a live plot reads its points from. */
-@Stable
-interface PlotSource {
+/**
+ * Where a live plot reads its points from. (Compose's strong skipping compares implementations by
+ * identity, so this plain interface needs no `@Stable` to keep a plot from recomposing.)
+ */
+public interface PlotSource {
     /**
      * Copies channel [channel]'s samples of the last [windowNanos] before the newest sample, oldest
      * first: x in [0, 1] across the window into [xOut], the value into [yOut]. Returns how many were
      * copied (at most the arrays' size). Allocation-free.
      */
-    fun copyRecent(channel: Int, windowNanos: Long, xOut: FloatArray, yOut: FloatArray): Int
+    public fun copyRecent(channel: Int, windowNanos: Long, xOut: FloatArray, yOut: FloatArray): Int
 }
 
 /** A plot source with nothing in it, for previews and screens without a stream. */
-object EmptyPlotSource : PlotSource {
+public object EmptyPlotSource : PlotSource {
     override fun copyRecent(channel: Int, windowNanos: Long, xOut: FloatArray, yOut: FloatArray): Int = 0
 }
 
@@ -23,7 +23,7 @@ object EmptyPlotSource : PlotSource {
  * preallocated ring buffers: written by the reading thread, read by the UI when it draws. Nothing is
  * allocated per sample or per draw.
  */
-class ChannelHistory(val capacity: Int = DEFAULT_CAPACITY, val maxChannels: Int = DEFAULT_MAX_CHANNELS) : PlotSource {
+public class ChannelHistory(public val capacity: Int = DEFAULT_CAPACITY, public val maxChannels: Int = DEFAULT_MAX_CHANNELS) : PlotSource {
     private val lock = Any()
     private val values = Array(maxChannels) { FloatArray(capacity) }
     private val times = LongArray(capacity)
@@ -31,11 +31,11 @@ class ChannelHistory(val capacity: Int = DEFAULT_CAPACITY, val maxChannels: Int 
     private var size = 0
 
     /** Samples written since the last [clear]. */
-    @Volatile var written: Long = 0
+    @Volatile public var written: Long = 0
         private set
 
     /** Appends [frame] (its first [maxChannels] channels). */
-    fun append(frame: LiveFrame) {
+    public fun append(frame: LiveFrame) {
         synchronized(lock) {
             val channels = minOf(frame.channelCount, maxChannels)
             for (c in 0 until channels) values[c][next] = frame.values[c].toFloat()
@@ -48,7 +48,7 @@ class ChannelHistory(val capacity: Int = DEFAULT_CAPACITY, val maxChannels: Int 
     }
 
     /** Forgets every sample. */
-    fun clear() {
+    public fun clear() {
         synchronized(lock) {
             next = 0
             size = 0
@@ -81,11 +81,11 @@ class ChannelHistory(val capacity: Int = DEFAULT_CAPACITY, val maxChannels: Int 
         }
     }
 
-    companion object {
+    public companion object {
         /** 4096 samples: 4 s at 1 kHz, longer at slower rates. */
-        const val DEFAULT_CAPACITY: Int = 4096
+        public const val DEFAULT_CAPACITY: Int = 4096
 
         /** Channels beyond this are shown as numbers only. */
-        const val DEFAULT_MAX_CHANNELS: Int = 16
+        public const val DEFAULT_MAX_CHANNELS: Int = 16
     }
 }

@@ -1,18 +1,28 @@
-package org.hapticon.app.sensors
+package org.hapticon.sensor.grains
 
 import kotlinx.coroutines.flow.MutableStateFlow
 import kotlinx.coroutines.flow.StateFlow
 import kotlinx.coroutines.flow.asStateFlow
-import org.hapticon.app.playback.VibrationOutput
 import org.hapticon.core.render.VibrationWaveform
-import org.hapticon.sensor.grains.FsrForceConverter
-import org.hapticon.sensor.grains.GrainDecider
-import org.hapticon.sensor.grains.GrainSettings
-import org.hapticon.sensor.grains.LraGrain
+import org.hapticon.sensor.live.FrameListener
+import org.hapticon.sensor.live.LiveFrame
+import org.hapticon.sensor.live.StreamInfo
 import org.hapticon.sensor.protocol.framed.ChannelUnit
 
+/**
+ * Where the grain engine's bursts go: the phone's vibrator in the app, a recorder in tests. Called on
+ * the sensor's reading thread, at most once per grain; must not block.
+ */
+public fun interface GrainSink {
+    /**
+     * Plays [waveform] (an [LraGrain] burst) once.
+     * @throws RuntimeException (e.g. a safety limit) when it refuses; the engine then turns the mode off.
+     */
+    public fun play(waveform: VibrationWaveform)
+}
+
 /** How a channel's value becomes a force in newtons. */
-enum class ForceInput(val label: String) {
+public enum class ForceInput(public val label: String) {
     /** ADC counts of an Interlink 402 divider (FSR to the supply, 10 kΩ to ground, 5 V). */
     FSR_ADC("FSR, ADC counts"),
 
@@ -29,9 +39,9 @@ enum class ForceInput(val label: String) {
     MILLINEWTONS("Millinewtons"),
     ;
 
-    companion object {
+    public companion object {
         /** What a framed channel of [unit] carries; null if not a force. */
-        fun forUnit(unit: ChannelUnit): ForceInput? = when (unit) {
+        public fun forUnit(unit: ChannelUnit): ForceInput? = when (unit) {
             ChannelUnit.RAW -> FSR_ADC
             ChannelUnit.MILLIVOLT -> FSR_MILLIVOLTS
             ChannelUnit.GRAM -> GRAMS
@@ -47,7 +57,7 @@ enum class ForceInput(val label: String) {
  * the grain [settings], the burst [amplitude] and the sample rate to assume when the board does not
  * announce one ([fallbackSampleRateHz]; framed boards announce theirs).
  */
-data class GrainConfig(
+public data class GrainConfig(
     val channel: Int,
     val input: ForceInput? = null,
     val adcBits: Int = 10,
@@ -62,11 +72,11 @@ data class GrainConfig(
     }
 
     /** The burst played per grain; its constructor checks the safety limits. */
-    val grain: LraGrain get() = LraGrain(settings.grainSeconds, amplitude)
+    public val grain: LraGrain get() = LraGrain(settings.grainSeconds, amplitude)
 }
 
 /** What the grain mode is doing, for the UI. */
-data class GrainStatus(
+public data class GrainStatus(
     val enabled: Boolean = false,
     val grainsPlayed: Long = 0,
     /** The sample rate the decider runs at, once a frame arrived. */
@@ -79,10 +89,10 @@ data class GrainStatus(
  * Compliance grains from a force channel ([GrainConfig]): each frame's force goes through
  * sensor-bridge's [GrainDecider] (low-pass, bins, at most one grain at a time: a grain lasts
  * round(grainSeconds·fs) samples and no other starts meanwhile), and each grain is played once as an
- * [LraGrain] burst on [output]. Runs on the sensor's reading thread and allocates nothing per sample
+ * [LraGrain] burst on [output] (the app's vibrator). Runs on the sensor's reading thread and allocates nothing per sample
  * (the burst's waveform is rendered once per configuration).
  */
-class GrainEngine(private val output: VibrationOutput) : FrameListener {
+public class GrainEngine(private val output: GrainSink) : FrameListener {
     private val lock = Any()
     private val fsr = FsrForceConverter()
     private val mutableStatus = MutableStateFlow(GrainStatus())
@@ -94,13 +104,13 @@ class GrainEngine(private val output: VibrationOutput) : FrameListener {
     private var played = 0L
 
     /** What the grain mode is doing. [GrainStatus.grainsPlayed] is updated at most per grain. */
-    val status: StateFlow<GrainStatus> = mutableStatus.asStateFlow()
+    public val status: StateFlow<GrainStatus> = mutableStatus.asStateFlow()
 
     /** Grains played since the mode was last configured; cheap to poll. */
-    val grainsPlayed: Long get() = synchronized(lock) { played }
+    public val grainsPlayed: Long get() = synchronized(lock) { played }
 
     /** Turns the mode on with [newConfig], or off with null. A new configuration starts afresh. */
-    fun configure(newConfig: GrainConfig?) {
+    public fun configure(newConfig: GrainConfig?) {
         synchronized(lock) {
             if (newConfig == config) return
             config = newConfig

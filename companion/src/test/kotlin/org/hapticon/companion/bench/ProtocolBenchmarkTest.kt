@@ -1,4 +1,4 @@
-package org.hapticon.sensor.protocol
+package org.hapticon.companion.bench
 
 import org.junit.Assert.assertEquals
 import org.junit.Assert.assertTrue

@@ -1,13 +1,11 @@
-package org.hapticon.app.sensors
+package org.hapticon.sensor.glove
 
-import org.hapticon.sensor.glove.HandRegion
-import org.hapticon.sensor.glove.HandshakeFrame
 import org.hapticon.sensor.safety.SafetyLimits
 
 /** Takes LucidGloves force-feedback servo values, thumb … pinky (0 no force … 1000 full force). */
-fun interface ForceFeedbackSink {
+public fun interface ForceFeedbackSink {
     /** Sends [servoValues] (five values) to the glove; false if nothing could take them. */
-    fun send(servoValues: IntArray): Boolean
+    public fun send(servoValues: IntArray): Boolean
 }
 
 /**
@@ -23,25 +21,25 @@ fun interface ForceFeedbackSink {
  * Values are checked against [SafetyLimits] before anything is sent. Not thread-safe: call [update]
  * from one thread (the sensor's reading thread).
  */
-class ForceFeedbackStream(private val minIntervalNanos: Long = 50_000_000L) {
+public class ForceFeedbackStream(private val minIntervalNanos: Long = 50_000_000L) {
     private val pending = IntArray(HandshakeFrame.LUCID_GLOVES_FINGERS)
     private val lastSent = IntArray(HandshakeFrame.LUCID_GLOVES_FINGERS)
     private var lastSendNanos = Long.MIN_VALUE / 2
     private var sentAnything = false
 
     /** Commands sent so far. */
-    var commands: Long = 0
+    public var commands: Long = 0
         private set
 
     /** A copy of the last set sent (all 0 before the first). */
-    fun lastSentValues(): IntArray = lastSent.copyOf()
+    public fun lastSentValues(): IntArray = lastSent.copyOf()
 
     /**
      * Follows [regionServoValues] (per region in [HandRegion.ALL] order, as
      * [org.hapticon.sensor.glove.HandshakeSession.computeInto] writes them) at [nowNanos] through [sink].
      * @throws org.hapticon.sensor.safety.SafetyLimitException if a value is outside the servo range.
      */
-    fun update(regionServoValues: IntArray, nowNanos: Long, sink: ForceFeedbackSink) {
+    public fun update(regionServoValues: IntArray, nowNanos: Long, sink: ForceFeedbackSink) {
         var release = true
         for (region in HandRegion.entries) {
             val finger = region.lucidGlovesIndex ?: continue
@@ -55,7 +53,7 @@ class ForceFeedbackStream(private val minIntervalNanos: Long = 50_000_000L) {
     }
 
     /** Releases every finger now (all servo values 0), unless that is what the glove already has. */
-    fun release(nowNanos: Long, sink: ForceFeedbackSink) {
+    public fun release(nowNanos: Long, sink: ForceFeedbackSink) {
         pending.fill(SafetyLimits.SERVO_MIN)
         if (sentAnything && pending.contentEquals(lastSent)) return
         send(nowNanos, sink)

@@ -1,4 +1,4 @@
-package org.hapticon.companion
+package org.hapticon.companion.cli
 
 /**
  * The arguments of one command, checked against the options it accepts: `--name VALUE` or `--name=VALUE`

@@ -1,4 +1,4 @@
-package org.hapticon.app.sensors
+package org.hapticon.sensor.glove
 
 import java.io.Closeable
 import java.util.concurrent.CopyOnWriteArrayList
@@ -7,39 +7,43 @@ import kotlinx.coroutines.flow.MutableStateFlow
 import kotlinx.coroutines.flow.StateFlow
 import kotlinx.coroutines.flow.asStateFlow
 import kotlinx.coroutines.flow.map
-import org.hapticon.sensor.glove.AdcScale
-import org.hapticon.sensor.glove.FlexDivider
+import org.hapticon.sensor.live.ConnectionState
+import org.hapticon.sensor.live.FrameListener
+import org.hapticon.sensor.live.LiveFrame
+import org.hapticon.sensor.live.SensorSession
+import org.hapticon.sensor.live.StreamInfo
+import org.hapticon.sensor.protocol.SensorProtocol
 import org.hapticon.sensor.protocol.framed.ChannelUnit
 import org.hapticon.sensor.protocol.lucid.LucidForceFeedback
 
 /** Hears the glove's thumb and middle flex sensors, on the sensor's reading thread. */
-fun interface GloveListener {
+public fun interface GloveListener {
     /**
      * One sample: each finger's divider output in volts (see [FlexDivider]), or NaN when the sample
      * carried no valid value for it (an ADC count out of range, a missing channel).
      */
-    fun onGloveSample(thumbVolts: Double, middleVolts: Double, receivedNanos: Long)
+    public fun onGloveSample(thumbVolts: Double, middleVolts: Double, receivedNanos: Long)
 }
 
 /** A flex-sensor glove's thumb and middle finger, whatever board and protocol carry them. */
-interface GloveSource {
+public interface GloveSource {
     /** Whether a glove stream is running. */
-    val connected: Flow<Boolean>
+    public val connected: Flow<Boolean>
 
     /** The voltage divider the flex sensors sit in. */
-    val divider: FlexDivider
+    public val divider: FlexDivider
 
     /** Calls [listener] with every sample from now on; close the handle to stop. */
-    fun addListener(listener: GloveListener): Closeable
+    public fun addListener(listener: GloveListener): Closeable
 
     /** Whether the glove on the line takes force-feedback commands (a LucidGloves stream does). */
-    val acceptsForceFeedback: Flow<Boolean>
+    public val acceptsForceFeedback: Flow<Boolean>
 
     /**
      * Where force-feedback servo values go: it sends them to the glove and answers true, or answers
      * false when the glove on the line takes none. Callable from the reading thread; never blocks.
      */
-    val forceFeedback: ForceFeedbackSink
+    public val forceFeedback: ForceFeedbackSink
 }
 
 /**
@@ -47,22 +51,22 @@ interface GloveSource {
  * means the protocol's default: LucidGloves thumb A, middle C, 12 bit (ESP32); CSV and framed
  * channels 0 and 1, 10 bit (framed boards announce their resolution).
  */
-data class GloveChannels(val thumb: Int? = null, val middle: Int? = null, val adcBits: Int? = null) {
-    fun thumbFor(@Suppress("UNUSED_PARAMETER") protocol: SensorProtocol): Int = thumb ?: 0
-    fun middleFor(protocol: SensorProtocol): Int = middle ?: if (protocol == SensorProtocol.LUCID_GLOVES) 2 else 1
-    fun adcBitsFor(info: StreamInfo): Int = adcBits ?: info.adcBits ?: if (info.protocol == SensorProtocol.LUCID_GLOVES) 12 else 10
+public data class GloveChannels(val thumb: Int? = null, val middle: Int? = null, val adcBits: Int? = null) {
+    public fun thumbFor(@Suppress("UNUSED_PARAMETER") protocol: SensorProtocol): Int = thumb ?: 0
+    public fun middleFor(protocol: SensorProtocol): Int = middle ?: if (protocol == SensorProtocol.LUCID_GLOVES) 2 else 1
+    public fun adcBitsFor(info: StreamInfo): Int = adcBits ?: info.adcBits ?: if (info.protocol == SensorProtocol.LUCID_GLOVES) 12 else 10
 }
 
 /**
- * The glove as the [SensorHub]'s stream carries it: the chosen channels' ADC counts (or millivolts,
+ * The glove as the [SensorSession]'s stream carries it: the chosen channels' ADC counts (or millivolts,
  * for framed channels in mV) become divider voltages. Channels that already hold angles (framed
  * centidegrees) are not flex-sensor voltages and read as NaN here.
  *
  * Force feedback goes back over the same line as LucidGloves commands (`A<n>B<n>C<n>D<n>E<n>`), and
  * only while a LucidGloves stream runs: CSV and framed boards do not speak that encoding.
  */
-class HubGloveSource(
-    private val hub: SensorHub,
+public class HubGloveSource(
+    private val session: SensorSession,
     override val divider: FlexDivider = FlexDivider(),
 ) : GloveSource, FrameListener {
     private val listeners = CopyOnWriteArrayList<GloveListener>()
@@ -72,24 +76,24 @@ class HubGloveSource(
     private var scale: AdcScale? = null
 
     init {
-        hub.addFrameListener(this)
+        session.addFrameListener(this)
     }
 
-    override val connected: Flow<Boolean> = hub.state.map { it is ConnectionState.Streaming }
+    override val connected: Flow<Boolean> = session.state.map { it is ConnectionState.Streaming }
 
-    override val acceptsForceFeedback: Flow<Boolean> = hub.state.map(::takesForceFeedback)
+    override val acceptsForceFeedback: Flow<Boolean> = session.state.map(::takesForceFeedback)
 
     override val forceFeedback: ForceFeedbackSink = ForceFeedbackSink { servoValues ->
-        takesForceFeedback(hub.state.value) && hub.send(LucidForceFeedback.encode(servoValues))
+        takesForceFeedback(session.state.value) && session.send(LucidForceFeedback.encode(servoValues))
     }
 
     /** Why a glove listener was dropped, if one failed. */
-    val listenerError: StateFlow<String?> = lastError.asStateFlow()
+    public val listenerError: StateFlow<String?> = lastError.asStateFlow()
 
     /** The channel choice; see [GloveChannels]. */
-    val channels: StateFlow<GloveChannels> = mutableChannels.asStateFlow()
+    public val channels: StateFlow<GloveChannels> = mutableChannels.asStateFlow()
 
-    fun setChannels(channels: GloveChannels) {
+    public fun setChannels(channels: GloveChannels) {
         mutableChannels.value = channels
     }
 

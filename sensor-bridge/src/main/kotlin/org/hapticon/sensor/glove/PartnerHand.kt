@@ -1,23 +1,23 @@
-package org.hapticon.app.sensors
+package org.hapticon.sensor.glove
 
 import kotlin.math.PI
 import kotlin.math.cos
 
 /**
  * The other person's hand in a tele-handshake: their thumb and middle-finger angles: [NoPartner],
- * [SimulatedPartner], or a [NetworkPartnerHand] receiving them through the chat's broker. Read on the
+ * [SimulatedPartner], or the app's `NetworkPartnerHand` receiving them through the chat's broker. Read on the
  * sensor's reading thread: implementations must be thread-safe, non-blocking and allocation-free.
  */
-interface PartnerHand {
+public interface PartnerHand {
     /** Shown in the UI. */
-    val label: String
+    public val label: String
 
     /** Writes the partner's thumb angle to `out[0]` and middle-finger angle to `out[1]`, in degrees, at [nowNanos]. */
-    fun readAngles(nowNanos: Long, out: DoubleArray)
+    public fun readAngles(nowNanos: Long, out: DoubleArray)
 }
 
 /** Nobody on the other side: an open hand (0°, 0°). */
-object NoPartner : PartnerHand {
+public object NoPartner : PartnerHand {
     override val label: String = "No partner"
 
     override fun readAngles(nowNanos: Long, out: DoubleArray) {
@@ -31,7 +31,7 @@ object NoPartner : PartnerHand {
  * from open to [gripThumbDegrees]/[gripMiddleDegrees] (like glove B of the loopback test: 50°/80°),
  * holds, and opens again, then rests.
  */
-class SimulatedPartner(
+public class SimulatedPartner(
     private val periodSeconds: Double = 6.0,
     private val gripThumbDegrees: Double = 50.0,
     private val gripMiddleDegrees: Double = 80.0,

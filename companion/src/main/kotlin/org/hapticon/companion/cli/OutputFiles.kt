@@ -1,4 +1,4 @@
-package org.hapticon.companion
+package org.hapticon.companion.cli
 
 import java.io.BufferedOutputStream
 import java.io.File

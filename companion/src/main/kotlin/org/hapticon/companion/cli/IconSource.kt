@@ -1,4 +1,4 @@
-package org.hapticon.companion
+package org.hapticon.companion.cli
 
 import org.hapticon.core.HapticIcon
 import org.hapticon.core.IconValidationException

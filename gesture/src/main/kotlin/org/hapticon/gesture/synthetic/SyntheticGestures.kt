@@ -1,4 +1,4 @@
-package org.hapticon.testing.gestures
+package org.hapticon.gesture.synthetic
 
 import org.hapticon.gesture.Channel
 import org.hapticon.gesture.Recording
@@ -20,24 +20,24 @@ import kotlin.math.sqrt
  * (the gravity direction, x and y components in g). Their habits: strokes swell at [strokeHz] and taps
  * (hit, knock) last [tapSeconds] at their own tempo. [seed] makes their recordings repeatable.
  */
-class SimulatedPerson(
-    val id: Int,
-    val forceScale: Double,
-    val tempo: Double,
-    val forceNoise: Double,
-    val accelNoise: Double,
-    val tremorHz: Double,
-    val tremorNewtons: Double,
-    val tilt: Pair<Double, Double>,
-    val strokeHz: Double,
-    val tapSeconds: Double,
-    val seed: Long,
+public class SimulatedPerson(
+    public val id: Int,
+    public val forceScale: Double,
+    public val tempo: Double,
+    public val forceNoise: Double,
+    public val accelNoise: Double,
+    public val tremorHz: Double,
+    public val tremorNewtons: Double,
+    public val tilt: Pair<Double, Double>,
+    public val strokeHz: Double,
+    public val tapSeconds: Double,
+    public val seed: Long,
 ) {
     override fun toString(): String = "person $id (force ×%.2f, tempo ×%.2f)".format(forceScale, tempo)
 }
 
 /** One synthetic take: the labelled recording, and where the gesture starts (frame) — NONE takes have none. */
-class SyntheticTake(val labelled: LabelledRecording, val label: GestureLabel, val onsetFrame: Int?)
+public class SyntheticTake(public val labelled: LabelledRecording, public val label: GestureLabel, public val onsetFrame: Int?)
 
 /**
  * Deterministic touch gestures of simulated people, sampled at [SAMPLE_RATE] Hz as [CHANNELS]: an FSR force
@@ -57,19 +57,19 @@ class SyntheticTake(val labelled: LabelledRecording, val label: GestureLabel, va
  *   and of the tilt, handling sway (0.03 g) and 0–2 soft grip adjustments (0.3–1.5 N over 0.3–0.8 s).
  * Tremor (force) and sensor noise are added to every take, rest included.
  */
-object SyntheticGestures {
-    const val SAMPLE_RATE: Double = 100.0
-    const val FSR_MAX_NEWTONS: Double = 40.0
+public object SyntheticGestures {
+    public const val SAMPLE_RATE: Double = 100.0
+    public const val FSR_MAX_NEWTONS: Double = 40.0
 
     /** Energetic gestures are this much stronger than gentle ones... */
-    const val ENERGETIC_FORCE: Double = 1.8
+    public const val ENERGETIC_FORCE: Double = 1.8
 
     /** ...and this much quicker. */
-    const val ENERGETIC_SPEED: Double = 1.4
-    val CHANNELS: List<String> = listOf("force", "accel_x", "accel_y", "accel_z")
+    public const val ENERGETIC_SPEED: Double = 1.4
+    public val CHANNELS: List<String> = listOf("force", "accel_x", "accel_y", "accel_z")
 
     /** [count] people with styles drawn from [seed]. */
-    fun people(count: Int, seed: Long = 1L): List<SimulatedPerson> {
+    public fun people(count: Int, seed: Long = 1L): List<SimulatedPerson> {
         require(count >= 1) { "need at least one person, was $count" }
         val random = SplittableRandom(seed)
         return List(count) { id ->
@@ -93,7 +93,7 @@ object SyntheticGestures {
      * Take number [take] of [person] performing [label], with rest before (0.6–1.0 s) and after (at least
      * [minRestAfterSeconds]); a NONE take is 3 s of rest. The same arguments always give the same samples.
      */
-    fun perform(person: SimulatedPerson, label: GestureLabel, take: Int, minRestAfterSeconds: Double = 0.6): SyntheticTake {
+    public fun perform(person: SimulatedPerson, label: GestureLabel, take: Int, minRestAfterSeconds: Double = 0.6): SyntheticTake {
         val random = SplittableRandom(person.seed * 1_000_003L + label.index * 7919L + take)
         val before = random.nextDouble(0.6, 1.0)
         val gesture = label.gesture
@@ -111,11 +111,11 @@ object SyntheticGestures {
     }
 
     /** [takes] takes of every one of the nine labels by [person]. */
-    fun takesOf(person: SimulatedPerson, takes: Int): List<SyntheticTake> =
+    public fun takesOf(person: SimulatedPerson, takes: Int): List<SyntheticTake> =
         GestureLabel.ALL.flatMap { label -> (0 until takes).map { perform(person, label, it) } }
 
     /** [takes] one after another as a single stream, with each gesture's span shifted into it. */
-    fun concatenate(takes: List<SyntheticTake>): LabelledRecording {
+    public fun concatenate(takes: List<SyntheticTake>): LabelledRecording {
         require(takes.isNotEmpty()) { "nothing to concatenate" }
         val channels = CHANNELS.indices.map { c ->
             val first = takes[0].labelled.recording.channels[c]

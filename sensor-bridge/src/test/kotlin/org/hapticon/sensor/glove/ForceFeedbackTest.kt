@@ -1,8 +1,13 @@
-package org.hapticon.app.sensors
+package org.hapticon.sensor.glove
 
 import kotlinx.coroutines.flow.first
 import kotlinx.coroutines.runBlocking
-import org.hapticon.sensor.glove.HandRegion
+import org.hapticon.sensor.live.CommandWriter
+import org.hapticon.sensor.live.ConnectionState
+import org.hapticon.sensor.live.SensorSession
+import org.hapticon.sensor.live.TEST_UNO
+import org.hapticon.sensor.live.TestUsbDevices
+import org.hapticon.sensor.protocol.SensorProtocol
 import org.hapticon.sensor.port.FakeSerialPort
 import org.hapticon.sensor.safety.SafetyLimitException
 import org.junit.After
@@ -14,10 +19,10 @@ import org.junit.Assert.assertThrows
 import org.junit.Assert.assertTrue
 import org.junit.Test
 
-/** Force feedback from the glove source through the hub's writer to the serial port. */
+/** Force feedback from the glove source through the session's command writer to the serial port. */
 class ForceFeedbackTest {
     // Writes run on the calling thread, so the test sees them at once.
-    private val hub = SensorHub(TestUsbDevices(), writer = { it.run() })
+    private val hub = SensorSession(TestUsbDevices(), commands = CommandWriter { it.run() })
     private val glove = HubGloveSource(hub)
     private val port = FakeSerialPort()
 
@@ -76,7 +81,7 @@ class ForceFeedbackTest {
     @Test
     fun queuedCommands_newestReplacesOneNotYetWritten() {
         val queued = ArrayList<Runnable>()
-        val slowHub = SensorHub(TestUsbDevices(), writer = { queued += it })
+        val slowHub = SensorSession(TestUsbDevices(), commands = CommandWriter { queued += it })
         slowHub.start(port, TEST_UNO, SensorProtocol.LUCID_GLOVES, 115_200)
         try {
             assertTrue(slowHub.send("first\n".toByteArray()))

@@ -1,4 +1,4 @@
-package org.hapticon.companion
+package org.hapticon.companion.cli
 
 import org.hapticon.core.io.WavEncoding
 import org.hapticon.core.render.EnvelopeModel

@@ -1,4 +1,4 @@
-package org.hapticon.testing.gestures
+package org.hapticon.gesture.synthetic
 
 import org.hapticon.gesture.recognition.NaoPreset
 import org.hapticon.gesture.recognition.NaoRecording
@@ -26,9 +26,9 @@ import kotlin.math.sqrt
  * Gentle tickle and gentle poke overlap by design (small, short single-channel touches), as in the paper's
  * confusions.
  */
-object NaoSyntheticPeople {
+public object NaoSyntheticPeople {
     /** [count] people, repeatable for a [seed]. */
-    fun sessions(count: Int, takesPerClass: Int = 3, seed: Long = 1L): List<NaoRecording> {
+    public fun sessions(count: Int, takesPerClass: Int = 3, seed: Long = 1L): List<NaoRecording> {
         require(count >= 1 && takesPerClass >= 1) { "need at least one person and one take" }
         val random = SplittableRandom(seed)
         return List(count) { session("p${it + 1}", takesPerClass, random.split()) }

@@ -1,0 +1,235 @@
+package org.hapticon.sensor.live
+
+import java.io.Closeable
+import java.io.IOException
+import java.util.concurrent.CopyOnWriteArrayList
+import kotlinx.coroutines.CancellationException
+import kotlinx.coroutines.Dispatchers
+import kotlinx.coroutines.flow.MutableStateFlow
+import kotlinx.coroutines.flow.StateFlow
+import kotlinx.coroutines.flow.asStateFlow
+import kotlinx.coroutines.withContext
+import org.hapticon.sensor.port.LineSettings
+import org.hapticon.sensor.port.SensorReader
+import org.hapticon.sensor.port.SerialPort
+import org.hapticon.sensor.protocol.SensorProtocol
+import org.hapticon.sensor.protocol.StreamDecoder
+import org.hapticon.sensor.protocol.StreamStats
+
+/** Where the connection to a board is. */
+public sealed interface ConnectionState {
+    /** Nothing connected yet. */
+    public data object Idle : ConnectionState
+
+    /** The system's USB permission dialog is up. */
+    public data class RequestingPermission(val device: SensorDevice) : ConnectionState
+
+    /** Opening the port and configuring the chip. */
+    public data class Opening(val device: SensorDevice) : ConnectionState
+
+    /** Reading and decoding. */
+    public data class Streaming(val device: SensorDevice, val protocol: SensorProtocol, val baudRate: Int) : ConnectionState
+
+    /** The stream stopped; everything decoded until then is kept. */
+    public data class Stopped(val device: SensorDevice, val protocol: SensorProtocol, val cause: StopCause, val message: String? = null) :
+        ConnectionState
+
+    /** The user refused USB access. */
+    public data class PermissionDenied(val device: SensorDevice) : ConnectionState
+
+    /** The board could not be opened. */
+    public data class Failed(val device: SensorDevice, val message: String) : ConnectionState
+}
+
+/** Why a stream stopped. */
+public enum class StopCause {
+    /** The board was unplugged (or reset) mid-stream. */
+    UNPLUGGED,
+
+    /** A finite source (a recording) ended. */
+    ENDED,
+
+    /** A read failed. */
+    FAILED,
+
+    /** The user disconnected. */
+    BY_USER,
+}
+
+/**
+ * The one live connection to a sensor board, as a state machine over [ConnectionState]: opens it
+ * through [usb], reads it on a thread of its own with [SensorReader], decodes it with the chosen
+ * [SensorProtocol] ([LiveDecoder] over [org.hapticon.sensor.protocol.decoderFor]), and hands every
+ * frame to the registered [FrameListener]s (FSR grains, glove) on the reading thread. The newest
+ * values, counters and rate are kept by a [StreamTally] (copied by [snapshot]), the plot points by
+ * [history]; commands to the board go through [commands] ([CommandWriter]: newest wins).
+ *
+ * When the stream stops (unplug, end, failure, [disconnect]) everything decoded so far stays until
+ * the next [connect]. Per frame nothing is allocated here; the UI copies a [snapshot] at its own rate.
+ */
+public class SensorSession(
+    private val usb: UsbDevices,
+    private val clock: () -> Long = System::nanoTime,
+    public val history: ChannelHistory = ChannelHistory(),
+    private val commands: CommandWriter = CommandWriter(),
+) {
+    private val connection = MutableStateFlow<ConnectionState>(ConnectionState.Idle)
+    private val listeners = CopyOnWriteArrayList<FrameListener>()
+    private val tally = StreamTally()
+
+    @Volatile private var reader: SensorReader? = null
+    @Volatile private var port: SerialPort? = null
+    @Volatile private var stopRequested = false
+    private val outputError = MutableStateFlow<String?>(null)
+
+    /** Where the connection is. */
+    public val state: StateFlow<ConnectionState> = connection.asStateFlow()
+
+    /** Set when a frame listener failed and was removed (e.g. a safety limit refused its output). */
+    public val listenerError: StateFlow<String?> = outputError.asStateFlow()
+
+    /** Why the last command to the board could not be written (a timeout, an unplug), or null. */
+    public val writeError: StateFlow<String?> get() = commands.writeError
+
+    /** Commands written to the board since the session was made. */
+    public val commandsSent: Long get() = commands.commandsSent
+
+    /** Commands that could not be written (timeout, unplug, I/O error). */
+    public val commandsLost: Long get() = commands.commandsLost
+
+    /**
+     * Queues [command] for the board on the line and returns at once: false when no stream is running.
+     * A command still waiting is replaced by the newer one ([CommandWriter]); each write has [timeoutMillis].
+     */
+    public fun send(command: ByteArray, timeoutMillis: Int = CommandWriter.WRITE_TIMEOUT_MILLIS): Boolean {
+        val target = port ?: return false
+        if (connection.value !is ConnectionState.Streaming || !target.isOpen) return false
+        commands.send(target, command, timeoutMillis)
+        return true
+    }
+
+    /** What the stream has given so far. */
+    public fun snapshot(): StreamSnapshot = tally.snapshot()
+
+    /** The stream's channel names and units, once known. */
+    public fun currentInfo(): StreamInfo? = tally.currentInfo()
+
+    /** Calls [listener] with every frame from now on, on the reading thread; close the handle to stop. */
+    public fun addFrameListener(listener: FrameListener): Closeable {
+        listeners += listener
+        return Closeable { listeners -= listener }
+    }
+
+    /**
+     * Connects to [device]: asks for permission, opens it at [baudRate] and starts reading [protocol].
+     * A stream already running is stopped first. Returns when the stream runs or failed to start;
+     * [state] tells which.
+     */
+    public suspend fun connect(device: SensorDevice, protocol: SensorProtocol, baudRate: Int) {
+        if (reader?.isRunning == true) {
+            disconnect()
+            withContext(Dispatchers.IO) { awaitStopped(STOP_WAIT_MILLIS) }
+        }
+        resetData()
+        outputError.value = null
+        commands.clearError()
+        connection.value = ConnectionState.RequestingPermission(device)
+        val opened = try {
+            if (!usb.requestPermission(device)) {
+                connection.value = ConnectionState.PermissionDenied(device)
+                return
+            }
+            connection.value = ConnectionState.Opening(device)
+            usb.open(device, LineSettings(baudRate = baudRate))
+        } catch (e: UsbAccessDeniedException) {
+            connection.value = ConnectionState.PermissionDenied(device)
+            return
+        } catch (e: CancellationException) {
+            connection.value = ConnectionState.Idle
+            throw e
+        } catch (e: IOException) {
+            connection.value = ConnectionState.Failed(device, e.message ?: e.javaClass.simpleName)
+            return
+        }
+        start(opened, device, protocol, baudRate)
+    }
+
+    /**
+     * Reads [port] with [protocol] as if it had been opened for [device]; for recordings and tests.
+     */
+    public fun start(port: SerialPort, device: SensorDevice, protocol: SensorProtocol, baudRate: Int) {
+        stopRequested = false
+        val decoder = CountingDecoder(LiveDecoder(protocol, ::onFrame))
+        val newReader = SensorReader(port, decoder, { reason, cause -> onStopped(port, device, protocol, reason, cause) })
+        this.port = port
+        reader = newReader
+        connection.value = ConnectionState.Streaming(device, protocol, baudRate)
+        newReader.start("hapticon-sensor-reader")
+    }
+
+    /** Stops reading and closes the port; what was decoded stays. Harmless when nothing runs. */
+    public fun disconnect() {
+        val running = reader ?: return
+        stopRequested = true
+        running.stop()
+        // Closing wakes a read blocked in a transfer; the reader then reports and ends.
+        runCatching { port?.close() }
+    }
+
+    /** Waits at most [timeoutMillis] for the reading thread to end; true if it has (or never ran). */
+    public fun awaitStopped(timeoutMillis: Long): Boolean = reader?.awaitStop(timeoutMillis) ?: true
+
+    private fun resetData() {
+        tally.reset()
+        history.clear()
+    }
+
+    private fun onFrame(frame: LiveFrame, frameInfo: StreamInfo) {
+        tally.onFrame(frame, frameInfo)
+        history.append(frame)
+        for (listener in listeners) {
+            try {
+                listener.onFrame(frame, frameInfo)
+            } catch (e: RuntimeException) {
+                // A failing output must not end the stream, and must not run again.
+                listeners -= listener
+                outputError.value = e.message ?: e.javaClass.simpleName
+            }
+        }
+    }
+
+    private fun onStopped(stoppedPort: SerialPort, device: SensorDevice, protocol: SensorProtocol, reason: SensorReader.StopReason, cause: Throwable?) {
+        runCatching { stoppedPort.close() }
+        val stopCause = when {
+            stopRequested -> StopCause.BY_USER
+            reason == SensorReader.StopReason.DISCONNECTED -> StopCause.UNPLUGGED
+            reason == SensorReader.StopReason.END_OF_STREAM -> StopCause.ENDED
+            reason == SensorReader.StopReason.STOPPED -> StopCause.BY_USER
+            else -> StopCause.FAILED
+        }
+        val message = if (stopCause == StopCause.FAILED) cause?.message ?: cause?.javaClass?.simpleName else null
+        connection.value = ConnectionState.Stopped(device, protocol, stopCause, message)
+    }
+
+    /** Copies the decoder's counters after every read, so bad frames show even when no good one follows. */
+    private inner class CountingDecoder(private val live: LiveDecoder) : StreamDecoder {
+        private val inner = live.decoder
+        override val stats: StreamStats get() = inner.stats
+
+        override fun feed(bytes: ByteArray, offset: Int, length: Int) {
+            live.nowNanos = clock()
+            inner.feed(bytes, offset, length)
+            tally.publishInfo(live.info)
+            tally.copyStats(inner.stats)
+        }
+
+        override fun finish() {
+            inner.finish()
+            tally.copyStats(inner.stats)
+        }
+    }
+
+    private companion object {
+        const val STOP_WAIT_MILLIS = 1_000L
+    }
+}

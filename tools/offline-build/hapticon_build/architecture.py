@@ -1,0 +1,194 @@
+"""The dependency rules of docs/architecture.md, checked against the sources.
+
+The rules live in docs/architecture.md, in two tables this module reads, so the document and the check
+cannot drift apart:
+
+- "Who may use whom": each module's main code may use only the modules listed for it (and itself). Both
+  its build file's main-scope `project(...)` dependencies and every `import org.hapticon…` (or name
+  written out in full in code) of its main sources are checked; a name is attributed to the module whose
+  main sources declare its package.
+- "Known package cycles": inside a module, packages must not import each other in a cycle, except the
+  cycles listed there (each with its reason). A cycle that is not listed, or that grows beyond the
+  listed packages, is a violation.
+
+Standard library only, like the rest of the offline build: `check(root)` returns the violations as
+one-line messages (empty when the project follows the rules).
+"""
+from __future__ import annotations
+
+import os
+import re
+from dataclasses import dataclass, field
+
+DOC = os.path.join("docs", "architecture.md")
+MAIN_SOURCES = (os.path.join("src", "main", "kotlin"), os.path.join("src", "main", "java"))
+PROJECT_DEP = re.compile(r'\b(\w+)\(\s*project\(\s*"(:[\w:-]+)"\s*\)')
+PACKAGE = re.compile(r"^package\s+([\w.]+)", re.M)
+IMPORT = re.compile(r"^import\s+([\w.]+)", re.M)
+# A name written out in full in code (`org.hapticon.x.Y`) uses its module as much as an import does.
+QUALIFIED = re.compile(r"(?<![\w.])([a-z]\w*(?:\.\w+)+)")
+NOT_CODE = re.compile(r'//[^\n]*|/\*.*?\*/|"""(?:.|\n)*?"""|"(?:[^"\\\n]|\\.)*"|^\s*(?:package|import)\s[^\n]*', re.S | re.M)
+
+
+def used_names(text: str, roots: set[str]) -> list[str]:
+    """Every name the file imports, and every dotted name starting with one of [roots] (the first segment of
+    the project's packages, `org`) that it writes out in full in code; comments and strings aside."""
+    written = [n for n in QUALIFIED.findall(NOT_CODE.sub(" ", text)) if n.split(".", 1)[0] in roots]
+    return IMPORT.findall(text) + written
+
+
+@dataclass
+class Rules:
+    allowed: dict[str, set[str]]                                         # module -> modules its main code may use
+    known_cycles: list[set[str]] = field(default_factory=list)           # package sets allowed to form a cycle
+
+
+def read_rules(root: str) -> Rules:
+    """The two tables of docs/architecture.md: rows whose first cell is a `:module` or a package list."""
+    with open(os.path.join(root, DOC), encoding="utf-8") as f:
+        text = f.read()
+    allowed: dict[str, set[str]] = {}
+    cycles: list[set[str]] = []
+    section = None
+    for line in text.splitlines():
+        if line.startswith("#"):
+            title = line.lower()
+            section = "deps" if "who may use whom" in title else "cycles" if "known package cycles" in title else None
+            continue
+        if not line.startswith("|") or section is None:
+            continue
+        cells = [c.strip() for c in line.strip().strip("|").split("|")]
+        first = re.findall(r"`([^`]+)`", cells[0])
+        if section == "deps" and first and first[0].startswith(":"):
+            allowed[first[0]] = set(re.findall(r"`(:[\w:-]+)`", cells[1] if len(cells) > 1 else ""))
+        elif section == "cycles" and first:
+            cycles.append(set(first))
+    if not allowed:
+        raise ValueError(f"{DOC} has no 'Who may use whom' table")
+    return Rules(allowed, cycles)
+
+
+def modules(root: str) -> dict[str, str]:
+    """`:path` -> directory, from settings.gradle.kts."""
+    with open(os.path.join(root, "settings.gradle.kts"), encoding="utf-8") as f:
+        paths = re.findall(r'(?m)^\s*include\("(:[\w:-]+)"\)', f.read())
+    return {p: os.path.join(root, *p.strip(":").split(":")) for p in paths}
+
+
+def main_files(directory: str) -> list[str]:
+    found = []
+    for sources in MAIN_SOURCES:
+        for d, _, files in os.walk(os.path.join(directory, sources)):
+            found += [os.path.join(d, f) for f in files if f.endswith((".kt", ".java"))]
+    return sorted(found)
+
+
+def main_project_deps(directory: str) -> set[str]:
+    """The module's project dependencies outside the test configurations."""
+    with open(os.path.join(directory, "build.gradle.kts"), encoding="utf-8") as f:
+        text = re.sub(r"//[^\n]*", "", f.read())
+    return {path for conf, path in PROJECT_DEP.findall(text) if not conf.lower().startswith(("test", "androidtest"))}
+
+
+def owner(imported: str, packages: dict[str, str]) -> tuple[str, str] | None:
+    """(module, package) declaring the longest package prefix of [imported], or None (a library)."""
+    parts = imported.split(".")
+    for i in range(len(parts), 0, -1):
+        pkg = ".".join(parts[:i])
+        if pkg in packages:
+            return packages[pkg], pkg
+    return None
+
+
+def cycles(graph: dict[str, set[str]]) -> list[set[str]]:
+    """Strongly connected components of more than one package (Tarjan, iterative)."""
+    index: dict[str, int] = {}
+    low: dict[str, int] = {}
+    stack: list[str] = []
+    on_stack: set[str] = set()
+    found: list[set[str]] = []
+    counter = 0
+    for start in sorted(graph):
+        if start in index:
+            continue
+        work = [(start, iter(sorted(graph.get(start, ()))))]
+        index[start] = low[start] = counter
+        counter += 1
+        stack.append(start)
+        on_stack.add(start)
+        while work:
+            node, successors = work[-1]
+            advanced = False
+            for nxt in successors:
+                if nxt not in index:
+                    index[nxt] = low[nxt] = counter
+                    counter += 1
+                    stack.append(nxt)
+                    on_stack.add(nxt)
+                    work.append((nxt, iter(sorted(graph.get(nxt, ())))))
+                    advanced = True
+                    break
+                if nxt in on_stack:
+                    low[node] = min(low[node], index[nxt])
+            if advanced:
+                continue
+            work.pop()
+            if work:
+                low[work[-1][0]] = min(low[work[-1][0]], low[node])
+            if low[node] == index[node]:
+                component = set()
+                while True:
+                    member = stack.pop()
+                    on_stack.discard(member)
+                    component.add(member)
+                    if member == node:
+                        break
+                if len(component) > 1:
+                    found.append(component)
+    return found
+
+
+def check(root: str) -> list[str]:
+    rules = read_rules(root)
+    mods = modules(root)
+    violations: list[str] = []
+    for path in mods:
+        if path not in rules.allowed:
+            violations.append(f"{path}: not in {DOC}'s 'Who may use whom' table")
+
+    # Which module declares each package (main sources only).
+    packages: dict[str, str] = {}
+    sources: dict[str, list[tuple[str, str, str]]] = {}    # module -> (file, package, text)
+    for path, directory in mods.items():
+        sources[path] = []
+        for file in main_files(directory):
+            with open(file, encoding="utf-8") as f:
+                text = f.read()
+            m = PACKAGE.search(text)
+            pkg = m.group(1) if m else ""
+            sources[path].append((file, pkg, text))
+            packages.setdefault(pkg, path)
+
+    roots = {pkg.split(".", 1)[0] for pkg in packages if pkg}
+    for path, directory in mods.items():
+        allowed = rules.allowed.get(path, set()) | {path}
+        for dep in sorted(main_project_deps(directory) - allowed):
+            build_file = os.path.relpath(os.path.join(directory, "build.gradle.kts"), root)
+            violations.append(f"{build_file}: main code depends on {dep}, which {DOC} does not allow")
+        graph: dict[str, set[str]] = {}
+        for file, pkg, text in sources[path]:
+            graph.setdefault(pkg, set())
+            for imported in used_names(text, roots):
+                found = owner(imported, packages)
+                if found is None:
+                    continue
+                module, imported_pkg = found
+                rel = os.path.relpath(file, root)
+                if module not in allowed:
+                    violations.append(f"{rel}: imports {imported} from {module}, which {DOC} does not allow for {path}")
+                elif module == path and imported_pkg != pkg:
+                    graph[pkg].add(imported_pkg)
+        for component in cycles(graph):
+            if not any(component <= known for known in rules.known_cycles):
+                violations.append(f"{path}: packages import each other in a cycle: {', '.join(sorted(component))}")
+    return violations

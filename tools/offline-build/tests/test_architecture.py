@@ -1,0 +1,134 @@
+"""The dependency rules of docs/architecture.md: the project follows them, and the check catches breaking them."""
+import os
+import tempfile
+import textwrap
+import unittest
+
+from hapticon_build.architecture import check, cycles, read_rules
+
+ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", "..", ".."))
+
+DOC = """
+# Architecture
+## Rules
+### Who may use whom
+| module | its main code may use |
+|---|---|
+| `:core` | — |
+| `:sensor` | `:core` |
+| `:fixtures` | `:core` |
+| `:cli` | `:core`, `:sensor` |
+### Known package cycles
+| packages | why |
+|---|---|
+| `org.x.sensor`, `org.x.sensor.csv` | the decoders share the parent's interface |
+"""
+
+
+def write(root, path, text):
+    full = os.path.join(root, path)
+    os.makedirs(os.path.dirname(full), exist_ok=True)
+    with open(full, "w", encoding="utf-8") as f:
+        f.write(textwrap.dedent(text))
+
+
+def kotlin(package, *imports):
+    return f"package {package}\n\n" + "".join(f"import {i}\n" for i in imports) + "\nclass X\n"
+
+
+class ArchitectureTest(unittest.TestCase):
+    def project(self, root, cli_build='implementation(project(":sensor"))', extra=()):
+        """A four-module project that follows DOC; [extra] adds (path, text) files."""
+        write(root, "docs/architecture.md", DOC)
+        write(root, "settings.gradle.kts", "".join(f'include(":{m}")\n' for m in ("core", "sensor", "fixtures", "cli")))
+        write(root, "core/build.gradle.kts", "dependencies {}\n")
+        write(root, "sensor/build.gradle.kts", 'dependencies {\n    api(project(":core"))\n    testImplementation(project(":fixtures"))\n}\n')
+        write(root, "fixtures/build.gradle.kts", 'dependencies {\n    api(project(":core"))\n}\n')
+        write(root, "cli/build.gradle.kts", "dependencies {\n    " + cli_build + '\n    testImplementation(project(":fixtures"))\n}\n')
+        write(root, "core/src/main/kotlin/org/x/core/Icon.kt", kotlin("org.x.core", "java.io.File"))
+        write(root, "sensor/src/main/kotlin/org/x/sensor/Decoder.kt", kotlin("org.x.sensor", "org.x.core.Icon", "org.x.sensor.csv.Csv"))
+        write(root, "sensor/src/main/kotlin/org/x/sensor/csv/Csv.kt", kotlin("org.x.sensor.csv", "org.x.sensor.Decoder"))
+        write(root, "fixtures/src/main/kotlin/org/x/testing/Streams.kt", kotlin("org.x.testing", "org.x.core.Icon"))
+        write(root, "cli/src/main/kotlin/org/x/cli/Main.kt", kotlin("org.x.cli", "org.x.cli.common.Console", "org.x.sensor.Decoder"))
+        write(root, "cli/src/main/kotlin/org/x/cli/common/Console.kt", kotlin("org.x.cli.common", "org.x.core.Icon"))
+        # Tests may use the fixtures.
+        write(root, "cli/src/test/kotlin/org/x/cli/MainTest.kt", kotlin("org.x.cli", "org.x.testing.Streams", "org.junit.Test"))
+        for path, text in extra:
+            write(root, path, text)
+
+    def test_project_followsTheRules(self):
+        self.assertEqual([], check(ROOT))
+
+    def test_projectRules_listEveryModuleAndNoMainUseOfTestFixtures(self):
+        rules = read_rules(ROOT)
+        self.assertEqual(set(), rules.allowed[":haptics-core"])
+        self.assertEqual({":haptics-core"}, rules.allowed[":sensor-bridge"])
+        self.assertFalse(any(":test-fixtures" in used for used in rules.allowed.values()))
+
+    def test_followingProject_hasNoViolations(self):
+        with tempfile.TemporaryDirectory() as root:
+            self.project(root)
+            self.assertEqual([], check(root))
+
+    def test_forbiddenImport_isReportedWithTheFile(self):
+        with tempfile.TemporaryDirectory() as root:
+            self.project(root, extra=[("cli/src/main/kotlin/org/x/cli/Bench.kt", kotlin("org.x.cli", "org.x.testing.Streams"))])
+            self.assertEqual(
+                ["cli/src/main/kotlin/org/x/cli/Bench.kt: imports org.x.testing.Streams from :fixtures, "
+                 "which docs/architecture.md does not allow for :cli"],
+                check(root),
+            )
+
+    def test_importAgainstTheFlow_isReported(self):
+        with tempfile.TemporaryDirectory() as root:
+            self.project(root, extra=[("core/src/main/kotlin/org/x/core/Back.kt", kotlin("org.x.core", "org.x.sensor.Decoder"))])
+            self.assertEqual(1, len(check(root)))
+            self.assertIn("imports org.x.sensor.Decoder from :sensor", check(root)[0])
+
+    def test_fullyQualifiedUseInCode_isReported_inCommentsAndStringsIsNot(self):
+        with tempfile.TemporaryDirectory() as root:
+            text = (
+                "package org.x.cli.common\n\n"
+                "/** Called by [org.x.cli.Main]; see \"org.x.cli.Main\". */\n"
+                "fun run(console: org.x.cli.Main) = \"org.x.cli.Main\" // org.x.cli.Main\n"
+            )
+            self.project(root, extra=[("cli/src/main/kotlin/org/x/cli/common/Run.kt", text)])
+            self.assertEqual([":cli: packages import each other in a cycle: org.x.cli, org.x.cli.common"], check(root))
+
+    def test_forbiddenMainBuildDependency_isReported(self):
+        with tempfile.TemporaryDirectory() as root:
+            self.project(root, cli_build='implementation(project(":sensor"))\n    implementation(project(":fixtures")) // bench data')
+            self.assertEqual(
+                ["cli/build.gradle.kts: main code depends on :fixtures, which docs/architecture.md does not allow"],
+                [v.replace(os.sep, "/") for v in check(root)],
+            )
+
+    def test_rootAndSubpackageCycle_isReported_listedCycleIsNot(self):
+        with tempfile.TemporaryDirectory() as root:
+            self.project(root, extra=[("cli/src/main/kotlin/org/x/cli/common/Args.kt", kotlin("org.x.cli.common", "org.x.cli.Main"))])
+            self.assertEqual([":cli: packages import each other in a cycle: org.x.cli, org.x.cli.common"], check(root))
+
+    def test_listedCycleThatGrows_isReported(self):
+        with tempfile.TemporaryDirectory() as root:
+            self.project(root, extra=[
+                ("sensor/src/main/kotlin/org/x/sensor/lucid/Lucid.kt", kotlin("org.x.sensor.lucid", "org.x.sensor.Decoder")),
+                ("sensor/src/main/kotlin/org/x/sensor/Pick.kt", kotlin("org.x.sensor", "org.x.sensor.lucid.Lucid")),
+            ])
+            self.assertEqual([":sensor: packages import each other in a cycle: org.x.sensor, org.x.sensor.csv, org.x.sensor.lucid"], check(root))
+
+    def test_moduleMissingFromTheTable_isReported(self):
+        with tempfile.TemporaryDirectory() as root:
+            self.project(root)
+            with open(os.path.join(root, "settings.gradle.kts"), "a", encoding="utf-8") as f:
+                f.write('include(":extra")\n')
+            write(root, "extra/build.gradle.kts", "dependencies {}\n")
+            self.assertEqual([":extra: not in docs/architecture.md's 'Who may use whom' table"], check(root))
+
+    def test_cycles_findsOnlyComponentsOfSeveralPackages(self):
+        graph = {"a": {"b"}, "b": {"c"}, "c": {"a"}, "d": {"a"}, "e": set()}
+        self.assertEqual([{"a", "b", "c"}], cycles(graph))
+        self.assertEqual([], cycles({"a": {"b"}, "b": set()}))
+
+
+if __name__ == "__main__":
+    unittest.main()
