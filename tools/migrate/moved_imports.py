@@ -7,6 +7,10 @@
   grains/, glove/); SensorHub became SensorSession.
 - companion: the shared command-line pieces moved from org.hapticon.companion to .cli.
 - synthetic people: org.hapticon.testing.gestures became org.hapticon.gesture.synthetic.
+- ProtocolBenchmark moved to org.hapticon.companion.bench.
+Not handled (by hand): companion's DecodeProtocol is gone (SensorProtocol.CLI_CHOICES; LUCID is LUCID_GLOVES;
+`protocol.decoder(listener)` is `decoderFor(protocol, listener)`), and FramedEncoder.setGrains(params, …) is an
+extension now (import org.hapticon.sensor.grains.setGrains outside that package).
 Idempotent; prints each file it changed.
 """
 import os
@@ -31,7 +35,8 @@ MOVES = [
 RENAMES = {
     r"\bSensorHub\b": "SensorSession",
     r"\borg\.hapticon\.testing\.gestures\b": "org.hapticon.gesture.synthetic",
-    r"\borg\.hapticon\.companion\.Console\b": "Console",  # written out in full somewhere; imported instead
+    r"(?<!import )\borg\.hapticon\.companion\.Console\b": "org.hapticon.companion.cli.Console",  # written out in full
+    r"\borg\.hapticon\.sensor\.protocol\.ProtocolBenchmark\b": "org.hapticon.companion.bench.ProtocolBenchmark",
 }
 # How a use looks in code; a plain name unless it is an extension function (called after a dot).
 USE = {"cliName": r"\.cliName\(\)", "symbol": r"\.symbol\b"}
