@@ -74,7 +74,8 @@ fun ComplianceScreen(uiState: ComplianceUiState, actions: ComplianceActions) {
     Column(Modifier.fillMaxSize().verticalScroll(rememberScrollState()).padding(16.dp), verticalArrangement = Arrangement.spacedBy(12.dp)) {
         Row(Modifier.fillMaxWidth(), horizontalArrangement = Arrangement.SpaceBetween, verticalAlignment = Alignment.CenterVertically) {
             Text("Compliance study", style = MaterialTheme.typography.headlineSmall, modifier = Modifier.weight(1f).semantics { heading() })
-            TextButton(onClick = actions.onBack) { Text(if (uiState is ComplianceUiState.Trial) "Researcher: end" else "Back") }
+            // During a trial the way out is below, named for the researcher (it asks for the PIN again).
+            if (uiState !is ComplianceUiState.Trial) TextButton(onClick = actions.onBack) { Text("Back") }
         }
         when (uiState) {
             is ComplianceUiState.Setup -> SetupContent(uiState, actions)
@@ -126,6 +127,7 @@ private fun TrialContent(state: ComplianceUiState.Trial, actions: ComplianceActi
         Button(onClick = { actions.onAnswer(answer) }, enabled = state.sent && answer.isNotBlank()) { Text("Next") }
         OutlinedButton(onClick = actions.onSendCondition, enabled = state.boardReady) { Text("Send condition again") }
     }
+    TextButton(onClick = actions.onBack) { Text("Researcher: end the session") }
 }
 
 @Composable

@@ -130,25 +130,26 @@ class ElectrotactileCalibrationTest {
 
     @Test
     fun hubLink_framedStream_writesTheSetGrainsFrame_otherProtocolsWriteNothing() {
-        val hub = SensorHub(TestUsbDevices(), writer = { it.run() })
-        val link = HubStimulatorLink(hub)
         val params = ElectrotactileCalibrationViewModel.wholeArrayParams(List(9) { 120 })
-        val port = FakeSerialPort()
+        // One hub per stream, writes on the calling thread: no reader of an earlier stream can race the next start.
+        val csvHub = SensorHub(TestUsbDevices(), writer = { it.run() })
+        val framedHub = SensorHub(TestUsbDevices(), writer = { it.run() })
         try {
-            assertFalse(link.send(params))
-            hub.start(port, TEST_UNO, SensorProtocol.CSV, 115_200)
-            assertFalse(link.send(params))
-            assertEquals(0, port.writtenBytes().size)
-            hub.disconnect()
+            assertFalse(HubStimulatorLink(csvHub).send(params))
+            val csvPort = FakeSerialPort()
+            csvHub.start(csvPort, TEST_UNO, SensorProtocol.CSV, 115_200)
+            assertFalse(HubStimulatorLink(csvHub).send(params))
+            assertEquals(0, csvPort.writtenBytes().size)
 
             val framedPort = FakeSerialPort()
-            hub.start(framedPort, TEST_UNO, SensorProtocol.FRAMED, 115_200)
-            assertTrue(link.send(params))
+            framedHub.start(framedPort, TEST_UNO, SensorProtocol.FRAMED, 115_200)
+            assertTrue(HubStimulatorLink(framedHub).send(params))
             val expected = ByteArray(FramedProtocol.MAX_ENCODED_FRAME_LENGTH)
             val length = FramedEncoder().setGrains(params, expected)
             assertArrayEquals(expected.copyOf(length), framedPort.writtenBytes())
         } finally {
-            hub.disconnect()
+            csvHub.disconnect()
+            framedHub.disconnect()
         }
     }
 

@@ -144,6 +144,6 @@ class ComplianceStudyRunTest {
         compose.onNodeWithText("p1 · trial 1 of 60").assertExists()
         compose.onNodeWithText("Next").assertIsNotEnabled()
         compose.onNodeWithText("Waiting for the board…").assertExists()
-        compose.onNodeWithText("Researcher: end").assertExists()
+        compose.onNodeWithText("Researcher: end the session").assertExists()
     }
 }
