@@ -1,9 +1,9 @@
 package org.hapticon.app.gesture
 
+import org.hapticon.sensor.live.SensorSession
 import android.content.Context
 import android.hardware.SensorManager
 import java.io.File
-import org.hapticon.sensor.live.SensorSession
 
 /** The kinds of live source the Gestures screens offer (a file is imported, not streamed). */
 enum class GestureSourceKind(val label: String) {
@@ -26,6 +26,8 @@ class GestureComponent(
     val recordings: RecordingStore,
     /** The personal recognition model. */
     val models: GestureModelStore,
+    /** The social-touch (LogitBoost) model. */
+    val socialTouch: SocialTouchModelStore,
 ) {
     /** The source of [kind], or null when this phone lacks it (no accelerometer). */
     fun source(kind: GestureSourceKind): GestureSource? = when (kind) {
@@ -35,7 +37,7 @@ class GestureComponent(
     }
 
     companion object {
-        /** Recordings in `filesDir/recordings`, the model in `filesDir/gesture-model.json`. */
+        /** Recordings in `filesDir/recordings`, the models in `filesDir/gesture-model.json` and `filesDir/social-touch-model.json`. */
         fun create(context: Context, hub: SensorSession): GestureComponent {
             val sensors = context.getSystemService(SensorManager::class.java)
             val accelerometer = sensors?.let { AccelerometerGestureSource(it) }?.takeIf { it.available }
@@ -45,6 +47,7 @@ class GestureComponent(
                 sensorBoard = SensorHubGestureSource(hub),
                 recordings = FileRecordingStore(File(context.filesDir, "recordings")),
                 models = FileGestureModelStore(File(context.filesDir, "gesture-model.json")),
+                socialTouch = FileSocialTouchModelStore(File(context.filesDir, "social-touch-model.json")),
             )
         }
     }

@@ -95,22 +95,38 @@ interface GestureModelStore {
 }
 
 /** The model as JSON ([GestureModel.encode]) in [file]. */
-class FileGestureModelStore(private val file: File) : GestureModelStore {
+class FileGestureModelStore(file: File) : GestureModelStore {
+    private val store = FileModelStore(file, { GestureModel.decode(it) }) { it.encode() }
+
+    override val model: StateFlow<GestureModel?> get() = store.model
+
+    override fun save(model: GestureModel) = store.save(model)
+}
+
+/** One model as text in [file]: read on first use (not on the main thread), replaced whole on [save]. A file that no longer decodes reads as none. */
+internal class FileModelStore<M : Any>(private val file: File, private val decode: (String) -> M, private val encode: (M) -> String) {
     private val current by lazy {
-        MutableStateFlow(if (file.isFile) runCatching { GestureModel.decode(file.readText()) }.getOrNull() else null)
+        MutableStateFlow(if (file.isFile) runCatching { decode(file.readText()) }.getOrNull() else null)
     }
 
-    override val model: StateFlow<GestureModel?> get() = current
+    /** The stored model, or null. */
+    val model: StateFlow<M?> get() = current
 
-    override fun save(model: GestureModel) {
-        file.parentFile?.mkdirs()
-        val partial = File(file.path + ".part")
-        partial.writeText(model.encode())
-        if (!partial.renameTo(file)) {
-            file.delete()
-            check(partial.renameTo(file)) { "could not store the model in $file" }
-        }
+    /** Stores [model], replacing the previous one. */
+    fun save(model: M) {
+        replaceFile(file, encode(model))
         current.value = model
+    }
+}
+
+/** Writes [text] to [file] through a `.part` file and a rename, so a crash leaves the old file or the new, never half. */
+internal fun replaceFile(file: File, text: String) {
+    file.parentFile?.mkdirs()
+    val partial = File(file.path + ".part")
+    partial.writeText(text)
+    if (!partial.renameTo(file)) {
+        file.delete()
+        check(partial.renameTo(file)) { "could not store the model in $file" }
     }
 }
 

@@ -59,6 +59,7 @@ fun testGestureComponent(board: GestureSource, dir: File) = GestureComponent(
     sensorBoard = board,
     recordings = FileRecordingStore(File(dir, "recordings")),
     models = FileGestureModelStore(File(dir, "gesture-model.json")),
+    socialTouch = FileSocialTouchModelStore(File(dir, "social-touch-model.json")),
 )
 
 /** A chat repository with one conversation per [peers] that records what is sent; receiving is not part of these tests. */

@@ -1,13 +1,17 @@
 package org.hapticon.app.screenshots
 
 import java.util.Random
+import org.hapticon.app.feature.gesture.RecognitionActions
 import org.hapticon.app.feature.gesture.RecognitionScreen
 import org.hapticon.app.feature.gesture.RecognitionUiState
+import org.hapticon.app.feature.gesture.RecorderActions
 import org.hapticon.app.feature.gesture.RecorderScreen
 import org.hapticon.app.feature.gesture.RecorderUiState
 import org.hapticon.app.feature.gesture.SentGesture
+import org.hapticon.app.feature.gesture.TeachActions
 import org.hapticon.app.feature.gesture.TeachScreen
 import org.hapticon.app.feature.gesture.TeachUiState
+import org.hapticon.app.feature.iconeditor.IconEditorActions
 import org.hapticon.app.feature.iconeditor.IconEditorScreen
 import org.hapticon.app.feature.iconeditor.IconEditorViewModel
 import org.hapticon.app.feature.iconeditor.IconField
@@ -23,7 +27,7 @@ import org.junit.Test
 class GestureScreenshotTest : ScreenshotTest() {
     @Test
     fun recorder_empty() = screen("gestures-recorder-empty", Variant.MAIN) {
-        RecorderScreen(RecorderUiState(), EmptyPlotSource, null, null, onImport = {})
+        RecorderScreen(RecorderUiState.Ready(), EmptyPlotSource, null, RecorderActions())
     }
 
     @Test
@@ -31,25 +35,25 @@ class GestureScreenshotTest : ScreenshotTest() {
         val take = SyntheticGestures.render(HapticIcon.KNOCK, Double.POSITIVE_INFINITY, Random(1), sampleRate = 8000).toRecording()
         val fit = IconFitter.fit(take, options = FitOptions(name = "tap"))
         RecorderScreen(
-            RecorderUiState(take = take, trimTo = take.frameCount, fitChannel = "vibration", fit = fit, iconName = "tap", channels = take.channels.map { it.name }),
-            EmptyPlotSource, null, null, onImport = {},
+            RecorderUiState.Ready(take = take, trimTo = take.frameCount, fitChannel = "vibration", fit = fit, iconName = "tap", channels = take.channels.map { it.name }),
+            EmptyPlotSource, null, RecorderActions(),
         )
     }
 
     @Test
     fun teach_noTakes() = screen("gestures-teach") {
-        TeachScreen(TeachUiState(), EmptyPlotSource, null, null, onImportModel = {})
+        TeachScreen(TeachUiState.Ready(), EmptyPlotSource, null, TeachActions())
     }
 
     @Test
     fun recognition_live() = screen("gestures-recognition") {
         val hug = GestureLabel.parse("hug-gentle")
         RecognitionScreen(
-            RecognitionUiState(
+            RecognitionUiState.Ready(
                 running = true, decision = hug, probability = 0.9, peers = listOf("bob"), peer = "bob", sendEnabled = true,
                 sent = listOf(SentGesture(hug, "hug", "bob", 3.25)),
             ),
-            null, null,
+            null, RecognitionActions(),
         )
     }
 
@@ -60,11 +64,11 @@ class GestureScreenshotTest : ScreenshotTest() {
 
     @Test
     fun iconEditor_valid() = screen("icon-editor", Variant.MAIN) {
-        IconEditorScreen(IconEditorViewModel.validate(valid), { _, _ -> }, {}, {}, {})
+        IconEditorScreen(IconEditorViewModel.validate(valid), IconEditorActions())
     }
 
     @Test
     fun iconEditor_invalidLevel() = screen("icon-editor-error") {
-        IconEditorScreen(IconEditorViewModel.validate(valid + (IconField.LEVEL to "1.5")), { _, _ -> }, {}, {}, {})
+        IconEditorScreen(IconEditorViewModel.validate(valid + (IconField.LEVEL to "1.5")), IconEditorActions())
     }
 }

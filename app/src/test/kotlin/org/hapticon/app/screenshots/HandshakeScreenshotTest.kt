@@ -3,6 +3,7 @@ package org.hapticon.app.screenshots
 import androidx.compose.runtime.getValue
 import androidx.lifecycle.compose.collectAsStateWithLifecycle
 import androidx.test.core.app.ApplicationProvider
+import org.hapticon.app.feature.glove.HandshakeActions
 import org.hapticon.app.feature.glove.HandshakeScreen
 import org.hapticon.app.feature.glove.HandshakeViewModel
 import org.hapticon.app.playback.VibratorVibrationOutput
@@ -32,6 +33,6 @@ class HandshakeScreenshotTest : ScreenshotTest() {
         compose.waitForIdle()
     }) {
         val state by viewModel.uiState.collectAsStateWithLifecycle()
-        HandshakeScreen(state, onBack = {}, onSimulatedPartner = viewModel::setSimulatedPartner, onVibration = viewModel::setVibration)
+        HandshakeScreen(state, HandshakeActions(onSimulatedPartner = viewModel::setSimulatedPartner, onVibration = viewModel::setVibration))
     }
 }

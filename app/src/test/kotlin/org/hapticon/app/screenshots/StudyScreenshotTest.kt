@@ -7,6 +7,7 @@ import androidx.compose.ui.unit.dp
 import org.hapticon.app.feature.study.LikertScaleControl
 import org.hapticon.app.feature.study.LockState
 import org.hapticon.app.feature.study.PinScreen
+import org.hapticon.app.feature.study.SessionActions
 import org.hapticon.app.feature.study.SessionScreen
 import org.hapticon.app.feature.study.SessionUiState
 import org.hapticon.core.HapticIcon
@@ -43,7 +44,7 @@ class StudyScreenshotTest : ScreenshotTest() {
 
     @Composable
     private fun session(state: SessionUiState) =
-        SessionScreen(state, onStartTask = {}, onPressIcon = {}, onSelect = {}, onNext = {}, onFinishTask = {}, onExit = {}, pinError = null)
+        SessionScreen(state, SessionActions(), pinError = null)
 
     @Test
     fun session_taskIntro() = screen("study-task-intro", Variant.MAIN) {

@@ -6,7 +6,9 @@ import kotlinx.coroutines.CoroutineDispatcher
 import kotlinx.coroutines.Dispatchers
 import kotlinx.coroutines.flow.MutableStateFlow
 import kotlinx.coroutines.flow.StateFlow
-import kotlinx.coroutines.flow.asStateFlow
+import kotlinx.coroutines.flow.SharingStarted
+import kotlinx.coroutines.flow.combine
+import kotlinx.coroutines.flow.stateIn
 import kotlinx.coroutines.flow.update
 import kotlinx.coroutines.launch
 import kotlinx.coroutines.withContext
@@ -28,23 +30,29 @@ import kotlin.math.abs
 data class SentGesture(val label: GestureLabel, val icon: String, val peer: String, val atSeconds: Double)
 
 /** Live recognition: the model, the source, the latest decision and what was sent to whom. */
-data class RecognitionUiState(
-    val model: GestureModel? = null,
-    val sourceKind: GestureSourceKind = GestureSourceKind.SENSOR_BOARD,
-    val running: Boolean = false,
-    /** The latest decision (every hop) and its vote share. */
-    val decision: GestureLabel? = null,
-    val probability: Double = 0.0,
-    /** The latest stable gesture event. */
-    val lastEvent: GestureLabel? = null,
-    /** Conversations to send to. */
-    val peers: List<String> = emptyList(),
-    val peer: String? = null,
-    val sendEnabled: Boolean = false,
-    /** Newest first. */
-    val sent: List<SentGesture> = emptyList(),
-    val message: String? = null,
-)
+sealed interface RecognitionUiState {
+    /** Reading the stored model. */
+    data object Loading : RecognitionUiState
+
+    /** Recognition, the stored model read. */
+    data class Ready(
+        val model: GestureModel? = null,
+        val sourceKind: GestureSourceKind = GestureSourceKind.SENSOR_BOARD,
+        val running: Boolean = false,
+        /** The latest decision (every hop) and its vote share. */
+        val decision: GestureLabel? = null,
+        val probability: Double = 0.0,
+        /** The latest stable gesture event. */
+        val lastEvent: GestureLabel? = null,
+        /** Conversations to send to. */
+        val peers: List<String> = emptyList(),
+        val peer: String? = null,
+        val sendEnabled: Boolean = false,
+        /** Newest first. */
+        val sent: List<SentGesture> = emptyList(),
+        val message: String? = null,
+    ) : RecognitionUiState
+}
 
 /**
  * Runs a [LiveRecognizer] on the chosen source's thread and, with "send" on, sends each recognised
@@ -60,19 +68,24 @@ class RecognitionViewModel(
     private val minSendIntervalSeconds: Double = MIN_SEND_INTERVAL_SECONDS,
     private val work: CoroutineDispatcher = Dispatchers.Default,
 ) : ViewModel() {
-    private val state = MutableStateFlow(RecognitionUiState())
+    private val state = MutableStateFlow(RecognitionUiState.Ready())
+    private val loaded = MutableStateFlow(false)
     private var source: GestureSource? = null
 
     // Written on the source's thread only.
     private var lastSentFrame = Long.MIN_VALUE
 
     /** What the screen shows. */
-    val uiState: StateFlow<RecognitionUiState> = state.asStateFlow()
+    val uiState: StateFlow<RecognitionUiState> = combine(state, loaded) { ready, isLoaded -> if (isLoaded) ready else RecognitionUiState.Loading }
+        .stateIn(viewModelScope, SharingStarted.Eagerly, RecognitionUiState.Loading)
 
     init {
         viewModelScope.launch {
             val models = withContext(work) { gestures.models.model.also { it.value } }
-            models.collect { model -> state.update { it.copy(model = model) } }
+            models.collect { model ->
+                state.update { it.copy(model = model) }
+                loaded.value = true
+            }
         }
         repository?.let { chats ->
             viewModelScope.launch {

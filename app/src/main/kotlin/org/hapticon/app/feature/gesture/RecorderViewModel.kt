@@ -9,7 +9,9 @@ import kotlinx.coroutines.Job
 import kotlinx.coroutines.delay
 import kotlinx.coroutines.flow.MutableStateFlow
 import kotlinx.coroutines.flow.StateFlow
-import kotlinx.coroutines.flow.asStateFlow
+import kotlinx.coroutines.flow.SharingStarted
+import kotlinx.coroutines.flow.combine
+import kotlinx.coroutines.flow.stateIn
 import kotlinx.coroutines.flow.update
 import kotlinx.coroutines.isActive
 import kotlinx.coroutines.launch
@@ -32,36 +34,42 @@ import org.hapticon.gesture.recognition.GestureLabel
 import org.hapticon.sensor.live.PlotSource
 
 /** What the recorder shows: the source, the live or recorded take, the trim, the fitted icon and the saved recordings. */
-data class RecorderUiState(
-    val sourceKind: GestureSourceKind = GestureSourceKind.TOUCH,
-    /** False when this phone lacks the chosen source. */
-    val sourceAvailable: Boolean = true,
-    val recording: Boolean = false,
-    /** Seconds recorded so far (live) or the recorded take's length. */
-    val seconds: Double = 0.0,
-    val maxSeconds: Double = RecorderViewModel.MAX_SECONDS,
-    /** Channel names of the live source or of [take]. */
-    val channels: List<String> = emptyList(),
-    /** Changes when the live plot has new samples. */
-    val plotRevision: Long = 0,
-    /** The recorded (or imported, or opened) take being trimmed; null before one exists. */
-    val take: Recording? = null,
-    /** The trim, frames `[trimFrom, trimTo)` of [take]. */
-    val trimFrom: Int = 0,
-    val trimTo: Int = 0,
-    /** The channel the icon is fitted to. */
-    val fitChannel: String? = null,
-    val fitting: Boolean = false,
-    val fit: IconFit? = null,
-    val iconName: String = "my gesture",
-    /** The name of the icon last saved, to confirm it. */
-    val savedIcon: String? = null,
-    val savedRecordings: List<SavedRecording> = emptyList(),
-    /** A problem or a confirmation for the user. */
-    val message: String? = null,
-) {
-    /** The trimmed take, or null while there is none. */
-    val trimmed: Recording? get() = take?.slice(trimFrom, trimTo)
+sealed interface RecorderUiState {
+    /** Reading the saved recordings. */
+    data object Loading : RecorderUiState
+
+    /** The recorder, its saved recordings read. */
+    data class Ready(
+        val sourceKind: GestureSourceKind = GestureSourceKind.TOUCH,
+        /** False when this phone lacks the chosen source. */
+        val sourceAvailable: Boolean = true,
+        val recording: Boolean = false,
+        /** Seconds recorded so far (live) or the recorded take's length. */
+        val seconds: Double = 0.0,
+        val maxSeconds: Double = RecorderViewModel.MAX_SECONDS,
+        /** Channel names of the live source or of [take]. */
+        val channels: List<String> = emptyList(),
+        /** Changes when the live plot has new samples. */
+        val plotRevision: Long = 0,
+        /** The recorded (or imported, or opened) take being trimmed; null before one exists. */
+        val take: Recording? = null,
+        /** The trim, frames `[trimFrom, trimTo)` of [take]. */
+        val trimFrom: Int = 0,
+        val trimTo: Int = 0,
+        /** The channel the icon is fitted to. */
+        val fitChannel: String? = null,
+        val fitting: Boolean = false,
+        val fit: IconFit? = null,
+        val iconName: String = "my gesture",
+        /** The name of the icon last saved, to confirm it. */
+        val savedIcon: String? = null,
+        val savedRecordings: List<SavedRecording> = emptyList(),
+        /** A problem or a confirmation for the user. */
+        val message: String? = null,
+    ) : RecorderUiState {
+        /** The trimmed take, or null while there is none. */
+        val trimmed: Recording? get() = take?.slice(trimFrom, trimTo)
+    }
 }
 
 /**
@@ -77,11 +85,13 @@ class RecorderViewModel(
     private val work: CoroutineDispatcher = Dispatchers.Default,
 ) : ViewModel() {
     private val recorder = SourceRecorder(MAX_SECONDS)
-    private val state = MutableStateFlow(RecorderUiState())
+    private val state = MutableStateFlow(RecorderUiState.Ready())
+    private val loaded = MutableStateFlow(false)
     private var ticker: Job? = null
 
     /** What the screen shows. */
-    val uiState: StateFlow<RecorderUiState> = state.asStateFlow()
+    val uiState: StateFlow<RecorderUiState> = combine(state, loaded) { ready, isLoaded -> if (isLoaded) ready else RecorderUiState.Loading }
+        .stateIn(viewModelScope, SharingStarted.Eagerly, RecorderUiState.Loading)
 
     /** The live plot's samples. */
     val plot: PlotSource get() = recorder.history
@@ -256,6 +266,7 @@ class RecorderViewModel(
         viewModelScope.launch {
             val list = withContext(work) { gestures.recordings.list() }
             state.update { it.copy(savedRecordings = list) }
+            loaded.value = true
         }
     }
 

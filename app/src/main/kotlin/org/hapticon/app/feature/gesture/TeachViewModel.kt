@@ -9,7 +9,9 @@ import kotlinx.coroutines.Job
 import kotlinx.coroutines.delay
 import kotlinx.coroutines.flow.MutableStateFlow
 import kotlinx.coroutines.flow.StateFlow
-import kotlinx.coroutines.flow.asStateFlow
+import kotlinx.coroutines.flow.SharingStarted
+import kotlinx.coroutines.flow.combine
+import kotlinx.coroutines.flow.stateIn
 import kotlinx.coroutines.flow.update
 import kotlinx.coroutines.isActive
 import kotlinx.coroutines.launch
@@ -38,32 +40,38 @@ data class TrainingResult(
 )
 
 /** The teach flow: which labels, how many takes, the examples so far, the take being recorded and the training outcome. */
-data class TeachUiState(
-    val sourceKind: GestureSourceKind = GestureSourceKind.SENSOR_BOARD,
-    /** The labels taught, [GestureLabel.NONE] always among them, in [GestureLabel.ALL] order. */
-    val labels: List<GestureLabel> = TeachViewModel.DEFAULT_LABELS,
-    val takesPerLabel: Int = TeachViewModel.DEFAULT_TAKES,
-    /** Takes recorded per label. */
-    val recorded: Map<GestureLabel, Int> = emptyMap(),
-    val recording: Boolean = false,
-    val seconds: Double = 0.0,
-    val plotRevision: Long = 0,
-    val channels: List<String> = emptyList(),
-    val training: Boolean = false,
-    val result: TrainingResult? = null,
-    /** The stored model, for the summary line. */
-    val model: GestureModel? = null,
-    val message: String? = null,
-) {
-    /** The next label to record a take of, or null when every label has its takes. */
-    val next: GestureLabel? get() = labels.firstOrNull { (recorded[it] ?: 0) < takesPerLabel }
+sealed interface TeachUiState {
+    /** Reading the stored model. */
+    data object Loading : TeachUiState
 
-    /** Takes recorded over takes wanted. */
-    val progress: Pair<Int, Int> get() = labels.sumOf { minOf(recorded[it] ?: 0, takesPerLabel) } to labels.size * takesPerLabel
+    /** The teach flow, the stored model read. */
+    data class Ready(
+        val sourceKind: GestureSourceKind = GestureSourceKind.SENSOR_BOARD,
+        /** The labels taught, [GestureLabel.NONE] always among them, in [GestureLabel.ALL] order. */
+        val labels: List<GestureLabel> = TeachViewModel.DEFAULT_LABELS,
+        val takesPerLabel: Int = TeachViewModel.DEFAULT_TAKES,
+        /** Takes recorded per label. */
+        val recorded: Map<GestureLabel, Int> = emptyMap(),
+        val recording: Boolean = false,
+        val seconds: Double = 0.0,
+        val plotRevision: Long = 0,
+        val channels: List<String> = emptyList(),
+        val training: Boolean = false,
+        val result: TrainingResult? = null,
+        /** The stored model, for the summary line. */
+        val model: GestureModel? = null,
+        val message: String? = null,
+    ) : TeachUiState {
+        /** The next label to record a take of, or null when every label has its takes. */
+        val next: GestureLabel? get() = labels.firstOrNull { (recorded[it] ?: 0) < takesPerLabel }
+
+        /** Takes recorded over takes wanted. */
+        val progress: Pair<Int, Int> get() = labels.sumOf { minOf(recorded[it] ?: 0, takesPerLabel) } to labels.size * takesPerLabel
+    }
 }
 
 /**
- * Teaches a personal recognition model: records [TeachUiState.takesPerLabel] takes of each chosen label on
+ * Teaches a personal recognition model: records [TeachUiState.Ready.takesPerLabel] takes of each chosen label on
  * the chosen source (each take "rest, do it once, rest", at most [MAX_TAKE_SECONDS]; the gesture's span is
  * found by [GestureSpans]), trains with [PersonalTrainer] on [work] and stores the model through the
  * component's model store. Also imports a model made with `hapticon train`.
@@ -76,11 +84,13 @@ class TeachViewModel(
 ) : ViewModel() {
     private val recorder = SourceRecorder(MAX_TAKE_SECONDS)
     private val examples = ArrayList<Pair<GestureLabel, Recording>>()
-    private val state = MutableStateFlow(TeachUiState())
+    private val state = MutableStateFlow(TeachUiState.Ready())
+    private val loaded = MutableStateFlow(false)
     private var ticker: Job? = null
 
     /** What the screen shows. */
-    val uiState: StateFlow<TeachUiState> = state.asStateFlow()
+    val uiState: StateFlow<TeachUiState> = combine(state, loaded) { ready, isLoaded -> if (isLoaded) ready else TeachUiState.Loading }
+        .stateIn(viewModelScope, SharingStarted.Eagerly, TeachUiState.Loading)
 
     /** The live plot of the take being recorded. */
     val plot: PlotSource get() = recorder.history
@@ -89,6 +99,7 @@ class TeachViewModel(
         viewModelScope.launch {
             val stored = withContext(work) { gestures.models.model.value }
             state.update { it.copy(model = stored) }
+            loaded.value = true
         }
     }
 

@@ -28,6 +28,8 @@ import androidx.compose.material3.SingleChoiceSegmentedButtonRow
 import androidx.compose.material3.Text
 import androidx.compose.material3.TopAppBar
 import androidx.compose.runtime.Composable
+import androidx.compose.runtime.remember
+import androidx.compose.runtime.Immutable
 import androidx.compose.runtime.getValue
 import androidx.compose.ui.Alignment
 import androidx.compose.ui.Modifier
@@ -65,32 +67,37 @@ fun CalibrationRoute(container: AppContainer, onBack: () -> Unit) {
 @Composable
 fun CalibrationRoute(viewModel: CalibrationViewModel, onBack: () -> Unit) {
     val uiState by viewModel.uiState.collectAsStateWithLifecycle()
-    CalibrationScreen(
-        uiState,
-        onBack = onBack,
-        onUserChange = viewModel::setUser,
-        onSelectFinger = viewModel::selectFinger,
-        onBeginPose = viewModel::beginPose,
-        onRestart = viewModel::restart,
-    )
+    val actions = remember(viewModel, onBack) {
+        CalibrationActions(
+            onBack = onBack,
+            onUserChange = viewModel::setUser,
+            onSelectFinger = viewModel::selectFinger,
+            onBeginPose = viewModel::beginPose,
+            onRestart = viewModel::restart,
+        )
+    }
+    CalibrationScreen(uiState, actions)
 }
+
+/** What the glove calibration screen can ask for. */
+@Immutable
+class CalibrationActions(
+    val onBack: () -> Unit = {},
+    val onUserChange: (String) -> Unit = {},
+    val onSelectFinger: (GloveFinger) -> Unit = {},
+    val onBeginPose: () -> Unit = {},
+    val onRestart: () -> Unit = {},
+)
 
 /** Per finger: hold each pose until it settles, then see the fitted α, β and R², or why it failed. */
 @OptIn(ExperimentalMaterial3Api::class)
 @Composable
-fun CalibrationScreen(
-    uiState: CalibrationUiState,
-    onBack: () -> Unit,
-    onUserChange: (String) -> Unit,
-    onSelectFinger: (GloveFinger) -> Unit,
-    onBeginPose: () -> Unit,
-    onRestart: () -> Unit,
-) {
+fun CalibrationScreen(uiState: CalibrationUiState, actions: CalibrationActions) {
     Scaffold(
         topBar = {
             TopAppBar(
                 title = { Text("Glove calibration") },
-                navigationIcon = { IconButton(onClick = onBack) { Icon(HapticonIcons.ArrowBack, contentDescription = "Back") } },
+                navigationIcon = { IconButton(onClick = actions.onBack) { Icon(HapticonIcons.ArrowBack, contentDescription = "Back") } },
             )
         },
     ) { padding ->
@@ -102,7 +109,7 @@ fun CalibrationScreen(
             ) {
                 OutlinedTextField(
                     value = uiState.userInput,
-                    onValueChange = onUserChange,
+                    onValueChange = actions.onUserChange,
                     label = { Text("Participant") },
                     singleLine = true,
                     keyboardOptions = KeyboardOptions(imeAction = ImeAction.Done),
@@ -114,7 +121,7 @@ fun CalibrationScreen(
                     fingers.forEachIndexed { i, finger ->
                         SegmentedButton(
                             selected = finger == uiState.finger,
-                            onClick = { onSelectFinger(finger) },
+                            onClick = { actions.onSelectFinger(finger) },
                             shape = SegmentedButtonDefaults.itemShape(i, fingers.size),
                             label = { Text(fingerName(finger)) },
                         )
@@ -129,7 +136,7 @@ fun CalibrationScreen(
                         )
                     }
                 }
-                FlowStep(uiState, onBeginPose, onRestart)
+                FlowStep(uiState, actions.onBeginPose, actions.onRestart)
                 LiveSensor(uiState.live)
                 SavedSection(uiState.user, uiState.saved)
             }

@@ -21,6 +21,8 @@ import androidx.compose.material3.Scaffold
 import androidx.compose.material3.Text
 import androidx.compose.material3.TopAppBar
 import androidx.compose.runtime.Composable
+import androidx.compose.runtime.remember
+import androidx.compose.runtime.Immutable
 import org.hapticon.app.sensors.NoHandshakeLink
 import androidx.compose.material3.FilterChip
 import androidx.compose.foundation.layout.FlowRow
@@ -58,25 +60,38 @@ fun HandshakeRoute(container: AppContainer, onBack: () -> Unit) {
         },
     )
     val uiState by viewModel.uiState.collectAsStateWithLifecycle()
-    HandshakeScreen(uiState, onBack, viewModel::setSimulatedPartner, viewModel::setVibration, viewModel::setForceFeedback, viewModel::setNetworkPartner)
+    val actions = remember(viewModel, onBack) {
+        HandshakeActions(
+            onBack = onBack,
+            onSimulatedPartner = viewModel::setSimulatedPartner,
+            onVibration = viewModel::setVibration,
+            onForceFeedback = viewModel::setForceFeedback,
+            onNetworkPartner = viewModel::setNetworkPartner,
+        )
+    }
+    HandshakeScreen(uiState, actions)
 }
+
+/** What the handshake screen can ask for. */
+@Immutable
+class HandshakeActions(
+    val onBack: () -> Unit = {},
+    val onSimulatedPartner: (Boolean) -> Unit = {},
+    val onVibration: (Boolean) -> Unit = {},
+    val onForceFeedback: (Boolean) -> Unit = {},
+    /** Chooses the conversation whose hand is felt, or none. */
+    val onNetworkPartner: (String?) -> Unit = {},
+)
 
 /** Live angles of both hands, whether the handshake is on, and the pressure on each hand region. */
 @OptIn(ExperimentalMaterial3Api::class)
 @Composable
-fun HandshakeScreen(
-    uiState: HandshakeUiState,
-    onBack: () -> Unit,
-    onSimulatedPartner: (Boolean) -> Unit,
-    onVibration: (Boolean) -> Unit,
-    onForceFeedback: (Boolean) -> Unit = {},
-    onNetworkPartner: (String?) -> Unit = {},
-) {
+fun HandshakeScreen(uiState: HandshakeUiState, actions: HandshakeActions) {
     Scaffold(
         topBar = {
             TopAppBar(
                 title = { Text("Handshake") },
-                navigationIcon = { IconButton(onClick = onBack) { Icon(HapticonIcons.ArrowBack, contentDescription = "Back") } },
+                navigationIcon = { IconButton(onClick = actions.onBack) { Icon(HapticonIcons.ArrowBack, contentDescription = "Back") } },
             )
         },
     ) { padding ->
@@ -95,10 +110,10 @@ fun HandshakeScreen(
                         )
                     }
                 }
-                SwitchRow("Simulated partner", uiState.simulatedPartner, onSimulatedPartner)
-                NetworkPartners(uiState, onNetworkPartner)
-                SwitchRow("Phone vibration", uiState.vibrationEnabled, onVibration)
-                SwitchRow("Glove force feedback", uiState.forceFeedbackEnabled, onForceFeedback)
+                SwitchRow("Simulated partner", uiState.simulatedPartner, actions.onSimulatedPartner)
+                NetworkPartners(uiState, actions.onNetworkPartner)
+                SwitchRow("Phone vibration", uiState.vibrationEnabled, actions.onVibration)
+                SwitchRow("Glove force feedback", uiState.forceFeedbackEnabled, actions.onForceFeedback)
                 Text(forceFeedbackStatus(uiState), style = MaterialTheme.typography.bodySmall)
                 val status = if (uiState.active) "Handshake active" else "No handshake"
                 Card(

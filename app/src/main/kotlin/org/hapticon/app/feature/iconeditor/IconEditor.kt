@@ -20,7 +20,9 @@ import androidx.compose.material3.Scaffold
 import androidx.compose.material3.Text
 import androidx.compose.material3.TopAppBar
 import androidx.compose.runtime.Composable
+import androidx.compose.runtime.Immutable
 import androidx.compose.runtime.getValue
+import androidx.compose.runtime.remember
 import androidx.compose.ui.Modifier
 import androidx.compose.ui.unit.dp
 import androidx.lifecycle.ViewModel
@@ -55,11 +57,34 @@ enum class IconField(val key: String, val label: String) {
 }
 
 /** The editor: the text of every field and either the icon they make or the first problem, by field. */
-data class IconEditorUiState(
-    val fields: Map<IconField, String>,
-    val icon: HapticIcon?,
-    val errors: Map<IconField, String>,
-    val saved: Boolean = false,
+sealed interface IconEditorUiState {
+    /** The text of every field, as typed. */
+    val fields: Map<IconField, String>
+
+    /** The icon the fields make, or null while they make none. */
+    val icon: HapticIcon?
+
+    /** The problem of each field that has one. */
+    val errors: Map<IconField, String>
+
+    /** The fields make [icon]: it can be played and saved. */
+    data class Valid(override val fields: Map<IconField, String>, override val icon: HapticIcon) : IconEditorUiState {
+        override val errors: Map<IconField, String> get() = emptyMap()
+    }
+
+    /** The fields make no icon: [errors] says why, by field. */
+    data class Invalid(override val fields: Map<IconField, String>, override val errors: Map<IconField, String>) : IconEditorUiState {
+        override val icon: HapticIcon? get() = null
+    }
+}
+
+/** What the editor can ask for. */
+@Immutable
+class IconEditorActions(
+    val onChange: (IconField, String) -> Unit = { _, _ -> },
+    val onPlay: () -> Unit = {},
+    val onSave: () -> Unit = {},
+    val onBack: () -> Unit = {},
 )
 
 class IconEditorViewModel(
@@ -74,13 +99,10 @@ class IconEditorViewModel(
             IconField.PERIOD to start.period.toString(), IconField.COUNT to start.count.toString(),
         ),
     )
-    private val saved = MutableStateFlow(false)
-
     val uiState: StateFlow<IconEditorUiState> = fields.map { validate(it) }
         .stateIn(viewModelScope, SharingStarted.Eagerly, validate(fields.value))
 
     fun update(field: IconField, text: String) {
-        saved.value = false
         fields.value = fields.value + (field to text)
     }
 
@@ -109,13 +131,13 @@ class IconEditorViewModel(
             val note = number(IconField.NOTE)
             val period = number(IconField.PERIOD)
             val count = fields[IconField.COUNT]?.trim()?.toIntOrNull() ?: 0.also { errors[IconField.COUNT] = "Enter a whole number" }
-            if (errors.isNotEmpty()) return IconEditorUiState(fields, null, errors)
+            if (errors.isNotEmpty()) return IconEditorUiState.Invalid(fields, errors)
             return try {
                 val icon = HapticIcon(fields[IconField.NAME].orEmpty().trim(), attack, sustain, level, release, note, period, count)
-                IconEditorUiState(fields, icon, emptyMap())
+                IconEditorUiState.Valid(fields, icon)
             } catch (e: IconValidationException) {
                 val field = IconField.entries.firstOrNull { it.key == e.field } ?: IconField.NAME
-                IconEditorUiState(fields, null, mapOf(field to (e.message ?: "Not valid")))
+                IconEditorUiState.Invalid(fields, mapOf(field to (e.message ?: "Not valid")))
             }
         }
     }
@@ -125,24 +147,21 @@ class IconEditorViewModel(
 fun IconEditorRoute(icons: RoomIconRepository, player: HapticPlayer, onDone: () -> Unit) {
     val viewModel: IconEditorViewModel = viewModel(factory = viewModelFactory { initializer { IconEditorViewModel(icons, player) } })
     val uiState by viewModel.uiState.collectAsStateWithLifecycle()
-    IconEditorScreen(uiState, viewModel::update, viewModel::play, onSave = { viewModel.save(onDone) }, onBack = onDone)
+    val actions = remember(viewModel, onDone) {
+        IconEditorActions(onChange = viewModel::update, onPlay = viewModel::play, onSave = { viewModel.save(onDone) }, onBack = onDone)
+    }
+    IconEditorScreen(uiState, actions)
 }
 
 /** Seven parameters and a name, a live envelope plot, each field's validation message under it, play and save. */
 @OptIn(ExperimentalMaterial3Api::class)
 @Composable
-fun IconEditorScreen(
-    uiState: IconEditorUiState,
-    onChange: (IconField, String) -> Unit,
-    onPlay: () -> Unit,
-    onSave: () -> Unit,
-    onBack: () -> Unit,
-) {
+fun IconEditorScreen(uiState: IconEditorUiState, actions: IconEditorActions) {
     Scaffold(
         topBar = {
             TopAppBar(
                 title = { Text("New haptic icon") },
-                navigationIcon = { IconButton(onClick = onBack) { Icon(HapticonIcons.ArrowBack, contentDescription = "Close the editor") } },
+                navigationIcon = { IconButton(onClick = actions.onBack) { Icon(HapticonIcons.ArrowBack, contentDescription = "Close the editor") } },
             )
         },
     ) { padding ->
@@ -156,7 +175,7 @@ fun IconEditorScreen(
                 val error = uiState.errors[field]
                 OutlinedTextField(
                     value = uiState.fields[field].orEmpty(),
-                    onValueChange = { onChange(field, it) },
+                    onValueChange = { actions.onChange(field, it) },
                     label = { Text(field.label) },
                     isError = error != null,
                     supportingText = error?.let { { Text(it) } },
@@ -165,8 +184,8 @@ fun IconEditorScreen(
                 )
             }
             Row(horizontalArrangement = Arrangement.spacedBy(12.dp)) {
-                OutlinedButton(onClick = onPlay, enabled = uiState.icon != null) { Text("Play") }
-                Button(onClick = onSave, enabled = uiState.icon != null) { Text("Save") }
+                OutlinedButton(onClick = actions.onPlay, enabled = uiState.icon != null) { Text("Play") }
+                Button(onClick = actions.onSave, enabled = uiState.icon != null) { Text("Save") }
             }
         }
     }

@@ -21,6 +21,8 @@ import androidx.compose.material3.Scaffold
 import androidx.compose.material3.Text
 import androidx.compose.material3.TopAppBar
 import androidx.compose.runtime.Composable
+import androidx.compose.runtime.remember
+import androidx.compose.runtime.Immutable
 import androidx.compose.runtime.getValue
 import androidx.compose.ui.Alignment
 import androidx.compose.ui.Modifier
@@ -45,13 +47,18 @@ fun IconsRoute(container: AppContainer) {
         factory = viewModelFactory { initializer { IconsViewModel(container.iconRepository, container.player) } },
     )
     val uiState by viewModel.uiState.collectAsStateWithLifecycle()
-    IconsScreen(uiState, onPlay = viewModel::play)
+    val actions = remember(viewModel) { IconsActions(onPlay = viewModel::play) }
+    IconsScreen(uiState, actions)
 }
+
+/** What the Icons screen can ask for. */
+@Immutable
+class IconsActions(val onPlay: (HapticIcon) -> Unit = {})
 
 /** The icon list: each icon with its parameters and envelope; pressing one plays it. */
 @OptIn(ExperimentalMaterial3Api::class)
 @Composable
-fun IconsScreen(uiState: IconsUiState, onPlay: (HapticIcon) -> Unit) {
+fun IconsScreen(uiState: IconsUiState, actions: IconsActions) {
     Scaffold(topBar = { TopAppBar(title = { Text("Haptic icons") }) }) { padding ->
         when (uiState) {
             IconsUiState.Loading -> Box(Modifier.fillMaxSize().padding(padding), Alignment.Center) {
@@ -69,7 +76,7 @@ fun IconsScreen(uiState: IconsUiState, onPlay: (HapticIcon) -> Unit) {
                     )
                 }
                 items(uiState.icons, key = { it.name }) { icon ->
-                    IconCard(icon, playing = uiState.nowPlaying?.takeIf { it.iconName == icon.name }, onPlay)
+                    IconCard(icon, playing = uiState.nowPlaying?.takeIf { it.iconName == icon.name }, actions.onPlay)
                 }
             }
         }

@@ -23,6 +23,7 @@ import androidx.compose.material3.Slider
 import androidx.compose.material3.Text
 import androidx.compose.material3.TextButton
 import androidx.compose.runtime.Composable
+import androidx.compose.runtime.Immutable
 import androidx.compose.runtime.getValue
 import androidx.compose.runtime.mutableStateOf
 import androidx.compose.runtime.saveable.rememberSaveable
@@ -45,12 +46,32 @@ import org.hapticon.app.study.NoiseColor
 import org.hapticon.app.study.NoiseFiles
 import org.hapticon.app.study.StudyExporter
 import org.hapticon.app.ui.DropdownField
+import org.hapticon.study.Stimulus
+import org.hapticon.study.StudyTask
+import org.hapticon.app.study.StoredProtocol
 import org.hapticon.study.LikertScale
 import org.hapticon.study.design.OrderScheme
 
+/** What the researcher screen can ask for. */
+@Immutable
+class ResearcherActions(
+    val onLock: () -> Unit = {},
+    val onSelect: (String) -> Unit = {},
+    val onEdit: (String) -> Unit = {},
+    val onDuplicate: (StoredProtocol) -> Unit = {},
+    val onDelete: (String) -> Unit = {},
+    /** Starts the next session; true: even without headphones (after the warning). */
+    val onStartSession: (Boolean) -> Unit = {},
+    val onDismissHeadphoneWarning: () -> Unit = {},
+    val onExport: () -> Unit = {},
+    val onSetCollector: (String, String) -> Unit = { _, _ -> },
+    val onUpload: () -> Unit = {},
+    val onOpenCompliance: () -> Unit = {},
+)
+
 /** The researcher screen: protocol, next session, sessions, export, share and upload. */
 @Composable
-fun ResearcherScreen(state: ResearcherUiState, viewModel: ResearcherViewModel, onEdit: (String) -> Unit) {
+fun ResearcherScreen(state: ResearcherUiState, actions: ResearcherActions) {
     val context = LocalContext.current
     fun share(file: File, type: String) {
         try {
@@ -63,7 +84,7 @@ fun ResearcherScreen(state: ResearcherUiState, viewModel: ResearcherViewModel, o
         item {
             Row(Modifier.fillMaxWidth(), horizontalArrangement = Arrangement.SpaceBetween) {
                 Text("Study · researcher", style = MaterialTheme.typography.headlineSmall, modifier = Modifier.semantics { heading() })
-                TextButton(onClick = viewModel::lock) { Text("Lock") }
+                TextButton(onClick = actions.onLock) { Text("Lock") }
             }
         }
         item {
@@ -75,7 +96,7 @@ fun ResearcherScreen(state: ResearcherUiState, viewModel: ResearcherViewModel, o
                         options = state.protocols,
                         selected = selected,
                         optionLabel = { "${it.protocol.title} (${it.protocol.id} r${it.protocol.revision})" + if (it.readOnly) " · default" else "" },
-                        onSelect = { viewModel.select(it.protocol.id) },
+                        onSelect = { actions.onSelect(it.protocol.id) },
                     )
                     val masking = selected.masking
                     Text(
@@ -85,19 +106,23 @@ fun ResearcherScreen(state: ResearcherUiState, viewModel: ResearcherViewModel, o
                     )
                     Row(horizontalArrangement = Arrangement.spacedBy(8.dp)) {
                         if (selected.readOnly) {
-                            OutlinedButton(onClick = { viewModel.duplicate(selected) }) { Text("Duplicate to edit") }
+                            OutlinedButton(onClick = { actions.onDuplicate(selected) }) { Text("Duplicate to edit") }
                         } else {
-                            OutlinedButton(onClick = { onEdit(selected.protocol.id) }) { Text("Edit") }
-                            OutlinedButton(onClick = { viewModel.duplicate(selected) }) { Text("Duplicate") }
-                            OutlinedButton(onClick = { viewModel.delete(selected.protocol.id) }) { Text("Delete") }
+                            OutlinedButton(onClick = { actions.onEdit(selected.protocol.id) }) { Text("Edit") }
+                            OutlinedButton(onClick = { actions.onDuplicate(selected) }) { Text("Duplicate") }
+                            OutlinedButton(onClick = { actions.onDelete(selected.protocol.id) }) { Text("Delete") }
                         }
                     }
-                    Button(onClick = { viewModel.startSession() }, modifier = Modifier.fillMaxWidth()) {
+                    Button(onClick = { actions.onStartSession(false) }, modifier = Modifier.fillMaxWidth()) {
                         Text("Start session for ${state.nextParticipant}")
                     }
                 }
                 state.message?.let { Text(it, style = MaterialTheme.typography.bodyMedium) }
             }
+        }
+        item {
+            // Shaping Compliance's study runs on the FSR board, not as an icon protocol: its own runner.
+            OutlinedButton(onClick = actions.onOpenCompliance, modifier = Modifier.fillMaxWidth()) { Text("Compliance study (Shaping Compliance, FSR board)") }
         }
         item { Text("Sessions", style = MaterialTheme.typography.titleMedium, modifier = Modifier.semantics { heading() }) }
         if (state.sessions.isEmpty()) item { Text("No sessions yet.", style = MaterialTheme.typography.bodyMedium) }
@@ -116,7 +141,7 @@ fun ResearcherScreen(state: ResearcherUiState, viewModel: ResearcherViewModel, o
         item {
             Column(verticalArrangement = Arrangement.spacedBy(8.dp)) {
                 Text("Export", style = MaterialTheme.typography.titleMedium, modifier = Modifier.semantics { heading() })
-                Button(onClick = { viewModel.export() }) { Text("Export CSV + JSON") }
+                Button(onClick = actions.onExport) { Text("Export CSV + JSON") }
                 state.export?.let { export ->
                     Text("${export.csvFile.name}, ${export.jsonFile.name}: ${export.rows} rows", style = MaterialTheme.typography.bodySmall)
                     for (check in export.checks) Text("${check.participant}: ${check.summary}", style = MaterialTheme.typography.bodyMedium)
@@ -127,21 +152,21 @@ fun ResearcherScreen(state: ResearcherUiState, viewModel: ResearcherViewModel, o
                 }
             }
         }
-        item { CollectorSettings(state, viewModel) }
+        item { CollectorSettings(state, actions) }
     }
     if (state.headphoneWarning) {
         AlertDialog(
-            onDismissRequest = viewModel::dismissHeadphoneWarning,
+            onDismissRequest = actions.onDismissHeadphoneWarning,
             title = { Text("No headphones connected") },
             text = { Text("The masking noise will play from the speaker, where the experimenter hears it too. Connect headphones, or start anyway.") },
-            confirmButton = { TextButton(onClick = { viewModel.startSession(ignoreHeadphones = true) }) { Text("Start anyway") } },
-            dismissButton = { TextButton(onClick = viewModel::dismissHeadphoneWarning) { Text("Cancel") } },
+            confirmButton = { TextButton(onClick = { actions.onStartSession(true) }) { Text("Start anyway") } },
+            dismissButton = { TextButton(onClick = actions.onDismissHeadphoneWarning) { Text("Cancel") } },
         )
     }
 }
 
 @Composable
-private fun CollectorSettings(state: ResearcherUiState, viewModel: ResearcherViewModel) {
+private fun CollectorSettings(state: ResearcherUiState, actions: ResearcherActions) {
     var url by rememberSaveable(state.collectorUrl) { mutableStateOf(state.collectorUrl) }
     var token by rememberSaveable(state.collectorToken) { mutableStateOf(state.collectorToken) }
     Column(verticalArrangement = Arrangement.spacedBy(8.dp)) {
@@ -156,9 +181,9 @@ private fun CollectorSettings(state: ResearcherUiState, viewModel: ResearcherVie
             visualTransformation = PasswordVisualTransformation(), modifier = Modifier.fillMaxWidth(),
         )
         Row(horizontalArrangement = Arrangement.spacedBy(8.dp)) {
-            OutlinedButton(onClick = { viewModel.setCollector(url, token) }) { Text("Save collector") }
+            OutlinedButton(onClick = { actions.onSetCollector(url, token) }) { Text("Save collector") }
             val failed = state.upload is UploadState.Failed
-            Button(onClick = { viewModel.upload() }, enabled = state.upload != UploadState.Uploading && state.collectorUrl.isNotBlank()) {
+            Button(onClick = actions.onUpload, enabled = state.upload != UploadState.Uploading && state.collectorUrl.isNotBlank()) {
                 Text(if (failed) "Retry upload" else "Upload")
             }
         }
@@ -171,15 +196,29 @@ private fun CollectorSettings(state: ResearcherUiState, viewModel: ResearcherVie
     }
 }
 
+/** What the protocol editor can ask for: each change is a transform of the draft, a task or a stimulus. */
+@Immutable
+class ProtocolEditorActions(
+    val onBack: () -> Unit = {},
+    val onEdit: ((ProtocolDraft) -> ProtocolDraft) -> Unit = {},
+    val onSetPoints: (Int) -> Unit = {},
+    val onEditTask: (Int, (StudyTask) -> StudyTask) -> Unit = { _, _ -> },
+    val onEditStimulus: (Int, Int, (Stimulus) -> Stimulus) -> Unit = { _, _, _ -> },
+    val onSave: () -> Unit = {},
+    val onSetJson: (String) -> Unit = {},
+    val onExportJson: () -> Unit = {},
+    val onImportJson: () -> Unit = {},
+)
+
 /** The protocol editor: every field of the draft, the study module's validation message, JSON import and export. */
 @Composable
-fun ProtocolEditorScreen(state: ProtocolEditorUiState, viewModel: ProtocolEditorViewModel, onBack: () -> Unit) {
+fun ProtocolEditorScreen(state: ProtocolEditorUiState, actions: ProtocolEditorActions) {
     val draft = state.draft
     LazyColumn(Modifier.fillMaxSize(), contentPadding = PaddingValues(16.dp), verticalArrangement = Arrangement.spacedBy(12.dp)) {
         item {
             Row(Modifier.fillMaxWidth(), horizontalArrangement = Arrangement.SpaceBetween) {
                 Text("Edit protocol", style = MaterialTheme.typography.headlineSmall, modifier = Modifier.semantics { heading() })
-                TextButton(onClick = onBack) { Text("Back") }
+                TextButton(onClick = actions.onBack) { Text("Back") }
             }
         }
         state.message?.let { item { Text(it, style = MaterialTheme.typography.bodyMedium) } }
@@ -187,39 +226,39 @@ fun ProtocolEditorScreen(state: ProtocolEditorUiState, viewModel: ProtocolEditor
         item {
             Column(verticalArrangement = Arrangement.spacedBy(8.dp)) {
                 Text("${draft.id} · revision ${draft.revision}", style = MaterialTheme.typography.labelLarge)
-                TextRow("Title", draft.title) { v -> viewModel.edit { it.copy(title = v) } }
-                DropdownField("Scale points", (2..LikertScale.MAX_POINTS).toList(), draft.points, { "$it" }, viewModel::setPoints)
-                DropdownField("Task order", OrderScheme.entries, draft.taskOrder, { it.jsonName }, { v -> viewModel.edit { it.copy(taskOrder = v) } })
-                TextRow("Seed", draft.seed.toString(), KeyboardType.Number) { v -> v.toLongOrNull()?.let { s -> viewModel.edit { it.copy(seed = s) } } }
+                TextRow("Title", draft.title) { v -> actions.onEdit { it.copy(title = v) } }
+                DropdownField("Scale points", (2..LikertScale.MAX_POINTS).toList(), draft.points, { "$it" }, actions.onSetPoints)
+                DropdownField("Task order", OrderScheme.entries, draft.taskOrder, { it.jsonName }, { v -> actions.onEdit { it.copy(taskOrder = v) } })
+                TextRow("Seed", draft.seed.toString(), KeyboardType.Number) { v -> v.toLongOrNull()?.let { s -> actions.onEdit { it.copy(seed = s) } } }
                 DropdownField("Masking noise", NoiseColor.entries, draft.masking.color, { it.label }, { v ->
-                    viewModel.edit { it.copy(masking = it.masking.copy(color = v)) }
+                    actions.onEdit { it.copy(masking = it.masking.copy(color = v)) }
                 })
-                if (draft.masking.isOn) MaskingLevel(draft.masking) { level -> viewModel.edit { it.copy(masking = it.masking.copy(levelDbfs = level)) } }
+                if (draft.masking.isOn) MaskingLevel(draft.masking) { level -> actions.onEdit { it.copy(masking = it.masking.copy(levelDbfs = level)) } }
             }
         }
         itemsIndexed(draft.tasks) { t, task ->
             Card(Modifier.fillMaxWidth()) {
                 Column(Modifier.padding(12.dp), verticalArrangement = Arrangement.spacedBy(8.dp)) {
                     Text("Task ${t + 1}: ${task.id}", style = MaterialTheme.typography.titleMedium, modifier = Modifier.semantics { heading() })
-                    TextRow("Task ${t + 1} title", task.title) { v -> viewModel.editTask(t) { it.copy(title = v) } }
-                    TextRow("Task ${t + 1} instructions", task.instructions) { v -> viewModel.editTask(t) { it.copy(instructions = v) } }
-                    TextRow("Task ${t + 1} question", task.question) { v -> viewModel.editTask(t) { it.copy(question = v) } }
+                    TextRow("Task ${t + 1} title", task.title) { v -> actions.onEditTask(t) { it.copy(title = v) } }
+                    TextRow("Task ${t + 1} instructions", task.instructions) { v -> actions.onEditTask(t) { it.copy(instructions = v) } }
+                    TextRow("Task ${t + 1} question", task.question) { v -> actions.onEditTask(t) { it.copy(question = v) } }
                     DropdownField("Task ${t + 1} stimulus order", OrderScheme.entries, task.stimulusOrder, { it.jsonName }, { v ->
-                        viewModel.editTask(t) { it.copy(stimulusOrder = v) }
+                        actions.onEditTask(t) { it.copy(stimulusOrder = v) }
                     })
                     task.stimuli.forEachIndexed { s, stimulus ->
                         HorizontalDivider()
                         Text("Stimulus ${s + 1}: ${stimulus.id}", style = MaterialTheme.typography.labelLarge)
                         val icons = if (state.icons.any { it == stimulus.icon }) state.icons else listOf(stimulus.icon) + state.icons
                         DropdownField("Task ${t + 1} stimulus ${s + 1} icon", icons, stimulus.icon, { it.name }, { icon ->
-                            viewModel.editStimulus(t, s) { it.copy(icon = icon) }
+                            actions.onEditStimulus(t, s) { it.copy(icon = icon) }
                         })
                         TextRow("Task ${t + 1} stimulus ${s + 1} text", stimulus.text.orEmpty()) { v ->
-                            viewModel.editStimulus(t, s) { it.copy(text = v.ifEmpty { null }) }
+                            actions.onEditStimulus(t, s) { it.copy(text = v.ifEmpty { null }) }
                         }
                         val stickers = listOf<String?>(null) + Sticker.entries.map { "sticker_${it.wireName}" }
                         DropdownField("Task ${t + 1} stimulus ${s + 1} sticker", (stickers + stimulus.sticker).distinct(), stimulus.sticker, { it ?: "none" }, { v ->
-                            viewModel.editStimulus(t, s) { it.copy(sticker = v) }
+                            actions.onEditStimulus(t, s) { it.copy(sticker = v) }
                         })
                     }
                 }
@@ -229,12 +268,12 @@ fun ProtocolEditorScreen(state: ProtocolEditorUiState, viewModel: ProtocolEditor
             Column(verticalArrangement = Arrangement.spacedBy(8.dp)) {
                 val problem = state.problem
                 if (problem != null) ErrorText(problem) else Text("The protocol is valid.", style = MaterialTheme.typography.bodyMedium)
-                Button(onClick = { viewModel.save() }, enabled = problem == null) { Text("Save") }
+                Button(onClick = actions.onSave, enabled = problem == null) { Text("Save") }
                 Text("Protocol JSON", style = MaterialTheme.typography.titleMedium, modifier = Modifier.semantics { heading() })
-                OutlinedTextField(state.json, viewModel::setJson, label = { Text("Protocol JSON") }, minLines = 4, modifier = Modifier.fillMaxWidth())
+                OutlinedTextField(state.json, actions.onSetJson, label = { Text("Protocol JSON") }, minLines = 4, modifier = Modifier.fillMaxWidth())
                 Row(horizontalArrangement = Arrangement.spacedBy(8.dp)) {
-                    OutlinedButton(onClick = viewModel::exportJson) { Text("Export JSON") }
-                    OutlinedButton(onClick = viewModel::importJson, enabled = state.json.isNotBlank()) { Text("Import JSON") }
+                    OutlinedButton(onClick = actions.onExportJson) { Text("Export JSON") }
+                    OutlinedButton(onClick = actions.onImportJson, enabled = state.json.isNotBlank()) { Text("Import JSON") }
                 }
             }
         }

@@ -30,12 +30,15 @@ import androidx.compose.material3.RadioButton
 import androidx.compose.material3.Text
 import androidx.compose.material3.TextButton
 import androidx.compose.runtime.Composable
+import androidx.compose.runtime.Immutable
 import androidx.compose.runtime.getValue
 import androidx.compose.runtime.mutableStateOf
+import androidx.compose.runtime.remember
 import androidx.compose.runtime.saveable.rememberSaveable
 import androidx.compose.runtime.setValue
 import androidx.compose.ui.Alignment
 import androidx.compose.ui.Modifier
+import androidx.compose.ui.platform.LocalContext
 import androidx.compose.ui.res.painterResource
 import androidx.compose.ui.semantics.LiveRegionMode
 import androidx.compose.ui.semantics.Role
@@ -57,9 +60,12 @@ import androidx.lifecycle.viewmodel.viewModelFactory
 import org.hapticon.app.AppContainer
 import org.hapticon.app.designsystem.HapticonIcons
 import org.hapticon.app.feature.chat.Sticker
+import org.hapticon.app.feature.sensors.ElectrodeLevelsStore
+import org.hapticon.app.feature.sensors.HubStimulatorLink
 import org.hapticon.study.LikertScale
 import org.hapticon.study.Stimulus
 import org.hapticon.study.StudyStep
+import java.io.File
 
 /**
  * The Study destination: the running session when there is one (the app reopens into it), else the PIN gate, the
@@ -71,6 +77,7 @@ fun StudyRoute(container: AppContainer) {
     val researcher: ResearcherViewModel = viewModel(factory = viewModelFactory { initializer { ResearcherViewModel(study) } })
     val state by researcher.uiState.collectAsStateWithLifecycle()
     var editing by rememberSaveable { mutableStateOf<String?>(null) }
+    var compliance by rememberSaveable { mutableStateOf(false) }
     val active = state.activeSessionId
     when {
         active != null -> {
@@ -81,20 +88,41 @@ fun StudyRoute(container: AppContainer) {
             LifecycleEventEffect(Lifecycle.Event.ON_PAUSE) { session.pause() }
             LifecycleEventEffect(Lifecycle.Event.ON_RESUME) { session.resume() }
             val sessionState by session.uiState.collectAsStateWithLifecycle()
-            SessionScreen(
-                sessionState,
-                onStartTask = { session.startTask() },
-                onPressIcon = { session.pressIcon() },
-                onPressStimulus = { session.pressIcon(it) },
-                onFinishExploring = { session.finishExploring() },
-                onSelect = { session.select(it) },
-                onNext = { session.next() },
-                onFinishTask = { session.finishTask() },
-                onExit = { researcher.exitSession(it) },
-                pinError = state.pinError,
-            )
+            val actions = remember(session, researcher) {
+                SessionActions(
+                    onStartTask = { session.startTask() },
+                    onPressIcon = { session.pressIcon() },
+                    onPressStimulus = { session.pressIcon(it) },
+                    onFinishExploring = { session.finishExploring() },
+                    onSelect = { session.select(it) },
+                    onNext = { session.next() },
+                    onFinishTask = { session.finishTask() },
+                    onExit = { researcher.exitSession(it) },
+                )
+            }
+            SessionScreen(sessionState, actions, pinError = state.pinError)
         }
         state.lock != LockState.UNLOCKED -> PinScreen(state.lock, state.pinError, onSetPin = researcher::setPin, onUnlock = { researcher.unlock(it) })
+        compliance -> {
+            val files = LocalContext.current.filesDir
+            val runner: ComplianceViewModel = viewModel(
+                factory = viewModelFactory {
+                    initializer {
+                        val levels = ElectrodeLevelsStore(File(files, ElectrodeLevelsStore.FILE_NAME))
+                        ComplianceViewModel(HubStimulatorLink(container.sensorHub), levels::load, File(files, "compliance"))
+                    }
+                },
+            )
+            ComplianceRoute(
+                runner,
+                onBack = {
+                    // Leaving a running session asks for the PIN again, as the Likert sessions' way out does.
+                    if (runner.uiState.value is ComplianceUiState.Trial) researcher.lock()
+                    runner.finish()
+                    compliance = false
+                },
+            )
+        }
         editing != null -> {
             val id = editing!!
             val editor: ProtocolEditorViewModel = viewModel(
@@ -102,9 +130,39 @@ fun StudyRoute(container: AppContainer) {
                 factory = viewModelFactory { initializer { ProtocolEditorViewModel(id, study.repository, container.iconRepository) } },
             )
             val editorState by editor.uiState.collectAsStateWithLifecycle()
-            ProtocolEditorScreen(editorState, editor, onBack = { editing = null })
+            val actions = remember(editor) {
+                ProtocolEditorActions(
+                    onBack = { editing = null },
+                    onEdit = editor::edit,
+                    onSetPoints = editor::setPoints,
+                    onEditTask = editor::editTask,
+                    onEditStimulus = editor::editStimulus,
+                    onSave = { editor.save() },
+                    onSetJson = editor::setJson,
+                    onExportJson = editor::exportJson,
+                    onImportJson = editor::importJson,
+                )
+            }
+            ProtocolEditorScreen(editorState, actions)
         }
-        else -> ResearcherScreen(state, researcher, onEdit = { editing = it })
+        else -> {
+            val actions = remember(researcher) {
+                ResearcherActions(
+                    onLock = researcher::lock,
+                    onSelect = researcher::select,
+                    onEdit = { editing = it },
+                    onDuplicate = { researcher.duplicate(it) },
+                    onDelete = { researcher.delete(it) },
+                    onStartSession = { researcher.startSession(ignoreHeadphones = it) },
+                    onDismissHeadphoneWarning = researcher::dismissHeadphoneWarning,
+                    onExport = { researcher.export() },
+                    onSetCollector = { url, token -> researcher.setCollector(url, token) },
+                    onUpload = { researcher.upload() },
+                    onOpenCompliance = { compliance = true },
+                )
+            }
+            ResearcherScreen(state, actions)
+        }
     }
 }
 
@@ -165,24 +223,28 @@ internal fun ErrorText(message: String) {
     )
 }
 
+/** What the participant's session screen can ask for. */
+@Immutable
+class SessionActions(
+    val onStartTask: () -> Unit = {},
+    val onPressIcon: () -> Unit = {},
+    /** Plays a stimulus of a task that shows its icons together. */
+    val onPressStimulus: (String) -> Unit = {},
+    val onFinishExploring: () -> Unit = {},
+    val onSelect: (Int) -> Unit = {},
+    val onNext: () -> Unit = {},
+    val onFinishTask: () -> Unit = {},
+    /** Leaves the session with the researcher's PIN. */
+    val onExit: (String) -> Unit = {},
+)
+
 /**
  * The participant's screens: task intro, for a task that shows its icons together the chat screen of all of them
  * (pressed freely, then on to the questions), trials (the partner's message as a chat bubble, the icon chip, the
  * statement and the rating scale), task end, done. The only way out is the "Researcher" button, which asks for the PIN.
  */
 @Composable
-fun SessionScreen(
-    state: SessionUiState,
-    onStartTask: () -> Unit,
-    onPressIcon: () -> Unit,
-    onSelect: (Int) -> Unit,
-    onNext: () -> Unit,
-    onFinishTask: () -> Unit,
-    onExit: (String) -> Unit,
-    pinError: String?,
-    onPressStimulus: (String) -> Unit = {},
-    onFinishExploring: () -> Unit = {},
-) {
+fun SessionScreen(state: SessionUiState, actions: SessionActions, pinError: String?) {
     var asking by rememberSaveable { mutableStateOf(false) }
     Column(Modifier.fillMaxSize().padding(16.dp).verticalScroll(rememberScrollState()), verticalArrangement = Arrangement.spacedBy(16.dp)) {
         Row(Modifier.fillMaxWidth(), horizontalArrangement = Arrangement.SpaceBetween, verticalAlignment = Alignment.CenterVertically) {
@@ -200,10 +262,10 @@ fun SessionScreen(
                     modifier = Modifier.fillMaxWidth().semantics { contentDescription = "Progress: ${state.answered} of ${state.trials} rated" },
                 )
                 when (val step = state.step) {
-                    is StudyStep.TaskIntro -> StepText("Task ${step.taskPosition}: ${step.task.title}", step.task.instructions, "Start", onStartTask)
-                    is StudyStep.Explore -> ExploreContent(state, step, onPressStimulus, onFinishExploring)
-                    is StudyStep.Trial -> TrialContent(state, step, onPressIcon, onSelect, onNext)
-                    is StudyStep.TaskEnd -> StepText("Task ${step.taskPosition} done", "Thank you. Take a short break if you like.", "Continue", onFinishTask)
+                    is StudyStep.TaskIntro -> StepText("Task ${step.taskPosition}: ${step.task.title}", step.task.instructions, "Start", actions.onStartTask)
+                    is StudyStep.Explore -> ExploreContent(state, step, actions.onPressStimulus, actions.onFinishExploring)
+                    is StudyStep.Trial -> TrialContent(state, step, actions.onPressIcon, actions.onSelect, actions.onNext)
+                    is StudyStep.TaskEnd -> StepText("Task ${step.taskPosition} done", "Thank you. Take a short break if you like.", "Continue", actions.onFinishTask)
                     StudyStep.Done -> StepText("All done", "Thank you for taking part! Please hand the phone back to the researcher.", null) {}
                 }
             }
@@ -221,7 +283,7 @@ fun SessionScreen(
                 }
             },
             // A right PIN ends the session and this screen with it; a wrong one shows pinError here.
-            confirmButton = { TextButton(onClick = { onExit(pin); pin = "" }) { Text("Leave session") } },
+            confirmButton = { TextButton(onClick = { actions.onExit(pin); pin = "" }) { Text("Leave session") } },
             dismissButton = { TextButton(onClick = { asking = false }) { Text("Cancel") } },
         )
     }

@@ -26,8 +26,8 @@ class GestureScreensTest {
     fun recorder_fittedIcon_showsEnvelopeReportAndSave() {
         val take = SyntheticGestures.render(HapticIcon.KNOCK, Double.POSITIVE_INFINITY, Random(1), sampleRate = 8000).toRecording()
         val fit = IconFitter.fit(take, options = FitOptions(name = "tap"))
-        val state = RecorderUiState(take = take, trimTo = take.frameCount, fitChannel = "vibration", fit = fit, iconName = "tap")
-        compose.setContent { RecorderScreen(state, EmptyPlotSource, null, null, onImport = {}) }
+        val state = RecorderUiState.Ready(take = take, trimTo = take.frameCount, fitChannel = "vibration", fit = fit, iconName = "tap")
+        compose.setContent { RecorderScreen(state, EmptyPlotSource, null, RecorderActions()) }
 
         compose.onNodeWithContentDescription("Envelope of tap").assertExists()
         compose.onNodeWithText("R²").assertExists()
@@ -39,7 +39,7 @@ class GestureScreensTest {
 
     @Test
     fun teach_withoutTakes_trainIsDisabledAndTheFirstTakeIsRest() {
-        compose.setContent { TeachScreen(TeachUiState(), EmptyPlotSource, null, null, onImportModel = {}) }
+        compose.setContent { TeachScreen(TeachUiState.Ready(), EmptyPlotSource, null, TeachActions()) }
 
         compose.onNodeWithText("Train").assertIsNotEnabled()
         compose.onNodeWithText("Record none").assertExists()
@@ -49,11 +49,11 @@ class GestureScreensTest {
     @Test
     fun recognition_showsDecisionAndSentGestures() {
         val hug = GestureLabel.parse("hug-gentle")
-        val state = RecognitionUiState(
+        val state = RecognitionUiState.Ready(
             running = true, decision = hug, probability = 0.9, peers = listOf("bob"), peer = "bob", sendEnabled = true,
             sent = listOf(SentGesture(hug, "hug", "bob", 3.25)),
         )
-        compose.setContent { RecognitionScreen(state, null, null) }
+        compose.setContent { RecognitionScreen(state, null, RecognitionActions()) }
 
         compose.onNodeWithText("hug-gentle (90 %)").assertExists()
         compose.onNodeWithText("Send recognised gestures to bob").assertExists()

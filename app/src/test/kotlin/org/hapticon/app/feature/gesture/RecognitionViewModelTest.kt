@@ -57,7 +57,7 @@ class RecognitionViewModelTest {
         viewModel.selectSource(GestureSourceKind.SENSOR_BOARD)
         viewModel.setSendEnabled(true)
         viewModel.start()
-        assertTrue(viewModel.uiState.value.message ?: "", viewModel.uiState.value.running)
+        assertTrue(viewModel.ready().message ?: "", viewModel.ready().running)
         return viewModel
     }
 
@@ -76,10 +76,10 @@ class RecognitionViewModelTest {
         assertEquals(List(3) { "bob" }, chats.sent.map { it.conversation })
         assertEquals(List(3) { "alice" }, chats.sent.map { it.sender })
         assertEquals(3, wakes)
-        assertEquals(3, viewModel.uiState.value.sent.size)
-        assertEquals("bob", viewModel.uiState.value.peer)
+        assertEquals(3, viewModel.ready().sent.size)
+        assertEquals("bob", viewModel.ready().peer)
         viewModel.stop()
-        assertFalse(viewModel.uiState.value.running)
+        assertFalse(viewModel.ready().running)
     }
 
     @Test
@@ -89,8 +89,8 @@ class RecognitionViewModelTest {
         advanceUntilIdle()
 
         assertEquals(0, chats.sent.size)
-        assertEquals(none, viewModel.uiState.value.decision)
-        assertNull(viewModel.uiState.value.lastEvent)
+        assertEquals(none, viewModel.ready().decision)
+        assertNull(viewModel.ready().lastEvent)
     }
 
     @Test
@@ -111,7 +111,7 @@ class RecognitionViewModelTest {
         advanceUntilIdle()
 
         assertEquals(0, chats.sent.size)
-        assertEquals(hugEnergetic.gesture, viewModel.uiState.value.lastEvent?.gesture)
+        assertEquals(hugEnergetic.gesture, viewModel.ready().lastEvent?.gesture)
     }
 
     @Test
@@ -123,7 +123,13 @@ class RecognitionViewModelTest {
         viewModel.selectSource(GestureSourceKind.SENSOR_BOARD)
         viewModel.start()
 
-        assertFalse(viewModel.uiState.value.running)
-        assertEquals("The model needs channels force, accel_x, accel_y, accel_z; Test source gives pressure", viewModel.uiState.value.message)
+        assertFalse(viewModel.ready().running)
+        assertEquals("The model needs channels force, accel_x, accel_y, accel_z; Test source gives pressure", viewModel.ready().message)
+    }
+
+    /** The state once the view model's flows have run (the main dispatcher is a test dispatcher): it must be ready. */
+    private fun RecognitionViewModel.ready(): RecognitionUiState.Ready {
+        dispatcher.scheduler.runCurrent()
+        return uiState.value as? RecognitionUiState.Ready ?: throw AssertionError("not ready: ${uiState.value}")
     }
 }

@@ -88,7 +88,7 @@ class RecorderViewModelTest {
     @Test
     fun recordTrimFitSave_knockBecomesACustomIconWithThreeRepetitions() = runTest(dispatcher) {
         val viewModel = recorded()
-        val recorded = viewModel.uiState.value
+        val recorded = viewModel.ready()
         assertEquals(knock.frameCount, recorded.take!!.frameCount)
         assertEquals(listOf("vibration"), recorded.channels)
         assertEquals(false, recorded.recording)
@@ -97,8 +97,8 @@ class RecorderViewModelTest {
         viewModel.setTrim(800, knock.frameCount - 800)
         viewModel.makeIcon()
         advanceUntilIdle()
-        val fit = viewModel.uiState.value.fit
-        assertNotNull(viewModel.uiState.value.message, fit)
+        val fit = viewModel.ready().fit
+        assertNotNull(viewModel.ready().message, fit)
         assertEquals(3, fit!!.icon.count)
         // The documented period tolerance at 30 dB: mean error below 1 ms.
         assertEquals(HapticIcon.KNOCK.period, fit.icon.period, 0.001)
@@ -114,7 +114,7 @@ class RecorderViewModelTest {
         val saved = db.iconDao().icons().first().single()
         assertEquals("my knock", saved.name)
         assertEquals(3, saved.count)
-        assertEquals("my knock", viewModel.uiState.value.savedIcon)
+        assertEquals("my knock", viewModel.ready().savedIcon)
         val inPicker = RoomIconRepository(db.iconDao()).icons().first()
         assertEquals(fit.icon.copy(name = "my knock"), inPicker.last())
     }
@@ -123,10 +123,10 @@ class RecorderViewModelTest {
     fun trim_isClampedToTheTakeAndTwoFrames() = runTest(dispatcher) {
         val viewModel = recorded()
         viewModel.setTrim(-5, Int.MAX_VALUE)
-        assertEquals(0 to knock.frameCount, viewModel.uiState.value.let { it.trimFrom to it.trimTo })
+        assertEquals(0 to knock.frameCount, viewModel.ready().let { it.trimFrom to it.trimTo })
         viewModel.setTrim(knock.frameCount, knock.frameCount)
-        assertEquals(knock.frameCount - 2 to knock.frameCount, viewModel.uiState.value.let { it.trimFrom to it.trimTo })
-        assertEquals(2, viewModel.uiState.value.trimmed!!.frameCount)
+        assertEquals(knock.frameCount - 2 to knock.frameCount, viewModel.ready().let { it.trimFrom to it.trimTo })
+        assertEquals(2, viewModel.ready().trimmed!!.frameCount)
     }
 
     @Test
@@ -135,8 +135,8 @@ class RecorderViewModelTest {
         val viewModel = recorded(silence)
         viewModel.makeIcon()
         advanceUntilIdle()
-        assertNull(viewModel.uiState.value.fit)
-        assertTrue(viewModel.uiState.value.message!!, viewModel.uiState.value.message!!.startsWith("no gesture found"))
+        assertNull(viewModel.ready().fit)
+        assertTrue(viewModel.ready().message!!, viewModel.ready().message!!.startsWith("no gesture found"))
     }
 
     @Test
@@ -145,7 +145,7 @@ class RecorderViewModelTest {
         viewModel.setTrim(0, 4000)
         viewModel.saveRecording("my tap", GestureLabel.parse("knock-gentle"))
         advanceUntilIdle()
-        val saved = viewModel.uiState.value.savedRecordings.single()
+        val saved = viewModel.ready().savedRecordings.single()
         assertEquals("my_tap.knock-gentle.csv", saved.id)
         assertEquals("my_tap", saved.name)
         assertEquals(GestureLabel.parse("knock-gentle"), saved.label)
@@ -153,11 +153,11 @@ class RecorderViewModelTest {
 
         viewModel.openRecording(saved.id)
         advanceUntilIdle()
-        assertEquals(4000, viewModel.uiState.value.take!!.frameCount)
+        assertEquals(4000, viewModel.ready().take!!.frameCount)
 
         viewModel.deleteRecording(saved.id)
         advanceUntilIdle()
-        assertEquals(emptyList<Any>(), viewModel.uiState.value.savedRecordings)
+        assertEquals(emptyList<Any>(), viewModel.ready().savedRecordings)
     }
 
     @Test
@@ -165,8 +165,8 @@ class RecorderViewModelTest {
         val viewModel = viewModel()
         viewModel.importFile({ "time_s,force_N\n0,1\n0.01,x\n".byteInputStream() }, "bad.csv")
         advanceUntilIdle()
-        assertEquals("bad.csv:3: force_N 'x' is not a number", viewModel.uiState.value.message)
-        assertNull(viewModel.uiState.value.take)
+        assertEquals("bad.csv:3: force_N 'x' is not a number", viewModel.ready().message)
+        assertNull(viewModel.ready().take)
     }
 
     @Test
@@ -175,7 +175,13 @@ class RecorderViewModelTest {
         val viewModel = viewModel()
         viewModel.importFile({ bytes.inputStream() }, "knock.wav")
         advanceUntilIdle()
-        assertEquals(knock.frameCount, viewModel.uiState.value.take!!.frameCount)
-        assertEquals("Imported knock.wav", viewModel.uiState.value.message)
+        assertEquals(knock.frameCount, viewModel.ready().take!!.frameCount)
+        assertEquals("Imported knock.wav", viewModel.ready().message)
+    }
+
+    /** The state once the view model's flows have run (the main dispatcher is a test dispatcher): it must be ready. */
+    private fun RecorderViewModel.ready(): RecorderUiState.Ready {
+        dispatcher.scheduler.runCurrent()
+        return uiState.value as? RecorderUiState.Ready ?: throw AssertionError("not ready: ${uiState.value}")
     }
 }

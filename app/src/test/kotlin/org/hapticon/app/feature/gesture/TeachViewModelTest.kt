@@ -43,21 +43,21 @@ class TeachViewModelTest {
         var clock = 0L
         val viewModel = TeachViewModel(gestures, work = dispatcher, nanoTime = { clock.also { clock += 42_000_000 } })
         viewModel.selectSource(org.hapticon.app.gesture.GestureSourceKind.SENSOR_BOARD)
-        assertEquals(listOf(GestureLabel.NONE, hug), viewModel.uiState.value.labels)
+        assertEquals(listOf(GestureLabel.NONE, hug), viewModel.ready().labels)
         // Record the takes the way the screen does: start, the source plays the take, stop.
         while (true) {
-            val label = viewModel.uiState.value.next ?: break
-            val take = (viewModel.uiState.value.recorded[label] ?: 0)
+            val label = viewModel.ready().next ?: break
+            val take = (viewModel.ready().recorded[label] ?: 0)
             viewModel.startTake()
             source.play(SyntheticGestures.perform(person, label, take).labelled.recording)
             viewModel.stopTake()
         }
-        assertEquals(10 to 10, viewModel.uiState.value.progress)
+        assertEquals(10 to 10, viewModel.ready().progress)
         viewModel.train()
         advanceUntilIdle()
 
-        val result = viewModel.uiState.value.result
-        assertNotNull(viewModel.uiState.value.message, result)
+        val result = viewModel.ready().result
+        assertNotNull(viewModel.ready().message, result)
         assertEquals(listOf(GestureLabel.NONE, hug), result!!.labels)
         assertEquals(42L, result.trainingMillis)
         assertTrue("validation ${result.validationAccuracy}", result.validationAccuracy!! >= 0.9)
@@ -74,13 +74,13 @@ class TeachViewModelTest {
         val viewModel = TeachViewModel(gestures, work = dispatcher)
         viewModel.importModel({ "{\"schema\":\"something-else\"}".byteInputStream() }, "model.json")
         advanceUntilIdle()
-        assertEquals("model.json: model: schema must be \"hapticon.gesture-model\", was \"something-else\"", viewModel.uiState.value.message)
-        assertNull(viewModel.uiState.value.model)
+        assertEquals("model.json: model: schema must be \"hapticon.gesture-model\", was \"something-else\"", viewModel.ready().message)
+        assertNull(viewModel.ready().model)
         assertNull(gestures.models.model.value)
 
         viewModel.importModel({ "".byteInputStream() }, "empty.json")
         advanceUntilIdle()
-        assertEquals("empty.json: empty.json is empty", viewModel.uiState.value.message)
+        assertEquals("empty.json: empty.json is empty", viewModel.ready().message)
     }
 
     @Test
@@ -90,7 +90,7 @@ class TeachViewModelTest {
         val viewModel = TeachViewModel(gestures, work = dispatcher)
         viewModel.importModel({ model.encode().byteInputStream() }, "model.json")
         advanceUntilIdle()
-        assertEquals("Imported model.json", viewModel.uiState.value.message)
+        assertEquals("Imported model.json", viewModel.ready().message)
         assertEquals(model.labels, gestures.models.model.value!!.labels)
     }
 
@@ -110,5 +110,11 @@ class TeachViewModelTest {
         assertNull(GestureSpans.find(flat))
         val empty = org.hapticon.gesture.Recording(100.0, listOf(org.hapticon.gesture.Channel("force", "N", DoubleArray(0))))
         assertNull(GestureSpans.find(empty))
+    }
+
+    /** The state once the view model's flows have run (the main dispatcher is a test dispatcher): it must be ready. */
+    private fun TeachViewModel.ready(): TeachUiState.Ready {
+        dispatcher.scheduler.runCurrent()
+        return uiState.value as? TeachUiState.Ready ?: throw AssertionError("not ready: ${uiState.value}")
     }
 }

@@ -45,7 +45,7 @@ class IconEditorTest {
     @Test
     fun screen_invalidLevel_showsMessageAndDisablesSave() {
         val state = IconEditorViewModel.validate(valid + (IconField.LEVEL to "1.5"))
-        compose.setContent { IconEditorScreen(state, { _, _ -> }, {}, {}, {}) }
+        compose.setContent { IconEditorScreen(state, IconEditorActions()) }
 
         compose.onNodeWithText(state.errors.getValue(IconField.LEVEL)).assertExists()
         compose.onNodeWithText("Save").assertIsNotEnabled()

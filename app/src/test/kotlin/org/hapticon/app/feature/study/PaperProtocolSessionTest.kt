@@ -136,10 +136,7 @@ class PaperProtocolSessionTest {
         var finished = 0
         rule.setContent {
             HapticonTheme {
-                SessionScreen(
-                    state, onStartTask = {}, onPressIcon = {}, onSelect = {}, onNext = {}, onFinishTask = {}, onExit = {}, pinError = null,
-                    onPressStimulus = { pressed += it }, onFinishExploring = { finished++ },
-                )
+                SessionScreen(state, SessionActions(onPressStimulus = { pressed += it }, onFinishExploring = { finished++ }), pinError = null)
             }
         }
         for (n in 1..4) rule.onNodeWithContentDescription("Play haptic icon $n").assertExists()

@@ -1,0 +1,210 @@
+package org.hapticon.app.feature.sensors
+
+import androidx.compose.foundation.border
+import androidx.compose.foundation.background
+import androidx.compose.foundation.layout.Arrangement
+import androidx.compose.foundation.layout.Box
+import androidx.compose.foundation.layout.Column
+import androidx.compose.foundation.layout.ExperimentalLayoutApi
+import androidx.compose.foundation.layout.FlowRow
+import androidx.compose.foundation.layout.Row
+import androidx.compose.foundation.layout.fillMaxSize
+import androidx.compose.foundation.layout.fillMaxWidth
+import androidx.compose.foundation.layout.heightIn
+import androidx.compose.foundation.layout.padding
+import androidx.compose.foundation.rememberScrollState
+import androidx.compose.foundation.verticalScroll
+import androidx.compose.material3.Button
+import androidx.compose.material3.Card
+import androidx.compose.material3.CardDefaults
+import androidx.compose.material3.ExperimentalMaterial3Api
+import androidx.compose.material3.Icon
+import androidx.compose.material3.IconButton
+import androidx.compose.material3.MaterialTheme
+import androidx.compose.material3.OutlinedButton
+import androidx.compose.material3.Scaffold
+import androidx.compose.material3.Text
+import androidx.compose.material3.TopAppBar
+import androidx.compose.runtime.Composable
+import androidx.compose.runtime.Immutable
+import androidx.compose.runtime.getValue
+import androidx.compose.runtime.remember
+import androidx.compose.ui.Alignment
+import androidx.compose.ui.Modifier
+import androidx.compose.ui.semantics.LiveRegionMode
+import androidx.compose.ui.semantics.contentDescription
+import androidx.compose.ui.semantics.heading
+import androidx.compose.ui.semantics.liveRegion
+import androidx.compose.ui.semantics.semantics
+import androidx.compose.ui.unit.dp
+import androidx.lifecycle.compose.collectAsStateWithLifecycle
+import java.util.Locale
+import org.hapticon.app.designsystem.HapticonIcons
+import org.hapticon.sensor.electrotactile.AmplitudeSteps
+import org.hapticon.sensor.electrotactile.ElectrodePattern
+import org.hapticon.sensor.electrotactile.ElectrotactileCalibration
+
+/** The electrotactile calibration wired to [viewModel]; [onBack] returns to the Sensors screen. */
+@Composable
+fun ElectrotactileCalibrationRoute(viewModel: ElectrotactileCalibrationViewModel, onBack: () -> Unit) {
+    val uiState by viewModel.uiState.collectAsStateWithLifecycle()
+    val actions = remember(viewModel, onBack) {
+        ElectrotactileActions(
+            onNotYet = viewModel::notYet,
+            onClearAndPainFree = viewModel::clearAndPainFree,
+            onTooStrong = viewModel::tooStrong,
+            onSendWholeArrayCheck = viewModel::sendWholeArrayCheck,
+            onWholeArrayOk = viewModel::wholeArrayOk,
+            onRestart = viewModel::restart,
+            onBack = onBack,
+        )
+    }
+    ElectrotactileCalibrationScreen(uiState, actions)
+}
+
+/** What the electrotactile calibration screen can ask for. */
+@Immutable
+class ElectrotactileActions(
+    val onNotYet: () -> Unit = {},
+    val onClearAndPainFree: () -> Unit = {},
+    val onTooStrong: () -> Unit = {},
+    val onSendWholeArrayCheck: () -> Unit = {},
+    val onWholeArrayOk: () -> Unit = {},
+    val onRestart: () -> Unit = {},
+    val onBack: () -> Unit = {},
+)
+
+/**
+ * Shaping Compliance's calibration, step by step: the 3×3 array with each electrode's current, the electrode
+ * being calibrated and its next stimulus, then the whole-array check, then the person's limit.
+ */
+@OptIn(ExperimentalMaterial3Api::class)
+@Composable
+fun ElectrotactileCalibrationScreen(uiState: ElectrotactileUiState, actions: ElectrotactileActions) {
+    Scaffold(
+        topBar = {
+            TopAppBar(
+                title = { Text("Electrotactile calibration") },
+                navigationIcon = { IconButton(onClick = actions.onBack) { Icon(HapticonIcons.ArrowBack, contentDescription = "Back") } },
+            )
+        },
+    ) { padding ->
+        Column(
+            Modifier.fillMaxSize().padding(padding).verticalScroll(rememberScrollState()).padding(16.dp),
+            verticalArrangement = Arrangement.spacedBy(16.dp),
+        ) {
+            Text(
+                "Each electrode in turn: a ${ElectrotactileCalibration.STIMULUS_MILLIS} ms stimulus from " +
+                    "${mA(AmplitudeSteps.milliampsOf(ElectrotactileCalibration.START_STEP))}, one step (13.5 µA) stronger until it is " +
+                    "clear and pain-free; then all nine while pressing (${ElectrotactileCalibration.CHECK_GRAINS} grains). " +
+                    "${mA(AmplitudeSteps.milliampsOf(AmplitudeSteps.STEPS))} is the hard cap.",
+                style = MaterialTheme.typography.bodyMedium,
+            )
+            ElectrodeGrid(uiState)
+            when (uiState) {
+                is ElectrotactileUiState.Electrode -> ElectrodeStep(uiState, actions)
+                is ElectrotactileUiState.WholeArrayCheck -> WholeArrayStep(uiState, actions)
+                is ElectrotactileUiState.Done -> DoneStep(uiState, actions)
+            }
+            uiState.message?.let { message ->
+                Card(
+                    colors = CardDefaults.cardColors(containerColor = MaterialTheme.colorScheme.surfaceVariant),
+                    modifier = Modifier.fillMaxWidth().semantics { liveRegion = LiveRegionMode.Polite },
+                ) { Text(message, Modifier.padding(12.dp), style = MaterialTheme.typography.bodyMedium) }
+            }
+        }
+    }
+}
+
+/** The 3×3 array, row by row as the electrodes are numbered: each cell shows its current; the one being calibrated is outlined. */
+@Composable
+private fun ElectrodeGrid(uiState: ElectrotactileUiState) {
+    val current = (uiState as? ElectrotactileUiState.Electrode)?.electrode
+    val size = ElectrodePattern.SIZE
+    Column(verticalArrangement = Arrangement.spacedBy(6.dp), modifier = Modifier.semantics(mergeDescendants = true) {}) {
+        for (row in 0 until size) {
+            Row(Modifier.fillMaxWidth(), horizontalArrangement = Arrangement.spacedBy(6.dp)) {
+                for (column in 0 until size) {
+                    val e = row * size + column
+                    val step = uiState.steps[e]
+                    val active = e == current
+                    val pending = current != null && e > current
+                    Box(
+                        // Grows with the font: the current must stay readable at the largest text size.
+                        Modifier
+                            .weight(1f)
+                            .heightIn(min = 56.dp)
+                            .background(
+                                if (active) MaterialTheme.colorScheme.primaryContainer else MaterialTheme.colorScheme.surfaceVariant,
+                                MaterialTheme.shapes.small,
+                            )
+                            .then(if (active) Modifier.border(2.dp, MaterialTheme.colorScheme.primary, MaterialTheme.shapes.small) else Modifier)
+                            .semantics { contentDescription = "Electrode ${e + 1}: ${if (pending) "not yet calibrated" else mA(AmplitudeSteps.milliampsOf(step))}" },
+                        contentAlignment = Alignment.Center,
+                    ) {
+                        Column(Modifier.padding(vertical = 6.dp), horizontalAlignment = Alignment.CenterHorizontally) {
+                            Text("${e + 1}", style = MaterialTheme.typography.labelSmall)
+                            Text(if (pending) "—" else mA(AmplitudeSteps.milliampsOf(step)), style = MaterialTheme.typography.labelLarge)
+                        }
+                    }
+                }
+            }
+        }
+    }
+}
+
+@OptIn(ExperimentalLayoutApi::class)
+@Composable
+private fun ElectrodeStep(state: ElectrotactileUiState.Electrode, actions: ElectrotactileActions) {
+    val row = state.electrode / ElectrodePattern.SIZE + 1
+    val column = state.electrode % ElectrodePattern.SIZE + 1
+    Text(
+        "Electrode ${state.electrode + 1} of ${ElectrotactileCalibration.ELECTRODES} (row $row, column $column)",
+        style = MaterialTheme.typography.titleMedium,
+        modifier = Modifier.semantics { heading() },
+    )
+    Text(
+        String.format(Locale.ROOT, "Next stimulus: %s, step %d of %d, %d ms", mA(state.milliamps), state.step, AmplitudeSteps.STEPS, ElectrotactileCalibration.STIMULUS_MILLIS),
+        style = MaterialTheme.typography.bodyLarge,
+    )
+    Text(
+        "Give it with the stimulator's own control: the reference firmware takes grain parameters only, so the phone sends the whole-array check, not single stimuli.",
+        style = MaterialTheme.typography.bodySmall,
+    )
+    if (state.atCap) Text("At the 2.7 mA cap: it cannot go higher.", color = MaterialTheme.colorScheme.error, style = MaterialTheme.typography.bodyMedium)
+    FlowRow(horizontalArrangement = Arrangement.spacedBy(12.dp), verticalArrangement = Arrangement.spacedBy(8.dp)) {
+        OutlinedButton(onClick = actions.onNotYet, enabled = !state.atCap) { Text("Not yet: stronger") }
+        OutlinedButton(onClick = actions.onTooStrong, enabled = state.step > 0) { Text("Too strong") }
+        Button(onClick = actions.onClearAndPainFree) { Text("Clear and pain-free") }
+    }
+}
+
+@OptIn(ExperimentalLayoutApi::class)
+@Composable
+private fun WholeArrayStep(state: ElectrotactileUiState.WholeArrayCheck, actions: ElectrotactileActions) {
+    Text("Whole-array check", style = MaterialTheme.typography.titleMedium, modifier = Modifier.semantics { heading() })
+    Text(
+        "All nine electrodes at their levels, ${ElectrotactileCalibration.CHECK_GRAINS} grains over a full press. Send it to the board, " +
+            "ask the person to press, and lower every electrode while it is too strong.",
+        style = MaterialTheme.typography.bodyMedium,
+    )
+    if (!state.boardReady) Text("No framed board is streaming: connect one on the Sensors screen.", style = MaterialTheme.typography.bodySmall)
+    FlowRow(horizontalArrangement = Arrangement.spacedBy(12.dp), verticalArrangement = Arrangement.spacedBy(8.dp)) {
+        Button(onClick = actions.onSendWholeArrayCheck, enabled = state.boardReady) { Text(if (state.sent) "Send again" else "Send to board") }
+        OutlinedButton(onClick = actions.onTooStrong) { Text("Too strong: all weaker") }
+        Button(onClick = actions.onWholeArrayOk) { Text("Feels right") }
+    }
+}
+
+@Composable
+private fun DoneStep(state: ElectrotactileUiState.Done, actions: ElectrotactileActions) {
+    Text("Calibrated", style = MaterialTheme.typography.titleMedium, modifier = Modifier.semantics { heading() })
+    Text(
+        state.limitMilliamps?.let { "This person's limit: ${mA(it)} (the highest electrode). Stimulation above it is refused." }
+            ?: "Every electrode was lowered to 0 mA: no electrotactile stimulation for this person.",
+        style = MaterialTheme.typography.bodyLarge,
+    )
+    OutlinedButton(onClick = actions.onRestart) { Text("Start again") }
+}
+
+private fun mA(milliamps: Double): String = String.format(Locale.ROOT, "%.3f mA", milliamps)

@@ -1,0 +1,192 @@
+package org.hapticon.app.feature.sensors
+
+import androidx.lifecycle.ViewModel
+import androidx.lifecycle.viewModelScope
+import kotlinx.coroutines.flow.Flow
+import kotlinx.coroutines.flow.MutableStateFlow
+import kotlinx.coroutines.flow.SharingStarted
+import kotlinx.coroutines.flow.StateFlow
+import kotlinx.coroutines.flow.combine
+import kotlinx.coroutines.flow.stateIn
+import kotlinx.coroutines.flow.update
+import org.hapticon.sensor.electrotactile.AmplitudeSteps
+import org.hapticon.sensor.electrotactile.ElectrodePattern
+import org.hapticon.sensor.electrotactile.ElectrotactileCalibration
+import org.hapticon.sensor.grains.BinDistribution
+import org.hapticon.sensor.grains.FirmwareGrainParams
+import org.hapticon.sensor.safety.SafetyLimitException
+
+/**
+ * Where the whole-array check goes: the board's stimulator, which renders compliance grains stand-alone from a
+ * SET_GRAINS command ([FirmwareGrainParams]). [ready] says whether a board that takes it (framed protocol) is
+ * streaming; [send] queues the command and returns false when it could not.
+ */
+interface StimulatorLink {
+    /** True while a framed board is streaming. */
+    val ready: Flow<Boolean>
+
+    /** Queues [params] for the board; false when no framed board is streaming. */
+    fun send(params: FirmwareGrainParams): Boolean
+}
+
+/** What the electrotactile calibration screen shows: one electrode, the whole-array check, or the result. */
+sealed interface ElectrotactileUiState {
+    /** Whether a framed board is streaming (the whole-array check can be sent to it). */
+    val boardReady: Boolean
+
+    /** Every electrode's step so far, electrodes 0..8 row by row. */
+    val steps: List<Int>
+
+    /** A refusal or a confirmation for the researcher. */
+    val message: String?
+
+    /** Calibrating [electrode] (0..8): the next 200 ms stimulus is [step] ([milliamps]). */
+    data class Electrode(
+        val electrode: Int,
+        val step: Int,
+        val milliamps: Double,
+        /** True at step 200 (2.7 mA): "not yet" cannot raise it further. */
+        val atCap: Boolean,
+        override val steps: List<Int>,
+        override val boardReady: Boolean,
+        override val message: String?,
+    ) : ElectrotactileUiState
+
+    /** All nine electrodes at their levels while the person presses, [ElectrotactileCalibration.CHECK_GRAINS] grains per press. */
+    data class WholeArrayCheck(
+        /** Whether the check's SET_GRAINS command was queued for the board since the levels last changed. */
+        val sent: Boolean,
+        override val steps: List<Int>,
+        override val boardReady: Boolean,
+        override val message: String?,
+    ) : ElectrotactileUiState
+
+    /** Calibration finished: each electrode's current and the person's limit (the highest, at most 2.7 mA). */
+    data class Done(
+        /** Null when every electrode was lowered to 0 mA: no stimulation is allowed for this person. */
+        val limitMilliamps: Double?,
+        override val steps: List<Int>,
+        override val boardReady: Boolean,
+        override val message: String?,
+    ) : ElectrotactileUiState
+}
+
+/**
+ * Drives Shaping Compliance's per-person electrotactile calibration ([ElectrotactileCalibration], sensor-bridge):
+ * each electrode from step 60 (0.81 mA) up one hardware step (13.5 µA) per "not yet" until clear and pain-free,
+ * then the whole-array check with 39 grains on all nine electrodes. The 2.7 mA cap is enforced three times over:
+ * the state machine never raises past step 200, [AmplitudeSteps.requireStep] refuses anything else, and
+ * [FirmwareGrainParams] checks every step before a command exists. The check goes to the board through [link];
+ * [onCalibrated] gets the finished steps (kept for the compliance study).
+ * Not thread-safe: call from the main thread.
+ */
+class ElectrotactileCalibrationViewModel(
+    private val link: StimulatorLink,
+    private val onCalibrated: (List<Int>) -> Unit = {},
+) : ViewModel() {
+    private var calibration = ElectrotactileCalibration()
+
+    /** Bumped after every change to [calibration] (it is mutable, so the flow needs a new value). */
+    private val progress = MutableStateFlow(Progress(0, sent = false, message = null))
+
+    /** What the screen shows. */
+    val uiState: StateFlow<ElectrotactileUiState> = combine(progress, link.ready) { p, ready -> snapshot(p, ready) }
+        .stateIn(viewModelScope, SharingStarted.Eagerly, snapshot(progress.value, ready = false))
+
+    /** Not clear yet: the next stimulus of this electrode is one step stronger, never past 2.7 mA. */
+    fun notYet() = change {
+        val before = calibration.steps()[calibration.currentElectrode ?: return@change null]
+        calibration.notYet()
+        if (before == AmplitudeSteps.STEPS) "Already at the 2.7 mA cap: it cannot go higher" else null
+    }
+
+    /** Clear and pain-free: the electrode keeps its step; on to the next electrode or the whole-array check. */
+    fun clearAndPainFree() = change {
+        if (calibration.currentElectrode == null) return@change null
+        calibration.clearAndPainFree()
+        null
+    }
+
+    /** Too strong: one step weaker (every electrode during the whole-array check). */
+    fun tooStrong() = change {
+        if (calibration.isDone) return@change null
+        calibration.tooStrong()
+        null
+    }
+
+    /** The whole-array check felt right: calibration is done. */
+    fun wholeArrayOk() = change {
+        if (!calibration.isCheckingWholeArray) return@change null
+        calibration.wholeArrayOk()
+        onCalibrated(calibration.result().steps)
+        "Saved: the compliance study stimulates at these levels"
+    }
+
+    /**
+     * Sends the whole-array check to the board: SET_GRAINS with [ElectrotactileCalibration.CHECK_GRAINS] grains,
+     * all nine electrodes at their steps, over the reference firmware's raw 10-bit force range.
+     */
+    fun sendWholeArrayCheck() {
+        if (!calibration.isCheckingWholeArray) return
+        val params = try {
+            wholeArrayParams(calibration.steps())
+        } catch (e: SafetyLimitException) {
+            // Unreachable while the state machine caps at step 200; kept so a future bug refuses instead of stimulating.
+            progress.update { it.copy(message = e.message) }
+            return
+        }
+        val queued = link.send(params)
+        progress.update {
+            it.copy(sent = queued, message = if (queued) "Sent: press the sensor and feel the grains" else "Connect a board with the Framed protocol first")
+        }
+    }
+
+    /** Starts again from electrode 0 at step 60. */
+    fun restart() {
+        calibration = ElectrotactileCalibration()
+        progress.update { Progress(it.revision + 1, sent = false, message = null) }
+    }
+
+    private fun change(action: () -> String?) {
+        val message = action()
+        // Any level change makes what the board has stale.
+        progress.update { Progress(it.revision + 1, sent = false, message = message) }
+    }
+
+    private fun snapshot(p: Progress, ready: Boolean): ElectrotactileUiState {
+        val steps = calibration.steps()
+        val electrode = calibration.currentElectrode
+        return when {
+            electrode != null -> {
+                val step = steps[electrode]
+                ElectrotactileUiState.Electrode(electrode, step, AmplitudeSteps.milliampsOf(step), step == AmplitudeSteps.STEPS, steps, ready, p.message)
+            }
+            calibration.isCheckingWholeArray -> ElectrotactileUiState.WholeArrayCheck(p.sent, steps, ready, p.message)
+            else -> {
+                val result = calibration.result()
+                val limit = if (result.steps.all { it == 0 }) null else result.userLimit().maxMilliamps
+                ElectrotactileUiState.Done(limit, steps, ready, p.message)
+            }
+        }
+    }
+
+    private data class Progress(val revision: Int, val sent: Boolean, val message: String?)
+
+    companion object {
+        /** The reference firmware samples the FSR with a 10-bit ADC (raw counts 0..1023): the check spans it all. */
+        const val FORCE_RANGE_MAX: Int = 1023
+
+        /**
+         * The whole-array check as the firmware's SET_GRAINS parameters.
+         * @throws SafetyLimitException when a step is outside 0..200 (above 2.7 mA).
+         */
+        fun wholeArrayParams(steps: List<Int>): FirmwareGrainParams = FirmwareGrainParams(
+            grainCount = ElectrotactileCalibration.CHECK_GRAINS,
+            distribution = BinDistribution.LINEAR,
+            minForce = 0,
+            maxForce = FORCE_RANGE_MAX,
+            pattern = ElectrodePattern.ALL,
+            steps = steps,
+        )
+    }
+}

@@ -1,0 +1,170 @@
+package org.hapticon.app.feature.sensors
+
+import org.hapticon.sensor.grains.setGrains
+import org.hapticon.sensor.live.CommandWriter
+import org.hapticon.sensor.live.SensorSession
+import org.hapticon.sensor.protocol.SensorProtocol
+import androidx.compose.ui.test.assertIsEnabled
+import androidx.compose.ui.test.assertIsNotEnabled
+import androidx.compose.ui.test.junit4.createComposeRule
+import androidx.compose.ui.test.onNodeWithContentDescription
+import androidx.compose.ui.test.onNodeWithText
+import org.hapticon.app.gesture.MainDispatcherRule
+import org.hapticon.app.sensors.TEST_UNO
+import org.hapticon.app.sensors.TestUsbDevices
+import org.hapticon.sensor.electrotactile.ElectrodePattern
+import org.hapticon.sensor.port.FakeSerialPort
+import org.hapticon.sensor.protocol.framed.FramedEncoder
+import org.hapticon.sensor.protocol.framed.FramedProtocol
+import org.hapticon.sensor.safety.SafetyLimitException
+import org.junit.Assert.assertArrayEquals
+import org.junit.Assert.assertEquals
+import org.junit.Assert.assertFalse
+import org.junit.Assert.assertNull
+import org.junit.Assert.assertThrows
+import org.junit.Assert.assertTrue
+import org.junit.Rule
+import org.junit.Test
+import org.junit.runner.RunWith
+import org.robolectric.RobolectricTestRunner
+
+/** Shaping Compliance's electrotactile calibration driven from the app: steps, the 2.7 mA cap and the whole-array check on the wire. */
+@RunWith(RobolectricTestRunner::class)
+class ElectrotactileCalibrationTest {
+    @get:Rule
+    val main = MainDispatcherRule()
+
+    @get:Rule
+    val compose = createComposeRule()
+
+    private fun ElectrotactileCalibrationViewModel.state(): ElectrotactileUiState {
+        main.dispatcher.scheduler.runCurrent()
+        return uiState.value
+    }
+
+    @Test
+    fun notYet_fromStep60_risesOneStepPerPressAndStopsAtTheCap() {
+        val viewModel = ElectrotactileCalibrationViewModel(TestStimulatorLink(ready = false))
+        val first = viewModel.state() as ElectrotactileUiState.Electrode
+        assertEquals(0, first.electrode)
+        assertEquals(60, first.step)
+        assertEquals(0.81, first.milliamps, 1e-12)
+
+        viewModel.notYet()
+        assertEquals(61, (viewModel.state() as ElectrotactileUiState.Electrode).step)
+        assertEquals(0.8235, (viewModel.state() as ElectrotactileUiState.Electrode).milliamps, 1e-12)
+
+        repeat(139) { viewModel.notYet() }
+        val atCap = viewModel.state() as ElectrotactileUiState.Electrode
+        assertEquals(200, atCap.step)
+        assertEquals(2.7, atCap.milliamps, 0.0)
+        assertTrue(atCap.atCap)
+        assertNull(atCap.message)
+
+        // Just past the cap: refused, stays at 2.7 mA and says so.
+        viewModel.notYet()
+        val pastCap = viewModel.state() as ElectrotactileUiState.Electrode
+        assertEquals(200, pastCap.step)
+        assertEquals("Already at the 2.7 mA cap: it cannot go higher", pastCap.message)
+    }
+
+    @Test
+    fun wholeArrayCheck_sendsSetGrainsWith39GrainsOnAllNineAtTheCalibratedSteps() {
+        val link = TestStimulatorLink(ready = false)
+        val viewModel = ElectrotactileCalibrationViewModel(link)
+        for (electrode in 0 until 9) {
+            repeat(electrode) { viewModel.notYet() }
+            viewModel.clearAndPainFree()
+        }
+        val check = viewModel.state() as ElectrotactileUiState.WholeArrayCheck
+        assertEquals((60..68).toList(), check.steps)
+        assertFalse(check.boardReady)
+
+        viewModel.sendWholeArrayCheck()
+        assertEquals("Connect a board with the Framed protocol first", viewModel.state().message)
+        assertTrue(link.sent.isEmpty())
+
+        link.ready.value = true
+        assertTrue(viewModel.state().boardReady)
+        viewModel.sendWholeArrayCheck()
+        val params = link.sent.single()
+        assertEquals(39, params.grainCount)
+        assertEquals(ElectrodePattern.ALL, params.pattern)
+        assertEquals((60..68).toList(), params.steps)
+        assertEquals(0 to 1023, params.minForce to params.maxForce)
+        assertTrue((viewModel.state() as ElectrotactileUiState.WholeArrayCheck).sent)
+
+        // Too strong lowers every electrode one step; what the board has is then stale.
+        viewModel.tooStrong()
+        val lowered = viewModel.state() as ElectrotactileUiState.WholeArrayCheck
+        assertEquals((59..67).toList(), lowered.steps)
+        assertFalse(lowered.sent)
+
+        viewModel.wholeArrayOk()
+        val done = viewModel.state() as ElectrotactileUiState.Done
+        assertEquals(67 * 0.0135, done.limitMilliamps!!, 1e-12)
+    }
+
+    @Test
+    fun everyElectrodeLoweredToZero_doneAllowsNoStimulation() {
+        val viewModel = ElectrotactileCalibrationViewModel(TestStimulatorLink(ready = true))
+        repeat(9) { viewModel.clearAndPainFree() }
+        repeat(60) { viewModel.tooStrong() }
+        assertEquals(List(9) { 0 }, viewModel.state().steps)
+        viewModel.tooStrong()
+        assertEquals(List(9) { 0 }, viewModel.state().steps)
+        viewModel.wholeArrayOk()
+        assertNull((viewModel.state() as ElectrotactileUiState.Done).limitMilliamps)
+
+        viewModel.restart()
+        assertEquals(60, (viewModel.state() as ElectrotactileUiState.Electrode).step)
+    }
+
+    @Test
+    fun wholeArrayParams_atTheCapPassesAndOneStepPastIsRefused() {
+        assertEquals(List(9) { 200 }, ElectrotactileCalibrationViewModel.wholeArrayParams(List(9) { 200 }).steps)
+        val refused = assertThrows(SafetyLimitException::class.java) {
+            ElectrotactileCalibrationViewModel.wholeArrayParams(List(8) { 200 } + 201)
+        }
+        assertEquals("amplitude step must be in 0..200, was 201", refused.message)
+        assertThrows(SafetyLimitException::class.java) { ElectrotactileCalibrationViewModel.wholeArrayParams(List(8) { 0 } + -1) }
+    }
+
+    @Test
+    fun hubLink_framedStream_writesTheSetGrainsFrame_otherProtocolsWriteNothing() {
+        val params = ElectrotactileCalibrationViewModel.wholeArrayParams(List(9) { 120 })
+        // One hub per stream, writes on the calling thread: no reader of an earlier stream can race the next start.
+        val csvHub = SensorSession(TestUsbDevices(), commands = CommandWriter { it.run() })
+        val framedHub = SensorSession(TestUsbDevices(), commands = CommandWriter { it.run() })
+        try {
+            assertFalse(HubStimulatorLink(csvHub).send(params))
+            val csvPort = FakeSerialPort()
+            csvHub.start(csvPort, TEST_UNO, SensorProtocol.CSV, 115_200)
+            assertFalse(HubStimulatorLink(csvHub).send(params))
+            assertEquals(0, csvPort.writtenBytes().size)
+
+            val framedPort = FakeSerialPort()
+            framedHub.start(framedPort, TEST_UNO, SensorProtocol.FRAMED, 115_200)
+            assertTrue(HubStimulatorLink(framedHub).send(params))
+            val expected = ByteArray(FramedProtocol.MAX_ENCODED_FRAME_LENGTH)
+            val length = FramedEncoder().setGrains(params, expected)
+            assertArrayEquals(expected.copyOf(length), framedPort.writtenBytes())
+        } finally {
+            csvHub.disconnect()
+            framedHub.disconnect()
+        }
+    }
+
+    @Test
+    fun screen_atTheCap_disablesStrongerAndSaysSo() {
+        val state = ElectrotactileUiState.Electrode(4, 200, 2.7, atCap = true, steps = listOf(70, 65, 80, 75, 200, 60, 60, 60, 60), boardReady = false, message = null)
+        compose.setContent { ElectrotactileCalibrationScreen(state, ElectrotactileActions()) }
+
+        compose.onNodeWithText("Not yet: stronger").assertIsNotEnabled()
+        compose.onNodeWithText("Too strong").assertIsEnabled()
+        compose.onNodeWithText("At the 2.7 mA cap: it cannot go higher.").assertExists()
+        compose.onNodeWithText("Next stimulus: 2.700 mA, step 200 of 200, 200 ms").assertExists()
+        compose.onNodeWithContentDescription("Electrode 1: 0.945 mA").assertExists()
+        compose.onNodeWithContentDescription("Electrode 6: not yet calibrated").assertExists()
+    }
+}

@@ -1,0 +1,149 @@
+package org.hapticon.app.feature.study
+
+import androidx.compose.ui.test.assertIsNotEnabled
+import androidx.compose.ui.test.junit4.createComposeRule
+import androidx.compose.ui.test.onNodeWithText
+import org.hapticon.app.feature.sensors.ElectrodeLevelsStore
+import org.hapticon.app.feature.sensors.TestStimulatorLink
+import org.hapticon.app.gesture.MainDispatcherRule
+import org.hapticon.sensor.electrotactile.ElectrodeMask
+import org.hapticon.sensor.safety.SafetyLimitException
+import org.hapticon.study.compliance.ComplianceStudy
+import org.junit.Assert.assertEquals
+import org.junit.Assert.assertNull
+import org.junit.Assert.assertThrows
+import org.junit.Assert.assertTrue
+import org.junit.Rule
+import org.junit.Test
+import org.junit.rules.TemporaryFolder
+import org.junit.runner.RunWith
+import org.robolectric.RobolectricTestRunner
+import java.io.File
+
+/** Shaping Compliance's study run from the Study tab: conditions on the board at the calibrated levels, answers on disk. */
+@RunWith(RobolectricTestRunner::class)
+class ComplianceStudyRunTest {
+    @get:Rule
+    val folder = TemporaryFolder()
+
+    @get:Rule
+    val main = MainDispatcherRule()
+
+    @get:Rule
+    val compose = createComposeRule()
+
+    private val levels = listOf(70, 71, 72, 73, 74, 75, 76, 77, 78)
+
+    private fun ComplianceViewModel.state(): ComplianceUiState {
+        main.dispatcher.scheduler.runCurrent()
+        return uiState.value
+    }
+
+    @Test
+    fun session_everyConditionOnceOnTheBoard_answersSyncedToCsv_meansAtTheEnd() {
+        val link = TestStimulatorLink(ready = true)
+        val dir = File(folder.root, "compliance")
+        val viewModel = ComplianceViewModel(link, { levels }, dir)
+        viewModel.setParticipant("p7")
+        viewModel.setParticipantIndex(2)
+        viewModel.setRepetitions(1)
+        viewModel.start()
+
+        val expectedOrder = ComplianceStudy.PROTOCOL.copy(repetitions = 1).trials(2)
+        for ((i, trial) in expectedOrder.withIndex()) {
+            val state = viewModel.state() as ComplianceUiState.Trial
+            assertEquals(trial, state.trial)
+            assertTrue(state.sent)
+            val params = link.sent[i]
+            assertEquals(trial.condition.grains, params.grainCount)
+            assertEquals(trial.condition.mask.pattern, params.pattern)
+            assertEquals(levels, params.steps)
+            viewModel.answer(if (trial.condition.grains == 39) "20" else "10")
+        }
+        val done = viewModel.state() as ComplianceUiState.Done
+        assertEquals(20, done.answers)
+        assertEquals(20, link.sent.size)
+        // One participant: normalised by their own geometric mean times the grand one, i.e. unchanged.
+        assertEquals(20.0, done.means.getValue("g39-triangle"), 1e-9)
+        assertEquals(10.0, done.means.getValue("g0-large-square"), 1e-9)
+
+        val lines = File(dir, "p7.csv").readLines()
+        assertEquals(ComplianceViewModel.CSV_HEADER, lines[0])
+        val first = expectedOrder[0]
+        assertEquals("p7,0,${first.condition.id},${first.condition.grains},${first.condition.mask.name.lowercase()},0,${if (first.condition.grains == 39) 20.0 else 10.0}", lines[1])
+        assertEquals(21, lines.size)
+    }
+
+    @Test
+    fun answer_notANumberZeroOrUnsent_isRefusedAndNothingIsWritten() {
+        val link = TestStimulatorLink(ready = false)
+        val dir = File(folder.root, "compliance")
+        val viewModel = ComplianceViewModel(link, { levels }, dir)
+        viewModel.setParticipant("p1")
+        viewModel.start()
+        assertEquals("Connect the board (Framed protocol) to render the condition", viewModel.state().message)
+        viewModel.answer("5")
+        assertEquals("The condition has not reached the board yet", viewModel.state().message)
+
+        link.ready.value = true
+        viewModel.sendCondition()
+        for (bad in listOf("soft", "0", "-3", "NaN", "Infinity")) {
+            viewModel.answer(bad)
+            assertEquals(bad, "Type a positive number, e.g. 10", viewModel.state().message)
+            assertEquals(0, (viewModel.state() as ComplianceUiState.Trial).trial.index)
+        }
+        assertTrue(!File(dir, "p1.csv").exists())
+    }
+
+    @Test
+    fun start_withoutCalibrationOrName_isRefused() {
+        val store = ElectrodeLevelsStore(File(folder.root, ElectrodeLevelsStore.FILE_NAME))
+        val viewModel = ComplianceViewModel(TestStimulatorLink(ready = true), store::load, folder.root)
+        viewModel.start()
+        assertEquals("Name the participant with letters, digits, - or _", viewModel.state().message)
+        viewModel.setParticipant("p2")
+        viewModel.start()
+        assertEquals("Calibrate the electrodes first: Sensors → Electrotactile array", viewModel.state().message)
+
+        store.save(levels)
+        viewModel.setParticipant("p2")
+        assertEquals(levels, (viewModel.state() as ComplianceUiState.Setup).levels)
+        viewModel.start()
+        assertTrue(viewModel.state() is ComplianceUiState.Trial)
+    }
+
+    @Test
+    fun levelsStore_refusesPastTheCapAndReadsADamagedFileAsNone() {
+        val file = File(folder.root, ElectrodeLevelsStore.FILE_NAME)
+        val store = ElectrodeLevelsStore(file)
+        assertNull(store.load())
+        store.save(List(9) { 200 })
+        assertEquals(List(9) { 200 }, store.load())
+        assertThrows(SafetyLimitException::class.java) { store.save(List(8) { 60 } + 201) }
+        assertEquals(List(9) { 200 }, store.load())
+        file.writeText("60,60,60,60,60,60,60,60,201")
+        assertNull(store.load())
+        file.writeText("60,60,NaN")
+        assertNull(store.load())
+    }
+
+    @Test
+    fun conditionParams_baselineSendsZeroGrainsOnItsShape() {
+        val trial = ComplianceStudy.PROTOCOL.trials(0).first { it.condition.grains == 0 && it.condition.mask == ElectrodeMask.SMALL_SQUARE }
+        val params = ComplianceViewModel.conditionParams(trial, levels, ComplianceStudy.PROTOCOL.distribution)
+        assertEquals(0, params.grainCount)
+        assertEquals(4, params.pattern.activeCount)
+        assertEquals(0 to 1023, params.minForce to params.maxForce)
+    }
+
+    @Test
+    fun screen_trialNotSent_nextIsDisabled() {
+        val trial = ComplianceStudy.PROTOCOL.trials(0).first()
+        val state = ComplianceUiState.Trial("p1", trial, 60, ComplianceStudy.PROTOCOL.instructions, sent = false, boardReady = false, message = null)
+        compose.setContent { ComplianceScreen(state, ComplianceActions()) }
+        compose.onNodeWithText("p1 · trial 1 of 60").assertExists()
+        compose.onNodeWithText("Next").assertIsNotEnabled()
+        compose.onNodeWithText("Waiting for the board…").assertExists()
+        compose.onNodeWithText("Researcher: end the session").assertExists()
+    }
+}

@@ -1,0 +1,64 @@
+package org.hapticon.app.screenshots
+
+import org.hapticon.app.feature.gesture.SocialTouchActions
+import org.hapticon.app.feature.gesture.SocialTouchResult
+import org.hapticon.app.feature.gesture.SocialTouchScreen
+import org.hapticon.app.feature.gesture.SocialTouchUiState
+import org.hapticon.app.feature.sensors.ElectrotactileActions
+import org.hapticon.app.feature.sensors.ElectrotactileCalibrationScreen
+import org.hapticon.app.feature.sensors.ElectrotactileUiState
+import org.hapticon.app.feature.study.ComplianceActions
+import org.hapticon.app.feature.study.ComplianceScreen
+import org.hapticon.app.feature.study.ComplianceUiState
+import org.hapticon.sensor.electrotactile.AmplitudeSteps
+import org.hapticon.study.compliance.ComplianceStudy
+import org.junit.Test
+
+/** Issue 15's sensing-paper screens: electrotactile calibration (Sensors), social touch (Gestures), the compliance study (Study). */
+class SensingPapersScreenshotTest : ScreenshotTest() {
+    @Test
+    fun electrotactile_fifthElectrode() = screen("sensors-electrotactile", Variant.MAIN) {
+        val steps = listOf(66, 72, 61, 80, 63, 60, 60, 60, 60)
+        ElectrotactileCalibrationScreen(
+            ElectrotactileUiState.Electrode(4, 63, AmplitudeSteps.milliampsOf(63), atCap = false, steps = steps, boardReady = true, message = null),
+            ElectrotactileActions(),
+        )
+    }
+
+    @Test
+    fun electrotactile_wholeArrayCheck() = screen("sensors-electrotactile-check") {
+        ElectrotactileCalibrationScreen(
+            ElectrotactileUiState.WholeArrayCheck(sent = true, steps = listOf(66, 72, 61, 80, 63, 70, 64, 68, 75), boardReady = true, message = "Sent: press the sensor and feel the grains"),
+            ElectrotactileActions(),
+        )
+    }
+
+    @Test
+    fun socialTouch_recognised() = screen("gestures-social-touch", Variant.MAIN) {
+        SocialTouchScreen(
+            SocialTouchUiState.Ready(
+                modelLabels = listOf("hug", "pat", "stroke"),
+                results = listOf(SocialTouchResult("hug", 0.87, 1, 1.6, "touch pad"), SocialTouchResult("pat", 0.74, 3, 0.7, "touch pad")),
+                peers = listOf("bob"), peer = "bob", sendEnabled = true,
+            ),
+            SocialTouchActions(),
+        )
+    }
+
+    @Test
+    fun compliance_trial() = screen("study-compliance-trial", Variant.MAIN) {
+        val protocol = ComplianceStudy.PROTOCOL
+        ComplianceScreen(
+            ComplianceUiState.Trial("p7", protocol.trials(6)[4], 60, protocol.instructions, sent = true, boardReady = true, message = null),
+            ComplianceActions(),
+        )
+    }
+
+    @Test
+    fun compliance_setup() = screen("study-compliance-setup") {
+        ComplianceScreen(
+            ComplianceUiState.Setup(ComplianceStudy.PROTOCOL, "p7", 6, listOf(66, 72, 61, 80, 63, 70, 64, 68, 75), boardReady = true, message = null),
+            ComplianceActions(),
+        )
+    }
+}
