@@ -2,6 +2,7 @@ package org.hapticon.app.gesture
 
 import android.content.Context
 import android.hardware.SensorManager
+import org.hapticon.app.sensors.GrainConfig
 import org.hapticon.app.sensors.SensorHub
 import java.io.File
 
@@ -35,14 +36,17 @@ class GestureComponent(
     }
 
     companion object {
-        /** Recordings in `filesDir/recordings`, the model in `filesDir/gesture-model.json`. */
-        fun create(context: Context, hub: SensorHub): GestureComponent {
+        /**
+         * Recordings in `filesDir/recordings`, the model in `filesDir/gesture-model.json`; the sensor board's force
+         * channel is levelled against the grain mode's calibrated range ([grains]).
+         */
+        fun create(context: Context, hub: SensorHub, grains: () -> GrainConfig? = { null }): GestureComponent {
             val sensors = context.getSystemService(SensorManager::class.java)
             val accelerometer = sensors?.let { AccelerometerGestureSource(it) }?.takeIf { it.available }
             return GestureComponent(
                 touch = TouchGestureSource(),
                 accelerometer = accelerometer,
-                sensorBoard = SensorHubGestureSource(hub),
+                sensorBoard = SensorHubGestureSource(hub, grains),
                 recordings = FileRecordingStore(File(context.filesDir, "recordings")),
                 models = FileGestureModelStore(File(context.filesDir, "gesture-model.json")),
             )

@@ -96,6 +96,9 @@ class GrainEngine(private val output: VibrationOutput) : FrameListener {
     /** What the grain mode is doing. [GrainStatus.grainsPlayed] is updated at most per grain. */
     val status: StateFlow<GrainStatus> = mutableStatus.asStateFlow()
 
+    /** The configuration in force, or null while the mode is off (the recorder reads its calibrated force range). */
+    val currentConfig: GrainConfig? get() = synchronized(lock) { config }
+
     /** Grains played since the mode was last configured; cheap to poll. */
     val grainsPlayed: Long get() = synchronized(lock) { played }
 

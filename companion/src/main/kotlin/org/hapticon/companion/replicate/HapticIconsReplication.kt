@@ -43,14 +43,46 @@ object HapticIconsReplication : Replication {
         out.println("its attack always peaks at 1 and its 'sustain' ramps from 1 to the level; paper holds the level.")
         out.println("Periods (median spacing) and counts are measured from where the whole render's envelope starts rising.")
         out.println()
-        out.println("Procedure: the paper beside the built-in protocols")
+        out.println("The envelope at named times of the first repetition, paper / processing, at the sample nearest each time:")
+        out.println(String.format(Locale.ROOT, "%-7s %-22s %s", "icon", "times", NAMED_TIMES.joinToString("  ") { String.format(Locale.ROOT, "%-15s", it) }))
+        for (icon in HapticIcon.PRESETS) {
+            val times = namedTimes(icon)
+            val paper = namedValues(icon, EnvelopeModel.PAPER)
+            val processing = namedValues(icon, EnvelopeModel.PROCESSING)
+            val unit = if (icon.attack < 0.1) 1000.0 else 1.0
+            val label = times.joinToString(", ") { String.format(Locale.ROOT, "%s", trim(it * unit)) } + if (unit > 1) " ms" else " s"
+            out.println(
+                String.format(Locale.ROOT, "%-7s %-22s %s", icon.name, label, paper.indices.joinToString("  ") { String.format(Locale.ROOT, "%-15s", String.format(Locale.ROOT, "%.3f / %.3f", paper[it], processing[it])) }),
+            )
+        }
+        out.println()
+        out.println("Procedure: the paper beside the built-in protocols. The paper column is quoted from issue 14's summary of the")
+        out.println("paper (Wei et al.), not re-checked against the paper's text; 'cited from' names the source of each row.")
         val paper = OriginatingStudy.PAPER_PROTOCOL
         val perTrial = OriginatingStudy.PROTOCOL
-        out.println(String.format(Locale.ROOT, "%-16s | %-42s | %-32s | %s", "", "paper", paper.id, perTrial.id))
+        out.println(String.format(Locale.ROOT, "%-16s | %-42s | %-12s | %-32s | %s", "", "paper", "cited from", paper.id, perTrial.id))
         for ((what, inPaper, of) in procedureRows()) {
-            out.println(String.format(Locale.ROOT, "%-16s | %-42s | %-32s | %s", what, inPaper, of(paper), of(perTrial)))
+            out.println(String.format(Locale.ROOT, "%-16s | %-42s | %-12s | %-32s | %s", what, inPaper, PROCEDURE_SOURCE, of(paper), of(perTrial)))
         }
     }
+
+    /** Where the paper column of the procedure comes from: the issue that summarised the paper, not its text. */
+    const val PROCEDURE_SOURCE: String = "issue 14"
+
+    /** The named times of one repetition, in [namedTimes] order. */
+    val NAMED_TIMES: List<String> = listOf("mid-attack", "end of attack", "mid-sustain", "end of sustain", "mid-release")
+
+    /** A/2, A, A + S/2, A + S, A + S + R/2 of [icon] in seconds. */
+    fun namedTimes(icon: HapticIcon): DoubleArray =
+        doubleArrayOf(icon.attack / 2, icon.attack, icon.attack + icon.sustain / 2, icon.attack + icon.sustain, icon.attack + icon.sustain + icon.release / 2)
+
+    /** [icon]'s envelope under [model] at [SAMPLE_RATE], at the sample nearest each of [namedTimes]. */
+    fun namedValues(icon: HapticIcon, model: EnvelopeModel): DoubleArray {
+        val renderer = IconRenderer(icon, SAMPLE_RATE, model)
+        return namedTimes(icon).map { renderer.envelopeAt(Math.round(it * SAMPLE_RATE)) }.toDoubleArray()
+    }
+
+    private fun trim(value: Double): String = String.format(Locale.ROOT, "%.4f", value).trimEnd('0').trimEnd('.')
 
     private fun procedureRows(): List<Triple<String, String, (StudyProtocol) -> String>> = listOf(
         Triple("participants", "16", { p -> p.participants?.toString() ?: "open" }),

@@ -49,12 +49,12 @@ class ReplicateCommandTest {
         }
         val result = cli("replicate", "009")
         assertEquals(2, result.exitCode)
-        assertEquals(listOf("hapticon: no replication '009'; try 000, 001, 002, 004"), result.stderrLines)
+        assertEquals(listOf("hapticon: no replication '009'; try 000, 001, 002, 003, 004"), result.stderrLines)
     }
 
     @Test
     fun allReplications_areInIdOrder() {
-        assertEquals(listOf("000", "001", "002", "004"), allReplications.map { it.id })
+        assertEquals(listOf("000", "001", "002", "003", "004"), allReplications.map { it.id })
     }
 
     @Test
@@ -93,6 +93,21 @@ class ReplicateCommandTest {
         val text = bytes.toString("UTF-8")
         assertTrue(text, text.contains("combined (11 classes)          74.1 %"))
         assertTrue(text, text.contains("data: 2 simulated people"))
+    }
+
+    @Test
+    fun socialTouch_onTwoSimulatedPeople_printsAllThreeClassSetsBesideThePapersColumn() {
+        val bytes = ByteArrayOutputStream()
+        SocialTouchReplication(people = 2, takesPerClass = 2).run(PrintStream(bytes, true, "UTF-8"))
+        val text = bytes.toString("UTF-8")
+        // 2 people × 2 takes × 6 classes = 24 messages per six-class set; 13 classes make 52.
+        val row = Regex("""  (6 emotions|6 social messages|13 classes \(incl. no touch\))\s+n/t\s+(\d+\.\d) %\s+(\d+\.\d) %\s+\(chance (\d+\.\d) %, (\d+) messages\)""")
+        val rows = row.findAll(text).map { it.groupValues }.toList()
+        assertEquals(text, listOf("6 emotions", "6 social messages", "13 classes (incl. no touch)"), rows.map { it[1] })
+        assertEquals(listOf("24", "24", "52"), rows.map { it[5] })
+        assertEquals(listOf("16.7", "16.7", "7.7"), rows.map { it[4] })
+        for (r in rows) assertTrue(text, r[2].toDouble() in 0.0..100.0 && r[3].toDouble() in 0.0..100.0)
+        assertTrue(text, text.contains("anger disgust fear happiness sadness sympathy"))
     }
 
     @Test

@@ -43,9 +43,10 @@ import kotlin.math.ceil
  *    moves nothing audible (every reader has reached 0 by then, except hug at 48 kHz whose cut falls
  *    on 144 000 = 8 · 18 000 either way); it matters for sub-sample envelopes, whose release it no
  *    longer cuts. The reader's start relative to the *nominal* onset k · period is **not** quantised
- *    here: the study's sketch called `Env.play` from its own thread at times we do not know (a draw
- *    loop ticks every 16.7 ms, ≫ one 0.18 ms block), so which block a repetition began on is
- *    unknowable; [EnvelopeTimeline] keeps onset(k) = round(k · period · fs).
+ *    here: the study's sketch called `Env.play` from its own thread at times we do not know (a
+ *    sketch's `draw()` runs every 16.7 ms by default, ≫ one 0.18 ms block, and we do not have the
+ *    study's sketch), so which block a repetition began on is unknowable; [EnvelopeTimeline] keeps
+ *    onset(k) = round(k · period · fs).
  *
  * Overlapping repetitions add: `Env.java` line 40 leaves `input.amplitude.disconnectAll()` commented
  * out, and `ports/InputMixingBlockPart.getValues` sums every connected output ([EnvelopeTimeline]).

@@ -188,6 +188,7 @@ fun RecorderScreen(state: RecorderUiState, plot: PlotSource, gestures: GestureCo
                 TextButton(onClick = { actions?.deleteRecording(saved.id) }, modifier = Modifier.semantics { contentDescription = "Delete ${saved.name}" }) { Text("Delete") }
             }
         }
+        StrongestBatchSection(state, onFit = { actions?.fitSavedStrongest() }, onSave = { actions?.saveBatchIcons() })
     }
 }
 
