@@ -127,7 +127,10 @@ class ReplicateCommandTest {
         assertTrue(result.stdout, lines.contains("        processing model  1.00000  1.00000  0.300  1.00000  1.000    349.23   2.600     4"))
         // knock as felt: the attack 221 samples (0.00501 s), the sustain one sample short (440 samples, 0.00998 s), the release to the disconnection at 882.
         assertTrue(result.stdout, lines.any { it.startsWith("        processing model  0.00501  0.00998  0.500  0.00501  0.999    220.00   0.270     3") })
-        assertTrue(result.stdout, lines.any { it.startsWith("participants     | 16 ") && it.endsWith("| open") })
+        assertTrue(result.stdout, lines.any { it.startsWith("participants     | 16 ") && it.contains("| issue 14 ") && it.endsWith("| open") })
+        // The named times of docs/envelope-models.md, paper / processing: knock's carry shows in its last digit.
+        assertTrue(result.stdout, lines.contains("knock   2.5, 5, 10, 15, 17.5 ms    0.249 / 0.499    0.500 / 0.999    0.500 / 0.749    0.499 / 0.498    0.249 / 0.248"))
+        assertTrue(result.stdout, lines.contains("stroke  0.5, 1, 1.5, 2, 2.5 s      0.150 / 0.500    0.300 / 1.000    0.300 / 0.650    0.300 / 0.300    0.150 / 0.150"))
         assertTrue(result.stdout, lines.any { it.startsWith("masking ") && it.contains("| white ") && it.endsWith("| none") })
     }
 

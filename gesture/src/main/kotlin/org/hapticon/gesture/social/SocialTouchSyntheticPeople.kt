@@ -22,9 +22,9 @@ public class SocialTouchMessage(public val person: String, public val label: Str
  * travel along x (stroking) and a tremor or shake. The prototypes follow the kinds of touch people use for these
  * messages in the social-touch literature the paper builds on (hitting and slapping for anger and animosity,
  * patting and stroking for sympathy and affection, holding for acceptance, pushing away for rejection and
- * disgust, tapping for attention); their numbers are ours. Per person: a force scale 0.7–1.3, a tempo 0.8–1.2
- * and a position bias of ±0.1; per message every duration, intensity and area varies ±20 %, every frame's
- * intensity by 3 % noise. A session is every class [takesPerClass] times in shuffled order (the paper's
+ * disgust, tapping for attention); their numbers are ours. Per person: a force scale 0.6–1.4, a tempo 0.7–1.3
+ * and a position bias of ±0.15; per message every duration, intensity and area varies ±40 %, the number of
+ * touches is one more or fewer in [TOUCH_COUNT_SLIP] of messages, and every frame's intensity has 3 % noise. A session is every class [takesPerClass] times in shuffled order (the paper's
  * participants gave each class 50 times in random order). [SocialTouchClasses.NO_TOUCH] is [NO_TOUCH_SECONDS] of
  * frames without contact.
  */
@@ -95,10 +95,10 @@ public object SocialTouchSyntheticPeople {
     )
 
     private fun person(name: String, labels: List<String>, takes: Int, random: SplittableRandom): List<SocialTouchMessage> {
-        val force = 0.7 + 0.6 * random.nextDouble()
-        val tempo = 0.8 + 0.4 * random.nextDouble()
-        val biasX = 0.2 * random.nextDouble() - 0.1
-        val biasY = 0.2 * random.nextDouble() - 0.1
+        val force = 0.6 + 0.8 * random.nextDouble()
+        val tempo = 0.7 + 0.6 * random.nextDouble()
+        val biasX = 0.3 * random.nextDouble() - 0.15
+        val biasY = 0.3 * random.nextDouble() - 0.15
         val order = (0 until takes).flatMap { labels }.toMutableList()
         for (i in order.size - 1 downTo 1) {
             val j = random.nextInt(i + 1)
@@ -115,7 +115,9 @@ public object SocialTouchSyntheticPeople {
         List((seconds * SAMPLE_RATE).toInt()) { ContactFrame(it / SAMPLE_RATE, 0.0, 0.0, 0.0, 0.0) }
 
     private fun message(p: Prototype, force: Double, tempo: Double, biasX: Double, biasY: Double, random: SplittableRandom): List<ContactFrame> {
-        fun vary() = 0.8 + 0.4 * random.nextDouble()
+        fun vary() = 0.6 + 0.8 * random.nextDouble()
+        // One touch more or fewer now and then: people do not count their pats.
+        val touches = maxOf(1, p.touches + if (random.nextDouble() < TOUCH_COUNT_SLIP) (if (random.nextBoolean()) 1 else -1) else 0)
         val intensity = (p.intensity * force * vary()).coerceAtMost(1.0)
         val area = (p.area * vary()).coerceAtMost(1.0)
         val seconds = p.seconds / tempo * vary()
@@ -127,7 +129,7 @@ public object SocialTouchSyntheticPeople {
         val lead = at(NO_TOUCH_SECONDS / 4)
         for (k in 0 until lead) frames += ContactFrame(k / SAMPLE_RATE, 0.0, 0.0, 0.0, 0.0)
         var t = lead / SAMPLE_RATE
-        for (touch in 0 until p.touches) {
+        for (touch in 0 until touches) {
             val n = maxOf(1L, at(seconds))
             for (k in 0 until n) {
                 val u = k / SAMPLE_RATE
@@ -140,12 +142,15 @@ public object SocialTouchSyntheticPeople {
             }
             t += n / SAMPLE_RATE
             // The gap (and a final frame of no contact) between touches.
-            val pause = if (touch < p.touches - 1) maxOf(1L, at(gap)) else at(NO_TOUCH_SECONDS / 4)
+            val pause = if (touch < touches - 1) maxOf(1L, at(gap)) else at(NO_TOUCH_SECONDS / 4)
             for (k in 0 until pause) frames += ContactFrame(t + k / SAMPLE_RATE, 0.0, 0.0, 0.0, 0.0)
             t += pause / SAMPLE_RATE
         }
         return frames
     }
+
+    /** How often a message has one touch more or fewer than its prototype. */
+    public const val TOUCH_COUNT_SLIP: Double = 0.3
 
     private fun gaussian(random: SplittableRandom): Double {
         // Box–Muller; 1 − u keeps the logarithm finite.

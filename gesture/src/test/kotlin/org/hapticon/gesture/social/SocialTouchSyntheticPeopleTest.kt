@@ -50,10 +50,14 @@ class SocialTouchSyntheticPeopleTest {
                 assertArrayEquals(m.label, DoubleArray(13), f, 0.0)
                 assertEquals((SocialTouchSyntheticPeople.NO_TOUCH_SECONDS * 100).toInt(), m.frames.size)
             } else {
-                // Every touch stays in contact (intensity floored above 0), so the count is the prototype's.
-                assertEquals(m.label, prototype.touches.toDouble(), f[touches], 0.0)
+                // Every touch stays in contact (intensity floored above 0), so the count is the prototype's, give or take the slip.
+                assertTrue("${m.label} ${f[touches]}", f[touches] in maxOf(1, prototype.touches - 1).toDouble()..(prototype.touches + 1).toDouble())
             }
         }
+        // Most messages keep the prototype's count: 1 − TOUCH_COUNT_SLIP of them, and all of a one-touch class that slipped down.
+        val kept = messages.filter { it.label != SocialTouchClasses.NO_TOUCH }
+            .count { SocialTouchFeatures.of(it.frames.asSequence())[touches] == SocialTouchSyntheticPeople.PROTOTYPES[it.label]!!.touches.toDouble() }
+        assertTrue("$kept of 72", kept in 40..64)
     }
 
     @Test
