@@ -50,6 +50,6 @@ sealed interface Playback {
     /** Playing with [renderer] for [durationMillis]; [fidelity] compares it with the ideal envelope. */
     data class Playing(val renderer: RendererKind, val durationMillis: Long, val fidelity: Fidelity) : Playback
 
-    /** Nothing plays: the phone has no vibrator. */
+    /** Nothing plays: the phone has no vibrator, or this player cannot render the envelope model asked for. */
     data object Unsupported : Playback
 }
