@@ -87,7 +87,7 @@ class AppContainer(
                 calibrations = calibrations,
                 chat = chat,
                 study = StudyComponent.create(context, db),
-                gestures = GestureComponent.create(context, hub),
+                gestures = GestureComponent.create(context, hub) { grains.currentConfig },
             )
         }
     }

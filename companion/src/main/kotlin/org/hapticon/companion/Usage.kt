@@ -100,7 +100,8 @@ val USAGE: String = """
     |      Parameter recovery of the fit on random synthetic icons at SNR 10-40 dB, per envelope method.
     |  hapticon replicate [ID]
     |      Reproduce a published result and print ours beside the paper's figures; without ID, list them
-    |      (001 compliance grains, 002 NAO touch gestures, 004 tele-handshake calibration). docs/replication.md.
+    |      (000 haptic icons, 001 compliance grains, 002 NAO touch gestures, 003 EIT-skin social touch,
+    |      004 tele-handshake calibration). docs/replication.md.
     |  hapticon help
     |      Print this text.
     |

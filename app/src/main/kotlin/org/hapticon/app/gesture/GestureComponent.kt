@@ -3,6 +3,7 @@ package org.hapticon.app.gesture
 import org.hapticon.sensor.live.SensorSession
 import android.content.Context
 import android.hardware.SensorManager
+import org.hapticon.sensor.grains.GrainConfig
 import java.io.File
 
 /** The kinds of live source the Gestures screens offer (a file is imported, not streamed). */
@@ -37,14 +38,17 @@ class GestureComponent(
     }
 
     companion object {
-        /** Recordings in `filesDir/recordings`, the models in `filesDir/gesture-model.json` and `filesDir/social-touch-model.json`. */
-        fun create(context: Context, hub: SensorSession): GestureComponent {
+        /**
+         * Recordings in `filesDir/recordings`, the models in `filesDir/gesture-model.json` and `filesDir/social-touch-model.json`;
+         * the sensor board's force channel is levelled against the grain mode's calibrated range ([grains]).
+         */
+        fun create(context: Context, hub: SensorSession, grains: () -> GrainConfig? = { null }): GestureComponent {
             val sensors = context.getSystemService(SensorManager::class.java)
             val accelerometer = sensors?.let { AccelerometerGestureSource(it) }?.takeIf { it.available }
             return GestureComponent(
                 touch = TouchGestureSource(),
                 accelerometer = accelerometer,
-                sensorBoard = SensorHubGestureSource(hub),
+                sensorBoard = SensorHubGestureSource(hub, grains),
                 recordings = FileRecordingStore(File(context.filesDir, "recordings")),
                 models = FileGestureModelStore(File(context.filesDir, "gesture-model.json")),
                 socialTouch = FileSocialTouchModelStore(File(context.filesDir, "social-touch-model.json")),

@@ -38,9 +38,9 @@ interface AudioCoupledOutput {
 }
 
 /**
- * Renders icons into PCM16 WAV files in [directory], once per distinct icon, rate and [model] (the study's
- * `processing` envelope by default): the name is a hash of those and the icon's JSON, so a repeat plays from
- * disk at once and a file rendered with another model is never reused. At most [maxFiles] are kept (oldest first out),
+ * Renders icons into PCM16 WAV files in [directory], once per distinct icon, rate and envelope model ([model],
+ * the study's `processing` envelope, unless a call names another): the name is a hash of those and the icon's
+ * JSON, so a repeat plays from disk at once and a file rendered with another model is never reused. At most [maxFiles] are kept (oldest first out),
  * because an icon is at most 30 s × 48 kHz × 2 bytes ≈ 2.9 MB.
  */
 class IconAudioCache(
@@ -49,15 +49,15 @@ class IconAudioCache(
     private val maxFiles: Int = 32,
     val model: EnvelopeModel = EnvelopeModel.DEFAULT,
 ) {
-    /** The WAV file of [icon], rendered now if it is not cached. */
+    /** The WAV file of [icon] with its envelope under [envelopeModel], rendered now if it is not cached. */
     @Throws(IOException::class)
-    fun fileFor(icon: HapticIcon): File {
-        val file = File(directory, "${keyOf(icon)}.wav")
+    fun fileFor(icon: HapticIcon, envelopeModel: EnvelopeModel = model): File {
+        val file = File(directory, "${keyOf(icon, envelopeModel)}.wav")
         if (file.isFile) {
             file.setLastModified(System.currentTimeMillis())
             return file
         }
-        writeWholeFile(file) { WavWriter.write(PcmRenderer(icon, sampleRate, model).stream(), it) }
+        writeWholeFile(file) { WavWriter.write(PcmRenderer(icon, sampleRate, envelopeModel).stream(), it) }
         evict()
         return file
     }
@@ -67,12 +67,13 @@ class IconAudioCache(
         override fun removeEldestEntry(eldest: MutableMap.MutableEntry<String, Fidelity>): Boolean = size > maxFiles
     }
 
-    /** How faithfully the PCM16 file of [icon] carries it; measured on first use and remembered. */
+    /** How faithfully the PCM16 file of [icon] under [envelopeModel] carries it; measured on first use and remembered. */
     @Synchronized
-    fun fidelityOf(icon: HapticIcon): Fidelity = fidelities.getOrPut(keyOf(icon)) { PcmRenderer(icon, sampleRate, model).fidelity() }
+    fun fidelityOf(icon: HapticIcon, envelopeModel: EnvelopeModel = model): Fidelity =
+        fidelities.getOrPut(keyOf(icon, envelopeModel)) { PcmRenderer(icon, sampleRate, envelopeModel).fidelity() }
 
-    private fun keyOf(icon: HapticIcon): String {
-        val digest = MessageDigest.getInstance("SHA-256").digest("$sampleRate:${model.name}:${IconJson.encode(icon)}".toByteArray())
+    private fun keyOf(icon: HapticIcon, envelopeModel: EnvelopeModel): String {
+        val digest = MessageDigest.getInstance("SHA-256").digest("$sampleRate:${envelopeModel.name}:${IconJson.encode(icon)}".toByteArray())
         return digest.take(12).joinToString("") { "%02x".format(it) }
     }
 

@@ -2,6 +2,7 @@ package org.hapticon.app.playback
 
 import org.hapticon.messaging.RendererKind
 import org.hapticon.core.HapticIcon
+import org.hapticon.core.render.EnvelopeModel
 import org.hapticon.core.render.Fidelity
 
 /** Plays haptic icons on the phone's actuator. */
@@ -10,10 +11,20 @@ interface HapticPlayer {
     val capabilities: PlaybackCapabilities
 
     /**
-     * Starts playing [icon], replacing whatever is playing. Returns how it is played, or
+     * Starts playing [icon] with the default envelope model ([EnvelopeModel.DEFAULT], what the study's
+     * participants felt), replacing whatever is playing. Returns how it is played, or
      * [Playback.Unsupported] when the phone has no vibrator. Never blocks.
      */
     fun play(icon: HapticIcon): Playback
+
+    /**
+     * Starts playing [icon] with its envelope shaped by [model] (a study protocol's `envelopeModel`), as
+     * [play] does. The players that render envelopes ([VibratorHapticPlayer], [AdaptiveHapticPlayer])
+     * override this; a player that cannot render another model plays the default one only and returns
+     * [Playback.Unsupported] for any other, so nothing is ever played under the wrong model.
+     */
+    fun play(icon: HapticIcon, model: EnvelopeModel): Playback =
+        if (model == EnvelopeModel.DEFAULT) play(icon) else Playback.Unsupported
 
     /** Stops any vibration this player started. */
     fun stop()
@@ -39,6 +50,6 @@ sealed interface Playback {
     /** Playing with [renderer] for [durationMillis]; [fidelity] compares it with the ideal envelope. */
     data class Playing(val renderer: RendererKind, val durationMillis: Long, val fidelity: Fidelity) : Playback
 
-    /** Nothing plays: the phone has no vibrator. */
+    /** Nothing plays: the phone has no vibrator, or this player cannot render the envelope model asked for. */
     data object Unsupported : Playback
 }

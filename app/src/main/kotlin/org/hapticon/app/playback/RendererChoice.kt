@@ -10,6 +10,7 @@ import java.io.IOException
 import kotlin.math.roundToInt
 import org.hapticon.core.HapticIcon
 import org.hapticon.core.render.EnvelopeControlPoints
+import org.hapticon.core.render.EnvelopeModel
 import org.hapticon.core.render.PcmRenderer
 import org.hapticon.core.render.VibrationWaveform
 import org.hapticon.messaging.Capabilities
@@ -79,22 +80,22 @@ val RendererKind.label: String
  * automatic choice stands (forcing an impossible renderer would play nothing).
  */
 object RendererChoice {
-    fun possible(device: DeviceCapabilities, icon: HapticIcon?): List<RendererKind> = buildList {
+    fun possible(device: DeviceCapabilities, icon: HapticIcon?, model: EnvelopeModel = EnvelopeModel.DEFAULT): List<RendererKind> = buildList {
         if (!device.hasVibrator) return@buildList
         if (device.apiLevel >= 31 && device.hapticPlaybackSupported && device.hapticGeneratorAvailable) add(RendererKind.AUDIO_COUPLED)
-        if (device.apiLevel >= 36 && device.envelopeEffectsSupported && (icon == null || envelopeRepresentable(icon))) add(RendererKind.ENVELOPE)
+        if (device.apiLevel >= 36 && device.envelopeEffectsSupported && (icon == null || envelopeRepresentable(icon, model))) add(RendererKind.ENVELOPE)
         if (device.hasAmplitudeControl) add(RendererKind.AMPLITUDE_WAVEFORM)
         add(RendererKind.ON_OFF)
     }
 
-    fun choose(device: DeviceCapabilities, icon: HapticIcon?, override: RendererKind? = null): RendererKind {
-        val options = possible(device, icon)
+    fun choose(device: DeviceCapabilities, icon: HapticIcon?, override: RendererKind? = null, model: EnvelopeModel = EnvelopeModel.DEFAULT): RendererKind {
+        val options = possible(device, icon, model)
         if (options.isEmpty()) return RendererKind.NONE
         return if (override != null && override in options) override else options.first()
     }
 
-    private fun envelopeRepresentable(icon: HapticIcon): Boolean =
-        runCatching { EnvelopeControlPoints.render(icon).isRepresentable }.getOrDefault(false)
+    private fun envelopeRepresentable(icon: HapticIcon, model: EnvelopeModel): Boolean =
+        runCatching { EnvelopeControlPoints.render(icon, model).isRepresentable }.getOrDefault(false)
 
     /**
      * How faithfully [renderer] plays [icon], 0..100 (100 = the ideal envelope): 100 minus the renderer's
@@ -138,27 +139,29 @@ class AdaptiveHapticPlayer(
     override val capabilities: PlaybackCapabilities
         get() = device().let { PlaybackCapabilities(it.hasVibrator, it.hasAmplitudeControl, it.apiLevel) }
 
-    /** The renderer [icon] would get now: audio-coupled only with an [audio] output that is available. */
-    fun rendererFor(icon: HapticIcon): RendererKind {
+    /** The renderer [icon] (its envelope under [model]) would get now: audio-coupled only with an [audio] output that is available. */
+    fun rendererFor(icon: HapticIcon, model: EnvelopeModel = EnvelopeModel.DEFAULT): RendererKind {
         val capabilities = device()
         val audioUsable = audio != null && audioCache != null && audio.isAvailable
-        return RendererChoice.choose(if (audioUsable) capabilities else capabilities.copy(hapticGeneratorAvailable = false), icon, override())
+        return RendererChoice.choose(if (audioUsable) capabilities else capabilities.copy(hapticGeneratorAvailable = false), icon, override(), model)
     }
 
-    override fun play(icon: HapticIcon): Playback {
-        val waveform = when (rendererFor(icon)) {
+    override fun play(icon: HapticIcon): Playback = play(icon, EnvelopeModel.DEFAULT)
+
+    override fun play(icon: HapticIcon, model: EnvelopeModel): Playback {
+        val waveform = when (rendererFor(icon, model)) {
             // choose() never returns the wire-only kinds AUDIO and UNKNOWN.
             RendererKind.NONE, RendererKind.AUDIO, RendererKind.UNKNOWN -> return Playback.Unsupported
-            RendererKind.AUDIO_COUPLED -> playAudioCoupled(icon)?.let { return it } ?: VibrationWaveform.render(icon)
+            RendererKind.AUDIO_COUPLED -> playAudioCoupled(icon, model)?.let { return it } ?: VibrationWaveform.render(icon, model)
             RendererKind.ENVELOPE -> if (Build.VERSION.SDK_INT >= 36) {
-                val points = EnvelopeControlPoints.render(icon)
+                val points = EnvelopeControlPoints.render(icon, model)
                 vibrator.vibrate(points.toEnvelopeEffect())
                 return Playback.Playing(RendererKind.ENVELOPE, points.totalMillis, points.fidelity)
             } else {
-                VibrationWaveform.render(icon)
+                VibrationWaveform.render(icon, model)
             }
-            RendererKind.AMPLITUDE_WAVEFORM -> VibrationWaveform.render(icon)
-            RendererKind.ON_OFF -> VibrationWaveform.onOff(icon)
+            RendererKind.AMPLITUDE_WAVEFORM -> VibrationWaveform.render(icon, model)
+            RendererKind.ON_OFF -> VibrationWaveform.onOff(icon, model)
         }
         vibrator.vibrate(waveform.toVibrationEffect())
         val renderer = if (waveform.amplitudes().all { it == 0 || it == VibrationWaveform.MAX_AMPLITUDE }) RendererKind.ON_OFF else RendererKind.AMPLITUDE_WAVEFORM
@@ -170,19 +173,19 @@ class AdaptiveHapticPlayer(
         vibrator.cancel()
     }
 
-    private fun playAudioCoupled(icon: HapticIcon): Playback? {
+    private fun playAudioCoupled(icon: HapticIcon, model: EnvelopeModel): Playback? {
         val output = audio ?: return null
         val cache = audioCache ?: return null
         val file = try {
-            cache.fileFor(icon)
+            cache.fileFor(icon, model)
         } catch (e: IOException) {
             Log.w("AdaptiveHapticPlayer", "audio-coupled ${icon.name} not rendered, vibrating instead: ${e.message}")
             return null
         }
         vibrator.cancel()
         output.play(file)
-        val samples = PcmRenderer(icon, cache.sampleRate).sampleCount
-        return Playback.Playing(RendererKind.AUDIO_COUPLED, Math.round(samples * 1000.0 / cache.sampleRate), cache.fidelityOf(icon))
+        val samples = PcmRenderer(icon, cache.sampleRate, model).sampleCount
+        return Playback.Playing(RendererKind.AUDIO_COUPLED, Math.round(samples * 1000.0 / cache.sampleRate), cache.fidelityOf(icon, model))
     }
 }
 

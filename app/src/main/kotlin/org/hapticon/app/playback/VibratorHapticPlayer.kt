@@ -6,6 +6,7 @@ import android.os.Build
 import android.os.VibrationEffect
 import android.os.Vibrator
 import org.hapticon.core.HapticIcon
+import org.hapticon.core.render.EnvelopeModel
 import org.hapticon.core.render.VibrationWaveform
 
 /**
@@ -23,13 +24,15 @@ class VibratorHapticPlayer(private val vibrator: Vibrator) : HapticPlayer {
             apiLevel = Build.VERSION.SDK_INT,
         )
 
-    override fun play(icon: HapticIcon): Playback {
+    override fun play(icon: HapticIcon): Playback = play(icon, EnvelopeModel.DEFAULT)
+
+    override fun play(icon: HapticIcon, model: EnvelopeModel): Playback {
         val renderer = capabilities.renderer
         val waveform = when (renderer) {
-            RendererKind.AMPLITUDE_WAVEFORM -> VibrationWaveform.render(icon)
-            RendererKind.ON_OFF -> VibrationWaveform.onOff(icon)
+            RendererKind.AMPLITUDE_WAVEFORM -> VibrationWaveform.render(icon, model)
+            RendererKind.ON_OFF -> VibrationWaveform.onOff(icon, model)
             // PlaybackCapabilities.renderer never names these; only the adaptive player plays them.
-            RendererKind.AUDIO_COUPLED, RendererKind.ENVELOPE -> VibrationWaveform.render(icon)
+            RendererKind.AUDIO_COUPLED, RendererKind.ENVELOPE -> VibrationWaveform.render(icon, model)
             RendererKind.NONE, RendererKind.AUDIO, RendererKind.UNKNOWN -> return Playback.Unsupported
         }
         vibrator.vibrate(waveform.toVibrationEffect())

@@ -8,7 +8,9 @@ import androidx.test.core.app.ApplicationProvider
 import java.io.File
 import org.hapticon.core.HapticIcon
 import org.hapticon.core.io.WavReader
+import org.hapticon.core.render.EnvelopeModel
 import org.hapticon.core.render.PcmRenderer
+import org.hapticon.core.render.VibrationWaveform
 import org.junit.Assert.assertEquals
 import org.junit.Assert.assertFalse
 import org.junit.Assert.assertNull
@@ -91,6 +93,39 @@ class AudioCoupledHapticsTest {
         assertEquals(PcmRenderer(HapticIcon.HIT, 48_000).fidelity(), firstPlayback.fidelity)
         assertSame(firstPlayback.fidelity, secondPlayback.fidelity)
         assertEquals(1, first.parentFile!!.listFiles()!!.count { it.name.endsWith(".wav") })
+    }
+
+    @Test
+    fun knockUnderEachModel_rendersOneFilePerModelWithThatModelsSamples() {
+        val player = player()
+        player.play(HapticIcon.KNOCK, EnvelopeModel.PAPER)
+        player.play(HapticIcon.KNOCK, EnvelopeModel.PROCESSING)
+        player.play(HapticIcon.KNOCK, EnvelopeModel.PAPER)
+
+        // The model is part of the cache key: two files, and the third press reuses the first.
+        val (paperFile, processingFile, again) = audio.played
+        assertTrue(paperFile != processingFile)
+        assertEquals(paperFile, again)
+        for ((file, model) in listOf(paperFile to EnvelopeModel.PAPER, processingFile to EnvelopeModel.PROCESSING)) {
+            val samples = file.inputStream().use { WavReader.read(it) }.samples()
+            val expected = PcmRenderer(HapticIcon.KNOCK, 48_000, model).render()
+            for (i in expected.indices) assertEquals("$model sample $i", expected[i].toInt(), Math.round(samples[i] * 32767f))
+        }
+        // Knock's processing envelope peaks at 1, the paper's plateau is 0.5: the paper file's carrier crests at 0.5,
+        // the processing file's near its envelope peak (0.968: the 220 Hz crest falls just beside it at 48 kHz).
+        val peak = { f: File -> f.inputStream().use { WavReader.read(it) }.samples().maxOf { Math.abs(it) }.toDouble() }
+        assertEquals(0.5, peak(paperFile), 0.01)
+        assertTrue(peak(processingFile).toString(), peak(processingFile) > 0.95)
+    }
+
+    @Test
+    fun paperModelWithoutAudio_vibratesThePaperWaveform() {
+        val playback = player(RecordingAudioOutput(isAvailable = false)).play(HapticIcon.KNOCK, EnvelopeModel.PAPER) as Playback.Playing
+
+        assertEquals(RendererKind.AMPLITUDE_WAVEFORM, playback.renderer)
+        val paper = VibrationWaveform.render(HapticIcon.KNOCK, EnvelopeModel.PAPER)
+        assertEquals(RecordedVibration(paper.timings().toList(), paper.amplitudes().toList()), lastVibration(vibrator))
+        assertEquals(PAPER_KNOCK, lastVibration(vibrator))
     }
 
     @Test

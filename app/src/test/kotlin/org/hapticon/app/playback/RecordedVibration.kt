@@ -9,6 +9,15 @@ import org.robolectric.shadows.ShadowVibrator
 data class RecordedVibration(val timings: List<Long>, val amplitudes: List<Int>)
 
 /**
+ * Knock under the `paper` model on an amplitude vibrator: three 20 ms trapezoids (0 → 0.5 in 5 ms, 0.5 for 10 ms,
+ * 0.5 → 0 in 5 ms) every 270 ms, each 10 ms step averaging 0.375 → 96/255.
+ */
+val PAPER_KNOCK = RecordedVibration(listOf(20L, 250L, 20L, 250L, 20L), listOf(96, 0, 96, 0, 96))
+
+/** Knock under the `processing` model (the default): each pulse rises to 1 in 5 ms, then falls to 0.5 — steps 175 and 111. */
+val PROCESSING_KNOCK = RecordedVibration(listOf(10L, 10L, 250L, 10L, 10L, 250L, 10L, 10L), listOf(175, 111, 0, 175, 111, 0, 175, 111))
+
+/**
  * Reads what [vibrator] was last asked to play. Robolectric 4.17 records waveform effects as the
  * platform's step segments in a protected field without a getter, and the segment class is hidden
  * from the public android.jar, so both are read reflectively.

@@ -43,33 +43,70 @@ object HapticIconsReplication : Replication {
         out.println("its attack always peaks at 1 and its 'sustain' ramps from 1 to the level; paper holds the level.")
         out.println("Periods (median spacing) and counts are measured from where the whole render's envelope starts rising.")
         out.println()
-        out.println("Procedure: the paper beside the built-in protocols")
+        out.println("The envelope at named times of the first repetition, paper / processing, at the sample nearest each time:")
+        out.println(String.format(Locale.ROOT, "%-7s %-26s %s", "icon", "times", NAMED_TIMES.joinToString("  ") { String.format(Locale.ROOT, "%-15s", it) }).trimEnd())
+        for (icon in HapticIcon.PRESETS) {
+            val times = namedTimes(icon)
+            val paper = namedValues(icon, EnvelopeModel.PAPER)
+            val processing = namedValues(icon, EnvelopeModel.PROCESSING)
+            val unit = if (icon.attack < 0.1) 1000.0 else 1.0
+            val label = times.joinToString(", ") { String.format(Locale.ROOT, "%s", trim(it * unit)) } + if (unit > 1) " ms" else " s"
+            out.println(
+                String.format(Locale.ROOT, "%-7s %-26s %s", icon.name, label, paper.indices.joinToString("  ") { String.format(Locale.ROOT, "%-15s", String.format(Locale.ROOT, "%.3f / %.3f", paper[it], processing[it])) }).trimEnd(),
+            )
+        }
+        out.println()
+        out.println("Procedure: the paper beside the built-in protocols. The paper column is issue 14's summary of the paper")
+        out.println("(Wei et al.), not re-checked against the paper's text; 'cited from' says, per row, what the issue states and what is ours.")
         val paper = OriginatingStudy.PAPER_PROTOCOL
         val perTrial = OriginatingStudy.PROTOCOL
-        out.println(String.format(Locale.ROOT, "%-16s | %-42s | %-32s | %s", "", "paper", paper.id, perTrial.id))
-        for ((what, inPaper, of) in procedureRows()) {
-            out.println(String.format(Locale.ROOT, "%-16s | %-42s | %-32s | %s", what, inPaper, of(paper), of(perTrial)))
-        }
+        val format = "%-16s | %-42s | %-31s | %-32s | %s"
+        out.println(String.format(Locale.ROOT, format, "", "paper", "cited from", paper.id, perTrial.id))
+        for (r in procedureRows()) out.println(String.format(Locale.ROOT, format, r.what, r.inPaper, r.citedFrom, r.of(paper), r.of(perTrial)))
     }
 
-    private fun procedureRows(): List<Triple<String, String, (StudyProtocol) -> String>> = listOf(
-        Triple("participants", "16", { p -> p.participants?.toString() ?: "open" }),
-        Triple("task order", "1 (icons) first; 2, 3 counterbalanced", { p -> "${p.fixedFirst.joinToString()} first; rest ${p.taskOrder.jsonName}" }),
-        Triple("icon numbering", "icon 1 = stroke, 2 hit, 3 knock, 4 hug", { p ->
+    /** The named times of one repetition, in [namedTimes] order. */
+    val NAMED_TIMES: List<String> = listOf("mid-attack", "end of attack", "mid-sustain", "end of sustain", "mid-release")
+
+    /** A/2, A, A + S/2, A + S, A + S + R/2 of [icon] in seconds. */
+    fun namedTimes(icon: HapticIcon): DoubleArray =
+        doubleArrayOf(icon.attack / 2, icon.attack, icon.attack + icon.sustain / 2, icon.attack + icon.sustain, icon.attack + icon.sustain + icon.release / 2)
+
+    /** [icon]'s envelope under [model] at [SAMPLE_RATE], at the sample nearest each of [namedTimes]. */
+    fun namedValues(icon: HapticIcon, model: EnvelopeModel): DoubleArray {
+        val renderer = IconRenderer(icon, SAMPLE_RATE, model)
+        return namedTimes(icon).map { renderer.envelopeAt(Math.round(it * SAMPLE_RATE)) }.toDoubleArray()
+    }
+
+    private fun trim(value: Double): String = String.format(Locale.ROOT, "%.4f", value).trimEnd('0').trimEnd('.')
+
+    /** One procedure row: [what], the paper's value [inPaper] and where that value is [citedFrom], and ours per protocol. */
+    class ProcedureRow(val what: String, val inPaper: String, val citedFrom: String, val of: (StudyProtocol) -> String)
+
+    /** The procedure rows; [ProcedureRow.citedFrom] says which part of the paper column issue 14 states and which is ours. */
+    fun procedureRows(): List<ProcedureRow> = listOf(
+        ProcedureRow("participants", "16", ISSUE) { p -> p.participants?.toString() ?: "open" },
+        ProcedureRow("task order", "1 (icons) first; 2, 3 counterbalanced", ISSUE) { p -> "${p.fixedFirst.joinToString()} first; rest ${p.taskOrder.jsonName}" },
+        ProcedureRow("icon numbering", "icon 1 = stroke, 2 hit, 3 knock, 4 hug", "$ISSUE (1 = stroke); 2-4 ours") { p ->
             val numbers = p.tasks.first().stimuli.map { it.number }
             if (numbers.all { it != null }) p.tasks.first().stimuli.joinToString(", ") { "${it.number} ${it.icon.name}" } else "by position in the order"
-        }),
-        Triple("presentation", "4 icons on one chat screen, pressed freely", { p ->
+        },
+        ProcedureRow("presentation", "4 icons on one chat screen, pressed freely", ISSUE) { p ->
             if (p.tasks.all { it.presentation == TaskPresentation.TOGETHER }) "all together, pressed freely" else "one icon per trial"
-        }),
-        Triple("questionnaire", "items after each task", { p ->
+        },
+        ProcedureRow("questionnaire", "items after each task", ISSUE) { p ->
             if (p.tasks.all { it.presentation == TaskPresentation.TOGETHER }) "items after each task" else "one item per trial"
-        }),
-        Triple("stimulus order", "fixed (numbered)", { p -> p.tasks.joinToString(", ") { it.stimulusOrder.jsonName }.let { o -> o.split(", ").distinct().joinToString() } }),
-        Triple("masking", "white noise on headphones", { p -> p.masking.jsonName }),
-        Triple("scale", "5-point agreement", { p -> "${p.scale.points}-point" }),
-        Triple("envelopes", "Processing Sound (JSyn)", { p -> ProtocolJson.modelName(p.envelopeModel) }),
+        },
+        ProcedureRow("stimulus order", "fixed (numbered)", "ours, from the numbering") { p ->
+            p.tasks.joinToString(", ") { it.stimulusOrder.jsonName }.let { o -> o.split(", ").distinct().joinToString() }
+        },
+        ProcedureRow("masking", "white noise on headphones", ISSUE) { p -> p.masking.jsonName },
+        ProcedureRow("scale", "5-point agreement", "ours, not in $ISSUE") { p -> "${p.scale.points}-point" },
+        ProcedureRow("envelopes", "Processing Sound (JSyn)", ISSUE) { p -> ProtocolJson.modelName(p.envelopeModel) },
     )
+
+    /** The source of most of the paper column: the issue that summarised the paper, not the paper's text. */
+    private const val ISSUE: String = "issue 14"
 
     private fun row(name: String, source: String, attack: Double, sustain: Double, level: Double, release: Double, peak: Double?, f: Double, period: Double, count: Int) =
         String.format(

@@ -7,5 +7,6 @@ val allReplications: List<Replication> = listOf(
     HapticIconsReplication,
     ComplianceGrainsReplication,
     NaoGesturesReplication { NaoSyntheticPeople.sessions(count = 8, takesPerClass = 3) },
+    SocialTouchReplication(),
     HandshakeCalibrationReplication,
 )

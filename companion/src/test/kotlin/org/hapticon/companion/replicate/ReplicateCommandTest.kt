@@ -49,12 +49,12 @@ class ReplicateCommandTest {
         }
         val result = cli("replicate", "009")
         assertEquals(2, result.exitCode)
-        assertEquals(listOf("hapticon: no replication '009'; try 000, 001, 002, 004"), result.stderrLines)
+        assertEquals(listOf("hapticon: no replication '009'; try 000, 001, 002, 003, 004"), result.stderrLines)
     }
 
     @Test
     fun allReplications_areInIdOrder() {
-        assertEquals(listOf("000", "001", "002", "004"), allReplications.map { it.id })
+        assertEquals(listOf("000", "001", "002", "003", "004"), allReplications.map { it.id })
     }
 
     @Test
@@ -96,6 +96,21 @@ class ReplicateCommandTest {
     }
 
     @Test
+    fun socialTouch_onTwoSimulatedPeople_printsAllThreeClassSetsBesideThePapersColumn() {
+        val bytes = ByteArrayOutputStream()
+        SocialTouchReplication(people = 2, takesPerClass = 2).run(PrintStream(bytes, true, "UTF-8"))
+        val text = bytes.toString("UTF-8")
+        // 2 people × 2 takes × 6 classes = 24 messages per six-class set; 13 classes make 52.
+        val row = Regex("""  (6 emotions|6 social messages|13 classes \(incl. no touch\))\s+n/t\s+(\d+\.\d) %\s+(\d+\.\d) %\s+\(chance (\d+\.\d) %, (\d+) messages\)""")
+        val rows = row.findAll(text).map { it.groupValues }.toList()
+        assertEquals(text, listOf("6 emotions", "6 social messages", "13 classes (incl. no touch)"), rows.map { it[1] })
+        assertEquals(listOf("24", "24", "52"), rows.map { it[5] })
+        assertEquals(listOf("16.7", "16.7", "7.7"), rows.map { it[4] })
+        for (r in rows) assertTrue(text, r[2].toDouble() in 0.0..100.0 && r[3].toDouble() in 0.0..100.0)
+        assertTrue(text, text.contains("anger disgust fear happiness sadness sympathy"))
+    }
+
+    @Test
     fun replicate_withoutId_listsTheReplications() {
         val result = cli("replicate")
         assertEquals(result.toString(), EXIT_OK, result.exitCode)
@@ -112,7 +127,10 @@ class ReplicateCommandTest {
         assertTrue(result.stdout, lines.contains("        processing model  1.00000  1.00000  0.300  1.00000  1.000    349.23   2.600     4"))
         // knock as felt: the attack 221 samples (0.00501 s), the sustain one sample short (440 samples, 0.00998 s), the release to the disconnection at 882.
         assertTrue(result.stdout, lines.any { it.startsWith("        processing model  0.00501  0.00998  0.500  0.00501  0.999    220.00   0.270     3") })
-        assertTrue(result.stdout, lines.any { it.startsWith("participants     | 16 ") && it.endsWith("| open") })
+        assertTrue(result.stdout, lines.any { it.startsWith("participants     | 16 ") && it.contains("| issue 14 ") && it.endsWith("| open") })
+        // The named times of docs/envelope-models.md, paper / processing: knock's carry shows in its last digit.
+        assertTrue(result.stdout, lines.contains("knock   2.5, 5, 10, 15, 17.5 ms    0.249 / 0.499    0.500 / 0.999    0.500 / 0.749    0.499 / 0.498    0.249 / 0.248"))
+        assertTrue(result.stdout, lines.contains("stroke  0.5, 1, 1.5, 2, 2.5 s      0.150 / 0.500    0.300 / 1.000    0.300 / 0.650    0.300 / 0.300    0.150 / 0.150"))
         assertTrue(result.stdout, lines.any { it.startsWith("masking ") && it.contains("| white ") && it.endsWith("| none") })
     }
 

@@ -28,15 +28,29 @@ import kotlin.math.ceil
  *    phase₀ + m · increment (equal to the running sum within ~1e-12).
  * 4. **Start.** A new reader starts starved (lines 70–75): its first sample outputs 0 while it loads
  *    the attack frame.
- * 5. **End.** After the last frame the reader holds 0. `Env.java` lines 50–53 disconnect the reader
- *    from the oscillator's amplitude port attackTime + sustainTime + releaseTime (a float sum) after
- *    its start, so the repetition contributes nothing from sample ceil(that time · fs) on; when the
- *    carry makes the reader run past that sample, its tail is cut there.
+ * 5. **End.** After the last frame the reader holds 0. `Env.java` lines 50–53 schedule the reader's
+ *    disconnection from the oscillator's amplitude port at a `TimeStamp` attackTime + sustainTime +
+ *    releaseTime (a float sum) after `createTimeStamp()`; when the carry makes the reader run past
+ *    that time, its tail is cut there (see 6 for the sample).
+ * 6. **Block quantisation.** JSyn runs every queued or time-stamped command only at the start of a
+ *    synthesis block of `Synthesizer.FRAMES_PER_BLOCK` = 8 frames: `SynthesisEngine.generateNextBuffer`
+ *    calls `processScheduledCommands(createTimeStamp())` before each block, `createTimeStamp()` is
+ *    frameCount · framePeriod with frameCount advanced 8 at a time, `ScheduledQueue.removeNextList`
+ *    releases every command stamped at or before that time, and `UnitDataQueuePort.queue(env)` goes
+ *    through `queueCommand` (stamped now). So a reader starts on a block start (sample 0 here) and is
+ *    disconnected at the first block start whose time is ≥ its stamp: sample 8·j for the smallest j
+ *    with 8·j·framePeriod ≥ A + S + R ([disconnectSample]). For the presets at 44.1 and 48 kHz this
+ *    moves nothing audible (every reader has reached 0 by then, except hug at 48 kHz whose cut falls
+ *    on 144 000 = 8 · 18 000 either way); it matters for sub-sample envelopes, whose release it no
+ *    longer cuts. The reader's start relative to the *nominal* onset k · period is **not** quantised
+ *    here: the study's sketch called `Env.play` from its own thread at times we do not know (a
+ *    sketch's `draw()` runs every 16.7 ms by default, ≫ one 0.18 ms block, and we do not have the
+ *    study's sketch), so which block a repetition began on is unknowable; [EnvelopeTimeline] keeps
+ *    onset(k) = round(k · period · fs).
  *
  * Overlapping repetitions add: `Env.java` line 40 leaves `input.amplitude.disconnectAll()` commented
  * out, and `ports/InputMixingBlockPart.getValues` sums every connected output ([EnvelopeTimeline]).
  * Sound 2.4.0 (2024) disconnects the running envelope instead; Hapticon models the study's versions.
- * Not modelled: JSyn's 8-frame block quantisation of when readers start and stop.
  *
  * Simulating costs one addition per sample of one repetition (≤ 5.8 M for the 30 s cap at 192 kHz).
  */
@@ -47,10 +61,21 @@ internal object ProcessingEnvelope {
     /** [value] rounded to a Java `float` and widened back, as `Env.play`'s float parameters are. */
     fun viaFloat(value: Double): Double = value.toFloat().toDouble()
 
-    /** The sample from which one repetition is disconnected: ceil((A + S + R as a float sum) · fs). */
+    /** JSyn's `Synthesizer.FRAMES_PER_BLOCK`: commands (start, disconnect) take effect only on block starts. */
+    const val FRAMES_PER_BLOCK: Int = 8
+
+    /**
+     * The sample from which one repetition is disconnected: the first block start (a multiple of
+     * [FRAMES_PER_BLOCK] after the reader's start) whose time n · framePeriod is at or after A + S + R
+     * (a float sum, widened), compared in doubles as JSyn's `TimeStamp.compareTo` does.
+     */
     fun disconnectSample(icon: HapticIcon, sampleRate: Int): Long {
-        val total = icon.attack.toFloat() + icon.sustain.toFloat() + icon.release.toFloat()
-        return ceil(total.toDouble() * sampleRate).toLong()
+        val total = (icon.attack.toFloat() + icon.sustain.toFloat() + icon.release.toFloat()).toDouble()
+        val framePeriod = 1.0 / sampleRate
+        // Start one block below the exact boundary and step up: the double comparison decides ties.
+        var n = maxOf(0L, (ceil(total * sampleRate).toLong() / FRAMES_PER_BLOCK - 1) * FRAMES_PER_BLOCK)
+        while (n * framePeriod < total) n += FRAMES_PER_BLOCK
+        return n
     }
 
     fun segments(icon: HapticIcon, sampleRate: Int): List<EnvelopeSegment> {

@@ -44,7 +44,8 @@ internal object IconReference {
      * PROCESSING: one repetition at local sample n, transliterated line by line from JSyn's
      * `VariableRateMonoReader.generate` (starved start, running double phase sum, `while (phase >= 1.0)`
      * carry) and `SegmentedEnvelope.getRateScaler` (1 / max(duration, framePeriod)), playing Processing
-     * Sound's `Env.play` frames built from float parameters, and cut at ceil((A+S+R as floats) · fs).
+     * Sound's `Env.play` frames built from float parameters, and cut at the first 8-frame JSyn block start n with
+     * n · framePeriod ≥ A+S+R (as floats): `SynthesisEngine` runs the scheduled disconnection only there.
      */
     fun processingSingle(icon: HapticIcon, n: Long, sampleRate: Int): Double {
         val values = processingCache.getOrPut(icon to sampleRate) { processingRepetition(icon, sampleRate) }
@@ -62,7 +63,9 @@ internal object IconReference {
                 icon.release.toFloat().toDouble() to 0.0,
             ),
         )
-        val disconnect = Math.ceil((icon.attack.toFloat() + icon.sustain.toFloat() + icon.release.toFloat()).toDouble() * sampleRate).toLong()
+        val stamp = (icon.attack.toFloat() + icon.sustain.toFloat() + icon.release.toFloat()).toDouble()
+        var disconnect = 0L
+        while (disconnect * framePeriod < stamp) disconnect += 8
         val out = DoubleArray(disconnect.toInt())
         var phase = 0.0
         var source = 0.0

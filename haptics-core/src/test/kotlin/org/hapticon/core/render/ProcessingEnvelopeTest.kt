@@ -4,6 +4,7 @@ import org.hapticon.core.HapticIcon
 import org.hapticon.core.render.EnvelopeModel.PAPER
 import org.hapticon.core.render.EnvelopeModel.PROCESSING
 import org.junit.Assert.assertEquals
+import org.junit.Assert.assertTrue
 import org.junit.Test
 
 /** The Processing Sound 2.0.1–2.3.1 + JSyn rules of [ProcessingEnvelope], at 44.1 and 48 kHz. */
@@ -33,22 +34,43 @@ class ProcessingEnvelopeTest {
         val segments = ProcessingEnvelope.segments(icon, 44_100)
         assertEquals(1L, segments[0].endSample)
         assertEquals(442L, segments[1].endSample) // 0.01f s = 441 samples of sustain after the one-sample attack
-        // A+S+R = 0.01002 s → disconnected at ceil(441.88) = 442: the one-sample release is cut off.
-        assertEquals(442L, ProcessingEnvelope.disconnectSample(icon, 44_100))
-        assertEquals(2, segments.size)
+        // A+S+R = 0.01002 s = 441.88 samples: the disconnection waits for the block start at 448 (= 8 · 56),
+        // so the one-sample release still plays.
+        assertEquals(448L, ProcessingEnvelope.disconnectSample(icon, 44_100))
+        assertEquals(443L, segments[2].endSample)
         val renderer = IconRenderer(icon, 44_100, PROCESSING)
         assertEquals(0.0, renderer.envelopeAt(0), 0.0) // the starved reader's first sample
         assertEquals(1.0, renderer.envelopeAt(1), 1e-12) // the attack target, reached after one sample
     }
 
     @Test
-    fun envelopeAt_allDurationsUnderOneSample_isSilentBecauseTheReaderIsDisconnectedFirst() {
-        // A+S+R = 30 µs: the reader would need three samples but is disconnected after ceil(1.32) = 2.
+    fun disconnectSample_presets_waitForTheFirstEightFrameBlockStartAtOrAfterTheStamp() {
+        // ceil((A+S+R)·fs) rounded up to JSyn's 8-frame blocks.
+        assertEquals(132_304L, ProcessingEnvelope.disconnectSample(HapticIcon.STROKE, 44_100)) // 132 300 is not a block start
+        assertEquals(144_000L, ProcessingEnvelope.disconnectSample(HapticIcon.STROKE, 48_000)) // 3.0 s is one exactly
+        assertEquals(6_176L, ProcessingEnvelope.disconnectSample(HapticIcon.HIT, 44_100)) // 0.14000000059604645 s = 6174.00003 samples
+        assertEquals(6_728L, ProcessingEnvelope.disconnectSample(HapticIcon.HIT, 48_000)) // 6720.0000286 samples: past 6720
+        assertEquals(888L, ProcessingEnvelope.disconnectSample(HapticIcon.KNOCK, 44_100))
+        assertEquals(960L, ProcessingEnvelope.disconnectSample(HapticIcon.KNOCK, 48_000)) // 0.02f s = 959.99998 samples
+        assertEquals(144_000L, ProcessingEnvelope.disconnectSample(HapticIcon.HUG, 48_000))
+        // A block multiple whose time compares at or after the stamp, and one block earlier does not.
+        for (icon in HapticIcon.PRESETS) for (fs in listOf(8_000, 44_100, 48_000, 96_000)) {
+            val n = ProcessingEnvelope.disconnectSample(icon, fs)
+            val stamp = (icon.attack.toFloat() + icon.sustain.toFloat() + icon.release.toFloat()).toDouble()
+            assertEquals(0L, n % ProcessingEnvelope.FRAMES_PER_BLOCK)
+            assertTrue("${icon.name} $fs", n * (1.0 / fs) >= stamp && (n - 8) * (1.0 / fs) < stamp)
+        }
+    }
+
+    @Test
+    fun segments_allDurationsUnderOneSample_playOneSampleEachBeforeTheBlockStartDisconnects() {
+        // A+S+R = 30 µs = 1.32 samples, but the disconnection waits for the next block start, sample 8: the
+        // reader plays its three one-sample segments.
         val icon = HapticIcon("tick", 0.00001, 0.00001, 0.8, 0.00001, 60.0)
-        assertEquals(2L, ProcessingEnvelope.disconnectSample(icon, 44_100))
-        assertEquals(listOf(1L, 2L), segmentEnds(icon, 44_100))
+        assertEquals(8L, ProcessingEnvelope.disconnectSample(icon, 44_100))
+        assertEquals(listOf(1L, 2L, 3L), segmentEnds(icon, 44_100))
         val renderer = IconRenderer(icon, 44_100, PROCESSING)
-        assertEquals(1L, renderer.sampleCount)
+        assertEquals(1L, renderer.sampleCount) // round(30 µs · fs): only the starved first sample is rendered
         assertEquals(0.0, renderer.envelopeAt(0), 0.0)
     }
 

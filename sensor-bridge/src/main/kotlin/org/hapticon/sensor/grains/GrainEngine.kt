@@ -106,6 +106,9 @@ public class GrainEngine(private val output: GrainSink) : FrameListener {
     /** What the grain mode is doing. [GrainStatus.grainsPlayed] is updated at most per grain. */
     public val status: StateFlow<GrainStatus> = mutableStatus.asStateFlow()
 
+    /** The configuration in force, or null while the mode is off (the recorder reads its calibrated force range). */
+    public val currentConfig: GrainConfig? get() = synchronized(lock) { config }
+
     /** Grains played since the mode was last configured; cheap to poll. */
     public val grainsPlayed: Long get() = synchronized(lock) { played }
 

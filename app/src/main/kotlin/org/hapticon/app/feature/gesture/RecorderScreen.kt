@@ -60,6 +60,8 @@ fun RecorderRoute(viewModel: RecorderViewModel, touch: TouchGestureSource?, onIm
             onSaveIcon = viewModel::saveIcon,
             onOpenRecording = viewModel::openRecording,
             onDeleteRecording = viewModel::deleteRecording,
+            onFitSavedStrongest = { viewModel.fitSavedStrongest() },
+            onSaveBatchIcons = viewModel::saveBatchIcons,
             onDismissMessage = viewModel::dismissMessage,
         )
     }
@@ -82,6 +84,8 @@ class RecorderActions(
     val onSaveIcon: () -> Unit = {},
     val onOpenRecording: (String) -> Unit = {},
     val onDeleteRecording: (String) -> Unit = {},
+    val onFitSavedStrongest: () -> Unit = {},
+    val onSaveBatchIcons: () -> Unit = {},
     val onDismissMessage: () -> Unit = {},
 )
 
@@ -130,6 +134,7 @@ private fun RecorderContent(state: RecorderUiState.Ready, plot: PlotSource, touc
                 TextButton(onClick = { actions.onDeleteRecording(saved.id) }, modifier = Modifier.semantics { contentDescription = "Delete ${saved.name}" }) { Text("Delete") }
             }
         }
+        StrongestBatchSection(state, onFit = actions.onFitSavedStrongest, onSave = actions.onSaveBatchIcons)
     }
 }
 

@@ -66,11 +66,17 @@ sealed interface RecorderUiState {
         val savedRecordings: List<SavedRecording> = emptyList(),
         /** A problem or a confirmation for the user. */
         val message: String? = null,
+        /** The saved recordings fitted together by [RecorderViewModel.fitSavedStrongest], levels against the strongest; null before. */
+        val batch: List<BatchIcon>? = null,
+        val batchFitting: Boolean = false,
     ) : RecorderUiState {
         /** The trimmed take, or null while there is none. */
         val trimmed: Recording? get() = take?.slice(trimFrom, trimTo)
     }
 }
+
+/** One saved recording ([recordingName]) of a batch fit and the icon fitted to it. */
+data class BatchIcon(val recordingName: String, val fit: IconFit)
 
 /**
  * The gesture recorder: records from the chosen [GestureSourceKind] with a live plot (at most
@@ -247,6 +253,56 @@ class RecorderViewModel(
             refreshRecordings()
         }
     }
+
+    /**
+     * Fits every saved recording in [ids] (default: all) as one batch, as `hapticon fit --reference strongest` does
+     * for a directory: each gesture's envelope peak is measured, and the strongest of the batch is the reference
+     * every level is relative to ([IconFitter.fitBatch]), so a gesture half as strong as the strongest fits about
+     * half its level. Each icon is named after its recording. The chosen fit channel is used where every recording
+     * has it, else each recording's first channel.
+     */
+    fun fitSavedStrongest(ids: List<String> = state.value.savedRecordings.map { it.id }) {
+        val saved = state.value.savedRecordings.filter { it.id in ids }
+        if (saved.isEmpty()) {
+            state.update { it.copy(message = "No saved recordings to fit") }
+            return
+        }
+        val channel = state.value.fitChannel
+        state.update { it.copy(batchFitting = true, batch = null, message = null) }
+        viewModelScope.launch {
+            val result = withContext(work) {
+                runCatching {
+                    val recordings = saved.map { gestures.recordings.load(it.id) }
+                    val common = channel?.takeIf { c -> recordings.all { it.channel(c) != null } }
+                    IconFitter.fitBatch(recordings, common).mapIndexed { i, fit -> BatchIcon(saved[i].name, fit.named(saved[i].name)) }
+                }
+            }
+            state.update {
+                it.copy(batchFitting = false, batch = result.getOrNull(), message = result.exceptionOrNull()?.let { e -> e.message ?: e.javaClass.simpleName })
+            }
+        }
+    }
+
+    /** Saves every icon of the last batch fit as a custom icon (replacing ones of the same names). */
+    fun saveBatchIcons() {
+        val batch = state.value.batch ?: return
+        val repository = icons ?: run {
+            state.update { it.copy(message = "Icons cannot be saved in this build") }
+            return
+        }
+        viewModelScope.launch {
+            for (item in batch) repository.save(item.fit.icon)
+            state.update { it.copy(message = "Saved ${batch.size} icons to your icons") }
+        }
+    }
+
+    /** This fit with its icon renamed to [name] when that is a valid icon name, else unchanged. */
+    private fun IconFit.named(name: String): IconFit =
+        try {
+            IconFit(icon.copy(name = name.trim()), report)
+        } catch (e: IconValidationException) {
+            this
+        }
 
     /** Reads a picked WAV or CSV file (named [source] in errors) as the take to trim. */
     fun importFile(open: () -> InputStream, source: String) {

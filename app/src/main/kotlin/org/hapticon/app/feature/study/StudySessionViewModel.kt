@@ -15,9 +15,7 @@ import org.hapticon.app.playback.Playback
 import org.hapticon.app.study.MaskingNoisePlayer
 import org.hapticon.app.study.SessionRecord
 import org.hapticon.app.study.StudyRepository
-import org.hapticon.core.render.EnvelopeModel
 import org.hapticon.study.LikertScale
-import org.hapticon.study.ProtocolJson
 import org.hapticon.study.StudyPlan
 import org.hapticon.study.StudySession
 import org.hapticon.study.StudyStep
@@ -64,13 +62,6 @@ class StudySessionViewModel(
             } catch (e: IllegalArgumentException) {
                 return@withLock fail("this session cannot continue: ${e.message}")
             }
-            // The players render icons with the default model; a protocol asking for another must not run as if it did.
-            if (found.protocol.envelopeModel != EnvelopeModel.DEFAULT) {
-                return@withLock fail(
-                    "this protocol asks for the ${ProtocolJson.modelName(found.protocol.envelopeModel)} envelope model, but the app plays " +
-                        "${ProtocolJson.modelName(EnvelopeModel.DEFAULT)} envelopes; render paper stimuli with the hapticon CLI instead",
-                )
-            }
             record = found
             enter()
         }
@@ -101,7 +92,8 @@ class StudySessionViewModel(
                 else -> return@act
             }
             append(StudyEvent.IconPressed(taskId, stimulus.id))
-            val playback = player.play(stimulus.icon)
+            // The protocol's envelope model: a paper-model protocol plays the paper's trapezoids, the default what the study's participants felt.
+            val playback = player.play(stimulus.icon, record.protocol.envelopeModel)
             if (playback is Playback.Playing) {
                 append(StudyEvent.PlaybackStarted(taskId, stimulus.id))
                 playing = true

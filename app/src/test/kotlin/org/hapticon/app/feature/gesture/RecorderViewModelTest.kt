@@ -120,6 +120,43 @@ class RecorderViewModelTest {
     }
 
     @Test
+    fun fitSavedStrongest_halfAsStrongKnock_fitsHalfTheLevelOfTheStrongest_andSavesBoth() = runTest(dispatcher) {
+        // The same knock at full and at half amplitude, saved; fitted as a batch the strongest is the reference
+        // (as `hapticon fit --reference strongest`), so the soft one keeps its lower level instead of fitting to full.
+        val component = testGestureComponent(source, folder.root)
+        val soft = org.hapticon.gesture.Recording(knock.sampleRate, listOf(org.hapticon.gesture.Channel("vibration", "", DoubleArray(knock.frameCount) { knock.channels[0][it] * 0.5 })))
+        component.recordings.save("loud", null, knock)
+        component.recordings.save("soft", null, soft)
+        val viewModel = RecorderViewModel(component, RoomIconRepository(db.iconDao()), player, work = dispatcher)
+        advanceUntilIdle()
+        assertEquals(listOf("loud", "soft"), viewModel.ready().savedRecordings.map { it.name })
+
+        viewModel.fitSavedStrongest()
+        advanceUntilIdle()
+        val batch = viewModel.ready().batch
+        assertNotNull(viewModel.ready().message, batch)
+        assertEquals(listOf("loud", "soft"), batch!!.map { it.recordingName })
+        assertEquals(listOf("loud", "soft"), batch.map { it.fit.icon.name })
+        val (loud, quiet) = batch.map { it.fit.icon.level }
+        // Level is the sustain against the strongest gesture's peak: halving the gesture halves it (fit tolerance 0.05).
+        assertEquals(loud / 2, quiet, 0.05)
+        assertTrue(batch.all { it.fit.report.levelReference.startsWith("the strongest gesture of the batch of 2") })
+
+        viewModel.saveBatchIcons()
+        advanceUntilIdle()
+        assertEquals(setOf("loud", "soft"), db.iconDao().icons().first().map { it.name }.toSet())
+    }
+
+    @Test
+    fun fitSavedStrongest_nothingSaved_saysSo() = runTest(dispatcher) {
+        val viewModel = viewModel()
+        advanceUntilIdle()
+        viewModel.fitSavedStrongest()
+        assertEquals("No saved recordings to fit", viewModel.ready().message)
+        assertNull(viewModel.ready().batch)
+    }
+
+    @Test
     fun trim_isClampedToTheTakeAndTwoFrames() = runTest(dispatcher) {
         val viewModel = recorded()
         viewModel.setTrim(-5, Int.MAX_VALUE)

@@ -1,6 +1,7 @@
 package org.hapticon.app.feature.study
 
 import android.content.Context
+import android.os.Vibrator
 import androidx.compose.ui.semantics.SemanticsProperties
 import androidx.compose.ui.test.SemanticsMatcher
 import androidx.compose.ui.test.assert
@@ -20,6 +21,10 @@ import kotlinx.coroutines.test.runTest
 import kotlinx.coroutines.test.setMain
 import org.hapticon.app.data.database.HapticonDatabase
 import org.hapticon.app.designsystem.HapticonTheme
+import org.hapticon.app.playback.PAPER_KNOCK
+import org.hapticon.app.playback.PROCESSING_KNOCK
+import org.hapticon.app.playback.VibratorHapticPlayer
+import org.hapticon.app.playback.lastVibration
 import org.hapticon.app.study.NoiseColor
 import org.hapticon.app.study.RoomStudyRepository
 import org.hapticon.app.study.StoredProtocol
@@ -40,6 +45,7 @@ import org.junit.Rule
 import org.junit.Test
 import org.junit.runner.RunWith
 import org.robolectric.RobolectricTestRunner
+import org.robolectric.Shadows.shadowOf
 
 /** The paper's procedure in the Study tab: built in and read-only, the four icons together, then the items. */
 @OptIn(ExperimentalCoroutinesApi::class)
@@ -98,6 +104,8 @@ class PaperProtocolSessionTest {
         assertTrue(active.step is StudyStep.Explore)
         assertEquals(setOf("hug", "stroke"), active.pressedStimuli)
         assertEquals(listOf(HapticIcon.HUG, HapticIcon.HUG, HapticIcon.STROKE), player.played)
+        // The built-in paper protocol's stimuli are Processing-exact, as the participants felt them.
+        assertEquals(List(3) { EnvelopeModel.PROCESSING }, player.models)
         vm.finishExploring().join()
         val first = (vm.uiState.value as SessionUiState.Active).step as StudyStep.Trial
         assertEquals("Haptic icon 1 feels like stroking", first.question)
@@ -113,16 +121,24 @@ class PaperProtocolSessionTest {
     }
 
     @Test
-    fun session_protocolAskingForThePaperModel_failsWithAClearMessage() = runTest(dispatcher) {
+    fun session_protocolsEnvelopeModel_isTheWaveformTheVibratorPlays() = runTest(dispatcher) {
+        // The real vibrator player on Robolectric's vibrator: a paper-model protocol plays the paper's trapezoids,
+        // a processing one (the default) what the study's participants felt.
+        val vibrator = context.getSystemService(Vibrator::class.java)
+        shadowOf(vibrator).setHasAmplitudeControl(true)
+        val vibratorPlayer = VibratorHapticPlayer(vibrator)
         val repository = RoomStudyRepository(db)
-        val paperModel = StoredProtocol.PAPER.copy(protocol = StoredProtocol.PAPER.protocol.copy(id = "paper-model", envelopeModel = EnvelopeModel.PAPER), readOnly = false)
-        val record = repository.startSession(paperModel, clock())
-        val vm = StudySessionViewModel(record.id, repository, player, noise, clock)
-        vm.loaded.join()
-        assertEquals(
-            SessionUiState.Failed("this protocol asks for the paper envelope model, but the app plays processing envelopes; render paper stimuli with the hapticon CLI instead"),
-            vm.uiState.value,
-        )
+        for ((model, expected) in listOf(EnvelopeModel.PAPER to PAPER_KNOCK, EnvelopeModel.PROCESSING to PROCESSING_KNOCK)) {
+            val protocol = StoredProtocol.PAPER.protocol.copy(id = "knock-${model.name.lowercase()}", envelopeModel = model)
+            val record = repository.startSession(StoredProtocol.PAPER.copy(protocol = protocol, readOnly = false), clock())
+            val vm = StudySessionViewModel(record.id, repository, vibratorPlayer, noise, clock)
+            vm.loaded.join()
+            vm.startTask().join()
+            vm.pressIcon("knock").join()
+            assertEquals("$model", expected, lastVibration(vibrator))
+            val events = repository.entries(record.id).map { it.event }
+            assertTrue("$model", events.contains(StudyEvent.PlaybackStarted("icons", "knock")))
+        }
     }
 
     @Test
