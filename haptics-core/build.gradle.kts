@@ -8,5 +8,8 @@ kotlin {
 }
 
 dependencies {
+    // The wire and file formats' schemas are @Serializable types (docs/json.md).
+    api(libs.kotlinx.serialization.json)
+
     testImplementation(libs.junit4)
 }
