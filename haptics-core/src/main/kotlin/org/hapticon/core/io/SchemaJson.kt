@@ -62,10 +62,10 @@ public object SchemaJson {
 
     /**
      * Decodes [element] as [deserializer] after [check]ing it; problems go to [report], which throws in the
-     * format's own words.
+     * format's own words. [path] is where [element] sits, for the messages (empty: it is the document).
      */
-    public fun <T> decode(deserializer: DeserializationStrategy<T>, element: JsonElement, report: SchemaReport): T =
-        format.decodeFromJsonElement(deserializer, check(element, deserializer.descriptor, "", report))
+    public fun <T> decode(deserializer: DeserializationStrategy<T>, element: JsonElement, report: SchemaReport, path: String = ""): T =
+        format.decodeFromJsonElement(deserializer, check(element, deserializer.descriptor, path, report))
 
     /**
      * Checks [element] against [descriptor] and returns it normalized for kotlinx decoding: whole numbers written
