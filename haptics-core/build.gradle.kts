@@ -1,5 +1,7 @@
 plugins {
     alias(libs.plugins.kotlin.jvm)
+    // @Serializable schema types (the tests of SchemaJson declare their own).
+    alias(libs.plugins.kotlin.serialization)
 }
 
 kotlin {
