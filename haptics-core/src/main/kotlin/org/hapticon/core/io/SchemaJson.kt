@@ -83,8 +83,9 @@ public object SchemaJson {
             val value = obj[name]
             if (value == null || value is KNull) {
                 when {
-                    descriptor.isElementOptional(i) -> out.remove(name)
                     value != null && child.isNullable -> {}
+                    value != null && !report.nullMeansAbsent -> report.wrongType(path, name, kindOf(child), value)
+                    descriptor.isElementOptional(i) -> out.remove(name)
                     else -> report.wrongType(path, name, kindOf(child), null)
                 }
                 continue
@@ -184,6 +185,12 @@ public enum class JsonKind {
 
 /** A format's wording of schema problems; every function throws the format's own exception. */
 public interface SchemaReport {
+    /**
+     * Whether `null` for a member that cannot be null means "absent" (its default applies, or it is reported
+     * missing), as most of our formats read it; false reports it as a wrong type. True by default.
+     */
+    public val nullMeansAbsent: Boolean get() = true
+
     /** [value], at [path] (empty: the document), should be an object. */
     public fun notAnObject(path: String, value: JsonElement): Nothing
 
