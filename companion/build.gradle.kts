@@ -21,6 +21,7 @@ dependencies {
     implementation(libs.sqlite.jdbc) // the study collector's default store
     implementation(libs.postgresql) // the study collector's optional store
     implementation(libs.jetty.server) // the study collector's HTTP server
+    implementation(libs.commons.csv) // bench --analysis only: the baseline our CSV reader is measured against
     implementation(libs.logback.classic) // to quiet Jetty's INFO lines (HiveMQ's logback.xml prints them to stdout)
 
     testImplementation(project(":test-fixtures"))

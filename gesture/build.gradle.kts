@@ -1,6 +1,8 @@
 // Touch gestures, pure Kotlin: recordings, icon extraction (envelope fit) and live recognition (random forest).
 plugins {
     alias(libs.plugins.kotlin.jvm)
+    // Model files are @Serializable documents (recognition/ModelDocuments.kt).
+    alias(libs.plugins.kotlin.serialization)
 }
 
 kotlin {

@@ -1,5 +1,7 @@
 plugins {
     alias(libs.plugins.kotlin.jvm)
+    // @Serializable schema types (the tests of SchemaJson declare their own).
+    alias(libs.plugins.kotlin.serialization)
 }
 
 kotlin {
@@ -8,5 +10,8 @@ kotlin {
 }
 
 dependencies {
+    // The wire and file formats' schemas are @Serializable types (docs/json.md).
+    api(libs.kotlinx.serialization.json)
+
     testImplementation(libs.junit4)
 }

@@ -1,6 +1,8 @@
 // User-study logic, pure Kotlin: protocols, counterbalancing, the hash-chained event log, export and analysis.
 plugins {
     alias(libs.plugins.kotlin.jvm)
+    // Protocols, exports and log payloads are @Serializable documents (StudyDocuments.kt).
+    alias(libs.plugins.kotlin.serialization)
 }
 
 kotlin {

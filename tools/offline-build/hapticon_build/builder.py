@@ -189,7 +189,8 @@ class Build:
             sources += self.run_ksp(module, sources, classpath)
         resources = self.resource_dirs(module, source_set)
         stamp = os.path.join(self.out, module.name, f"{source_set}.stamp")
-        fp = fingerprint(sources, classpath, str(module.explicit_api), str(module.uses_compose), source_set)
+        plugins = [self.tools.compiler_plugin(alias) for alias in module.compiler_plugins]
+        fp = fingerprint(sources, classpath, str(module.explicit_api), plugins, source_set)
         if not sources:
             os.makedirs(out_dir, exist_ok=True)
         elif not (os.path.exists(stamp) and open(stamp).read() == fp):
@@ -200,7 +201,7 @@ class Build:
                 self.kotlinc.compile(sources=sources, classpath=classpath, output=out_dir,
                                      module_name=f"{self.project.name}-{module.name}" + ("" if source_set == "main" else "-test"),
                                      explicit_api=module.explicit_api and source_set == "main",
-                                     compose=module.uses_compose, friend_paths=friends)
+                                     plugins=plugins, friend_paths=friends)
                 with open(stamp, "w") as f:
                     f.write(fp)
         outputs = Outputs(out_dir, resources)

@@ -34,19 +34,15 @@ class KotlinCompiler:
             self._process.wait(timeout=30)
 
     def compile(self, *, sources: list[str], classpath: list[str], output: str, module_name: str,
-                explicit_api: bool = False, compose: bool = False, friend_paths: list[str] = (),
+                explicit_api: bool = False, plugins: list[str] = (), friend_paths: list[str] = (),
                 jvm_target: str = "17") -> None:
-        """Compiles `sources` into the class directory `output`; raises BuildError with the diagnostics."""
-        args = ["-no-stdlib", "-no-reflect", "-jvm-target", jvm_target, "-module-name", module_name,
-                "-Xjdk-release=" + jvm_target, "-nowarn",
-                "-classpath", os.pathsep.join(classpath), "-d", output]
-        if explicit_api:
-            args.append("-Xexplicit-api=strict")
-        if compose:
-            args.append("-Xplugin=" + self.tools.compose_plugin)
-        if friend_paths:
-            args.append("-Xfriend-paths=" + ",".join(friend_paths))
-        args += sources
+        """Compiles `sources` into the class directory `output`; raises BuildError with the diagnostics.
+
+        `plugins` are compiler plugin jars (Compose, kotlinx-serialization), passed as `-Xplugin=` the way
+        the Kotlin Gradle plugin passes them."""
+        args = compiler_arguments(sources=sources, classpath=classpath, output=output, module_name=module_name,
+                                  explicit_api=explicit_api, plugins=plugins, friend_paths=friend_paths,
+                                  jvm_target=jvm_target)
         self._jobs += 1
         os.makedirs(self.work, exist_ok=True)
         argfile = os.path.join(self.work, f"kotlinc-{module_name}-{self._jobs}.args")
@@ -63,6 +59,21 @@ class KotlinCompiler:
         if code != 0:
             errors = [l for l in log.splitlines() if "error:" in l or l.startswith("e:")] or log.splitlines()[-30:]
             raise BuildError(f"Kotlin compilation of {module_name} failed:\n" + "\n".join(errors[:60]))
+
+
+def compiler_arguments(*, sources: list[str], classpath: list[str], output: str, module_name: str,
+                       explicit_api: bool = False, plugins: list[str] = (), friend_paths: list[str] = (),
+                       jvm_target: str = "17") -> list[str]:
+    """The kotlinc command line for one compilation (without the compiler's own class path)."""
+    args = ["-no-stdlib", "-no-reflect", "-jvm-target", jvm_target, "-module-name", module_name,
+            "-Xjdk-release=" + jvm_target, "-nowarn",
+            "-classpath", os.pathsep.join(classpath), "-d", output]
+    if explicit_api:
+        args.append("-Xexplicit-api=strict")
+    args += ["-Xplugin=" + jar for jar in plugins]
+    if friend_paths:
+        args.append("-Xfriend-paths=" + ",".join(friend_paths))
+    return args + list(sources)
 
 
 def fingerprint(*parts) -> str:

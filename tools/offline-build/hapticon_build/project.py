@@ -39,6 +39,7 @@ class Module:
     path: str                    # ":app"
     directory: str
     plugins: set[str] = field(default_factory=set)     # catalog plugin aliases or core plugin ids
+    plugin_ids: set[str] = field(default_factory=set)  # the Gradle plugin ids behind them
     dependencies: list[Dependency] = field(default_factory=list)
     explicit_api: bool = False
     main_class: str | None = None
@@ -62,8 +63,9 @@ class Module:
         return self.is_android_app or self.is_android_library
 
     @property
-    def uses_compose(self) -> bool:
-        return "kotlin-compose" in self.plugins
+    def compiler_plugins(self) -> list[str]:
+        """Catalog aliases of the Kotlin compiler plugins the applied Gradle plugins add (see COMPILER_PLUGINS)."""
+        return [tool for plugin_id, tool in COMPILER_PLUGINS.items() if plugin_id in self.plugin_ids]
 
     @property
     def uses_ksp(self) -> bool:
@@ -121,10 +123,22 @@ class Catalog:
         return Coordinate(g, a, v)
 
     def plugin_alias(self, accessor: str) -> str:
+        return self._plugin(accessor)[0]
+
+    def plugin_id(self, accessor: str) -> str:
+        """The Gradle plugin id (`id = "…"`) behind `libs.plugins.<accessor>`."""
+        alias, spec = self._plugin(accessor)
+        if isinstance(spec, str):  # "id:version" shorthand
+            return spec.split(":")[0]
+        if "id" not in spec:
+            raise BuildError(f"plugin {alias} has no id in gradle/libs.versions.toml")
+        return spec["id"]
+
+    def _plugin(self, accessor: str) -> tuple:
         entry = self._plugins.get(self._key(accessor))
         if entry is None:
             raise BuildError(f"libs.plugins.{accessor} is not declared in [plugins] of gradle/libs.versions.toml")
-        return entry[0]
+        return entry
 
     def tool(self, alias: str) -> Coordinate:
         return self.library(alias)
@@ -136,6 +150,15 @@ CONFIGURATIONS = {
     "debugImplementation", "ksp",
 }
 CORE_PLUGINS = {"application", "java-library", "java"}
+
+COMPOSE_PLUGIN = "org.jetbrains.kotlin.plugin.compose"
+SERIALIZATION_PLUGIN = "org.jetbrains.kotlin.plugin.serialization"
+# Gradle plugins that only add a Kotlin compiler plugin (as the Kotlin Gradle plugin does), by plugin id → the
+# catalog alias of the compiler plugin jar, which must be at the Kotlin version (the compiler's plugin API).
+COMPILER_PLUGINS = {
+    COMPOSE_PLUGIN: "tool-compose-compiler-plugin",
+    SERIALIZATION_PLUGIN: "tool-serialization-compiler-plugin",
+}
 
 
 def _read(path: str) -> str:
@@ -203,8 +226,10 @@ def parse_module(path: str, directory: str, catalog: Catalog) -> Module:
         m = re.fullmatch(r"alias\(libs\.plugins\.([\w.]+)\)", stmt)
         if m:
             module.plugins.add(catalog.plugin_alias(m.group(1)))
+            module.plugin_ids.add(catalog.plugin_id(m.group(1)))
         elif stmt in CORE_PLUGINS or re.fullmatch(r"`[\w-]+`", stmt):
             module.plugins.add(stmt.strip("`"))
+            module.plugin_ids.add(stmt.strip("`"))
         else:
             raise BuildError(f"{build_file}: plugins: cannot read {stmt!r} (use alias(libs.plugins.x))")
 

@@ -80,9 +80,9 @@ class Toolchain:
         with Stage("fetch KSP"):
             return self._classpath("tool-ksp", "tool-ksp-common-deps", "tool-ksp-api", "kotlinx-coroutines-core")
 
-    @cached_property
-    def compose_plugin(self) -> str:
-        return self._jar("tool-compose-compiler-plugin")
+    def compiler_plugin(self, alias: str) -> str:
+        """A Kotlin compiler plugin jar by catalog alias (`tool-compose-compiler-plugin`, …); one self-contained jar."""
+        return self._jar(alias)
 
     @cached_property
     def r8(self) -> str:

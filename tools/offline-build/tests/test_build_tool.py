@@ -7,6 +7,7 @@ import unittest
 
 from hapticon_build.android import REFLECTIVE_CLASSES, Signing, excluded, required_classes
 from hapticon_build.errors import BuildError
+from hapticon_build.kotlin import compiler_arguments
 from hapticon_build.maven import Repository
 from hapticon_build.project import Catalog, load_project
 from hapticon_build.resolver import Resolver, concrete_version, highest
@@ -22,6 +23,8 @@ junit4 = "junit:junit:4.13.2"
 [plugins]
 kotlin-jvm = { id = "org.jetbrains.kotlin.jvm", version.ref = "kotlin" }
 android-application = { id = "com.android.application", version = "9.4.1" }
+kotlin-compose = { id = "org.jetbrains.kotlin.plugin.compose", version.ref = "kotlin" }
+kotlin-serialization = { id = "org.jetbrains.kotlin.plugin.serialization", version.ref = "kotlin" }
 """
 
 
@@ -121,6 +124,44 @@ class ProjectReaderTest(unittest.TestCase):
         app = load_project(self.root).module(":app")
         self.assertEqual({"namespace": "org.demo", "compileSdk": "37", "minSdk": "26", "targetSdk": "35"}, app.android)
         self.assertEqual({"room.schemaLocation": os.path.join(self.root, "app") + "/schemas"}, app.ksp_args)
+
+    def test_load_project_serializationPlugin_addsItsCompilerPlugin(self):
+        write(self.root, "core/build.gradle.kts", """
+            plugins {
+                alias(libs.plugins.kotlin.jvm)
+                alias(libs.plugins.kotlin.serialization)
+            }
+        """)
+        self.app("")
+        core = load_project(self.root).module(":core")
+        self.assertEqual({"org.jetbrains.kotlin.jvm", "org.jetbrains.kotlin.plugin.serialization"}, core.plugin_ids)
+        self.assertEqual(["tool-serialization-compiler-plugin"], core.compiler_plugins)
+
+    def test_load_project_composeAndSerialization_addBothCompilerPluginsInOrder(self):
+        write(self.root, "core/build.gradle.kts", """
+            plugins {
+                alias(libs.plugins.kotlin.serialization)
+                alias(libs.plugins.kotlin.compose)
+            }
+        """)
+        self.app("")
+        core = load_project(self.root).module(":core")
+        self.assertEqual(["tool-compose-compiler-plugin", "tool-serialization-compiler-plugin"], core.compiler_plugins)
+
+    def test_load_project_noCompilerPluginApplied_addsNone(self):
+        self.app("")
+        self.assertEqual([], load_project(self.root).module(":core").compiler_plugins)
+
+    def test_compilerArguments_passEachPluginJarAsXplugin(self):
+        args = compiler_arguments(sources=["A.kt"], classpath=["x.jar"], output="out", module_name="m",
+                                  plugins=["/m2/compose.jar", "/m2/serialization.jar"])
+        self.assertEqual(["-Xplugin=/m2/compose.jar", "-Xplugin=/m2/serialization.jar"],
+                         [a for a in args if a.startswith("-Xplugin")])
+        self.assertEqual("A.kt", args[-1])
+
+    def test_catalog_pluginId_readsTheIdOfTheAlias(self):
+        catalog = Catalog(os.path.join(self.root, "gradle/libs.versions.toml"))
+        self.assertEqual("org.jetbrains.kotlin.plugin.serialization", catalog.plugin_id("kotlin.serialization"))
 
     def test_catalog_accessorsIgnoreSeparators(self):
         catalog = Catalog(os.path.join(self.root, "gradle/libs.versions.toml"))

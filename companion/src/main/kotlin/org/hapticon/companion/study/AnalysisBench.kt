@@ -1,6 +1,7 @@
 package org.hapticon.companion.study
 
 import org.hapticon.companion.cli.Console
+import org.apache.commons.csv.CSVFormat
 import org.hapticon.companion.bench.median
 import java.io.File
 import java.io.OutputStream
@@ -36,9 +37,24 @@ class AnalysisBench(private val config: Config, private val progress: (String) -
      * [peakHeapBytes] the most heap any run held (sum of the heap pools' peaks, so an upper bound); [gcSeconds]
      * the collectors' time over all runs.
      */
-    class Size(val rows: Int, val participants: Int, val bytes: Long, val seconds: List<Double>, val peakHeapBytes: Long, val gcSeconds: Double) {
+    class Size(
+        val rows: Int,
+        val participants: Int,
+        val bytes: Long,
+        val seconds: List<Double>,
+        val peakHeapBytes: Long,
+        val gcSeconds: Double,
+        val read: ReadTimes,
+    ) {
         val medianSeconds: Double get() = median(seconds)
     }
+
+    /**
+     * Reading the same file's records only (no analysis), [ours] with our one CSV reader ([Csv.forEachRecord]) and
+     * [commonsCsv] with Apache Commons CSV's RFC 4180 parser, alternating, seconds per run: the baseline that
+     * justifies keeping our reader (docs/study-analysis.md).
+     */
+    class ReadTimes(val ours: List<Double>, val commonsCsv: List<Double>)
 
     /** Generates each size's file into a temporary directory (deleted afterwards) and measures it. */
     fun run(): List<Size> {
@@ -66,11 +82,31 @@ class AnalysisBench(private val config: Config, private val progress: (String) -
                     elapsed
                 }
                 val gcSeconds = (collectors.sumOf { it.collectionTime } - gcBefore) / 1e3
-                Size(rows, participants, csv.length(), seconds, peak, gcSeconds).also { csv.delete() }
+                Size(rows, participants, csv.length(), seconds, peak, gcSeconds, readTimes(csv)).also { csv.delete() }
             }
         } finally {
             dir.deleteRecursively()
         }
+    }
+
+    private fun readTimes(csv: File): ReadTimes {
+        val ours = ArrayList<Double>()
+        val commons = ArrayList<Double>()
+        // Both readers must see every field of every record (header included), or the comparison is void.
+        val fields = csv.bufferedReader().useLines { lines -> lines.sumOf { it.split(',').size.toLong() } }
+        repeat(config.runs) {
+            ours += timed(csv, fields) { reader -> var n = 0L; Csv.forEachRecord(reader, csv.name) { n += it.fields.size }; n }
+            commons += timed(csv, fields) { reader -> CSVFormat.RFC4180.parse(reader).use { parser -> parser.sumOf { it.size().toLong() } } }
+        }
+        return ReadTimes(ours, commons)
+    }
+
+    private fun timed(csv: File, fields: Long, read: (java.io.Reader) -> Long): Double {
+        val start = System.nanoTime()
+        val seen = csv.bufferedReader().use(read)
+        val elapsed = (System.nanoTime() - start) / 1e9
+        check(seen == fields) { "a reader saw $seen of the file's $fields fields" }
+        return elapsed
     }
 
     private fun analyze(csv: File, out: File) {
@@ -125,6 +161,13 @@ class AnalysisBench(private val config: Config, private val progress: (String) -
                     s.medianSeconds * 1e6 / s.rows, growth, s.peakHeapBytes / 1e6, s.gcSeconds,
                 )
                 previous = s
+            }
+            line("  reading the records only (median ms of %d runs, same file, alternating):", sizes.firstOrNull()?.read?.ours?.size ?: 0)
+            line("  %9s %14s %14s %8s", "rows", "our reader", "commons-csv", "ratio")
+            for (s in sizes) {
+                val ours = median(s.read.ours)
+                val commons = median(s.read.commonsCsv)
+                line("  %9d %14.1f %14.1f %7.2fx", s.rows, ours * 1e3, commons * 1e3, commons / ours)
             }
             line("  growth = median time over the previous size's, for 10x the rows: linear cost gives 10x")
             line("  peak heap = sum of the heap pools' peaks in the worst run (an upper bound on heap in use)")

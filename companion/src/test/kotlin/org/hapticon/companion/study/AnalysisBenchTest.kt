@@ -29,4 +29,11 @@ class AnalysisBenchTest {
         val table = AnalysisBench.table(sizes)
         assertTrue(table, Regex("""\n\s+10000\s+83 .* \d+\.\d\dx """).containsMatchIn(table))
     }
+
+    @Test fun run_quick_timesBothCsvReadersOnEverySize() {
+        val sizes = AnalysisBench(AnalysisBench.Config.QUICK).run()
+        assertTrue(sizes.all { it.read.ours.size == 2 && it.read.commonsCsv.size == 2 && (it.read.ours + it.read.commonsCsv).all { s -> s > 0.0 } })
+        val table = AnalysisBench.table(sizes)
+        assertTrue(table, Regex("""our reader +commons-csv +ratio\n +1000 +\d+\.\d +\d+\.\d +\d+\.\d\dx\n +10000 """).containsMatchIn(table))
+    }
 }

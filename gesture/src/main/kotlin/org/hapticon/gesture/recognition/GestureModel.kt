@@ -1,11 +1,6 @@
 package org.hapticon.gesture.recognition
 
-import org.hapticon.core.io.Json
-import org.hapticon.core.io.JsonArray
-import org.hapticon.core.io.JsonException
-import org.hapticon.core.io.JsonNumber
-import org.hapticon.core.io.JsonObject
-import org.hapticon.core.io.JsonString
+import org.hapticon.core.io.SchemaJson
 import org.hapticon.gesture.Recording
 import kotlin.math.abs
 import kotlin.math.roundToInt
@@ -89,19 +84,11 @@ public class GestureModel(
     public fun classifier(): WindowClassifier = WindowClassifier(this)
 
     /** This model as JSON text in schema [SCHEMA] version [VERSION]. */
-    public fun encode(): String = Json.encode(
-        JsonObject(
-            linkedMapOf(
-                "schema" to JsonString(SCHEMA),
-                "version" to JsonNumber(VERSION),
-                "features" to JsonString(FEATURE_SET),
-                "sampleRate" to JsonNumber(sampleRate, isIntegral = false),
-                "channels" to JsonArray(channels.map { JsonString(it) }),
-                "windowSeconds" to JsonNumber(window.windowSeconds, isIntegral = false),
-                "hopSeconds" to JsonNumber(window.hopSeconds, isIntegral = false),
-                "labels" to JsonArray(labels.map { JsonString(it.id) }),
-                "forest" to forest.toJson(),
-            ),
+    public fun encode(): String = SchemaJson.encode(
+        GestureModelDocument.serializer(),
+        GestureModelDocument(
+            SCHEMA, VERSION, FEATURE_SET, sampleRate, channels, window.windowSeconds, window.hopSeconds,
+            labels.map { it.id }, forest.toDocument(),
         ),
     )
 
@@ -126,22 +113,17 @@ public class GestureModel(
          * it is not JSON, another schema, version or feature set, or malformed.
          */
         public fun decode(text: String): GestureModel {
-            val json = try {
-                Json.decode(text, maxLength = MAX_MODEL_CHARS)
-            } catch (e: JsonException) {
-                throw IllegalArgumentException("model is not valid JSON: ${e.message}")
+            val report = ModelReport { member, value ->
+                when (member) {
+                    "schema" -> ModelReport.text(value).let { require(it == SCHEMA) { "model: schema must be \"$SCHEMA\", was \"$it\"" } }
+                    "version" -> ModelReport.text(value).let { require(it == "$VERSION") { "model: unsupported version $it (this build reads $VERSION)" } }
+                    "features" -> ModelReport.text(value).let { require(it == FEATURE_SET) { "model: feature set \"$it\" is not \"$FEATURE_SET\"" } }
+                }
             }
-            val obj = json as? JsonObject ?: throw IllegalArgumentException("model: expected a JSON object")
-            val schema = JsonFields.string(obj, "schema")
-            require(schema == SCHEMA) { "model: schema must be \"$SCHEMA\", was \"$schema\"" }
-            val version = JsonFields.int(obj, "version")
-            require(version == VERSION) { "model: unsupported version $version (this build reads $VERSION)" }
-            val features = JsonFields.string(obj, "features")
-            require(features == FEATURE_SET) { "model: feature set \"$features\" is not \"$FEATURE_SET\"" }
-            val window = WindowConfig(JsonFields.number(obj, "windowSeconds"), JsonFields.number(obj, "hopSeconds"))
-            val labels = JsonFields.strings(obj, "labels").map { GestureLabel.parse(it) }
-            val forest = RandomForest.fromJson(obj["forest"] ?: throw IllegalArgumentException("model: 'forest' is missing"))
-            return GestureModel(JsonFields.number(obj, "sampleRate"), JsonFields.strings(obj, "channels"), window, labels, forest)
+            val doc = SchemaJson.decode(GestureModelDocument.serializer(), ModelReport.parse(text, MAX_MODEL_CHARS), report)
+            val window = WindowConfig(doc.windowSeconds, doc.hopSeconds)
+            val labels = doc.labels.map { GestureLabel.parse(it) }
+            return GestureModel(doc.sampleRate, doc.channels, window, labels, RandomForest.fromDocument(doc.forest))
         }
     }
 }

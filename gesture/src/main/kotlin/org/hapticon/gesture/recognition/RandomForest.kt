@@ -1,9 +1,10 @@
 package org.hapticon.gesture.recognition
 
-import org.hapticon.core.io.JsonArray
-import org.hapticon.core.io.JsonNumber
 import org.hapticon.core.io.JsonObject
 import org.hapticon.core.io.JsonValue
+import org.hapticon.core.io.SchemaJson
+import org.hapticon.core.io.toJsonElement
+import org.hapticon.core.io.toJsonValue
 import java.util.SplittableRandom
 import kotlin.math.roundToInt
 import kotlin.math.sqrt
@@ -83,13 +84,9 @@ public class RandomForest private constructor(
     }
 
     /** The forest as JSON: counts and, per tree, parallel node arrays (see [fromJson]). */
-    public fun toJson(): JsonObject = JsonObject(
-        linkedMapOf(
-            "featureCount" to JsonNumber(featureCount),
-            "classCount" to JsonNumber(classCount),
-            "trees" to JsonArray(trees.map { it.toJson() }),
-        ),
-    )
+    public fun toJson(): JsonObject = SchemaJson.encodeToElement(ForestDocument.serializer(), toDocument()).toJsonValue() as JsonObject
+
+    internal fun toDocument(): ForestDocument = ForestDocument(featureCount, classCount, trees.map { TreeDocument(it.feature, it.threshold, it.left, it.right) })
 
     public companion object {
         /**
@@ -121,13 +118,16 @@ public class RandomForest private constructor(
          * when a member is missing or malformed or a node points outside its tree.
          */
         public fun fromJson(json: JsonValue): RandomForest {
-            val obj = json as? JsonObject ?: throw IllegalArgumentException("forest: expected an object")
-            val featureCount = JsonFields.int(obj, "featureCount")
-            val classCount = JsonFields.int(obj, "classCount")
-            require(featureCount >= 1 && classCount >= 1) { "forest: featureCount and classCount must be >= 1" }
-            val trees = JsonFields.array(obj, "trees").elements.mapIndexed { i, tree -> Tree.fromJson(tree, featureCount, classCount, "trees[$i]") }
+            // The forest alone is checked with the paths it has inside a model file ("forest", "forest.trees[3]").
+            val checked = SchemaJson.check(json.toJsonElement(), ForestDocument.serializer().descriptor, "forest", ModelReport())
+            return fromDocument(SchemaJson.format.decodeFromJsonElement(ForestDocument.serializer(), checked))
+        }
+
+        internal fun fromDocument(doc: ForestDocument): RandomForest {
+            require(doc.featureCount >= 1 && doc.classCount >= 1) { "forest: featureCount and classCount must be >= 1" }
+            val trees = doc.trees.mapIndexed { i, tree -> Tree.of(tree, doc.featureCount, doc.classCount, "trees[$i]") }
             require(trees.isNotEmpty()) { "forest: no trees" }
-            return RandomForest(featureCount, classCount, trees)
+            return RandomForest(doc.featureCount, doc.classCount, trees)
         }
     }
 }
@@ -146,22 +146,13 @@ private class Tree(val feature: IntArray, val threshold: DoubleArray, val left: 
         }
     }
 
-    fun toJson(): JsonObject = JsonObject(
-        linkedMapOf(
-            "feature" to JsonArray(feature.map { JsonNumber(it) }),
-            "threshold" to JsonArray(threshold.map { JsonNumber(it) }),
-            "left" to JsonArray(left.map { JsonNumber(it) }),
-            "right" to JsonArray(right.map { JsonNumber(it) }),
-        ),
-    )
 
     companion object {
-        fun fromJson(json: JsonValue, featureCount: Int, classCount: Int, where: String): Tree {
-            val obj = json as? JsonObject ?: throw IllegalArgumentException("$where: expected an object")
-            val feature = JsonFields.ints(obj, "feature", where)
-            val threshold = JsonFields.doubles(obj, "threshold", where)
-            val left = JsonFields.ints(obj, "left", where)
-            val right = JsonFields.ints(obj, "right", where)
+        fun of(doc: TreeDocument, featureCount: Int, classCount: Int, where: String): Tree {
+            val feature = doc.feature
+            val threshold = doc.threshold
+            val left = doc.left
+            val right = doc.right
             val n = feature.size
             require(n >= 1 && threshold.size == n && left.size == n && right.size == n) { "$where: node arrays must be non-empty and equally long" }
             for (i in 0 until n) {

@@ -1,12 +1,9 @@
 package org.hapticon.gesture.social
 
-import org.hapticon.core.io.Json
-import org.hapticon.core.io.JsonArray
-import org.hapticon.core.io.JsonException
-import org.hapticon.core.io.JsonNumber
-import org.hapticon.core.io.JsonObject
-import org.hapticon.core.io.JsonString
-import org.hapticon.gesture.recognition.JsonFields
+import kotlinx.serialization.Serializable
+import kotlinx.serialization.json.JsonArray
+import org.hapticon.core.io.SchemaJson
+import org.hapticon.gesture.recognition.ModelReport
 
 /**
  * A trained social-touch classifier: [boost] over the [SocialTouchFeatures] of a whole message, whose classes are
@@ -29,18 +26,12 @@ public class SocialTouchModel(public val labels: List<String>, public val boost:
     /** This model as JSON in schema [SCHEMA] version [VERSION]. */
     public fun encode(): String {
         val stumps = boost.flatStumps()
-        return Json.encode(
-            JsonObject(
-                linkedMapOf(
-                    "schema" to JsonString(SCHEMA),
-                    "version" to JsonNumber(VERSION),
-                    "features" to JsonArray(SocialTouchFeatures.NAMES.map { JsonString(it) }),
-                    "labels" to JsonArray(labels.map { JsonString(it) }),
-                    "feature" to JsonArray(stumps.map { JsonNumber(it.feature) }),
-                    "threshold" to JsonArray(stumps.map { JsonNumber(it.threshold, isIntegral = false) }),
-                    "left" to JsonArray(stumps.map { JsonNumber(it.left, isIntegral = false) }),
-                    "right" to JsonArray(stumps.map { JsonNumber(it.right, isIntegral = false) }),
-                ),
+        return SchemaJson.encode(
+            SocialTouchDocument.serializer(),
+            SocialTouchDocument(
+                SCHEMA, VERSION, SocialTouchFeatures.NAMES, labels,
+                IntArray(stumps.size) { stumps[it].feature }, DoubleArray(stumps.size) { stumps[it].threshold },
+                DoubleArray(stumps.size) { stumps[it].left }, DoubleArray(stumps.size) { stumps[it].right },
             ),
         )
     }
@@ -57,19 +48,21 @@ public class SocialTouchModel(public val labels: List<String>, public val boost:
 
         /** The model [text] describes; [IllegalArgumentException] naming the problem. */
         public fun decode(text: String): SocialTouchModel {
-            val obj = try {
-                Json.decode(text) as? JsonObject
-            } catch (e: JsonException) {
-                throw IllegalArgumentException("model is not valid JSON: ${e.message}")
-            } ?: throw IllegalArgumentException("model: expected a JSON object")
-            require(JsonFields.string(obj, "schema") == SCHEMA) { "model: schema must be \"$SCHEMA\"" }
-            require(JsonFields.int(obj, "version") == VERSION) { "model: unsupported version (this build reads $VERSION)" }
-            require(JsonFields.strings(obj, "features") == SocialTouchFeatures.NAMES) { "model: feature set differs from ${SocialTouchFeatures.NAMES}" }
-            val labels = JsonFields.strings(obj, "labels")
-            val feature = JsonFields.ints(obj, "feature", "model")
-            val threshold = JsonFields.doubles(obj, "threshold", "model")
-            val left = JsonFields.doubles(obj, "left", "model")
-            val right = JsonFields.doubles(obj, "right", "model")
+            val report = ModelReport { member, value ->
+                when (member) {
+                    "schema" -> require(ModelReport.text(value) == SCHEMA) { "model: schema must be \"$SCHEMA\"" }
+                    "version" -> require(ModelReport.text(value) == "$VERSION") { "model: unsupported version (this build reads $VERSION)" }
+                    "features" -> require((value as JsonArray).map { ModelReport.text(it) } == SocialTouchFeatures.NAMES) {
+                        "model: feature set differs from ${SocialTouchFeatures.NAMES}"
+                    }
+                }
+            }
+            val doc = SchemaJson.decode(SocialTouchDocument.serializer(), ModelReport.parse(text), report)
+            val labels = doc.labels
+            val feature = doc.feature
+            val threshold = doc.threshold
+            val left = doc.left
+            val right = doc.right
             require(setOf(feature.size, threshold.size, left.size, right.size).size == 1) { "model: stump arrays differ in length" }
             require(labels.size >= 2) { "model: need at least 2 labels" }
             val stumps = feature.indices.map { Stump(feature[it], threshold[it], left[it], right[it]) }
@@ -77,6 +70,19 @@ public class SocialTouchModel(public val labels: List<String>, public val boost:
         }
     }
 }
+
+/** A social-touch model file, schema `hapticon.social-touch-model`: the boosted stumps as parallel arrays. */
+@Serializable
+internal class SocialTouchDocument(
+    val schema: String,
+    val version: Int,
+    val features: List<String>,
+    val labels: List<String>,
+    val feature: IntArray,
+    val threshold: DoubleArray,
+    val left: DoubleArray,
+    val right: DoubleArray,
+)
 
 /**
  * A contact stream as CSV: header `time_s,intensity,x,y,area`, one frame per line (see [ContactFrame]). Errors are

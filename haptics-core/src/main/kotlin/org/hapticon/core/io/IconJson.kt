@@ -22,20 +22,7 @@ public object IconJson {
     public const val VERSION: Int = 1
 
     /** [icon] as a JSON object with members in schema order. Does not throw. */
-    public fun toJsonValue(icon: HapticIcon): JsonObject = JsonObject(
-        linkedMapOf(
-            "schema" to JsonString(SCHEMA),
-            "version" to JsonNumber(VERSION),
-            "name" to JsonString(icon.name),
-            "attack" to JsonNumber(icon.attack),
-            "sustain" to JsonNumber(icon.sustain),
-            "level" to JsonNumber(icon.level),
-            "release" to JsonNumber(icon.release),
-            "note" to JsonNumber(icon.note),
-            "period" to JsonNumber(icon.period),
-            "count" to JsonNumber(icon.count),
-        ),
-    )
+    public fun toJsonValue(icon: HapticIcon): JsonObject = SchemaJson.encodeToElement(IconDocument.serializer(), document(icon)).toJsonValue() as JsonObject
 
     /**
      * The icon that [value] describes, for example one embedded in a message.
@@ -45,30 +32,13 @@ public object IconJson {
      * or when a member is missing, of the wrong type, not finite, or out of range.
      */
     public fun fromJsonValue(value: JsonValue): HapticIcon {
-        if (value !is JsonObject) throw IconValidationException("icon", "expected an object, got ${snippet(value)}")
-        // Schema and version come first: a newer document may have changed any other member.
-        val schema = value["schema"] ?: fail("schema", "missing; expected \"$SCHEMA\"")
-        if (schema != JsonString(SCHEMA)) fail("schema", "expected \"$SCHEMA\", got ${snippet(schema)}")
-        val version = integer(value, "version") ?: fail("version", "missing")
-        if (version != VERSION.toLong()) {
-            fail("version", "unsupported icon schema version $version (this build reads version $VERSION)")
-        }
-        val count = integer(value, "count") ?: 1L
-        if (count !in 1L..HapticIcon.MAX_COUNT.toLong()) fail("count", "must be in 1..${HapticIcon.MAX_COUNT}, was $count")
-        return HapticIcon(
-            name = string(value, "name") ?: fail("name", "missing"),
-            attack = number(value, "attack") ?: fail("attack", "missing"),
-            sustain = number(value, "sustain") ?: fail("sustain", "missing"),
-            level = number(value, "level") ?: fail("level", "missing"),
-            release = number(value, "release") ?: fail("release", "missing"),
-            note = number(value, "note") ?: fail("note", "missing"),
-            period = number(value, "period") ?: 0.0,
-            count = count.toInt(),
-        )
+        val doc = SchemaJson.decode(IconDocument.serializer(), value.toJsonElement(), IconReport)
+        if (doc.count !in 1L..HapticIcon.MAX_COUNT.toLong()) fail("count", "must be in 1..${HapticIcon.MAX_COUNT}, was ${doc.count}")
+        return HapticIcon(doc.name, doc.attack, doc.sustain, doc.level, doc.release, doc.note, doc.period, doc.count.toInt())
     }
 
     /** [icon] as JSON text: compact when [indent] is empty, else indented. Does not throw for a valid [indent]. */
-    public fun encode(icon: HapticIcon, indent: String = ""): String = Json.encode(toJsonValue(icon), indent)
+    public fun encode(icon: HapticIcon, indent: String = ""): String = SchemaJson.encode(IconDocument.serializer(), document(icon), indent)
 
     /**
      * Parses one icon from [text].
@@ -102,27 +72,9 @@ public object IconJson {
         }
     }
 
-    private fun number(icon: JsonObject, field: String): Double? {
-        val value = icon[field] ?: return null
-        if (value !is JsonNumber) fail(field, "expected a number, got ${snippet(value)}")
-        // JSON has no NaN or infinity, but 1e400 overflows a double to infinity.
-        if (!value.value.isFinite()) fail(field, "expected a finite number, got ${snippet(value)}")
-        return value.value
-    }
-
-    private fun integer(icon: JsonObject, field: String): Long? {
-        val number = number(icon, field) ?: return null
-        // 3.0 is accepted: many writers (JavaScript among them) do not distinguish it from 3.
-        if (number != Math.rint(number)) fail(field, "expected an integer, got ${snippet(icon[field]!!)}")
-        if (Math.abs(number) > 1e15) fail(field, "integer ${snippet(icon[field]!!)} is out of range")
-        return number.toLong()
-    }
-
-    private fun string(icon: JsonObject, field: String): String? {
-        val value = icon[field] ?: return null
-        if (value !is JsonString) fail(field, "expected a string, got ${snippet(value)}")
-        return value.value
-    }
+    private fun document(icon: HapticIcon) = IconDocument(
+        SCHEMA, VERSION.toLong(), icon.name, icon.attack, icon.sustain, icon.level, icon.release, icon.note, icon.period, icon.count.toLong(),
+    )
 
     private fun fail(field: String, message: String): Nothing = throw IconValidationException(field, message)
 }

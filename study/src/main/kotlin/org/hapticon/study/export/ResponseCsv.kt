@@ -35,7 +35,15 @@ public object ResponseCsv {
      * wrong number of fields, a number does not parse, a quote is unterminated, or the text is empty.
      */
     public fun read(csv: String): List<ResponseRow> {
-        val records = Csv.parse(csv)
+        val records = try {
+            Csv.parse(csv, "csv").map { it.line to it.fields }
+        } catch (e: CsvFormatException) {
+            val problem = when (e.kind) {
+                CsvProblem.TEXT_AFTER_QUOTE -> "text after a closing quote"
+                else -> e.problem
+            }
+            throw IllegalArgumentException("line ${e.line}: $problem")
+        }
         require(records.isNotEmpty()) { "empty CSV: expected the header $HEADER" }
         val (headerLine, header) = records[0]
         require(header == COLUMNS) { "line $headerLine: header must be exactly $HEADER" }

@@ -1,15 +1,14 @@
 package org.hapticon.study.export
 
+import kotlinx.serialization.Serializable
 import org.hapticon.core.io.Json
-import org.hapticon.core.io.JsonArray
 import org.hapticon.core.io.JsonException
-import org.hapticon.core.io.JsonNumber
-import org.hapticon.core.io.JsonObject
-import org.hapticon.core.io.JsonString
-import org.hapticon.core.io.JsonValue
-import org.hapticon.study.JsonFields
+import org.hapticon.core.io.SchemaJson
+import org.hapticon.core.io.toJsonElement
+import org.hapticon.study.ProtocolDocument
 import org.hapticon.study.ProtocolException
 import org.hapticon.study.ProtocolJson
+import org.hapticon.study.StudyReport
 import org.hapticon.study.StudyProtocol
 import org.hapticon.study.log.LogEntry
 
@@ -51,18 +50,16 @@ public data class StudyExport(
         public const val MAX_LENGTH: Int = 64 shl 20
 
         /** [export] as indented JSON text. Does not throw. */
-        public fun encode(export: StudyExport, indent: String = "  "): String = Json.encode(
-            JsonObject(
-                linkedMapOf(
-                    "schema" to JsonString(SCHEMA),
-                    "version" to JsonNumber(VERSION),
-                    "protocol" to ProtocolJson.toJsonValue(export.protocol),
-                    "participants" to JsonArray(
-                        export.sessions.map { session ->
-                            JsonObject(linkedMapOf("participant" to JsonString(session.participantId), "entries" to JsonArray(session.entries.map(::entryJson))))
-                        },
-                    ),
-                ),
+        public fun encode(export: StudyExport, indent: String = "  "): String = SchemaJson.encode(
+            ExportDocument.serializer(),
+            ExportDocument(
+                SCHEMA, VERSION.toLong(), ProtocolJson.document(export.protocol),
+                export.sessions.map { session ->
+                    ParticipantDocument(
+                        session.participantId,
+                        session.entries.map { EntryDocument(it.sequence, it.timestampMillis, it.participantId, it.type, it.payload, it.previousHash, it.hash) },
+                    )
+                },
             ),
             indent,
         )
@@ -73,42 +70,40 @@ public data class StudyExport(
          * member or an invalid protocol. Hashes are read as they are; verify them with the log's chain check.
          */
         public fun decode(text: String): StudyExport {
-            val doc = JsonFields.of(Json.decode(text, MAX_LENGTH), "", "export")
-            doc.requireSchema(SCHEMA, VERSION)
+            val report = StudyReport("export", mapOf("" to (SCHEMA to VERSION), "protocol" to (ProtocolJson.SCHEMA to ProtocolJson.VERSION)))
+            val doc = SchemaJson.decode(ExportDocument.serializer(), Json.decode(text, MAX_LENGTH).toJsonElement(), report)
             val protocol = try {
-                ProtocolJson.fromJsonValue(doc.optional("protocol") ?: doc.missing("protocol"))
+                ProtocolJson.protocol(doc.protocol)
             } catch (e: ProtocolException) {
                 throw ProtocolException("protocol.${e.path}", e.message.orEmpty().removePrefix("${e.path}: "))
             }
-            val sessions = doc.objects("participants") { participant ->
+            val sessions = doc.participants.map { participant ->
                 SessionLog(
-                    participantId = participant.string("participant"),
-                    entries = participant.objects("entries") { entry ->
-                        LogEntry(
-                            sequence = entry.long("sequence"),
-                            timestampMillis = entry.long("timestamp"),
-                            participantId = entry.string("participant"),
-                            type = entry.string("type"),
-                            payload = entry.string("payload"),
-                            previousHash = entry.string("previousHash"),
-                            hash = entry.string("hash"),
-                        )
-                    },
+                    participantId = participant.participant,
+                    entries = participant.entries.map { LogEntry(it.sequence, it.timestamp, it.participant, it.type, it.payload, it.previousHash, it.hash) },
                 )
             }
             return StudyExport(protocol, sessions)
         }
-
-        private fun entryJson(entry: LogEntry): JsonValue = JsonObject(
-            linkedMapOf(
-                "sequence" to JsonNumber(entry.sequence),
-                "timestamp" to JsonNumber(entry.timestampMillis),
-                "participant" to JsonString(entry.participantId),
-                "type" to JsonString(entry.type),
-                "payload" to JsonString(entry.payload),
-                "previousHash" to JsonString(entry.previousHash),
-                "hash" to JsonString(entry.hash),
-            ),
-        )
     }
 }
+
+/** A study export document; members in schema order. */
+@Serializable
+internal class ExportDocument(val schema: String, val version: Long, val protocol: ProtocolDocument, val participants: List<ParticipantDocument>)
+
+/** One participant's log in an [ExportDocument]. */
+@Serializable
+internal class ParticipantDocument(val participant: String, val entries: List<EntryDocument>)
+
+/** One [LogEntry]; `payload` is the exact hashed text. */
+@Serializable
+internal class EntryDocument(
+    val sequence: Long,
+    val timestamp: Long,
+    val participant: String,
+    val type: String,
+    val payload: String,
+    val previousHash: String,
+    val hash: String,
+)

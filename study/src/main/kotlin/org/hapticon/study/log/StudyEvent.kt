@@ -1,11 +1,15 @@
 package org.hapticon.study.log
 
-import org.hapticon.core.io.JsonNumber
+import kotlinx.serialization.DeserializationStrategy
+import kotlinx.serialization.Serializable
+import kotlinx.serialization.SerializationStrategy
 import org.hapticon.core.io.JsonObject
-import org.hapticon.core.io.JsonString
 import org.hapticon.core.io.JsonValue
-import org.hapticon.study.JsonFields
+import org.hapticon.core.io.SchemaJson
+import org.hapticon.core.io.toJsonElement
+import org.hapticon.core.io.toJsonValue
 import org.hapticon.study.ProtocolException
+import org.hapticon.study.StudyReport
 
 /**
  * Something that happened in a session. The time is not part of the event: the [LogEntry] that records it carries
@@ -89,51 +93,67 @@ public sealed interface StudyEvent {
         public const val ANSWER: String = "answer"
 
         /** [event]'s payload: its properties as a JSON object, in declaration order. Does not throw. */
-        public fun payload(event: StudyEvent): JsonObject = JsonObject(
-            when (event) {
-                is SessionStarted -> linkedMapOf(
-                    "protocol" to JsonString(event.protocolId), "revision" to JsonNumber(event.revision),
-                    "participantIndex" to JsonNumber(event.participantIndex),
-                    // A string: a 64-bit seed does not survive a JSON number, which is a double.
-                    "seed" to JsonString(event.seed.toString()),
-                )
-                SessionEnded -> linkedMapOf()
-                is TaskStarted -> linkedMapOf("task" to JsonString(event.taskId))
-                is TaskEnded -> linkedMapOf("task" to JsonString(event.taskId))
-                is ExplorationEnded -> linkedMapOf("task" to JsonString(event.taskId))
-                is StimulusShown -> trial(event.taskId, event.stimulusId)
-                is IconPressed -> trial(event.taskId, event.stimulusId)
-                is PlaybackStarted -> trial(event.taskId, event.stimulusId)
-                is PlaybackFinished -> trial(event.taskId, event.stimulusId)
-                is Answer -> trial(event.taskId, event.stimulusId).apply { put("value", JsonNumber(event.value)) }
-            },
-        )
+        public fun payload(event: StudyEvent): JsonObject = when (event) {
+            is SessionStarted -> encode(SessionPayload.serializer(), SessionPayload(event.protocolId, event.revision, event.participantIndex, event.seed.toString()))
+            SessionEnded -> encode(EmptyPayload.serializer(), EmptyPayload())
+            is TaskStarted -> encode(TaskPayload.serializer(), TaskPayload(event.taskId))
+            is TaskEnded -> encode(TaskPayload.serializer(), TaskPayload(event.taskId))
+            is ExplorationEnded -> encode(TaskPayload.serializer(), TaskPayload(event.taskId))
+            is StimulusShown -> encode(TrialPayload.serializer(), TrialPayload(event.taskId, event.stimulusId))
+            is IconPressed -> encode(TrialPayload.serializer(), TrialPayload(event.taskId, event.stimulusId))
+            is PlaybackStarted -> encode(TrialPayload.serializer(), TrialPayload(event.taskId, event.stimulusId))
+            is PlaybackFinished -> encode(TrialPayload.serializer(), TrialPayload(event.taskId, event.stimulusId))
+            is Answer -> encode(AnswerPayload.serializer(), AnswerPayload(event.taskId, event.stimulusId, event.value))
+        }
 
         /**
          * The event of [type] with [payload]. Throws [ProtocolException] (path `payload.MEMBER`)
          * when the payload lacks a member or has one of the wrong type, and [IllegalArgumentException] for an unknown [type].
          */
         public fun of(type: String, payload: JsonValue): StudyEvent {
-            val p = JsonFields.of(payload, "payload", "payload")
+            val element = payload.toJsonElement()
+            fun <T> read(deserializer: DeserializationStrategy<T>): T = SchemaJson.decode(deserializer, element, PAYLOAD_REPORT, "payload")
             return when (type) {
-                SESSION_STARTED -> SessionStarted(
-                    p.string("protocol"), p.int("revision"), p.int("participantIndex"),
-                    p.string("seed").toLongOrNull() ?: throw ProtocolException("payload.seed", "expected a decimal 64-bit integer"),
-                )
-                SESSION_ENDED -> SessionEnded
-                TASK_STARTED -> TaskStarted(p.string("task"))
-                TASK_ENDED -> TaskEnded(p.string("task"))
-                EXPLORATION_ENDED -> ExplorationEnded(p.string("task"))
-                STIMULUS_SHOWN -> StimulusShown(p.string("task"), p.string("stimulus"))
-                ICON_PRESSED -> IconPressed(p.string("task"), p.string("stimulus"))
-                PLAYBACK_STARTED -> PlaybackStarted(p.string("task"), p.string("stimulus"))
-                PLAYBACK_FINISHED -> PlaybackFinished(p.string("task"), p.string("stimulus"))
-                ANSWER -> Answer(p.string("task"), p.string("stimulus"), p.int("value"))
+                SESSION_STARTED -> read(SessionPayload.serializer()).let {
+                    SessionStarted(
+                        it.protocol, it.revision, it.participantIndex,
+                        it.seed.toLongOrNull() ?: throw ProtocolException("payload.seed", "expected a decimal 64-bit integer"),
+                    )
+                }
+                SESSION_ENDED -> SessionEnded.also { read(EmptyPayload.serializer()) }
+                TASK_STARTED -> TaskStarted(read(TaskPayload.serializer()).task)
+                TASK_ENDED -> TaskEnded(read(TaskPayload.serializer()).task)
+                EXPLORATION_ENDED -> ExplorationEnded(read(TaskPayload.serializer()).task)
+                STIMULUS_SHOWN -> read(TrialPayload.serializer()).let { StimulusShown(it.task, it.stimulus) }
+                ICON_PRESSED -> read(TrialPayload.serializer()).let { IconPressed(it.task, it.stimulus) }
+                PLAYBACK_STARTED -> read(TrialPayload.serializer()).let { PlaybackStarted(it.task, it.stimulus) }
+                PLAYBACK_FINISHED -> read(TrialPayload.serializer()).let { PlaybackFinished(it.task, it.stimulus) }
+                ANSWER -> read(AnswerPayload.serializer()).let { Answer(it.task, it.stimulus, it.value) }
                 else -> throw IllegalArgumentException("unknown event type \"${type.take(40)}\"")
             }
         }
 
-        private fun trial(taskId: String, stimulusId: String) =
-            linkedMapOf<String, JsonValue>("task" to JsonString(taskId), "stimulus" to JsonString(stimulusId))
+        private val PAYLOAD_REPORT = StudyReport("payload", emptyMap())
+
+        // Through our writer's JsonValue: the payload text is hashed, so its spelling must not change (LogEntry).
+        private fun <T> encode(serializer: SerializationStrategy<T>, value: T): JsonObject =
+            SchemaJson.encodeToElement(serializer, value).toJsonValue() as JsonObject
     }
 }
+
+// Payloads, members in the order they are written (and hashed). The seed is a string: a 64-bit seed does not
+// survive a JSON number, which is a double.
+@Serializable
+internal class SessionPayload(val protocol: String, val revision: Int, val participantIndex: Int, val seed: String)
+
+@Serializable
+internal class EmptyPayload
+
+@Serializable
+internal class TaskPayload(val task: String)
+
+@Serializable
+internal class TrialPayload(val task: String, val stimulus: String)
+
+@Serializable
+internal class AnswerPayload(val task: String, val stimulus: String, val value: Int)

@@ -1,0 +1,236 @@
+package org.hapticon.core.io
+
+import kotlinx.serialization.DeserializationStrategy
+import kotlinx.serialization.ExperimentalSerializationApi
+import kotlinx.serialization.SerializationStrategy
+import kotlinx.serialization.descriptors.PrimitiveKind
+import kotlinx.serialization.descriptors.SerialDescriptor
+import kotlinx.serialization.descriptors.StructureKind
+import kotlinx.serialization.json.JsonElement
+import kotlinx.serialization.json.JsonPrimitive
+import kotlinx.serialization.json.doubleOrNull
+import kotlinx.serialization.json.Json as KotlinxJson
+import kotlinx.serialization.json.JsonArray as KArray
+import kotlinx.serialization.json.JsonNull as KNull
+import kotlinx.serialization.json.JsonObject as KObject
+
+/**
+ * The bridge from our file and wire formats to kotlinx-serialization: each schema is a `@Serializable` type,
+ * encoded by kotlinx-serialization; decoding goes text → [Json.decode] (the strict reader) → kotlinx
+ * [JsonElement] → [check] against the type's [SerialDescriptor] → `decodeFromJsonElement`.
+ *
+ * Why the strict reader stays in front: kotlinx-serialization's parser keeps the last of duplicate member names
+ * (`JsonTreeReader`: `result[key] = element`), has no nesting or size limit, and reports errors without a
+ * stable offset; our formats refuse duplicates, cap depth and length, and tests name the offset.
+ *
+ * Why [check] comes before kotlinx decoding: every format words its errors itself (`title: missing`,
+ * `model: 'schema' must be a string`), and those messages are part of the format's contract (tests assert them);
+ * kotlinx's own messages are neither stable across versions nor in our words. [check] walks the descriptor once,
+ * so the schema is still declared only once, as the `@Serializable` type.
+ */
+public object SchemaJson {
+    private val formats = HashMap<String, KotlinxJson>()
+
+    /** The kotlinx format of our schemas: defaults written, unknown members ignored, strict otherwise. */
+    public val format: KotlinxJson = KotlinxJson {
+        encodeDefaults = true
+        ignoreUnknownKeys = true
+    }
+
+    /**
+     * [value] as JSON text: compact when [indent] is empty, otherwise one member or element per line (as
+     * [Json.encode]). Throws [IllegalArgumentException] when [indent] holds anything but spaces and tabs.
+     */
+    @OptIn(ExperimentalSerializationApi::class)
+    public fun <T> encode(serializer: SerializationStrategy<T>, value: T, indent: String = ""): String {
+        require(indent.all { it == ' ' || it == '\t' }) { "indent must be spaces or tabs only" }
+        if (indent.isEmpty()) return format.encodeToString(serializer, value)
+        val pretty = synchronized(formats) {
+            formats.getOrPut(indent) {
+                KotlinxJson(format) {
+                    prettyPrint = true
+                    prettyPrintIndent = indent
+                }
+            }
+        }
+        return pretty.encodeToString(serializer, value)
+    }
+
+    /** [value] as a kotlinx tree (members in schema order). */
+    public fun <T> encodeToElement(serializer: SerializationStrategy<T>, value: T): JsonElement =
+        format.encodeToJsonElement(serializer, value)
+
+    /**
+     * Decodes [element] as [deserializer] after [check]ing it; problems go to [report], which throws in the
+     * format's own words. [path] is where [element] sits, for the messages (empty: it is the document).
+     */
+    public fun <T> decode(deserializer: DeserializationStrategy<T>, element: JsonElement, report: SchemaReport, path: String = ""): T =
+        format.decodeFromJsonElement(deserializer, check(element, deserializer.descriptor, path, report))
+
+    /**
+     * Checks [element] against [descriptor] and returns it normalized for kotlinx decoding: whole numbers written
+     * with a fraction (`3.0`, as JavaScript writes them) become integers where the schema wants one, and `null`
+     * members the schema may omit are dropped so their defaults apply. [path] is where [element] sits
+     * (`tasks[2].stimuli`, empty for the document). Throws whatever [report] throws at the first problem.
+     */
+    public fun check(element: JsonElement, descriptor: SerialDescriptor, path: String, report: SchemaReport): JsonElement {
+        if (descriptor.kind != StructureKind.CLASS && descriptor.kind != StructureKind.OBJECT) return element
+        val obj = element as? KObject ?: report.notAnObject(path, element)
+        val out = LinkedHashMap<String, JsonElement>(obj)
+        for (i in 0 until descriptor.elementsCount) {
+            val name = descriptor.getElementName(i)
+            val child = descriptor.getElementDescriptor(i)
+            val value = obj[name]
+            if (value == null || value is KNull) {
+                when {
+                    value != null && child.isNullable -> {}
+                    value != null && !report.nullMeansAbsent -> report.wrongType(path, name, kindOf(child), value)
+                    descriptor.isElementOptional(i) -> out.remove(name)
+                    else -> report.wrongType(path, name, kindOf(child), null)
+                }
+                continue
+            }
+            val checked = member(value, child, path, name, report)
+            report.checked(path, name, checked)
+            out[name] = checked
+        }
+        return KObject(out)
+    }
+
+    private fun member(value: JsonElement, child: SerialDescriptor, path: String, name: String, report: SchemaReport): JsonElement {
+        val at = if (path.isEmpty()) name else "$path.$name"
+        val kind = kindOf(child)
+        return when (kind) {
+            JsonKind.ANY -> value
+            JsonKind.OBJECT -> {
+                if (value !is KObject) report.wrongType(path, name, kind, value)
+                check(value, child, at, report)
+            }
+            JsonKind.ARRAY -> {
+                val array = value as? KArray ?: report.wrongType(path, name, kind, value)
+                val elementDescriptor = child.getElementDescriptor(0)
+                val elementKind = kindOf(elementDescriptor)
+                KArray(
+                    array.mapIndexed { index, element ->
+                        when (elementKind) {
+                            JsonKind.OBJECT -> check(element, elementDescriptor, "$at[$index]", report)
+                            JsonKind.ANY, JsonKind.ARRAY -> element
+                            else -> primitive(element, elementKind) ?: report.wrongElement(path, name, index, elementKind, element)
+                        }
+                    },
+                )
+            }
+            else -> primitive(value, kind) ?: report.wrongType(path, name, kind, value)
+        }
+    }
+
+    /** [value] normalized for [kind], or null when it is not one. */
+    private fun primitive(value: JsonElement, kind: JsonKind): JsonElement? {
+        val p = value as? JsonPrimitive ?: return null
+        if (p is KNull) return null
+        return when (kind) {
+            JsonKind.STRING -> p.takeIf { it.isString }
+            JsonKind.BOOLEAN -> p.takeIf { !it.isString && (it.content == "true" || it.content == "false") }
+            JsonKind.NUMBER -> p.takeIf { !it.isString && it.doubleOrNull?.isFinite() == true }
+            JsonKind.INT, JsonKind.LONG -> {
+                val d = if (p.isString) null else p.doubleOrNull
+                if (d == null || d != Math.rint(d) || Math.abs(d) > MAX_EXACT) return null
+                val limit = if (kind == JsonKind.INT) Int.MAX_VALUE.toDouble() else MAX_EXACT
+                if (d > limit || d < -limit - 1) null else JsonPrimitive(d.toLong())
+            }
+            else -> null
+        }
+    }
+
+    private fun kindOf(descriptor: SerialDescriptor): JsonKind = when (descriptor.kind) {
+        PrimitiveKind.STRING -> JsonKind.STRING
+        PrimitiveKind.BOOLEAN -> JsonKind.BOOLEAN
+        PrimitiveKind.INT, PrimitiveKind.SHORT, PrimitiveKind.BYTE -> JsonKind.INT
+        PrimitiveKind.LONG -> JsonKind.LONG
+        PrimitiveKind.DOUBLE, PrimitiveKind.FLOAT -> JsonKind.NUMBER
+        StructureKind.LIST -> JsonKind.ARRAY
+        StructureKind.CLASS, StructureKind.OBJECT -> JsonKind.OBJECT
+        else -> JsonKind.ANY // JsonElement members, maps, polymorphic: the codec checks them itself
+    }
+
+    private const val MAX_EXACT = 9.007199254740992E15
+}
+
+/** What a schema member holds, as [SchemaJson.check] sees it. */
+public enum class JsonKind {
+    /** A JSON string. */
+    STRING,
+
+    /** A finite JSON number. */
+    NUMBER,
+
+    /** A whole number within the range of `Int` (`3.0` counts). */
+    INT,
+
+    /** A whole number within ±2^53, where doubles are exact (`3.0` counts). */
+    LONG,
+
+    /** `true` or `false`. */
+    BOOLEAN,
+
+    /** A JSON array. */
+    ARRAY,
+
+    /** A JSON object. */
+    OBJECT,
+
+    /** Anything: the codec checks it. */
+    ANY,
+}
+
+/** A format's wording of schema problems; every function throws the format's own exception. */
+public interface SchemaReport {
+    /**
+     * Whether `null` for a member that cannot be null means "absent" (its default applies, or it is reported
+     * missing), as most of our formats read it; false reports it as a wrong type. True by default.
+     */
+    public val nullMeansAbsent: Boolean get() = true
+
+    /** [value], at [path] (empty: the document), should be an object. */
+    public fun notAnObject(path: String, value: JsonElement): Nothing
+
+    /** Member [member] of the object at [path] should be [expected]; [value] is null when it is missing. */
+    public fun wrongType(path: String, member: String, expected: JsonKind, value: JsonElement?): Nothing
+
+    /** Element [index] of array [member] of the object at [path] should be [expected]. */
+    public fun wrongElement(path: String, member: String, index: Int, expected: JsonKind, value: JsonElement): Nothing
+
+    /**
+     * Member [member] of the object at [path] has the right shape ([value], normalized); members are checked in
+     * schema order, so a format checks values that decide how to read the rest (`schema`, `version`) here,
+     * before later members are looked at. Does nothing by default.
+     */
+    public fun checked(path: String, member: String, value: JsonElement) {}
+}
+
+/** [this] kotlinx tree as a [JsonValue], for codecs whose public API still hands out [JsonValue]s. */
+public fun JsonElement.toJsonValue(): JsonValue = when (this) {
+    is KObject -> JsonObject(mapValuesTo(LinkedHashMap()) { it.value.toJsonValue() })
+    is KArray -> JsonArray(map { it.toJsonValue() })
+    KNull -> JsonNull
+    is JsonPrimitive -> when {
+        isString -> JsonString(content)
+        content == "true" -> JsonBoolean(true)
+        content == "false" -> JsonBoolean(false)
+        else -> content.toLongOrNull()?.let { JsonNumber(it) } ?: JsonNumber(content.toDouble(), isIntegral = false)
+    }
+}
+
+/** [this] strictly parsed value as a kotlinx tree; members keep their order. Integral numbers stay integral. */
+public fun JsonValue.toJsonElement(): JsonElement = when (this) {
+    is JsonObject -> KObject(members.mapValuesTo(LinkedHashMap()) { it.value.toJsonElement() })
+    is JsonArray -> KArray(elements.map { it.toJsonElement() })
+    is JsonString -> JsonPrimitive(value)
+    is JsonNumber -> when {
+        !value.isFinite() -> JsonPrimitive(value) // kept so the schema check can name it
+        isIntegral && Math.abs(value) < 9.2E18 -> JsonPrimitive(value.toLong())
+        else -> JsonPrimitive(value)
+    }
+    is JsonBoolean -> JsonPrimitive(value)
+    JsonNull -> KNull
+}
