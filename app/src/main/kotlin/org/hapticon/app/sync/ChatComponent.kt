@@ -84,6 +84,8 @@ class ChatComponent(
             )
             val notifier = MessageNotifier(context) { settings.preferences.value.userName }
             sync.onIncoming = { message, _ -> notifier.show(message) }
+            // Lives as long as the process, like the sync it nudges.
+            NetworkWatcher(context, sync).start()
             val probe: org.hapticon.app.feature.chat.BrokerProbe = { user, broker, password -> probeBroker(settings, sync, user, broker, password) }
             return ChatComponent(repository, RoomIconRepository(db.iconDao()), settings, sync, player, device, probe, notifier)
         }
