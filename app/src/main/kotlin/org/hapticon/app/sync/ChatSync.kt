@@ -205,6 +205,11 @@ class ChatSync(
                 // The listener runs on the messenger's delivery thread, which may block; the message is
                 // acknowledged to the broker only after it is stored, so a crash means redelivery, not loss.
                 messenger.connect(InboxListener { event -> runBlocking { handle(messenger, event) } })
+                // connect returns once connected; the session (and wake, felt, read receipts through it) lives
+                // on until the account changes or the network moves, which cancels it. Ending this block here
+                // would clear `session` under a working connection: replies and composed messages would then
+                // wait for the next reconnection (found by ChatOverBrokerTest's notification reply).
+                kotlinx.coroutines.awaitCancellation()
             } catch (e: Exception) {
                 if (e is kotlinx.coroutines.CancellationException) throw e
                 Log.w(TAG, "connection refused for good: ${e.message}")
