@@ -36,6 +36,15 @@ public interface Messenger {
     public suspend fun disconnect()
 
     /**
+     * Ends the wait before the next reconnection attempt now: the network came back (Android's
+     * connectivity callback says so), so the backoff that protects a down broker from a reconnecting
+     * crowd would only keep the user unreachable. Does nothing while connected, connecting or after
+     * [disconnect]. Returns at once; the attempt runs in the background. The default does nothing, for
+     * messengers that have no waiting attempt to cut short.
+     */
+    public fun reconnectNow() {}
+
+    /**
      * Publishes [message] into [recipient]'s inbox and suspends until the broker has acknowledged it
      * (PUBACK). Throws [MessagingException] when not connected or the publish fails; the message may or may
      * not have reached the broker then, which is why receivers deduplicate. Throws

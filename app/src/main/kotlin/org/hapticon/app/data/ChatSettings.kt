@@ -31,12 +31,17 @@ data class ChatPreferences(
      * ties topics to it), or null for a broker run with `--allow-anonymous`.
      */
     val brokerPassword: String? = null,
+    /**
+     * The keyboard's Enter key sends the message instead of starting a new line (Signal's "Enter key sends",
+     * Google Messages' "Press Enter to send"); off by default in both, so here too.
+     */
+    val enterSends: Boolean = false,
 ) {
     /** Omits the password, so that it never reaches a log. */
     override fun toString(): String =
         "ChatPreferences(userName=$userName, brokerUrl=$brokerUrl, autoPlay=$autoPlay, rendererOverride=$rendererOverride, " +
             "dynamicColor=$dynamicColor, sendFeltReceipts=$sendFeltReceipts, stayReachable=$stayReachable, " +
-            "reachableAfterBoot=$reachableAfterBoot, archived=$archived, brokerPassword=${if (brokerPassword == null) "none" else "***"})"
+            "reachableAfterBoot=$reachableAfterBoot, archived=$archived, enterSends=$enterSends, brokerPassword=${if (brokerPassword == null) "none" else "***"})"
 }
 
 /** Reads and writes [ChatPreferences]. */
@@ -69,6 +74,7 @@ class SharedPreferencesChatSettings(context: Context) : ChatSettingsRepository {
             .putBoolean(STAY_REACHABLE, next.stayReachable)
             .putBoolean(AFTER_BOOT, next.reachableAfterBoot)
             .putStringSet(ARCHIVED, next.archived)
+            .putBoolean(ENTER_SENDS, next.enterSends)
             .apply()
         credentials.edit().putString(PASSWORD, next.brokerPassword).apply()
         state.value = next
@@ -85,6 +91,7 @@ class SharedPreferencesChatSettings(context: Context) : ChatSettingsRepository {
         stayReachable = prefs.getBoolean(STAY_REACHABLE, false),
         reachableAfterBoot = prefs.getBoolean(AFTER_BOOT, false),
         archived = prefs.getStringSet(ARCHIVED, null)?.toSet() ?: emptySet(),
+        enterSends = prefs.getBoolean(ENTER_SENDS, false),
     )
 
     private companion object {
@@ -98,6 +105,7 @@ class SharedPreferencesChatSettings(context: Context) : ChatSettingsRepository {
         const val STAY_REACHABLE = "stay_reachable"
         const val AFTER_BOOT = "reachable_after_boot"
         const val ARCHIVED = "archived"
+        const val ENTER_SENDS = "enter_sends"
     }
 }
 

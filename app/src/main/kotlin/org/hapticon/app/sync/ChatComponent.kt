@@ -84,6 +84,8 @@ class ChatComponent(
             )
             val notifier = MessageNotifier(context) { settings.preferences.value.userName }
             sync.onIncoming = { message, _ -> notifier.show(message) }
+            // Lives as long as the process, like the sync it nudges.
+            NetworkWatcher(context, sync).start()
             val probe: org.hapticon.app.feature.chat.BrokerProbe = { user, broker, password -> probeBroker(settings, sync, user, broker, password) }
             return ChatComponent(repository, RoomIconRepository(db.iconDao()), settings, sync, player, device, probe, notifier)
         }
@@ -109,17 +111,18 @@ class ChatComponent(
             user: String,
             broker: BrokerAddress,
             password: String?,
+            timeoutMillis: Long = PROBE_TIMEOUT_MILLIS,
         ): String? {
             val previous = settings.preferences.value
             val target = ChatSync.SessionTarget(user, broker.toString(), password)
             settings.update { it.copy(userName = user, brokerUrl = broker.toString(), brokerPassword = password) }
-            val state = kotlinx.coroutines.withTimeoutOrNull(PROBE_TIMEOUT_MILLIS) { sync.settledStateOf(target) }
+            val state = kotlinx.coroutines.withTimeoutOrNull(timeoutMillis) { sync.settledStateOf(target) }
             if (state == org.hapticon.messaging.ConnectionState.Connected) return null
             val lastFailure = (sync.connection.value as? org.hapticon.messaging.ConnectionState.Connecting)?.lastFailure
             settings.update { previous }
             return when (state) {
                 is org.hapticon.messaging.ConnectionState.Failed -> "The broker at $broker refused the connection: ${state.reason}"
-                else -> "No answer from $broker within ${PROBE_TIMEOUT_MILLIS / 1000} s. Is `hapticon broker --host ADDRESS` running, " +
+                else -> "No answer from $broker within ${timeoutMillis / 1000} s. Is `hapticon broker --host ADDRESS` running, " +
                     "and is this phone on the same network?" + (lastFailure?.let { " ($it)" } ?: "")
             }
         }

@@ -79,6 +79,11 @@ class ChatSync(
     private val openConversations = MutableStateFlow<Set<String>>(emptySet())
     private val hands = java.util.concurrent.ConcurrentHashMap<String, NetworkPartnerHand>()
     private var job: Job? = null
+    // Bumped to end the session and start a fresh one for the same account (the network changed under it).
+    private val restarts = MutableStateFlow(0)
+    // The default network the phone last reported; null before the first report.
+    @Volatile
+    private var network: String? = null
 
     @Volatile
     private var session: Session? = null
@@ -105,9 +110,8 @@ class ChatSync(
     fun start() {
         if (job != null) return
         job = scope.launch {
-            settings.preferences
-                .map { Triple(it.userName, it.brokerUrl, it.brokerPassword) }
-                .distinctUntilChanged()
+            val accounts = settings.preferences.map { Triple(it.userName, it.brokerUrl, it.brokerPassword) }.distinctUntilChanged()
+            kotlinx.coroutines.flow.combine(accounts, restarts) { account, _ -> account }
                 .collectLatest { (user, broker, password) ->
                     if (user == null) return@collectLatest
                     // Set before the session starts, so a waiter never takes the previous session's state for this one's.
@@ -138,6 +142,28 @@ class ChatSync(
         }
     }
 
+    /**
+     * The phone's default network is now [network] (an id that differs between networks; Android's
+     * connectivity callback, see [NetworkWatcher]). A session waiting out its reconnection backoff tries
+     * at once: the user is reachable again within a round trip, not after up to 30 s. A session that
+     * reads Connected but was made over another network is started afresh: its socket went with the old
+     * network, and keep-alive would notice only after up to 1.5 × 30 s. The session is persistent
+     * (cleanSession=false) and the outbox keeps what is unsent, so a restart loses nothing.
+     */
+    fun networkAvailable(network: String) {
+        val previous = this.network
+        this.network = network
+        val messenger = session?.messenger ?: return
+        when (messenger.state.value) {
+            is ConnectionState.Connecting -> messenger.reconnectNow()
+            ConnectionState.Connected -> if (previous != null && previous != network) {
+                Log.i(TAG, "default network changed: starting a fresh session")
+                restarts.update { it + 1 }
+            }
+            else -> Unit
+        }
+    }
+
     /** Makes the outbox sender look now, after something was composed. */
     fun wake() {
         session?.sender?.wake()
@@ -146,6 +172,11 @@ class ChatSync(
     /** The conversation with [peer] is on screen: marks its messages read (with read receipts) until [closeConversation]. */
     fun openConversation(peer: String) {
         openConversations.update { it + peer }
+        scope.launch { markReadAndReceipt(peer) }
+    }
+
+    /** Marks [peer]'s messages read with read receipts without opening the conversation (the notification's "Mark as read"). */
+    fun markRead(peer: String) {
         scope.launch { markReadAndReceipt(peer) }
     }
 
@@ -174,6 +205,11 @@ class ChatSync(
                 // The listener runs on the messenger's delivery thread, which may block; the message is
                 // acknowledged to the broker only after it is stored, so a crash means redelivery, not loss.
                 messenger.connect(InboxListener { event -> runBlocking { handle(messenger, event) } })
+                // connect returns once connected; the session (and wake, felt, read receipts through it) lives
+                // on until the account changes or the network moves, which cancels it. Ending this block here
+                // would clear `session` under a working connection: replies and composed messages would then
+                // wait for the next reconnection (found by ChatOverBrokerTest's notification reply).
+                kotlinx.coroutines.awaitCancellation()
             } catch (e: Exception) {
                 if (e is kotlinx.coroutines.CancellationException) throw e
                 Log.w(TAG, "connection refused for good: ${e.message}")

@@ -27,7 +27,7 @@ import org.hapticon.messaging.ChatMessage
 /**
  * Announces arriving messages the way Android messengers do: one `MessagingStyle` notification per
  * conversation, on that conversation's own channel (so the user can silence one person), showing the
- * text and the icon's glyph and name, with "Reply" (inline) and "Feel again" actions. Each message is
+ * text and the icon's glyph and name, with "Reply" (inline), "Mark as read" and "Feel again" actions. Each message is
  * shown once: [show] ignores an id it already showed. Nothing is posted without the notification
  * permission (Android 13+) or with notifications off for the app.
  */
@@ -81,6 +81,7 @@ class MessageNotifier(private val context: Context, private val selfName: () -> 
             .setAutoCancel(true)
             .setContentIntent(openIntent(peer))
             .addAction(replyAction(peer))
+            .addAction(markReadAction(peer))
         latest.icon?.let { builder.addAction(feelAction(peer, latest.id, it.name)) }
         manager.notify(peer, NOTIFICATION_ID, builder.build())
     }
@@ -131,6 +132,19 @@ class MessageNotifier(private val context: Context, private val selfName: () -> 
             .build()
     }
 
+    // As in Google Messages and Signal: read without opening the app; the sender gets the read receipts.
+    private fun markReadAction(peer: String): NotificationCompat.Action {
+        val intent = PendingIntent.getBroadcast(
+            context, peer.hashCode(),
+            Intent(context, NotificationActionReceiver::class.java).setAction(ACTION_MARK_READ).putExtra(EXTRA_PEER, peer),
+            PendingIntent.FLAG_UPDATE_CURRENT or PendingIntent.FLAG_IMMUTABLE,
+        )
+        return NotificationCompat.Action.Builder(R.drawable.ic_notification, "Mark as read", intent)
+            .setSemanticAction(NotificationCompat.Action.SEMANTIC_ACTION_MARK_AS_READ)
+            .setShowsUserInterface(false)
+            .build()
+    }
+
     private fun feelAction(peer: String, messageId: String, iconName: String): NotificationCompat.Action {
         val intent = PendingIntent.getBroadcast(
             context, messageId.hashCode(),
@@ -147,6 +161,7 @@ class MessageNotifier(private val context: Context, private val selfName: () -> 
         const val ACTION_OPEN_CHAT: String = "org.hapticon.app.OPEN_CHAT"
         const val ACTION_REPLY: String = "org.hapticon.app.REPLY"
         const val ACTION_FEEL: String = "org.hapticon.app.FEEL_AGAIN"
+        const val ACTION_MARK_READ: String = "org.hapticon.app.MARK_READ"
         const val EXTRA_PEER: String = "peer"
         const val EXTRA_MESSAGE: String = "message"
         const val KEY_REPLY: String = "reply"
@@ -156,7 +171,8 @@ class MessageNotifier(private val context: Context, private val selfName: () -> 
 }
 
 /**
- * The notification's actions: "Reply" stores the typed text as an own message (the outbox sends it,
+ * The notification's actions: "Mark as read" marks the conversation read and sends the read receipts
+ * (kept for later while offline); "Reply" stores the typed text as an own message (the outbox sends it,
  * so a reply typed offline is not lost) and "Feel again" plays the message's icon through the normal
  * player and sends the felt receipt. Both run in the background without opening the app.
  */
@@ -175,6 +191,10 @@ class NotificationActionReceiver : BroadcastReceiver() {
                             chat.repository.send(user, peer, text)
                             chat.sync.wake()
                         }
+                        chat.notifier?.clear(peer)
+                    }
+                    MessageNotifier.ACTION_MARK_READ -> {
+                        chat.sync.markRead(peer)
                         chat.notifier?.clear(peer)
                     }
                     MessageNotifier.ACTION_FEEL -> {

@@ -117,4 +117,15 @@ class ChatsScreenshotTest : ScreenshotTest() {
             SettingsActions(), version = "0.1",
         )
     }
+
+    @Test
+    fun settings_notificationsRefused_saysWhatStillWorksAndHowToAllow() = screen("chats-settings-notifications-off") {
+        SettingsScreen(
+            SettingsUiState(
+                ChatPreferences(userName = "alice", brokerUrl = "tcp://192.168.1.20:1883", autoPlay = true, stayReachable = true),
+                listOf(RendererKind.AMPLITUDE_WAVEFORM, RendererKind.ON_OFF), "connected", notificationsAllowed = false,
+            ),
+            SettingsActions(), version = "0.1",
+        )
+    }
 }

@@ -23,10 +23,24 @@ class BrokerProcess(private val data: File, val port: Int) : AutoCloseable {
             .redirectErrorStream(true)
             .start()
         process = p
-        val ready = p.inputStream.bufferedReader().lineSequence().firstOrNull { it.startsWith(READY) || it.startsWith(FAILED) }
+        val lines = p.inputStream.bufferedReader()
+        val ready = lines.lineSequence().firstOrNull { it.startsWith(READY) || it.startsWith(FAILED) }
         check(ready?.startsWith(READY) == true) { "broker process did not start: $ready" }
-        // Keep draining its output so it never blocks on a full pipe.
-        Thread { runCatching { p.inputStream.copyTo(java.io.OutputStream.nullOutputStream()) } }.apply { isDaemon = true }.start()
+        // Keep draining its output so it never blocks on a full pipe; answers to [sessions] go to the queue.
+        Thread { runCatching { lines.forEachLine { if (it.startsWith(SESSIONS)) answers.put(it) } } }.apply { isDaemon = true }.start()
+    }
+
+    private val answers = java.util.concurrent.LinkedBlockingQueue<String>()
+
+    /** The sessions the broker holds, client id to connected ([EmbeddedBroker.sessions], asked over the child's stdin). */
+    fun sessions(): Map<String, Boolean> {
+        val p = checkNotNull(process) { "the broker process is not running" }
+        answers.clear()
+        p.outputStream.write("sessions\n".toByteArray())
+        p.outputStream.flush()
+        val answer = checkNotNull(answers.poll(15, TimeUnit.SECONDS)) { "the broker process did not answer" }
+        return answer.removePrefix(SESSIONS).trim().split(',').filter { it.isNotEmpty() }
+            .associate { entry -> entry.substringBefore('=') to entry.substringAfter('=').toBoolean() }
     }
 
     fun stop() {
@@ -46,6 +60,7 @@ class BrokerProcess(private val data: File, val port: Int) : AutoCloseable {
     companion object {
         private const val READY = "BROKER READY"
         private const val FAILED = "BROKER FAILED"
+        private const val SESSIONS = "SESSIONS"
 
         /** The users the broker knows; each logs in with the password `<user>-secret`. */
         val USERS: List<String> = listOf("alice", "bob", "carol")
@@ -70,6 +85,13 @@ class BrokerProcess(private val data: File, val port: Int) : AutoCloseable {
             Runtime.getRuntime().addShutdownHook(Thread { broker.stop() })
             println(READY)
             System.out.flush()
+            // One command: "sessions", answered with "SESSIONS id=connected,...". End of input: run until killed.
+            System.`in`.bufferedReader().forEachLine { command ->
+                if (command == "sessions") {
+                    println(SESSIONS + " " + broker.sessions().entries.joinToString(",") { "${it.key}=${it.value}" })
+                    System.out.flush()
+                }
+            }
             Thread.currentThread().join()
         }
     }

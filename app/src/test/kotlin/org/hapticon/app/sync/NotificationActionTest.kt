@@ -57,6 +57,22 @@ class NotificationActionTest {
     }
 
     @Test
+    fun markAsRead_withoutOpeningTheApp_readAndTheReadReceiptKeptForTheSender() {
+        chat.settings.update { it.copy(userName = "alice") }
+        val message = ChatMessage("0b7e7c1e-3f7b-4a57-9d3e-2f1c5a6b7c8e", "bob", 1_767_225_600_000, "are you there?")
+        runBlocking { chat.repository.receive(message) }
+        assertEquals(1, runBlocking { chat.repository.conversations().first() }.single().unread)
+
+        broadcast(Intent(MessageNotifier.ACTION_MARK_READ).putExtra(MessageNotifier.EXTRA_PEER, "bob"))
+
+        awaitTrue("read") { chat.repository.conversations().first().single().unread == 0 }
+        // No broker in this test: the read receipt waits in Room for the next connection.
+        awaitTrue("the owed receipt") { chat.repository.pendingReceipts().isNotEmpty() }
+        val owed = runBlocking { chat.repository.pendingReceipts() }.single()
+        assertEquals(listOf("bob", message.id, "READ"), listOf(owed.peer, owed.receipt.messageId, owed.receipt.state.name))
+    }
+
+    @Test
     fun feelAgain_playsTheMessagesIconThroughThePlayer() {
         val vibrator = app.getSystemService(Vibrator::class.java)
         shadowOf(vibrator).setHasAmplitudeControl(true)

@@ -134,7 +134,7 @@ class ReachableDeliveryTest {
         assertEquals(listOf("〰 knock · feel this"), lines())
         val posted = shadowOf(notifications).getNotification("bob", MessageNotifier.NOTIFICATION_ID)
         assertEquals("chat-bob", posted.channelId)
-        assertEquals(listOf("Reply", "Feel knock again"), posted.actions.map { it.title.toString() })
+        assertEquals(listOf("Reply", "Mark as read", "Feel knock again"), posted.actions.map { it.title.toString() })
         // Autoplay felt it through the normal renderer: the knock's exact amplitude steps.
         assertEquals(RecordedVibration(listOf(10L, 10L, 250L, 10L, 10L, 250L, 10L, 10L), listOf(175, 111, 0, 175, 111, 0, 175, 111)), lastVibration(vibrator))
         awaitTrue("felt receipt") { receipts(ReceiptState.FELT) == listOf(first.id) }

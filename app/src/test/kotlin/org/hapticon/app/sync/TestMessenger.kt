@@ -47,6 +47,14 @@ class TestMessenger(override val user: String) : Messenger {
         connection.value = state
     }
 
+    /** How often [reconnectNow] was called. */
+    @Volatile
+    var nudges = 0
+
+    override fun reconnectNow() {
+        nudges++
+    }
+
     override suspend fun disconnect() {
         connection.value = ConnectionState.Disconnected
     }

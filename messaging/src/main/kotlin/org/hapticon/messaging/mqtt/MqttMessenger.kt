@@ -33,8 +33,10 @@ import org.hapticon.messaging.Messenger
 import org.hapticon.messaging.Receipt
 import org.hapticon.messaging.Topics
 import java.nio.charset.StandardCharsets
+import java.util.concurrent.CompletableFuture
 import java.util.concurrent.ExecutorService
 import java.util.concurrent.Executors
+import java.util.concurrent.ScheduledExecutorService
 import java.util.concurrent.TimeUnit
 import java.util.concurrent.atomic.AtomicBoolean
 import java.util.logging.Level
@@ -60,6 +62,8 @@ public class MqttMessenger(private val settings: MqttSettings) : Messenger {
     @Volatile private var closing = false
     @Volatile private var client: Mqtt3AsyncClient? = null
     @Volatile private var subscribedOnce = false
+    // Completes when the next reconnection attempt may start: after the backoff delay, or at once on reconnectNow.
+    @Volatile private var nextAttempt: CompletableFuture<Unit>? = null
     private val inboxTopic = Topics.inboxFilter(settings.user)
 
     // One thread, so events reach the listener in arrival order, and a blocking listener stalls only the
@@ -102,7 +106,14 @@ public class MqttMessenger(private val settings: MqttSettings) : Messenger {
             }
         }
         if (mutableState.value !is ConnectionState.Failed) mutableState.value = ConnectionState.Disconnected
+        // Releases a waiting attempt; the client, now disconnected, does not start it.
+        nextAttempt?.complete(Unit)
         delivery.shutdown()
+    }
+
+    override fun reconnectNow() {
+        val waiting = nextAttempt ?: return
+        if (!closing && waiting.complete(Unit)) LOG.log(Level.FINE, "${settings.clientId}: reconnecting now, the network is back")
     }
 
     override suspend fun send(recipient: String, message: ChatMessage) {
@@ -202,8 +213,13 @@ public class MqttMessenger(private val settings: MqttSettings) : Messenger {
             mutableState.value = ConnectionState.Failed(refusal)
             return
         }
+        // HiveMQ waits for the delay, then for the future (MqttDisconnectUtil): the whole backoff goes into the
+        // future, so that reconnectNow can end it early.
         val delay = settings.reconnectPolicy.delayMillis(context.reconnector.attempts + 1)
-        context.reconnector.reconnect(true).delay(delay, TimeUnit.MILLISECONDS)
+        val attempt = CompletableFuture<Unit>()
+        nextAttempt = attempt
+        BACKOFF.schedule({ attempt.complete(Unit) }, delay, TimeUnit.MILLISECONDS)
+        context.reconnector.reconnectWhen(attempt) { _, _ -> }.delay(0, TimeUnit.MILLISECONDS)
         mutableState.value = ConnectionState.Connecting(lastFailure = describeFailure(context.cause))
     }
 
@@ -226,6 +242,11 @@ public class MqttMessenger(private val settings: MqttSettings) : Messenger {
 
     internal companion object {
         val LOG: Logger = Logger.getLogger(MqttMessenger::class.java.name)
+
+        // One timer for every messenger's backoff; a daemon, so it never keeps a JVM alive.
+        private val BACKOFF: ScheduledExecutorService = Executors.newSingleThreadScheduledExecutor { task ->
+            Thread(task, "hapticon-mqtt-backoff").apply { isDaemon = true }
+        }
 
         /** Why the broker will never accept this client as configured, or null when trying again may help. */
         fun permanentRefusal(cause: Throwable): String? {

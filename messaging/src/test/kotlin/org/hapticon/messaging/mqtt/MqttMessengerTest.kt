@@ -256,6 +256,43 @@ class MqttMessengerTest {
     }
 
     @Test
+    fun reconnectNow_brokerBackDuringALongBackoff_connectsAtOnceNotAfterTheBackoff() = runBlocking {
+        val twoMinutes = org.hapticon.messaging.RetryPolicy(initialDelayMillis = 120_000, maxDelayMillis = 120_000, jitter = 0.0)
+        val slow = MqttMessenger(MqttSettings(fixture.address, alice, SharedBroker.register(alice), reconnectPolicy = twoMinutes))
+        try {
+            slow.connect(CollectingListener())
+            fixture.broker.stop()
+            withTimeout(10_000) { slow.state.first { it is ConnectionState.Connecting } }
+            fixture.broker.start()
+            // Left alone, it waits out its two minutes although the broker is back.
+            Thread.sleep(1_500)
+            assertTrue(slow.state.value is ConnectionState.Connecting)
+
+            val nudged = System.nanoTime()
+            slow.reconnectNow()
+            withTimeout(15_000) { slow.state.first { it == ConnectionState.Connected } }
+            val seconds = (System.nanoTime() - nudged) / 1e9
+            assertTrue("connected ${"%.1f".format(seconds)} s after the nudge", seconds < 15.0)
+        } finally {
+            slow.disconnect()
+        }
+    }
+
+    @Test
+    fun disconnect_whileWaitingToReconnect_staysDisconnectedEvenWhenNudged() = runBlocking {
+        val twoMinutes = org.hapticon.messaging.RetryPolicy(initialDelayMillis = 120_000, maxDelayMillis = 120_000, jitter = 0.0)
+        val slow = MqttMessenger(MqttSettings(fixture.address, bob, SharedBroker.register(bob), reconnectPolicy = twoMinutes))
+        slow.connect(CollectingListener())
+        fixture.broker.stop()
+        withTimeout(10_000) { slow.state.first { it is ConnectionState.Connecting } }
+        slow.disconnect()
+        fixture.broker.start()
+        slow.reconnectNow()
+        Thread.sleep(1_500)
+        assertEquals(ConnectionState.Disconnected, slow.state.value)
+    }
+
+    @Test
     fun send_whenNotConnected_throwsMessagingException() {
         val aliceMessenger = fixture.messenger(alice)
         val e = assertThrows(MessagingException::class.java) { runBlocking { aliceMessenger.send(bob, hello) } }

@@ -78,7 +78,8 @@ data class ChatListActions(
  * The conversations, like Google Messages' list: avatar, name, a one-line preview (with the icon's
  * glyph when the last message carried one), relative time and an unread badge; a "New chat" button;
  * swipe a row away (or long-press it) to archive or delete, with an undo snackbar. Deletion waits for
- * the snackbar: undone, nothing was deleted.
+ * the snackbar: undone, nothing was deleted; leaving the list while it shows deletes at once (the undo
+ * went with the snackbar). Archiving takes effect at once and undo brings the chat back.
  */
 @OptIn(ExperimentalMaterial3Api::class)
 @Composable
@@ -112,6 +113,14 @@ fun ChatListScreen(
             if (result != SnackbarResult.ActionPerformed) actions.onDelete(peer)
             hidden = hidden - peer
         }
+    }
+
+    // Leaving the list (opening a chat, Settings, the app closing) ends the snackbar's coroutine: what is
+    // still waiting for its undo is deleted then, as Google Messages does, rather than silently kept.
+    val pendingDeletes by androidx.compose.runtime.rememberUpdatedState(hidden)
+    val commitDelete by androidx.compose.runtime.rememberUpdatedState(actions.onDelete)
+    androidx.compose.runtime.DisposableEffect(Unit) {
+        onDispose { pendingDeletes.forEach { commitDelete(it) } }
     }
 
     val visible = uiState.conversations.filter { it.peer !in hidden && (it.peer in uiState.archived) == showArchived }

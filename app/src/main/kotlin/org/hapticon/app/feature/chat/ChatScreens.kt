@@ -121,6 +121,17 @@ fun ChatListRoute(component: ChatComponent, onOpen: (String) -> Unit, onSettings
     )
     val uiState by viewModel.uiState.collectAsStateWithLifecycle()
     val check by viewModel.accountCheck.collectAsStateWithLifecycle()
+    // Android 13+: notifications are asked for when they are first needed, right after the account is saved.
+    // Refused, messages still arrive and show in the list; Settings says so and links to Android's page.
+    val notificationPermission = rememberLauncherForActivityResult(ActivityResultContracts.RequestPermission()) { }
+    val context = LocalContext.current
+    LaunchedEffect(check) {
+        if (check != AccountCheck.Saved) return@LaunchedEffect
+        viewModel.accountCheck.value = AccountCheck.Idle
+        if (Build.VERSION.SDK_INT >= 33 &&
+            ContextCompat.checkSelfPermission(context, Manifest.permission.POST_NOTIFICATIONS) != PackageManager.PERMISSION_GRANTED
+        ) notificationPermission.launch(Manifest.permission.POST_NOTIFICATIONS)
+    }
     when (val state = uiState) {
         ChatListUiState.Loading -> ChatLoading()
         is ChatListUiState.NeedsAccount -> FirstLaunchScreen(state.brokerUrl, check, viewModel::saveAccount)
@@ -159,6 +170,7 @@ fun ConversationRoute(component: ChatComponent, peer: String, onBack: () -> Unit
         onDispose { component.sync.closeConversation(peer) }
     }
     val uiState by viewModel.uiState.collectAsStateWithLifecycle()
+    val prefs by component.settings.preferences.collectAsStateWithLifecycle()
     ConversationScreen(
         uiState,
         ConversationActions(
@@ -166,6 +178,7 @@ fun ConversationRoute(component: ChatComponent, peer: String, onBack: () -> Unit
             onSelectSticker = viewModel::selectSticker, onFeel = viewModel::feel, onPreview = viewModel::play,
             onRetry = viewModel::retry, onEditIcon = onEditIcon,
         ),
+        enterSends = prefs.enterSends,
     )
 }
 
@@ -176,6 +189,12 @@ private fun SettingsRoute(component: ChatComponent, onBack: () -> Unit, onOpenSt
     val prefs by component.settings.preferences.collectAsStateWithLifecycle()
     val connection by component.sync.connection.collectAsStateWithLifecycle()
     var notice by remember { mutableStateOf<String?>(null) }
+    // Asked again on every return to the screen: the user may have changed it in Android's settings.
+    var notificationsAllowed by remember { mutableStateOf(component.notifier?.canNotify() ?: true) }
+    androidx.lifecycle.compose.LifecycleResumeEffect(Unit) {
+        notificationsAllowed = component.notifier?.canNotify() ?: true
+        onPauseOrDispose { }
+    }
     val setReachable = { on: Boolean ->
         component.settings.update { it.copy(stayReachable = on, reachableAfterBoot = on && it.reachableAfterBoot) }
         if (on) ReachableService.start(context) else ReachableService.stop(context)
@@ -185,6 +204,7 @@ private fun SettingsRoute(component: ChatComponent, onBack: () -> Unit, onOpenSt
     // foreground service run without it), and the settings say that nothing will be announced.
     val permission = rememberLauncherForActivityResult(ActivityResultContracts.RequestPermission()) { granted ->
         setReachable(true)
+        notificationsAllowed = component.notifier?.canNotify() ?: granted
         if (!granted) notice = "Notifications are off: messages still arrive, but nothing announces them."
     }
     val export = rememberLauncherForActivityResult(ActivityResultContracts.CreateDocument("application/json")) { uri ->
@@ -207,6 +227,7 @@ private fun SettingsRoute(component: ChatComponent, onBack: () -> Unit, onOpenSt
             ConnectionState.Disconnected -> "not connected"
             is ConnectionState.Failed -> "refused: ${c.reason}"
         },
+        notificationsAllowed = notificationsAllowed,
     )
     SettingsScreen(
         state,
@@ -255,6 +276,11 @@ private fun SettingsRoute(component: ChatComponent, onBack: () -> Unit, onOpenSt
                 val needsPermission = on && Build.VERSION.SDK_INT >= 33 &&
                     ContextCompat.checkSelfPermission(context, Manifest.permission.POST_NOTIFICATIONS) != PackageManager.PERMISSION_GRANTED
                 if (needsPermission) permission.launch(Manifest.permission.POST_NOTIFICATIONS) else setReachable(on)
+            },
+            onAllowNotifications = {
+                val page = Intent(android.provider.Settings.ACTION_APP_NOTIFICATION_SETTINGS)
+                    .putExtra(android.provider.Settings.EXTRA_APP_PACKAGE, context.packageName)
+                runCatching { context.startActivity(page) }.onFailure { notice = "Open Android's settings, Apps, Hapticon, Notifications." }
             },
             onExport = { export.launch("hapticon-chats.json") },
             onOpenStudy = onOpenStudy,

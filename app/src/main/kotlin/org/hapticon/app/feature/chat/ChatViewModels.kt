@@ -78,7 +78,7 @@ class ChatListViewModel(
                 accountCheck.value = AccountCheck.Failed(problem)
             } else {
                 settings.update { it.copy(userName = name, brokerUrl = address.toString(), brokerPassword = secret) }
-                accountCheck.value = AccountCheck.Idle
+                accountCheck.value = AccountCheck.Saved
             }
         }
     }
@@ -98,8 +98,15 @@ class ChatListViewModel(
 
     fun unarchive(peer: String) = settings.update { it.copy(archived = it.archived - peer) }
 
+    /**
+     * Deletes [peer]'s conversation. Called as the chat list is left (a pending undo expires), possibly
+     * while this ViewModel is being cleared: ATOMIC start and NonCancellable let the deletion run even in
+     * a cancelled scope, so a chat the user saw deleted never comes back.
+     */
     fun delete(peer: String) {
-        viewModelScope.launch { repository.deleteConversation(peer) }
+        viewModelScope.launch(start = kotlinx.coroutines.CoroutineStart.ATOMIC) {
+            kotlinx.coroutines.withContext(kotlinx.coroutines.NonCancellable) { repository.deleteConversation(peer) }
+        }
         settings.update { it.copy(archived = it.archived - peer) }
     }
 }
@@ -109,6 +116,9 @@ sealed interface AccountCheck {
     data object Idle : AccountCheck
     data class Testing(val broker: String) : AccountCheck
     data class Failed(val reason: String) : AccountCheck
+
+    /** The account was just saved: from now on messages can arrive, so this is when to ask for notifications. */
+    data object Saved : AccountCheck
 }
 
 /**
@@ -223,4 +233,10 @@ class ConversationViewModel(
 }
 
 /** The settings screen's values, read from the chat settings. */
-data class SettingsUiState(val preferences: ChatPreferences, val renderers: List<RendererKind>, val connection: String)
+data class SettingsUiState(
+    val preferences: ChatPreferences,
+    val renderers: List<RendererKind>,
+    val connection: String,
+    /** False when Android will not show this app's notifications (permission refused, or turned off). */
+    val notificationsAllowed: Boolean = true,
+)

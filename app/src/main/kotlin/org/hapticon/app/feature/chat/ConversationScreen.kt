@@ -66,6 +66,16 @@ import androidx.compose.ui.semantics.contentDescription
 import androidx.compose.ui.semantics.semantics
 import androidx.compose.ui.semantics.stateDescription
 import androidx.compose.ui.platform.testTag
+import androidx.compose.foundation.text.KeyboardActions
+import androidx.compose.foundation.text.KeyboardOptions
+import androidx.compose.ui.input.key.Key
+import androidx.compose.ui.input.key.KeyEventType
+import androidx.compose.ui.input.key.isShiftPressed
+import androidx.compose.ui.input.key.key
+import androidx.compose.ui.input.key.onPreviewKeyEvent
+import androidx.compose.ui.input.key.type
+import androidx.compose.ui.text.input.ImeAction
+import androidx.compose.ui.text.input.KeyboardCapitalization
 import androidx.compose.ui.unit.dp
 import kotlinx.coroutines.launch
 import org.hapticon.app.data.database.MessageState
@@ -104,6 +114,8 @@ fun ConversationScreen(
     actions: ConversationActions,
     clock: ChatClock = remember { ChatClock() },
     nowMillis: Long = System.currentTimeMillis(),
+    /** The keyboard's Enter sends (the user's "Enter key sends" setting); otherwise it starts a new line. */
+    enterSends: Boolean = false,
 ) {
     val title = (uiState as? ConversationUiState.Success)?.peer ?: ""
     Scaffold(
@@ -123,7 +135,7 @@ fun ConversationScreen(
             ConversationUiState.Loading -> Box(Modifier.fillMaxSize().padding(padding), Alignment.Center) { CircularProgressIndicator() }
             is ConversationUiState.Success -> Column(Modifier.fillMaxSize().padding(padding).imePadding()) {
                 MessageList(uiState, actions, clock, nowMillis, Modifier.weight(1f).fillMaxWidth())
-                Composer(uiState, actions)
+                Composer(uiState, actions, enterSends)
             }
         }
     }
@@ -284,8 +296,11 @@ fun stateLabel(state: MessageState): String = when (state) {
 
 @OptIn(ExperimentalFoundationApi::class)
 @Composable
-private fun Composer(uiState: ConversationUiState.Success, actions: ConversationActions) {
+private fun Composer(uiState: ConversationUiState.Success, actions: ConversationActions, enterSends: Boolean) {
     var text by rememberSaveable { mutableStateOf("") }
+    // The send button and, when the user chose so, the keyboard's Enter: the field keeps the focus (and the
+    // keyboard stays up) for the next message, as in Google Messages.
+    val send = { actions.onSend(text); text = "" }
     Surface(color = MaterialTheme.colorScheme.surfaceContainer) {
         Column(Modifier.fillMaxWidth().padding(horizontal = 8.dp, vertical = 6.dp), verticalArrangement = Arrangement.spacedBy(4.dp)) {
             val iconRow = rememberLazyListState()
@@ -333,10 +348,24 @@ private fun Composer(uiState: ConversationUiState.Success, actions: Conversation
             Row(verticalAlignment = Alignment.CenterVertically) {
                 OutlinedTextField(
                     text, { text = it }, placeholder = { Text("Message") }, shape = RoundedCornerShape(24.dp),
-                    maxLines = 4, modifier = Modifier.weight(1f).semantics { contentDescription = "Message" },
+                    maxLines = 4,
+                    // Sentences start with a capital; the IME's action key is Send or, by default, a new line.
+                    keyboardOptions = KeyboardOptions(
+                        capitalization = KeyboardCapitalization.Sentences,
+                        imeAction = if (enterSends) ImeAction.Send else ImeAction.Default,
+                    ),
+                    keyboardActions = KeyboardActions(onSend = { send() }),
+                    modifier = Modifier.weight(1f).semantics { contentDescription = "Message" }
+                        // A hardware keyboard's Enter sends too when chosen; Shift+Enter still starts a new line.
+                        .onPreviewKeyEvent { event ->
+                            val enter = event.key == Key.Enter || event.key == Key.NumPadEnter
+                            if (!enterSends || !enter || event.isShiftPressed) return@onPreviewKeyEvent false
+                            if (event.type == KeyEventType.KeyDown) send()
+                            true
+                        },
                 )
                 FilledIconButton(
-                    onClick = { actions.onSend(text); text = "" },
+                    onClick = send,
                     modifier = Modifier.padding(start = 8.dp).size(48.dp),
                 ) { Icon(HapticonIcons.Send, contentDescription = "Send") }
             }

@@ -97,7 +97,7 @@ fun FirstLaunchScreen(prefilledBroker: String, check: AccountCheck, onSave: (Str
                 CircularProgressIndicator(Modifier.size(20.dp), strokeWidth = 2.dp)
                 Text("Connecting to ${check.broker}…", Modifier.padding(start = 12.dp))
             }
-            AccountCheck.Idle -> Unit
+            AccountCheck.Idle, AccountCheck.Saved -> Unit
         }
         Button(onClick = { onSave(name, broker, password) }, enabled = !testing, modifier = Modifier.fillMaxWidth()) { Text("Test connection and start") }
     }

@@ -46,6 +46,8 @@ data class SettingsActions(
     val onUserName: (String) -> String? = { null },
     /** Turns "Stay reachable" on or off (on may ask for the notification permission first). */
     val onStayReachable: (Boolean) -> Unit = {},
+    /** Opens Android's notification settings of this app (after a refusal Android no longer asks). */
+    val onAllowNotifications: () -> Unit = {},
     val onExport: () -> Unit = {},
     val onOpenStudy: () -> Unit = {},
 )
@@ -107,6 +109,17 @@ fun SettingsScreen(
             TextButton(onClick = actions.onOpenStudy) { Text("Open Study") }
 
             Section("Reachable")
+            if (!uiState.notificationsAllowed) {
+                androidx.compose.material3.Surface(color = MaterialTheme.colorScheme.errorContainer, shape = MaterialTheme.shapes.medium) {
+                    Column(Modifier.fillMaxWidth().padding(12.dp)) {
+                        Text(
+                            NOTIFICATIONS_OFF, style = MaterialTheme.typography.bodyMedium,
+                            color = MaterialTheme.colorScheme.onErrorContainer,
+                        )
+                        TextButton(onClick = actions.onAllowNotifications) { Text("Allow notifications") }
+                    }
+                }
+            }
             SwitchRow("Stay reachable when the app is closed", prefs.stayReachable, actions.onStayReachable)
             Text(
                 "Keeps the broker connection open with an ongoing notification, so icons reach you in your pocket.",
@@ -116,6 +129,9 @@ fun SettingsScreen(
                 "Also after the phone restarts", prefs.reachableAfterBoot, enabled = prefs.stayReachable,
                 onCheckedChange = { on -> actions.update { it.copy(reachableAfterBoot = on) } },
             )
+
+            Section("Typing")
+            SwitchRow("Enter key sends", prefs.enterSends, onCheckedChange = { on -> actions.update { it.copy(enterSends = on) } })
 
             Section("Appearance")
             SwitchRow("Colours from the wallpaper (Android 12+)", prefs.dynamicColor, onCheckedChange = { on -> actions.update { it.copy(dynamicColor = on) } })
@@ -168,3 +184,7 @@ private fun EditableField(label: String, value: String, onSave: (String) -> Stri
         }
     }
 }
+
+/** What Settings says while Android shows no notifications of this app. */
+const val NOTIFICATIONS_OFF: String =
+    "Notifications are off. Messages still arrive and wait in Chats with their unread count, but nothing announces them."

@@ -1,5 +1,7 @@
 package org.hapticon.app.feature.chat
 
+import androidx.compose.runtime.getValue
+import androidx.compose.runtime.setValue
 import androidx.compose.ui.test.assertIsDisplayed
 import androidx.compose.ui.test.junit4.createComposeRule
 import androidx.compose.ui.test.longClick
@@ -120,6 +122,44 @@ class ChatListScreenTest {
         compose.mainClock.advanceTimeBy(10_000)
         compose.waitForIdle()
         assertEquals(listOf("bob"), deleted)
+    }
+
+    private var onList by androidx.compose.runtime.mutableStateOf(true)
+
+    /** The list with bob and carol, or (once [onList] is false) another screen; bob deleted from the long-press menu. */
+    private fun deleteBobOnALeavableList(deleted: MutableList<String>) {
+        val state = ChatListUiState.Success("alice", listOf(ConversationSummary("bob", "hi", now, 0), ConversationSummary("carol", "yo", now, 0)))
+        compose.setContent {
+            if (onList) ChatListScreen(state, ChatListActions(onDelete = { deleted += it }), clock, now) else androidx.compose.material3.Text("Settings")
+        }
+        compose.onNodeWithText("bob").performTouchInput { longClick() }
+        compose.onNodeWithText("Delete").performClick()
+        compose.onNodeWithText("Chat with bob deleted").assertIsDisplayed()
+    }
+
+    @Test
+    fun delete_thenLeavingTheListBeforeTheSnackbarEnds_deletesAtOnceAndOnlyOnce() {
+        val deleted = mutableListOf<String>()
+        deleteBobOnALeavableList(deleted)
+        assertEquals(emptyList<String>(), deleted)
+
+        onList = false // e.g. Settings opened while the snackbar shows
+        compose.waitForIdle()
+        assertEquals(listOf("bob"), deleted)
+        compose.mainClock.advanceTimeBy(10_000)
+        compose.waitForIdle()
+        assertEquals(listOf("bob"), deleted)
+    }
+
+    @Test
+    fun delete_undoneThenLeaving_deletesNothing() {
+        val deleted = mutableListOf<String>()
+        deleteBobOnALeavableList(deleted)
+        compose.onNodeWithText("Undo").performClick()
+        compose.waitForIdle()
+        onList = false
+        compose.waitForIdle()
+        assertEquals(emptyList<String>(), deleted)
     }
 
     @Test

@@ -131,6 +131,22 @@ public class EmbeddedBroker(
         running.close()
     }
 
+    /**
+     * The sessions the broker holds now, client id to whether its client is connected, sorted by id:
+     * persistent sessions (cleanSession=false) stay after their client left, clean ones end with the
+     * connection. For checking that a client leaves nothing behind (HiveMQ's extension
+     * `ClientService.iterateAllClients`, which lists connected clients and stored sessions alike).
+     * Throws [IllegalStateException] when the broker is not running.
+     */
+    public fun sessions(): Map<String, Boolean> {
+        check(broker != null) { "the broker is not running" }
+        val found = java.util.concurrent.ConcurrentHashMap<String, Boolean>()
+        com.hivemq.extension.sdk.api.services.Services.clientService()
+            .iterateAllClients { _, session -> found[session.clientIdentifier] = session.isConnected }
+            .get(10, java.util.concurrent.TimeUnit.SECONDS)
+        return found.toSortedMap()
+    }
+
     /** [stop], then [start] on the same port; blocks for about 6 s. Throws as [start] does. */
     public fun restart() {
         stop()

@@ -89,17 +89,48 @@ class EmbeddedBrokerTest {
     }
 
     @Test
+    fun sessions_cleanOnesEndWithTheConnectionPersistentOnesStay() {
+        val broker = broker()
+        broker.start()
+        val loopback = InetAddress.getByName(EmbeddedBroker.HOST)
+        assertEquals(emptyMap<String, Boolean>(), broker.sessions())
+
+        assertArrayEquals(CONNACK_ACCEPTED, connect(loopback, broker.port, clean = true))
+        assertEquals(emptyMap<String, Boolean>(), awaitSessions(broker) { it.isEmpty() })
+        assertArrayEquals(CONNACK_BAD_PASSWORD, connect(loopback, broker.port, password = "guess", clean = false))
+        assertEquals(emptyMap<String, Boolean>(), broker.sessions())
+
+        assertArrayEquals(CONNACK_ACCEPTED, connect(loopback, broker.port, clean = false))
+        assertEquals(mapOf("alice" to false), awaitSessions(broker) { it == mapOf("alice" to false) })
+    }
+
+    /** The broker's sessions once [done] holds (a closed socket takes the broker a moment to notice), or the last seen. */
+    private fun awaitSessions(broker: EmbeddedBroker, done: (Map<String, Boolean>) -> Boolean): Map<String, Boolean> {
+        val until = System.nanoTime() + 5_000_000_000L
+        var seen = broker.sessions()
+        while (!done(seen) && System.nanoTime() < until) {
+            Thread.sleep(20)
+            seen = broker.sessions()
+        }
+        return seen
+    }
+
+    @Test
     fun port_beforeTheFirstStartWithPortZero_throws() {
         assertThrows(IllegalStateException::class.java) { broker().port }
         assertEquals(1883, EmbeddedBroker(temp.root, 1883, BrokerSecurity.AllowAnonymous).port)
     }
 
-    /** Sends an MQTT 3.1.1 CONNECT (clean session) as [user] (none when null) and returns the 4-byte reply. */
-    private fun connect(host: InetAddress, port: Int, user: String? = "alice", password: String = "alice-secret", clientId: String = user ?: "t"): ByteArray =
+    /** Sends an MQTT 3.1.1 CONNECT ([clean] session or not) as [user] (none when null) and returns the 4-byte reply. */
+    private fun connect(
+        host: InetAddress, port: Int, user: String? = "alice", password: String = "alice-secret", clientId: String = user ?: "t",
+        clean: Boolean = true,
+    ): ByteArray =
         Socket(host, port).use { socket ->
             socket.soTimeout = 10_000
             fun field(text: String) = byteArrayOf(0, text.length.toByte()) + text.toByteArray()
-            val flags = if (user == null) 0x02 else 0xC2 // clean session (+ user name and password)
+            // clean session (+ user name and password)
+            val flags = (if (user == null) 0x00 else 0xC0) or (if (clean) 0x02 else 0x00)
             val variable = field("MQTT") + byteArrayOf(4, flags.toByte(), 0, 30) // level 4 = 3.1.1, keep-alive 30 s
             val payload = field(clientId) + (if (user == null) ByteArray(0) else field(user) + field(password))
             val body = variable + payload
