@@ -8,17 +8,24 @@ import org.hapticon.app.playback.Playback
 import org.hapticon.app.playback.PlaybackCapabilities
 import org.hapticon.messaging.RendererKind
 import org.hapticon.core.HapticIcon
+import org.hapticon.core.pattern.HapticPattern
 import org.hapticon.core.render.Fidelity
 
 /** A [HapticPlayer] that records the icons it was asked to play and "plays" each for [durationMillis]. */
 class TestHapticPlayer(private val durationMillis: Long = 560) : HapticPlayer {
     val played = ArrayList<HapticIcon>()
+    val playedPatterns = ArrayList<HapticPattern>()
     var stops = 0
 
     override val capabilities = PlaybackCapabilities(hasVibrator = true, hasAmplitudeControl = true, apiLevel = 35)
 
     override fun play(icon: HapticIcon): Playback {
         played += icon
+        return Playback.Playing(RendererKind.AMPLITUDE_WAVEFORM, durationMillis, Fidelity(0.0, 0.0, "exact"))
+    }
+
+    override fun play(pattern: HapticPattern): Playback {
+        playedPatterns += pattern
         return Playback.Playing(RendererKind.AMPLITUDE_WAVEFORM, durationMillis, Fidelity(0.0, 0.0, "exact"))
     }
 

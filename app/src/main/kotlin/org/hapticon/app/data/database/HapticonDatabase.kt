@@ -20,13 +20,15 @@ import org.hapticon.app.study.StudySessionEntity
 @Database(
     entities = [
         ConversationEntity::class, MessageEntity::class, OutboxEntity::class, IconEntity::class, PendingReceiptEntity::class,
-        StudyProtocolEntity::class, StudySessionEntity::class, StudyEventEntity::class,
+        PatternEntity::class, StudyProtocolEntity::class, StudySessionEntity::class, StudyEventEntity::class,
     ],
-    // v2: messages.read_at (when a message was read); v3: pending_receipts; v4: the user-study tables.
-    // All automatic migrations (new tables and a nullable column).
-    version = 4,
+    // v2: messages.read_at (when a message was read); v3: pending_receipts; v4: the user-study tables;
+    // v5: patterns and messages.pattern_json. All automatic migrations (new tables and nullable columns).
+    version = 5,
     exportSchema = true,
-    autoMigrations = [AutoMigration(from = 1, to = 2), AutoMigration(from = 2, to = 3), AutoMigration(from = 3, to = 4)],
+    autoMigrations = [
+        AutoMigration(from = 1, to = 2), AutoMigration(from = 2, to = 3), AutoMigration(from = 3, to = 4), AutoMigration(from = 4, to = 5),
+    ],
 )
 abstract class HapticonDatabase : RoomDatabase() {
     abstract fun conversationDao(): ConversationDao
@@ -34,6 +36,7 @@ abstract class HapticonDatabase : RoomDatabase() {
     abstract fun outboxDao(): OutboxDao
     abstract fun iconDao(): IconDao
     abstract fun pendingReceiptDao(): PendingReceiptDao
+    abstract fun patternDao(): PatternDao
     abstract fun studyProtocolDao(): StudyProtocolDao
     abstract fun studySessionDao(): StudySessionDao
     abstract fun studyEventDao(): StudyEventDao
