@@ -41,10 +41,15 @@ fun runConvert(args: List<String>, console: Console) {
 }
 
 /** Renders [pattern] into the WAV [file] and returns the summary line. */
-fun writeWav(pattern: HapticPattern, file: File, rate: Int, encoding: WavEncoding, mapping: FrequencyMapping = FrequencyMapping.DEFAULT): String {
+/** Throws [UsageException] unless [pattern] can be sampled at [rate]: a supported rate, every carrier below Nyquist. */
+fun checkRenderable(pattern: HapticPattern, rate: Int, mapping: FrequencyMapping = FrequencyMapping.DEFAULT) {
     if (rate !in 8_000..192_000) throw UsageException("--rate must be in 8000..192000 Hz, was $rate")
     val highest = (pattern.frequency.map { it.hertz } + mapping.maxHz).max()
     if (highest >= rate / 2.0) throw UsageException(String.format(Locale.ROOT, "cannot render %s at %d Hz: it reaches %.1f Hz, at or above Nyquist", pattern.name, rate, highest))
+}
+
+fun writeWav(pattern: HapticPattern, file: File, rate: Int, encoding: WavEncoding, mapping: FrequencyMapping = FrequencyMapping.DEFAULT): String {
+    checkRenderable(pattern, rate, mapping)
     val stream = pattern.signal(mapping).stream(rate)
     OutputFiles.write(file) { WavWriter.write(stream, it, encoding) }
     return String.format(Locale.ROOT, "wrote %s: %s, %d samples, %.3f s at %d Hz, %s", file, pattern.name, stream.totalSamples,
