@@ -63,15 +63,7 @@ object PatternPlot {
         val (image, g) = PlotStyle.canvas(WIDTH, HEIGHT)
         try {
             Axes.draw(g, top, Ticks.between(-1.0, 1.0, maxTicks = 5), "amplitude")
-            g.clip = java.awt.Rectangle(top.left, top.top, top.width + 1, top.height + 1)
-            g.stroke = PlotStyle.THIN
-            g.color = PlotStyle.WAVEFORM
-            waveform.draw(g, top)
-            g.stroke = PlotStyle.CURVE
-            g.color = PlotStyle.ENVELOPE
-            envelope.draw(g, top)
-            envelope.draw(g, top, scale = -1.0)
-            g.clip = null
+            drawEnvelopeOverWaveform(g, top, waveform, envelope)
 
             Axes.draw(g, bottom, Ticks.between(low, high, maxTicks = 5), "frequency (Hz)")
             g.clip = java.awt.Rectangle(bottom.left, bottom.top, bottom.width + 1, bottom.height + 1)
