@@ -7,8 +7,6 @@ import androidx.compose.material3.MaterialTheme
 import androidx.compose.runtime.Composable
 import androidx.compose.runtime.remember
 import androidx.compose.ui.Modifier
-import androidx.compose.ui.graphics.Path
-import androidx.compose.ui.graphics.drawscope.Fill
 import androidx.compose.ui.graphics.drawscope.Stroke
 import androidx.compose.ui.semantics.contentDescription
 import androidx.compose.ui.semantics.semantics
@@ -36,27 +34,8 @@ fun PatternThumbnail(pattern: HapticPattern, modifier: Modifier = Modifier, show
             .height(48.dp)
             .semantics { contentDescription = "Envelope and pitch of ${pattern.name}" },
     ) {
-        val stepX = size.width / (PATTERN_POINTS - 1)
-        val y = { v: Float -> size.height * (1f - v.coerceIn(0f, 1f)) }
-        val edge = Path().apply {
-            moveTo(0f, y(curves.amplitude[0]))
-            for (i in 1 until PATTERN_POINTS) lineTo(i * stepX, y(curves.amplitude[i]))
-        }
-        val area = Path().apply {
-            addPath(edge)
-            lineTo(size.width, size.height)
-            lineTo(0f, size.height)
-            close()
-        }
-        drawPath(area, fill, style = Fill)
-        drawPath(edge, line, style = Stroke(width = 2.dp.toPx()))
-        if (showFrequency) {
-            val frequency = Path().apply {
-                moveTo(0f, y(curves.pitch[0]))
-                for (i in 1 until PATTERN_POINTS) lineTo(i * stepX, y(curves.pitch[i]))
-            }
-            drawPath(frequency, pitch, style = Stroke(width = 1.5.dp.toPx()))
-        }
+        drawFilledCurve(curves.amplitude, line, fill)
+        if (showFrequency) drawPath(curvePath(curves.pitch), pitch, style = Stroke(width = 1.5.dp.toPx()))
     }
 }
 

@@ -1,24 +1,9 @@
 package org.hapticon.app.feature.icons
 
-import androidx.compose.foundation.layout.Arrangement
-import androidx.compose.foundation.layout.Column
-import androidx.compose.foundation.layout.Row
-import androidx.compose.foundation.layout.fillMaxSize
 import androidx.compose.foundation.layout.fillMaxWidth
 import androidx.compose.foundation.layout.height
-import androidx.compose.foundation.layout.padding
-import androidx.compose.foundation.rememberScrollState
-import androidx.compose.foundation.verticalScroll
-import androidx.compose.material3.Button
-import androidx.compose.material3.ExperimentalMaterial3Api
-import androidx.compose.material3.Icon
-import androidx.compose.material3.IconButton
 import androidx.compose.material3.MaterialTheme
-import androidx.compose.material3.OutlinedButton
-import androidx.compose.material3.OutlinedTextField
-import androidx.compose.material3.Scaffold
 import androidx.compose.material3.Text
-import androidx.compose.material3.TopAppBar
 import androidx.compose.runtime.Composable
 import androidx.compose.runtime.getValue
 import androidx.compose.ui.Modifier
@@ -36,9 +21,11 @@ import kotlinx.coroutines.flow.map
 import kotlinx.coroutines.flow.stateIn
 import kotlinx.coroutines.launch
 import org.hapticon.app.data.RoomPatternRepository
-import org.hapticon.app.designsystem.HapticonIcons
 import org.hapticon.app.playback.HapticPlayer
+import org.hapticon.app.ui.EditorScaffold
 import org.hapticon.app.ui.PatternThumbnail
+import org.hapticon.app.ui.PlayAndSave
+import org.hapticon.app.ui.ValidatedField
 import org.hapticon.core.pattern.HapticPattern
 import org.hapticon.core.pattern.PatternException
 import org.hapticon.core.pattern.edited
@@ -113,7 +100,7 @@ class PatternEditorViewModel(
                 // A result that breaks a pattern rule (the 30 s cap, say) is the time scale's doing; frequencies the pitch's.
                 val field = PatternEditField.entries.firstOrNull { it.key == e.field }
                     ?: if (e.field.startsWith("frequency")) PatternEditField.SEMITONES else PatternEditField.TIME_SCALE
-                PatternEditorUiState(original, fields, null, mapOf(field to (e.message ?: "Not valid")), null)
+                PatternEditorUiState(original, fields, null, mapOf(field to (e.message ?: "Not valid").removePrefix("${e.field}: ")), null)
             }
         }
     }
@@ -130,7 +117,6 @@ fun PatternEditorRoute(pattern: HapticPattern, repository: RoomPatternRepository
 }
 
 /** The original and the edited pattern plotted, the edits with their validation messages, how this phone plays it, play and save. */
-@OptIn(ExperimentalMaterial3Api::class)
 @Composable
 fun PatternEditorScreen(
     uiState: PatternEditorUiState,
@@ -139,44 +125,20 @@ fun PatternEditorScreen(
     onSave: () -> Unit,
     onBack: () -> Unit,
 ) {
-    Scaffold(
-        topBar = {
-            TopAppBar(
-                title = { Text("Edit ${uiState.original.name}") },
-                navigationIcon = { IconButton(onClick = onBack) { Icon(HapticonIcons.ArrowBack, contentDescription = "Close the editor") } },
-            )
-        },
-    ) { padding ->
-        Column(
-            Modifier.fillMaxSize().padding(padding).padding(16.dp).verticalScroll(rememberScrollState()),
-            verticalArrangement = Arrangement.spacedBy(8.dp),
-        ) {
-            Text("Original: ${describe(uiState.original, null)}", style = MaterialTheme.typography.bodySmall)
-            PatternThumbnail(uiState.original, Modifier.fillMaxWidth().height(64.dp))
-            val preview = uiState.preview
-            if (preview != null) {
-                Text("Edited: ${describe(preview, null)}", style = MaterialTheme.typography.bodySmall)
-                PatternThumbnail(preview, Modifier.fillMaxWidth().height(96.dp))
-                uiState.playedAs?.let { Text("This phone: $it", style = MaterialTheme.typography.labelMedium) }
-            } else {
-                Text("Fix the fields below to see the edited pattern", style = MaterialTheme.typography.bodySmall)
-            }
-            for (field in PatternEditField.entries) {
-                val error = uiState.errors[field]
-                OutlinedTextField(
-                    value = uiState.fields[field].orEmpty(),
-                    onValueChange = { onChange(field, it) },
-                    label = { Text(field.label) },
-                    isError = error != null,
-                    supportingText = error?.let { { Text(it) } },
-                    singleLine = true,
-                    modifier = Modifier.fillMaxWidth(),
-                )
-            }
-            Row(horizontalArrangement = Arrangement.spacedBy(12.dp)) {
-                OutlinedButton(onClick = onPlay, enabled = preview != null) { Text("Play") }
-                Button(onClick = onSave, enabled = preview != null) { Text("Save") }
-            }
+    EditorScaffold("Edit ${uiState.original.name}", onBack) {
+        Text("Original: ${describe(uiState.original, null)}", style = MaterialTheme.typography.bodySmall)
+        PatternThumbnail(uiState.original, Modifier.fillMaxWidth().height(64.dp))
+        val preview = uiState.preview
+        if (preview != null) {
+            Text("Edited: ${describe(preview, null)}", style = MaterialTheme.typography.bodySmall)
+            PatternThumbnail(preview, Modifier.fillMaxWidth().height(96.dp))
+            uiState.playedAs?.let { Text("This phone: $it", style = MaterialTheme.typography.labelMedium) }
+        } else {
+            Text("Fix the fields below to see the edited pattern", style = MaterialTheme.typography.bodySmall)
         }
+        for (field in PatternEditField.entries) {
+            ValidatedField(uiState.fields[field].orEmpty(), field.label, uiState.errors[field]) { onChange(field, it) }
+        }
+        PlayAndSave(preview != null, onPlay, onSave)
     }
 }
