@@ -60,7 +60,12 @@ class AppContainer(
     val study: StudyComponent? = null,
     /** Gesture recording, recognition and their files; null in containers built without it. */
     val gestures: GestureComponent? = null,
+    /** The user's haptic patterns (imported AHAP / `.haptic` / pattern JSON); null in containers built without it. */
+    val patterns: org.hapticon.app.data.RoomPatternRepository? = null,
 ) {
+    /** A pattern file shared to or opened with Hapticon, waiting for the Icons screen to import it. */
+    val pendingPatternFile: kotlinx.coroutines.flow.MutableStateFlow<android.net.Uri?> = kotlinx.coroutines.flow.MutableStateFlow(null)
+
     companion object {
         /** The production graph, with [usbDevices] and [vibration] replaceable for tests. */
         fun create(
@@ -88,6 +93,7 @@ class AppContainer(
                 chat = chat,
                 study = StudyComponent.create(context, db),
                 gestures = GestureComponent.create(context, hub) { grains.currentConfig },
+                patterns = org.hapticon.app.data.RoomPatternRepository(db.patternDao()),
             )
         }
     }

@@ -58,10 +58,20 @@ class MainActivity : ComponentActivity() {
                 container.usbDevices.refresh()
                 destination = TopLevelDestination.SENSORS
             }
+            // A pattern file opened with Hapticon (content or file URI): the Icons screen imports it.
+            Intent.ACTION_VIEW if intent.data?.scheme in PATTERN_SCHEMES -> {
+                container.pendingPatternFile.value = intent.data
+                destination = TopLevelDestination.ICONS
+            }
             // An invite link: the Chats screen checks and applies it (and says why not, for a bad one).
             Intent.ACTION_VIEW -> intent.dataString?.let { link ->
                 container.chat?.pendingInvite?.value = link
                 destination = TopLevelDestination.CHATS
+            }
+            // A pattern file shared to Hapticon from another app's share sheet.
+            Intent.ACTION_SEND -> sharedStream(intent)?.let { uri ->
+                container.pendingPatternFile.value = uri
+                destination = TopLevelDestination.ICONS
             }
             MessageNotifier.ACTION_OPEN_CHAT -> {
                 container.chat?.pendingConversation?.value = intent.getStringExtra(MessageNotifier.EXTRA_PEER)
@@ -70,7 +80,16 @@ class MainActivity : ComponentActivity() {
         }
     }
 
+    private fun sharedStream(intent: Intent): android.net.Uri? =
+        if (android.os.Build.VERSION.SDK_INT >= 33) {
+            intent.getParcelableExtra(Intent.EXTRA_STREAM, android.net.Uri::class.java)
+        } else {
+            @Suppress("DEPRECATION")
+            intent.getParcelableExtra(Intent.EXTRA_STREAM)
+        }
+
     private companion object {
         const val KEY_DESTINATION = "destination"
+        val PATTERN_SCHEMES = setOf("content", "file")
     }
 }

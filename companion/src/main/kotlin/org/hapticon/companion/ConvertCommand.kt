@@ -1,5 +1,7 @@
 package org.hapticon.companion
 
+import org.hapticon.companion.cli.writeWav
+import org.hapticon.companion.cli.PatternSource
 import org.hapticon.companion.cli.Arguments
 import org.hapticon.companion.cli.Console
 import org.hapticon.companion.cli.DEFAULT_SAMPLE_RATE
@@ -45,17 +47,6 @@ fun runConvert(args: List<String>, console: Console) {
     }
     notes.forEach { console.err.println("hapticon: note: $it") }
     console.out.println(summary)
-}
-
-/** Renders [pattern] into the WAV [file] and returns the summary line. */
-fun writeWav(pattern: HapticPattern, file: File, rate: Int, encoding: WavEncoding, mapping: FrequencyMapping = FrequencyMapping.DEFAULT): String {
-    if (rate !in 8_000..192_000) throw UsageException("--rate must be in 8000..192000 Hz, was $rate")
-    val highest = (pattern.frequency.map { it.hertz } + mapping.maxHz).max()
-    if (highest >= rate / 2.0) throw UsageException(String.format(Locale.ROOT, "cannot render %s at %d Hz: it reaches %.1f Hz, at or above Nyquist", pattern.name, rate, highest))
-    val stream = pattern.signal(mapping).stream(rate)
-    OutputFiles.write(file) { WavWriter.write(stream, it, encoding) }
-    return String.format(Locale.ROOT, "wrote %s: %s, %d samples, %.3f s at %d Hz, %s", file, pattern.name, stream.totalSamples,
-        stream.totalSamples.toDouble() / rate, rate, encoding.cliName())
 }
 
 private fun parseRange(text: String): FrequencyMapping {

@@ -1,5 +1,7 @@
 package org.hapticon.companion
 
+import org.hapticon.companion.cli.writeWav
+import org.hapticon.companion.cli.PatternSource
 import org.hapticon.companion.cli.Arguments
 import org.hapticon.companion.cli.AudioSettings
 import org.hapticon.companion.cli.Console

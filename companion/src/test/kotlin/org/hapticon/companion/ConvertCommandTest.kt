@@ -1,5 +1,6 @@
 package org.hapticon.companion
 
+import org.hapticon.companion.cli.PatternSource
 import org.hapticon.core.HapticIcon
 import org.hapticon.core.io.WavReader
 import org.hapticon.core.pattern.Ahap

@@ -1,6 +1,7 @@
 package org.hapticon.messaging
 
 import org.hapticon.core.HapticIcon
+import org.hapticon.core.pattern.HapticPattern
 import java.util.Locale
 import java.util.UUID
 
@@ -20,6 +21,10 @@ public sealed interface InboxPayload
  * @property text at most [MessageLimits.MAX_TEXT_LENGTH] code points; may be empty when there is a sticker or icon.
  * @property sticker a sticker name such as `hug` (lower-case letters, digits, `_`, `-`), or null.
  * @property icon the haptic icon to feel, at most [MessageLimits.MAX_ICON_PLAYBACK_SECONDS] long, or null.
+ * @property pattern a haptic pattern to feel instead of an icon (an imported AHAP or `.haptic`, say): at most
+ *   [MessageLimits.MAX_ICON_PLAYBACK_SECONDS] long with at most [MessageLimits.MAX_PATTERN_KEYS] keys and taps,
+ *   or null. A message carries an icon or a pattern, not both; one with a pattern travels as version 2
+ *   ([MessageCodec]), which older builds reject with a clear "unsupported version" instead of playing it wrong.
  */
 public data class ChatMessage(
     val id: String,
@@ -28,6 +33,7 @@ public data class ChatMessage(
     val text: String,
     val sticker: String? = null,
     val icon: HapticIcon? = null,
+    val pattern: HapticPattern? = null,
 ) : InboxPayload {
     init {
         check(UUID_FORM.matches(id), RejectionReason.INVALID_VALUE, "id") { "expected a lower-case UUID, got ${quote(id)}" }
@@ -51,8 +57,19 @@ public data class ChatMessage(
                 String.format(Locale.ROOT, "plays for %.3f s, more than the %.0f s a message may", icon.duration, MessageLimits.MAX_ICON_PLAYBACK_SECONDS)
             }
         }
-        check(text.isNotBlank() || sticker != null || icon != null, RejectionReason.INVALID_VALUE, "text") {
-            "a message needs text, a sticker or an icon"
+        if (pattern != null) {
+            check(icon == null, RejectionReason.INVALID_VALUE, "pattern") { "a message carries an icon or a pattern, not both" }
+            checkEncodable(pattern.name, "pattern.name")
+            val keys = pattern.amplitude.size + pattern.frequency.size + pattern.transients.size
+            check(keys <= MessageLimits.MAX_PATTERN_KEYS, RejectionReason.INVALID_ICON, "pattern") {
+                "has $keys keys and taps, more than the ${MessageLimits.MAX_PATTERN_KEYS} a message may"
+            }
+            check(pattern.duration <= MessageLimits.MAX_ICON_PLAYBACK_SECONDS, RejectionReason.ICON_TOO_LONG, "pattern") {
+                String.format(Locale.ROOT, "plays for %.3f s, more than the %.0f s a message may", pattern.duration, MessageLimits.MAX_ICON_PLAYBACK_SECONDS)
+            }
+        }
+        check(text.isNotBlank() || sticker != null || icon != null || pattern != null, RejectionReason.INVALID_VALUE, "text") {
+            "a message needs text, a sticker, an icon or a pattern"
         }
     }
 
@@ -67,7 +84,8 @@ public data class ChatMessage(
             sticker: String? = null,
             icon: HapticIcon? = null,
             clock: Clock = Clock.SYSTEM,
-        ): ChatMessage = ChatMessage(UUID.randomUUID().toString(), sender, clock.nowMillis(), text, sticker, icon)
+            pattern: HapticPattern? = null,
+        ): ChatMessage = ChatMessage(UUID.randomUUID().toString(), sender, clock.nowMillis(), text, sticker, icon, pattern)
     }
 }
 

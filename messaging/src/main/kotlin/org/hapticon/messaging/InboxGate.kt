@@ -12,9 +12,10 @@ public class InboxGate(
     /** Admits [message]: [Admission.Duplicate] when its id was seen before, else [Admission.New] with the vibration decision. */
     public fun admit(message: ChatMessage): Admission {
         if (!deduplicator.firstSeen(message.id)) return Admission.Duplicate
-        val icon = message.icon ?: return Admission.New(message, vibration = null)
+        // A pattern drives the actuator like an icon: it counts against the same limits.
+        val seconds = message.icon?.duration ?: message.pattern?.duration ?: return Admission.New(message, vibration = null)
         // Rounded, not ceiled: 3 · 2.6 + 3 is 10.800000000000001 s in binary, and that stroke lasts 10 800 ms.
-        return Admission.New(message, rateLimiter.tryAcquire(message.sender, Math.round(icon.duration * 1000.0)))
+        return Admission.New(message, rateLimiter.tryAcquire(message.sender, Math.round(seconds * 1000.0)))
     }
 }
 

@@ -10,6 +10,8 @@ import org.hapticon.core.io.JsonNumber
 import org.hapticon.core.io.JsonObject
 import org.hapticon.core.io.JsonString
 import org.hapticon.core.io.JsonValue
+import org.hapticon.core.pattern.PatternException
+import org.hapticon.core.pattern.PatternJson
 
 /**
  * The wire format: UTF-8 JSON, versioned by `schema` and `version` members.
@@ -17,6 +19,7 @@ import org.hapticon.core.io.JsonValue
  * ```
  * {"schema":"hapticon.message","version":1,"id":"<uuid>","sender":"alice","sentAt":<epoch ms>,
  *  "text":"…","sticker":"hug"|null,"icon":{icon JSON}|null}
+ * {"schema":"hapticon.message","version":2, …the same members…, "icon":null,"pattern":{pattern JSON}}
  * {"schema":"hapticon.receipt","version":1,"messageId":"<uuid>","from":"bob","state":"delivered"|"read","at":<epoch ms>}
  * {"schema":"hapticon.hand","version":1,"from":"bob","thumb":12.5,"middle":48.0,"at":<epoch ms>}
  * {"schema":"hapticon.capabilities","version":1,"user":"bob","renderer":"amplitude-waveform","amplitudeControl":true,
@@ -26,6 +29,12 @@ import org.hapticon.core.io.JsonValue
  * Decoding is for untrusted input and never throws: the size is checked before parsing, the parser is
  * strict and depth-limited, and every problem becomes a [Decoded.Rejected] with a [RejectionReason].
  * Unknown members are ignored, so that newer writers can add optional members within version 1.
+ *
+ * A message with a haptic pattern ([ChatMessage.pattern], [PatternJson]) is written as version 2, every other
+ * message still as version 1: a build that predates patterns reads version 1 only, so it keeps reading icon
+ * and text messages and rejects a pattern message as `UNSUPPORTED_VERSION` ("this build reads version 1 of
+ * \"hapticon.message\", got 2"), which it shows as a message it cannot read, instead of dropping the pattern
+ * and showing the text as if nothing were missing.
  */
 public object MessageCodec {
     /** `schema` of a chat message. */
@@ -40,20 +49,27 @@ public object MessageCodec {
     /** `schema` of a capabilities document. */
     public const val CAPABILITIES_SCHEMA: String = "hapticon.capabilities"
 
-    /** The version this build writes and the only one it reads. */
+    /** The version this build writes for receipts, poses, capabilities and messages without a pattern. */
     public const val VERSION: Int = 1
 
+    /** The version of a message with a pattern; this build reads messages of versions [VERSION]..[PATTERN_VERSION]. */
+    public const val PATTERN_VERSION: Int = 2
+
     /** [message] as UTF-8 JSON. Does not throw: every valid message is encodable and within the payload limit. */
-    public fun encode(message: ChatMessage): ByteArray = encodeObject(
-        "schema" to JsonString(MESSAGE_SCHEMA),
-        "version" to JsonNumber(VERSION),
-        "id" to JsonString(message.id),
-        "sender" to JsonString(message.sender),
-        "sentAt" to JsonNumber(message.sentAtMillis),
-        "text" to JsonString(message.text),
-        "sticker" to (message.sticker?.let(::JsonString) ?: JsonNull),
-        "icon" to (message.icon?.let(IconJson::toJsonValue) ?: JsonNull),
-    )
+    public fun encode(message: ChatMessage): ByteArray {
+        val members = listOf(
+            "schema" to JsonString(MESSAGE_SCHEMA),
+            "version" to JsonNumber(if (message.pattern != null) PATTERN_VERSION else VERSION),
+            "id" to JsonString(message.id),
+            "sender" to JsonString(message.sender),
+            "sentAt" to JsonNumber(message.sentAtMillis),
+            "text" to JsonString(message.text),
+            "sticker" to (message.sticker?.let(::JsonString) ?: JsonNull),
+            "icon" to (message.icon?.let(IconJson::toJsonValue) ?: JsonNull),
+        )
+        val pattern = message.pattern?.let { listOf("pattern" to PatternJson.toJsonValue(it)) }.orEmpty()
+        return encodeObject(*(members + pattern).toTypedArray())
+    }
 
     /** [receipt] as UTF-8 JSON. Does not throw. */
     public fun encode(receipt: Receipt): ByteArray = encodeObject(
@@ -88,7 +104,7 @@ public object MessageCodec {
 
     /** Decodes what arrives in an inbox: a [ChatMessage], a [Receipt] or a [HandPose]. Never throws. */
     public fun decodeInbox(payload: ByteArray): Decoded<InboxPayload> = decodeWith(payload) { fields ->
-        when (fields.schema(MESSAGE_SCHEMA, RECEIPT_SCHEMA, HAND_SCHEMA)) {
+        when (fields.schema(MESSAGE_SCHEMA, RECEIPT_SCHEMA, HAND_SCHEMA, messageVersions = VERSION..PATTERN_VERSION)) {
             MESSAGE_SCHEMA -> decodeMessage(fields)
             HAND_SCHEMA -> HandPose(
                 from = fields.requiredString("from"),
@@ -126,6 +142,7 @@ public object MessageCodec {
                 throw InvalidMessageException(RejectionReason.INVALID_ICON, if (e.field == "icon") "icon" else "icon.${e.field}", detail)
             }
         }
+        val pattern = if (fields.version < PATTERN_VERSION) null else decodePattern(fields.optional("pattern"))
         return ChatMessage(
             // Upper-case UUIDs name the same message; one spelling keeps deduplication by id exact.
             id = fields.requiredString("id").lowercase(),
@@ -134,7 +151,23 @@ public object MessageCodec {
             text = fields.requiredString("text"),
             sticker = fields.optionalString("sticker"),
             icon = icon,
+            pattern = pattern,
         )
+    }
+
+    private fun decodePattern(value: JsonValue?): org.hapticon.core.pattern.HapticPattern? {
+        if (value == null) return null
+        // Only a pattern document: PatternJson.read would also turn an icon into a pattern, which belongs in "icon".
+        val schema = ((value as? JsonObject)?.get("schema") as? JsonString)?.value
+        if (schema != PatternJson.SCHEMA) {
+            throw InvalidMessageException(RejectionReason.INVALID_ICON, "pattern.schema", "expected \"${PatternJson.SCHEMA}\"")
+        }
+        return try {
+            PatternJson.read(value).pattern
+        } catch (e: PatternException) {
+            val detail = e.message.orEmpty().removePrefix("${e.field}: ")
+            throw InvalidMessageException(RejectionReason.INVALID_ICON, "pattern.${e.field}", detail)
+        }
     }
 
     private fun decodeReceipt(fields: Fields): Receipt {
@@ -178,7 +211,11 @@ public object MessageCodec {
 
     /** Typed access to the members of a decoded object; every problem is an [InvalidMessageException]. */
     private class Fields(private val json: JsonObject) {
-        fun schema(vararg accepted: String): String {
+        /** The document's version, known once [schema] has accepted it. */
+        var version: Int = VERSION
+            private set
+
+        fun schema(vararg accepted: String, messageVersions: IntRange = VERSION..VERSION): String {
             val schema = json["schema"] ?: throw InvalidMessageException(RejectionReason.UNKNOWN_SCHEMA, "schema", "missing")
             val name = (schema as? JsonString)?.value
             if (name == null || name !in accepted) {
@@ -189,12 +226,16 @@ public object MessageCodec {
             }
             // The version comes right after the schema: a newer document may have changed any other member.
             val version = json["version"]
-            if (version !is JsonNumber || version.value != VERSION.toDouble()) {
+            val readable = if (name == MESSAGE_SCHEMA) messageVersions else VERSION..VERSION
+            val number = (version as? JsonNumber)?.value
+            if (number == null || number != Math.rint(number) || number < readable.first || number > readable.last) {
+                val versions = if (readable.first == readable.last) "version ${readable.first}" else "versions ${readable.first}–${readable.last}"
                 throw InvalidMessageException(
                     RejectionReason.UNSUPPORTED_VERSION, "version",
-                    "this build reads version $VERSION of \"$name\", got ${version?.let(::snippet) ?: "none"}",
+                    "this build reads $versions of \"$name\", got ${version?.let(::snippet) ?: "none"}",
                 )
             }
+            this.version = number.toInt()
             return name
         }
 

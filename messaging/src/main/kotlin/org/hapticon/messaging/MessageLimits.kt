@@ -21,10 +21,19 @@ public object MessageLimits {
      */
     public const val MAX_ICON_PLAYBACK_SECONDS: Double = 15.0
 
+    /**
+     * Most keys and taps (amplitude + frequency keys + transients) in a message's pattern. Chosen so that the
+     * largest valid message still fits [MAX_PAYLOAD_BYTES]: a tap written with 17-digit numbers takes about
+     * 90 bytes, so 360 of them and a fully escaped 4000-character text stay under 64 KiB (MessageCodecTest).
+     * Imported files may hold more ([org.hapticon.core.pattern.HapticPattern.MAX_KEYS]); sending one asks the
+     * user to simplify it first.
+     */
+    public const val MAX_PATTERN_KEYS: Int = 360
+
     /** Longest sticker name. */
     public const val MAX_STICKER_LENGTH: Int = 32
 
-    /** Deepest JSON nesting accepted; a message with an icon needs 2. */
+    /** Deepest JSON nesting accepted; a message with an icon needs 2, one with a pattern 4. */
     public const val MAX_JSON_DEPTH: Int = 8
 
     /** Latest timestamp accepted: 9999-12-31T23:59:59.999Z, in milliseconds since the epoch. */

@@ -170,8 +170,8 @@ class MessageCodecTest {
     }
 
     @Test
-    fun decodeInbox_versionOtherThanOne_isRejectedAsUnsupported() {
-        for (version in listOf("2", "0", "-1", "1.5", "1e300", "\"1\"", "null", "true")) {
+    fun decodeInbox_versionOtherThanOneOrTwo_isRejectedAsUnsupported() {
+        for (version in listOf("3", "0", "-1", "1.5", "1e300", "\"1\"", "null", "true")) {
             assertRejected(RejectionReason.UNSUPPORTED_VERSION, "version", messageJson(version = version))
         }
         assertRejected(RejectionReason.UNSUPPORTED_VERSION, "version", """{"schema":"hapticon.receipt"}""")

@@ -12,8 +12,11 @@ import org.hapticon.app.data.database.OutboxEntity
 import org.hapticon.app.data.database.PendingReceiptEntity
 import org.hapticon.app.data.database.StoredMessage
 import org.hapticon.app.data.database.asExternalModel
+import org.hapticon.app.data.database.patternFromJson
+import org.hapticon.app.data.database.patternToJson
 import org.hapticon.core.HapticIcon
 import org.hapticon.core.io.IconJson
+import org.hapticon.core.pattern.HapticPattern
 import org.hapticon.messaging.ChatMessage
 import org.hapticon.messaging.Clock
 import org.hapticon.messaging.Outbox
@@ -40,7 +43,14 @@ interface ChatRepository {
      * Stores a new own message from [sender] to [peer] and queues it for sending. Throws
      * [org.hapticon.messaging.InvalidMessageException] when the message is not valid (e.g. empty).
      */
-    suspend fun send(sender: String, peer: String, text: String, sticker: String? = null, icon: HapticIcon? = null): StoredMessage
+    suspend fun send(
+        sender: String,
+        peer: String,
+        text: String,
+        sticker: String? = null,
+        icon: HapticIcon? = null,
+        pattern: HapticPattern? = null,
+    ): StoredMessage
 
     /** Stores a received [message] unless its id is known; returns true when it is new (first delivery). */
     suspend fun receive(message: ChatMessage): Boolean
@@ -97,8 +107,8 @@ class OfflineFirstChatRepository(
         conversations.insertOrIgnore(ConversationEntity(peer, clock.nowMillis()))
     }
 
-    override suspend fun send(sender: String, peer: String, text: String, sticker: String?, icon: HapticIcon?): StoredMessage {
-        val message = ChatMessage.compose(sender, text, sticker, icon, clock)
+    override suspend fun send(sender: String, peer: String, text: String, sticker: String?, icon: HapticIcon?, pattern: HapticPattern?): StoredMessage {
+        val message = ChatMessage.compose(sender, text, sticker, icon, clock, pattern)
         enqueue(peer, message)
         return messages.message(message.id)!!.asExternalModel()
     }
@@ -231,7 +241,8 @@ internal fun ChatMessage.asEntity(conversation: String, outgoing: Boolean, state
     iconJson = icon?.let { IconJson.encode(it) },
     outgoing = outgoing,
     state = state.name,
+    patternJson = pattern?.let(::patternToJson),
 )
 
 internal fun MessageEntity.asChatMessage(): ChatMessage =
-    ChatMessage(id, sender, sentAtMillis, text, sticker, iconJson?.let { IconJson.decode(it) })
+    ChatMessage(id, sender, sentAtMillis, text, sticker, iconJson?.let { IconJson.decode(it) }, patternJson?.let(::patternFromJson))

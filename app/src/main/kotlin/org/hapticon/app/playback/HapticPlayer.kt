@@ -3,6 +3,7 @@ package org.hapticon.app.playback
 import org.hapticon.messaging.RendererKind
 import org.hapticon.core.HapticIcon
 import org.hapticon.core.render.EnvelopeModel
+import org.hapticon.core.pattern.HapticPattern
 import org.hapticon.core.render.Fidelity
 
 /** Plays haptic icons on the phone's actuator. */
@@ -25,6 +26,12 @@ interface HapticPlayer {
      */
     fun play(icon: HapticIcon, model: EnvelopeModel): Playback =
         if (model == EnvelopeModel.DEFAULT) play(icon) else Playback.Unsupported
+
+    /**
+     * Starts playing [pattern] (an imported AHAP or `.haptic`, a pattern message), replacing whatever is playing,
+     * within the same safety limits as icons. Returns how it is played, or [Playback.Unsupported]. Never blocks.
+     */
+    fun play(pattern: HapticPattern): Playback
 
     /** Stops any vibration this player started. */
     fun stop()

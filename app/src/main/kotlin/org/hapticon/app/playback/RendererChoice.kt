@@ -9,6 +9,9 @@ import android.util.Log
 import java.io.IOException
 import kotlin.math.roundToInt
 import org.hapticon.core.HapticIcon
+import org.hapticon.core.pattern.EnvelopeEffectInfo
+import org.hapticon.core.pattern.HapticPattern
+import org.hapticon.core.pattern.PitchFit
 import org.hapticon.core.render.EnvelopeControlPoints
 import org.hapticon.core.render.EnvelopeModel
 import org.hapticon.core.render.PcmRenderer
@@ -29,6 +32,13 @@ data class DeviceCapabilities(
     val hapticPlaybackSupported: Boolean = false,
     /** API 31+ `HapticGenerator.isAvailable()`: the platform can derive the haptic channel from audio. */
     val hapticGeneratorAvailable: Boolean = false,
+    /**
+     * API 36+ `Vibrator.getFrequencyProfile()` min..max Hz: the frequencies `WaveformEnvelopeBuilder` may use.
+     * Null when the phone has no frequency control (no profile, or a NaN or empty range).
+     */
+    val frequencyRangeHz: ClosedFloatingPointRange<Double>? = null,
+    /** API 36+ `Vibrator.getEnvelopeEffectInfo()`, null without envelope effects. */
+    val envelopeInfo: EnvelopeEffectInfo? = null,
 ) {
     companion object {
         /**
@@ -53,9 +63,26 @@ data class DeviceCapabilities(
                 // Some builds lack the effect library; asking must not take the app down.
                 hapticGeneratorAvailable = hapticGenerator
                     ?: (api >= 31 && runCatching { android.media.audiofx.HapticGenerator.isAvailable() }.getOrDefault(false)),
+                frequencyRangeHz = if (api >= 36) frequencyRangeOf(vibrator) else null,
+                envelopeInfo = if (api >= 36 && vibrator.areEnvelopeEffectsSupported()) envelopeInfoOf(vibrator) else null,
             )
         }
     }
+}
+
+@androidx.annotation.RequiresApi(36)
+private fun frequencyRangeOf(vibrator: Vibrator): ClosedFloatingPointRange<Double>? {
+    val profile = vibrator.frequencyProfile ?: return null
+    val min = profile.minFrequencyHz.toDouble()
+    val max = profile.maxFrequencyHz.toDouble()
+    return if (min.isFinite() && max.isFinite() && min > 0 && max > min) min..max else null
+}
+
+@androidx.annotation.RequiresApi(36)
+private fun envelopeInfoOf(vibrator: Vibrator): EnvelopeEffectInfo? {
+    val info = vibrator.envelopeEffectInfo ?: return null
+    return EnvelopeEffectInfo(info.maxSize, info.minControlPointDurationMillis, info.maxControlPointDurationMillis, info.maxDurationMillis)
+        .takeIf { it.maxControlPoints > 0 && it.minControlPointMillis > 0 }
 }
 
 /**
@@ -135,6 +162,8 @@ class AdaptiveHapticPlayer(
     private val override: () -> RendererKind?,
     private val audio: AudioCoupledOutput? = null,
     private val audioCache: IconAudioCache? = null,
+    /** What to do with pattern frequencies the actuator cannot give (a user choice; octaves by default). */
+    private val pitchFit: () -> PitchFit = { PitchFit.OCTAVES },
 ) : HapticPlayer {
     override val capabilities: PlaybackCapabilities
         get() = device().let { PlaybackCapabilities(it.hasVibrator, it.hasAmplitudeControl, it.apiLevel) }
@@ -167,6 +196,29 @@ class AdaptiveHapticPlayer(
         val renderer = if (waveform.amplitudes().all { it == 0 || it == VibrationWaveform.MAX_AMPLITUDE }) RendererKind.ON_OFF else RendererKind.AMPLITUDE_WAVEFORM
         return Playback.Playing(renderer, waveform.totalMillis, waveform.fidelity)
     }
+
+    /** How [pattern] would play now: [PatternPlan.of] for this phone, the override and the pitch choice. */
+    fun planFor(pattern: HapticPattern): PatternPlan = PatternPlan.of(device(), pattern, override(), pitchFit())
+
+    override fun play(pattern: HapticPattern): Playback {
+        // The platform's own level decides, not the reported one: only a test's made-up capabilities differ.
+        val plan = planFor(pattern).let { if (it is PatternPlan.Envelope && Build.VERSION.SDK_INT < 36) stepsFor(pattern) else it }
+        audio?.stop()
+        return when (plan) {
+            PatternPlan.Silent -> Playback.Unsupported
+            is PatternPlan.Envelope -> {
+                vibrator.vibrate(plan.envelope.toVibrationEffect())
+                Playback.Playing(RendererKind.ENVELOPE, plan.envelope.totalMillis, plan.envelope.fidelity)
+            }
+            is PatternPlan.Steps -> {
+                vibrator.vibrate(plan.waveform.toVibrationEffect())
+                Playback.Playing(plan.renderer, plan.waveform.totalMillis, plan.waveform.fidelity)
+            }
+        }
+    }
+
+    private fun stepsFor(pattern: HapticPattern): PatternPlan =
+        PatternPlan.of(device().copy(envelopeEffectsSupported = false), pattern, override(), pitchFit())
 
     override fun stop() {
         audio?.stop()

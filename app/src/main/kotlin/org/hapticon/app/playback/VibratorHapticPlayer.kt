@@ -7,6 +7,7 @@ import android.os.VibrationEffect
 import android.os.Vibrator
 import org.hapticon.core.HapticIcon
 import org.hapticon.core.render.EnvelopeModel
+import org.hapticon.core.pattern.HapticPattern
 import org.hapticon.core.render.VibrationWaveform
 
 /**
@@ -37,6 +38,14 @@ class VibratorHapticPlayer(private val vibrator: Vibrator) : HapticPlayer {
         }
         vibrator.vibrate(waveform.toVibrationEffect())
         return Playback.Playing(renderer, waveform.totalMillis, waveform.fidelity)
+    }
+
+    /** [pattern] as amplitude steps, or on/off steps without amplitude control; the frequency curve is not played. */
+    override fun play(pattern: HapticPattern): Playback {
+        val plan = PatternPlan.of(DeviceCapabilities(vibrator.hasVibrator(), vibrator.hasAmplitudeControl(), Build.VERSION.SDK_INT), pattern)
+        val steps = plan as? PatternPlan.Steps ?: return Playback.Unsupported
+        vibrator.vibrate(steps.waveform.toVibrationEffect())
+        return Playback.Playing(steps.renderer, steps.waveform.totalMillis, steps.waveform.fidelity)
     }
 
     override fun stop() = vibrator.cancel()

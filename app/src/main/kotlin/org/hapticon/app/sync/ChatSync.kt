@@ -252,20 +252,22 @@ class ChatSync(
         if (!open) onIncoming(message, played)
     }
 
-    /** Plays an arriving icon when the user enabled it, within the body limits and never in Do-not-disturb. */
+    /** Plays an arriving icon or pattern when the user enabled it, within the body limits and never in Do-not-disturb. */
     private suspend fun autoPlay(messenger: Messenger, message: ChatMessage): Boolean {
-        val icon = message.icon ?: return false
+        val icon = message.icon
+        val pattern = message.pattern
+        val seconds = icon?.duration ?: pattern?.duration ?: return false
         if (!settings.preferences.value.autoPlay) return false
         if (quietNow()) {
             Log.i(TAG, "auto-play of ${message.id} skipped: Do-not-disturb")
             return false
         }
-        val decision = rateLimiter.tryAcquire(message.sender, (icon.duration * 1000).toLong())
+        val decision = rateLimiter.tryAcquire(message.sender, (seconds * 1000).toLong())
         if (decision != VibrationDecision.VIBRATE) {
             Log.i(TAG, "auto-play of ${message.id} skipped: $decision")
             return false
         }
-        player.play(icon)
+        if (icon != null) player.play(icon) else if (pattern != null) player.play(pattern)
         sendFelt(messenger, message.sender, message.id)
         return true
     }

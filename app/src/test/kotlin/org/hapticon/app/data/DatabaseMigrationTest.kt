@@ -7,6 +7,16 @@ import java.io.File
 import kotlinx.coroutines.flow.first
 import kotlinx.coroutines.test.runTest
 import org.hapticon.app.data.database.HapticonDatabase
+import org.hapticon.app.data.database.IconEntity
+import org.hapticon.app.data.database.MessageEntity
+import org.hapticon.app.data.database.PatternEntity
+import org.hapticon.app.data.database.asExternalModel
+import org.hapticon.app.data.database.patternToJson
+import org.hapticon.core.pattern.AmplitudeKey
+import org.hapticon.core.pattern.FrequencyKey
+import org.hapticon.core.pattern.HapticPattern
+import org.hapticon.core.pattern.Transient
+import org.hapticon.messaging.ChatMessage
 import org.hapticon.app.data.database.MessageState
 import org.hapticon.app.data.database.PendingReceiptEntity
 import org.hapticon.app.study.MaskingSetting
@@ -17,6 +27,7 @@ import org.hapticon.study.OriginatingStudy
 import org.json.JSONObject
 import org.junit.Assert.assertEquals
 import org.junit.Assert.assertNull
+import org.junit.Assert.assertTrue
 import org.junit.Test
 import org.junit.runner.RunWith
 import org.robolectric.RobolectricTestRunner
@@ -114,6 +125,58 @@ class DatabaseMigrationTest {
         } finally {
             db.close()
         }
+    }
+
+    @Test
+    fun migrate4To5_rowsKeptExactlyAndPatternsStored() = runTest {
+        val file = context.getDatabasePath("migration-4-5.db").also { it.parentFile!!.mkdirs(); it.delete() }
+        createFromSchema(file, version = 4)
+        SQLiteDatabase.openDatabase(file.path, null, SQLiteDatabase.OPEN_READWRITE).use { v4 ->
+            v4.execSQL("INSERT INTO conversations (peer, created_at) VALUES ('bob', 1)")
+            v4.execSQL(
+                "INSERT INTO messages (id, conversation, sender, sent_at, text, sticker, icon_json, outgoing, state, read_at) " +
+                    "VALUES ('0b7e7c1e-3f7b-4a57-9d3e-2f1c5a6b7c8d', 'bob', 'bob', 5, 'kept', 'hug', NULL, 0, 'READ', 9)",
+            )
+            v4.execSQL("INSERT INTO icons (name, attack, sustain, level, release, note, period, count) VALUES ('mine', 0.1, 0.2, 0.5, 0.3, 60, 0, 1)")
+        }
+
+        val db = Room.databaseBuilder(context, HapticonDatabase::class.java, file.path).allowMainThreadQueries().build()
+        try {
+            assertEquals(
+                MessageEntity("0b7e7c1e-3f7b-4a57-9d3e-2f1c5a6b7c8d", "bob", "bob", 5, "kept", "hug", null, false, "READ", 9, patternJson = null),
+                db.messageDao().message("0b7e7c1e-3f7b-4a57-9d3e-2f1c5a6b7c8d"),
+            )
+            assertEquals(listOf(IconEntity("mine", 0.1, 0.2, 0.5, 0.3, 60.0, 0.0, 1)), db.iconDao().icons().first())
+            assertEquals(emptyList<PatternEntity>(), db.patternDao().patterns().first())
+
+            val boing = HapticPattern("boing", listOf(AmplitudeKey(0.0, 0.0), AmplitudeKey(0.05, 1.0), AmplitudeKey(0.4, 0.0)),
+                listOf(FrequencyKey(0.0, 220.0), FrequencyKey(0.4, 110.0)), listOf(Transient(0.1, 0.8, 0.4)))
+            RoomPatternRepository(db.patternDao(), clock = { 77 }).save(boing, source = "boing.ahap")
+            val row = db.patternDao().patterns().first().single()
+            assertEquals(PatternEntity("boing", patternToJson(boing), "boing.ahap", 77), row)
+            assertEquals(boing, row.asExternalModel())
+
+            // A received pattern message keeps its pattern by value, like an icon.
+            val repository = OfflineFirstChatRepository(db)
+            val message = ChatMessage("1b7e7c1e-3f7b-4a57-9d3e-2f1c5a6b7c8d", "bob", 6, "", pattern = boing)
+            repository.receive(message)
+            assertEquals(patternToJson(boing), db.messageDao().message(message.id)!!.patternJson)
+            assertEquals(boing, repository.message(message.id)!!.pattern)
+        } finally {
+            db.close()
+        }
+    }
+
+    @Test
+    fun schema5_exported_addsThePatternsTableAndColumn() {
+        val tables = schema(5).getJSONObject("database").getJSONArray("entities")
+        val byName = (0 until tables.length()).associate { tables.getJSONObject(it).getString("tableName") to tables.getJSONObject(it) }
+        assertEquals(
+            "CREATE TABLE IF NOT EXISTS `\${TABLE_NAME}` (`name` TEXT NOT NULL, `json` TEXT NOT NULL, `source` TEXT, " +
+                "`saved_at` INTEGER NOT NULL, PRIMARY KEY(`name`))",
+            byName.getValue("patterns").getString("createSql"),
+        )
+        assertTrue(byName.getValue("messages").getString("createSql").contains("`pattern_json` TEXT"))
     }
 
     @Test

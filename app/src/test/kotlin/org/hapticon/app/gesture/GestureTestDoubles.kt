@@ -14,6 +14,7 @@ import org.hapticon.app.data.database.ConversationSummary
 import org.hapticon.app.data.database.MessageState
 import org.hapticon.app.data.database.StoredMessage
 import org.hapticon.core.HapticIcon
+import org.hapticon.core.pattern.HapticPattern
 import org.hapticon.gesture.Recording
 import org.hapticon.messaging.ChatMessage
 import org.hapticon.messaging.Receipt
@@ -70,7 +71,7 @@ class SendRecordingChatRepository(private val peers: List<String>) : ChatReposit
     override fun messages(peer: String): Flow<List<StoredMessage>> = flowOf(sent.filter { it.conversation == peer })
     override suspend fun startConversation(peer: String) = Unit
 
-    override suspend fun send(sender: String, peer: String, text: String, sticker: String?, icon: HapticIcon?): StoredMessage =
+    override suspend fun send(sender: String, peer: String, text: String, sticker: String?, icon: HapticIcon?, pattern: HapticPattern?): StoredMessage =
         StoredMessage("m${sent.size}", peer, sender, sent.size.toLong(), text, sticker, icon, true, MessageState.SENDING, null).also { sent += it }
 
     override suspend fun receive(message: ChatMessage): Boolean = error("not used by the gesture tests")

@@ -9,6 +9,7 @@ import org.hapticon.app.playback.PlaybackCapabilities
 import org.hapticon.messaging.RendererKind
 import org.hapticon.core.HapticIcon
 import org.hapticon.core.render.EnvelopeModel
+import org.hapticon.core.pattern.HapticPattern
 import org.hapticon.core.render.Fidelity
 
 /** A [HapticPlayer] that records the icons it was asked to play and "plays" each for [durationMillis]. */
@@ -17,6 +18,7 @@ class TestHapticPlayer(private val durationMillis: Long = 560) : HapticPlayer {
 
     /** The envelope model of each entry of [played]. */
     val models = ArrayList<EnvelopeModel>()
+    val playedPatterns = ArrayList<HapticPattern>()
     var stops = 0
 
     override val capabilities = PlaybackCapabilities(hasVibrator = true, hasAmplitudeControl = true, apiLevel = 35)
@@ -26,6 +28,11 @@ class TestHapticPlayer(private val durationMillis: Long = 560) : HapticPlayer {
     override fun play(icon: HapticIcon, model: EnvelopeModel): Playback {
         played += icon
         models += model
+        return Playback.Playing(RendererKind.AMPLITUDE_WAVEFORM, durationMillis, Fidelity(0.0, 0.0, "exact"))
+    }
+
+    override fun play(pattern: HapticPattern): Playback {
+        playedPatterns += pattern
         return Playback.Playing(RendererKind.AMPLITUDE_WAVEFORM, durationMillis, Fidelity(0.0, 0.0, "exact"))
     }
 

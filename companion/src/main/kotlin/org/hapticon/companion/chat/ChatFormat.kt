@@ -1,6 +1,7 @@
 package org.hapticon.companion.chat
 
 import org.hapticon.core.HapticIcon
+import org.hapticon.core.pattern.HapticPattern
 import org.hapticon.messaging.Capabilities
 import org.hapticon.messaging.ChatMessage
 import org.hapticon.messaging.RendererKind
@@ -14,7 +15,15 @@ object ChatFormat {
         if (message.text.isNotEmpty()) append(' ').append(terminalSafe(message.text))
         message.sticker?.let { append(" [sticker ").append(it).append(']') }
         message.icon?.let { append(" [").append(icon(it)).append(']') }
+        message.pattern?.let { append(" [").append(pattern(it)).append(']') }
     }
+
+    /** A pattern's name and shape, e.g. `pattern boing: 0.400 s, 3 amplitude keys, 110.0–220.0 Hz, 1 transient`. */
+    fun pattern(pattern: HapticPattern): String = String.format(
+        Locale.ROOT, "pattern %s: %.3f s, %d amplitude keys, %.1f–%.1f Hz, %d transient%s",
+        terminalSafe(pattern.name), pattern.duration, pattern.amplitude.size, pattern.frequency.minOf { it.hertz },
+        pattern.frequency.maxOf { it.hertz }, pattern.transients.size, if (pattern.transients.size == 1) "" else "s",
+    )
 
     /**
      * An icon's name and parameters, e.g. `icon knock: attack 0.005 s, sustain 0.01 s, release 0.005 s,

@@ -20,7 +20,10 @@ import kotlinx.coroutines.runBlocking
 import kotlinx.coroutines.selects.select
 import kotlinx.coroutines.withContext
 import kotlinx.coroutines.withTimeoutOrNull
+import org.hapticon.companion.cli.PatternSource
+import org.hapticon.companion.cli.writeWav
 import org.hapticon.core.HapticIcon
+import org.hapticon.core.pattern.HapticPattern
 import org.hapticon.messaging.Admission
 import org.hapticon.messaging.Capabilities
 import org.hapticon.messaging.ChatMessage
@@ -168,13 +171,19 @@ class ChatSession(
             }
             "/icon" -> {
                 val name = rest.substringBefore(' ')
-                val icon = try {
-                    IconSource.load(name)
+                val text = rest.substringAfter(' ', "")
+                try {
+                    // A pattern file (.ahap, .haptic, pattern JSON) travels as a pattern message (version 2).
+                    val imported = PatternSource.loadIfPattern(name)
+                    if (imported != null) {
+                        imported.notes.forEach { say("note: $it") }
+                        send(text, sticker = null, icon = null, pattern = imported.pattern)
+                    } else {
+                        send(text, sticker = null, icon = IconSource.load(name))
+                    }
                 } catch (e: UsageException) {
                     say("no icon sent: ${e.message}")
-                    return true
                 }
-                send(rest.substringAfter(' ', ""), sticker = null, icon = icon)
             }
             "/sticker" -> send(rest.substringAfter(' ', ""), sticker = rest.substringBefore(' '), icon = null)
             else -> say("unknown command $command; /help lists them")
@@ -182,10 +191,10 @@ class ChatSession(
         return true
     }
 
-    private suspend fun send(text: String, sticker: String?, icon: HapticIcon?) {
+    private suspend fun send(text: String, sticker: String?, icon: HapticIcon?, pattern: HapticPattern? = null) {
         val to = peer ?: return say("no recipient: start with --to PEER or type /to PEER")
         val message = try {
-            ChatMessage.compose(user, text, sticker, icon, clock)
+            ChatMessage.compose(user, text, sticker, icon, clock, pattern)
         } catch (e: InvalidMessageException) {
             return say("not sent: ${e.message}")
         }
@@ -230,19 +239,22 @@ class ChatSession(
         val admission = gate.admit(message) as? Admission.New ?: return // a repeat: it took effect already
         say(ChatFormat.message(message))
         synchronized(unread) { unread += message }
-        val icon = message.icon ?: return
+        if (message.icon == null && message.pattern == null) return
         when (admission.vibration) {
-            VibrationDecision.VIBRATE -> if (wavDir != null) renderIcon(message, icon, wavDir)
+            VibrationDecision.VIBRATE -> if (wavDir != null) renderHaptic(message, wavDir)
             VibrationDecision.SENDER_LIMIT -> say("  (icon not played: ${message.sender} is sending icons too fast)")
             VibrationDecision.DUTY_CYCLE_LIMIT -> say("  (icon not played: enough vibration for this minute)")
             null -> Unit
         }
     }
 
-    private fun renderIcon(message: ChatMessage, icon: HapticIcon, dir: File) {
-        val file = File(dir, "${message.sender}-${message.id.take(8)}-${ChatFormat.fileSafe(icon.name)}.wav")
+    private fun renderHaptic(message: ChatMessage, dir: File) {
+        val name = message.icon?.name ?: message.pattern?.name ?: return
+        val file = File(dir, "${message.sender}-${message.id.take(8)}-${ChatFormat.fileSafe(name)}.wav")
         try {
-            say("  " + WavExport.write(icon, AudioSettings(), file))
+            val icon = message.icon
+            val pattern = message.pattern
+            say("  " + if (icon != null) WavExport.write(icon, AudioSettings(), file) else writeWav(pattern!!, file, AudioSettings().sampleRate, AudioSettings().encoding))
         } catch (e: UsageException) {
             say("  (icon not rendered: ${e.message})")
         }
@@ -312,6 +324,7 @@ class ChatSession(
     private fun mention(message: ChatMessage): String = when {
         message.text.isNotEmpty() -> "\"" + ChatFormat.terminalSafe(message.text.take(40)) + (if (message.text.length > 40) "…\"" else "\"")
         message.icon != null -> "icon ${message.icon!!.name}"
+        message.pattern != null -> "pattern ${message.pattern!!.name}"
         else -> "sticker ${message.sticker}"
     }
 
@@ -319,7 +332,8 @@ class ChatSession(
         /** The in-chat commands, as `/help` prints them. */
         val HELP: String = """
             |  TEXT                  send TEXT to the current peer
-            |  /icon ICON [TEXT]     send a preset icon (stroke, hit, knock, hug) or an icon JSON file, with optional text
+            |  /icon ICON [TEXT]     send a preset icon (stroke, hit, knock, hug), an icon JSON file or a pattern file
+            |                        (.ahap, .haptic, pattern JSON), with optional text
             |  /sticker NAME [TEXT]  send a sticker (a-z, 0-9, '_', '-'), with optional text
             |  /to PEER              talk to PEER from now on
             |  /quit                 leave (so does end of input)

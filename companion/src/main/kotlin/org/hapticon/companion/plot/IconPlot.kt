@@ -29,15 +29,7 @@ object IconPlot {
         val (image, g) = PlotStyle.canvas(WIDTH, HEIGHT)
         try {
             Axes.draw(g, area, Ticks.between(-1.0, 1.0, maxTicks = 5), "amplitude")
-            g.clip = java.awt.Rectangle(area.left, area.top, area.width + 1, area.height + 1)
-            g.stroke = PlotStyle.THIN
-            g.color = PlotStyle.WAVEFORM
-            columns.waveform.draw(g, area)
-            g.stroke = PlotStyle.CURVE
-            g.color = PlotStyle.ENVELOPE
-            columns.envelope.draw(g, area)
-            columns.envelope.draw(g, area, scale = -1.0)
-            g.clip = null
+            drawEnvelopeOverWaveform(g, area, columns.waveform, columns.envelope)
             val model = renderer.model.cliName()
             Axes.title(g, area.left, 32, "${icon.name} · $model envelope model · ${renderer.sampleRate} Hz", IconText.parameters(icon))
             Axes.legend(
@@ -52,4 +44,17 @@ object IconPlot {
         }
         return image
     }
+}
+
+/** The waveform band inside [area] with the envelope and its mirror over it, clipped to the area. */
+internal fun drawEnvelopeOverWaveform(g: java.awt.Graphics2D, area: PlotArea, waveform: ColumnExtremes, envelope: ColumnExtremes) {
+    g.clip = java.awt.Rectangle(area.left, area.top, area.width + 1, area.height + 1)
+    g.stroke = PlotStyle.THIN
+    g.color = PlotStyle.WAVEFORM
+    waveform.draw(g, area)
+    g.stroke = PlotStyle.CURVE
+    g.color = PlotStyle.ENVELOPE
+    envelope.draw(g, area)
+    envelope.draw(g, area, scale = -1.0)
+    g.clip = null
 }

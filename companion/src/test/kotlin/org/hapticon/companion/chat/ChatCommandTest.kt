@@ -68,6 +68,28 @@ class ChatCommandTest {
     }
 
     @Test
+    fun chat_patternFileAndPatternMessage_sentAsPatternAndRenderedToWav() {
+        val wavDir = File(fixture.temp.root, "pattern-wavs")
+        val chat = chat("--wav-dir", wavDir.path)
+        chat.err.awaitLine("chat: connected as $alice, talking to $bob; /help lists commands")
+        val (phone, bobEvents) = fixture.phone(bob)
+        val file = File(fixture.temp.root, "buzz.haptic").apply {
+            writeText("""{"version":{"major":1,"minor":0,"patch":0},"signals":{"continuous":{"envelopes":{"amplitude":[{"time":0,"amplitude":0.5},{"time":0.25,"amplitude":0}]}}}}""")
+        }
+        chat.input.type("/icon ${file.path} feel this")
+        val sent = (bobEvents.nextNonCapabilities() as InboxEvent.MessageReceived).message
+        val expected = org.hapticon.core.pattern.PatternFiles.read(file.readBytes(), org.hapticon.core.pattern.PatternFormat.HAPTIC, "buzz").pattern
+        assertEquals(Triple("feel this", null as HapticIcon?, expected), Triple(sent.text, sent.icon, sent.pattern))
+
+        val boing = ChatMessage.compose(bob, "", pattern = expected.named("boing"))
+        runBlocking { phone.send(alice, boing) }
+        chat.out.awaitLine("$bob: [pattern boing: 0.250 s, 2 amplitude keys, 185.0–185.0 Hz, 0 transients]")
+        val wav = File(wavDir, "$bob-${boing.id.take(8)}-boing.wav")
+        chat.out.awaitLine("  wrote $wav: boing, 11025 samples, 0.250 s at 44100 Hz, f32")
+        assertEquals(0, chat.quit())
+    }
+
+    @Test
     fun chat_floodOfIcons_showsEveryMessageButRendersOnlyTheBurst() {
         val wavDir = File(fixture.temp.root, "wavs")
         val chat = chat("--wav-dir", wavDir.path)
@@ -116,7 +138,7 @@ class ChatCommandTest {
         mallory.publishWith().topic(Topics.inbox(alice, malloryName)).qos(MqttQos.AT_LEAST_ONCE).payload(org.hapticon.messaging.MessageCodec.encode(ChatMessage.compose(bob, "I am bob"))).send()
         val escape = ChatMessage.compose(bob, "\u001b[2Jgotcha\u202e")
         runBlocking { phone.send(alice, escape) }
-        chat.err.awaitLine("chat: rejected a payload on hapticon/v1/inbox/$alice/$malloryName: UNSUPPORTED_VERSION (version): this build reads version 1 of \"hapticon.message\", got 9")
+        chat.err.awaitLine("chat: rejected a payload on hapticon/v1/inbox/$alice/$malloryName: UNSUPPORTED_VERSION (version): this build reads versions 1–2 of \"hapticon.message\", got 9")
         chat.err.awaitLine("chat: rejected a payload on hapticon/v1/inbox/$alice/$malloryName: INVALID_VALUE (sender): sender $bob on the topic of $malloryName")
         chat.out.awaitLine("$bob: \\u001b[2Jgotcha\\u202e")
         mallory.disconnect()

@@ -132,6 +132,19 @@ interface IconDao {
     suspend fun deleteIcon(name: String)
 }
 
+/** The user's haptic patterns. */
+@Dao
+interface PatternDao {
+    @Query("SELECT * FROM patterns ORDER BY name")
+    fun patterns(): Flow<List<PatternEntity>>
+
+    @Upsert
+    suspend fun upsert(pattern: PatternEntity)
+
+    @Query("DELETE FROM patterns WHERE name = :name")
+    suspend fun delete(name: String)
+}
+
 /** Receipts waiting for a connection. */
 @Dao
 interface PendingReceiptDao {

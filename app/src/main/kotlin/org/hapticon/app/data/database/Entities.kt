@@ -6,6 +6,9 @@ import androidx.room.Index
 import androidx.room.PrimaryKey
 import org.hapticon.core.HapticIcon
 import org.hapticon.core.io.IconJson
+import org.hapticon.core.pattern.HapticPattern
+import org.hapticon.core.pattern.PatternFiles
+import org.hapticon.core.pattern.PatternFormat
 
 /** A conversation with one peer, named by the peer's user name (one conversation per peer). */
 @Entity(tableName = "conversations")
@@ -38,6 +41,8 @@ data class MessageEntity(
     val state: String,
     /** When the message was read: by the peer for own messages, by this user for received ones (added in v2). */
     @ColumnInfo(name = "read_at") val readAtMillis: Long? = null,
+    /** The message's haptic pattern as pattern JSON ([patternToJson]), stored by value like the icon (added in v5). */
+    @ColumnInfo(name = "pattern_json") val patternJson: String? = null,
 )
 
 /**
@@ -73,6 +78,32 @@ fun IconEntity.asExternalModel(): HapticIcon = HapticIcon(name, attack, sustain,
 
 fun HapticIcon.asEntity(): IconEntity = IconEntity(name, attack, sustain, level, release, note, period, count)
 
+/**
+ * A haptic pattern in the user's library: imported from an AHAP, `.haptic` or pattern JSON file, or saved from
+ * the pattern editor (added in v5). Stored as pattern JSON, the format that keeps every field.
+ *
+ * @property source where it came from, shown in the list: the imported file's name, or null when made here.
+ */
+@Entity(tableName = "patterns")
+data class PatternEntity(
+    @PrimaryKey val name: String,
+    val json: String,
+    val source: String?,
+    @ColumnInfo(name = "saved_at") val savedAtMillis: Long,
+)
+
+/** The pattern; throws [org.hapticon.core.pattern.PatternException] or a JSON error for a row that is not valid. */
+fun PatternEntity.asExternalModel(): HapticPattern = patternFromJson(json)
+
+/** [this] as a row. */
+fun HapticPattern.asEntity(source: String?, savedAtMillis: Long): PatternEntity = PatternEntity(name, patternToJson(this), source, savedAtMillis)
+
+/** [pattern] as pattern JSON, the stored form (it keeps every field). */
+fun patternToJson(pattern: HapticPattern): String = PatternFiles.write(pattern, PatternFormat.JSON).text
+
+/** The pattern in pattern JSON [json]; throws as [PatternFiles.read] does. */
+fun patternFromJson(json: String): HapticPattern = PatternFiles.read(json.toByteArray(Charsets.UTF_8), PatternFormat.JSON, "pattern").pattern
+
 /** How far a message got. Own messages go SENDING → SENT → DELIVERED → READ, or FAILED; received ones are RECEIVED. */
 /**
  * An own message moves SENDING → SENT → DELIVERED → READ → FELT (FAILED after repeated send failures,
@@ -93,6 +124,8 @@ data class StoredMessage(
     val outgoing: Boolean,
     val state: MessageState,
     val readAtMillis: Long?,
+    /** The haptic pattern the message carries instead of an icon (message version 2), or null. */
+    val pattern: HapticPattern? = null,
 )
 
 fun MessageEntity.asExternalModel(): StoredMessage = StoredMessage(
@@ -107,6 +140,7 @@ fun MessageEntity.asExternalModel(): StoredMessage = StoredMessage(
     outgoing = outgoing,
     state = runCatching { MessageState.valueOf(state) }.getOrDefault(MessageState.FAILED),
     readAtMillis = readAtMillis,
+    pattern = patternJson?.let { runCatching { patternFromJson(it) }.getOrNull() },
 )
 
 /**

@@ -22,13 +22,15 @@ import org.hapticon.app.study.StudySessionEntity
 @Database(
     entities = [
         ConversationEntity::class, MessageEntity::class, OutboxEntity::class, IconEntity::class, PendingReceiptEntity::class,
-        StudyProtocolEntity::class, StudySessionEntity::class, StudyEventEntity::class,
+        PatternEntity::class, StudyProtocolEntity::class, StudySessionEntity::class, StudyEventEntity::class,
     ],
-    // v2: messages.read_at (when a message was read); v3: pending_receipts; v4: the user-study tables.
-    // All automatic migrations (new tables and a nullable column).
-    version = 4,
+    // v2: messages.read_at (when a message was read); v3: pending_receipts; v4: the user-study tables;
+    // v5: patterns and messages.pattern_json. All automatic migrations (new tables and nullable columns).
+    version = 5,
     exportSchema = true,
-    autoMigrations = [AutoMigration(from = 1, to = 2), AutoMigration(from = 2, to = 3), AutoMigration(from = 3, to = 4)],
+    autoMigrations = [
+        AutoMigration(from = 1, to = 2), AutoMigration(from = 2, to = 3), AutoMigration(from = 3, to = 4), AutoMigration(from = 4, to = 5),
+    ],
 )
 abstract class HapticonDatabase : RoomDatabase(), StudyDatabase {
     abstract fun conversationDao(): ConversationDao
@@ -36,6 +38,7 @@ abstract class HapticonDatabase : RoomDatabase(), StudyDatabase {
     abstract fun outboxDao(): OutboxDao
     abstract fun iconDao(): IconDao
     abstract fun pendingReceiptDao(): PendingReceiptDao
+    abstract fun patternDao(): PatternDao
     abstract override fun studyProtocolDao(): StudyProtocolDao
     abstract override fun studySessionDao(): StudySessionDao
     abstract override fun studyEventDao(): StudyEventDao

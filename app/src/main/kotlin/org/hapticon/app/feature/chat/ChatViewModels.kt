@@ -201,8 +201,13 @@ class ConversationViewModel(
 
     /** Feels a message's icon; for a received message the sender learns it was felt. */
     fun feel(message: StoredMessage) {
-        val icon = message.icon ?: return
-        player.play(icon)
+        val icon = message.icon
+        val pattern = message.pattern
+        when {
+            icon != null -> player.play(icon)
+            pattern != null -> player.play(pattern)
+            else -> return
+        }
         if (!message.outgoing) onFelt(peer, message.id)
     }
 

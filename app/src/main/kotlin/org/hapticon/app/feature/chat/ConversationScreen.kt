@@ -83,6 +83,7 @@ import org.hapticon.app.data.database.StoredMessage
 import org.hapticon.app.designsystem.HapticonIcons
 import org.hapticon.app.playback.label
 import org.hapticon.app.ui.EnvelopeThumbnail
+import org.hapticon.app.ui.PatternThumbnail
 import org.hapticon.core.HapticIcon
 
 /** What the conversation screen can ask for; the route wires each to the view model. */
@@ -250,6 +251,15 @@ private fun MessageBubble(message: StoredMessage, time: String, actions: Convers
                         leadingIcon = { EnvelopeThumbnail(icon, Modifier.width(32.dp).height(16.dp)) },
                         colors = AssistChipDefaults.assistChipColors(labelColor = content),
                         modifier = Modifier.semantics { contentDescription = "Play haptic icon ${icon.name}" },
+                    )
+                }
+                message.pattern?.let { pattern ->
+                    AssistChip(
+                        onClick = { actions.onFeel(message) },
+                        label = { Text("Feel ${pattern.name}") },
+                        leadingIcon = { PatternThumbnail(pattern, Modifier.width(32.dp).height(16.dp), showFrequency = false) },
+                        colors = AssistChipDefaults.assistChipColors(labelColor = content),
+                        modifier = Modifier.semantics { contentDescription = "Play haptic pattern ${pattern.name}" },
                     )
                 }
             }

@@ -1,24 +1,9 @@
 package org.hapticon.app.feature.iconeditor
 
-import androidx.compose.foundation.layout.Arrangement
-import androidx.compose.foundation.layout.Column
-import androidx.compose.foundation.layout.Row
-import androidx.compose.foundation.layout.fillMaxSize
 import androidx.compose.foundation.layout.fillMaxWidth
 import androidx.compose.foundation.layout.height
-import androidx.compose.foundation.layout.padding
-import androidx.compose.foundation.rememberScrollState
-import androidx.compose.foundation.verticalScroll
-import androidx.compose.material3.Button
-import androidx.compose.material3.ExperimentalMaterial3Api
-import androidx.compose.material3.Icon
-import androidx.compose.material3.IconButton
 import androidx.compose.material3.MaterialTheme
-import androidx.compose.material3.OutlinedButton
-import androidx.compose.material3.OutlinedTextField
-import androidx.compose.material3.Scaffold
 import androidx.compose.material3.Text
-import androidx.compose.material3.TopAppBar
 import androidx.compose.runtime.Composable
 import androidx.compose.runtime.Immutable
 import androidx.compose.runtime.getValue
@@ -38,9 +23,11 @@ import kotlinx.coroutines.flow.map
 import kotlinx.coroutines.flow.stateIn
 import kotlinx.coroutines.launch
 import org.hapticon.app.data.RoomIconRepository
-import org.hapticon.app.designsystem.HapticonIcons
 import org.hapticon.app.playback.HapticPlayer
+import org.hapticon.app.ui.EditorScaffold
 import org.hapticon.app.ui.EnvelopeThumbnail
+import org.hapticon.app.ui.PlayAndSave
+import org.hapticon.app.ui.ValidatedField
 import org.hapticon.core.HapticIcon
 import org.hapticon.core.IconValidationException
 
@@ -154,39 +141,14 @@ fun IconEditorRoute(icons: RoomIconRepository, player: HapticPlayer, onDone: () 
 }
 
 /** Seven parameters and a name, a live envelope plot, each field's validation message under it, play and save. */
-@OptIn(ExperimentalMaterial3Api::class)
 @Composable
 fun IconEditorScreen(uiState: IconEditorUiState, actions: IconEditorActions) {
-    Scaffold(
-        topBar = {
-            TopAppBar(
-                title = { Text("New haptic icon") },
-                navigationIcon = { IconButton(onClick = actions.onBack) { Icon(HapticonIcons.ArrowBack, contentDescription = "Close the editor") } },
-            )
-        },
-    ) { padding ->
-        Column(
-            Modifier.fillMaxSize().padding(padding).padding(16.dp).verticalScroll(rememberScrollState()),
-            verticalArrangement = Arrangement.spacedBy(8.dp),
-        ) {
-            uiState.icon?.let { EnvelopeThumbnail(it, Modifier.fillMaxWidth().height(96.dp)) }
-                ?: Text("Fix the fields below to see the envelope", style = MaterialTheme.typography.bodySmall)
-            for (field in IconField.entries) {
-                val error = uiState.errors[field]
-                OutlinedTextField(
-                    value = uiState.fields[field].orEmpty(),
-                    onValueChange = { actions.onChange(field, it) },
-                    label = { Text(field.label) },
-                    isError = error != null,
-                    supportingText = error?.let { { Text(it) } },
-                    singleLine = true,
-                    modifier = Modifier.fillMaxWidth(),
-                )
-            }
-            Row(horizontalArrangement = Arrangement.spacedBy(12.dp)) {
-                OutlinedButton(onClick = actions.onPlay, enabled = uiState.icon != null) { Text("Play") }
-                Button(onClick = actions.onSave, enabled = uiState.icon != null) { Text("Save") }
-            }
+    EditorScaffold("New haptic icon", actions.onBack) {
+        uiState.icon?.let { EnvelopeThumbnail(it, Modifier.fillMaxWidth().height(96.dp)) }
+            ?: Text("Fix the fields below to see the envelope", style = MaterialTheme.typography.bodySmall)
+        for (field in IconField.entries) {
+            ValidatedField(uiState.fields[field].orEmpty(), field.label, uiState.errors[field]) { actions.onChange(field, it) }
         }
+        PlayAndSave(uiState.icon != null, actions.onPlay, actions.onSave)
     }
 }

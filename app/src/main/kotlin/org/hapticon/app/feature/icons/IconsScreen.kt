@@ -23,7 +23,21 @@ import androidx.compose.material3.TopAppBar
 import androidx.compose.runtime.Composable
 import androidx.compose.runtime.remember
 import androidx.compose.runtime.Immutable
+import androidx.compose.runtime.LaunchedEffect
 import androidx.compose.runtime.getValue
+import androidx.compose.runtime.mutableStateOf
+import androidx.compose.runtime.remember
+import androidx.compose.runtime.rememberCoroutineScope
+import androidx.compose.runtime.setValue
+import androidx.compose.ui.platform.LocalContext
+import androidx.activity.compose.rememberLauncherForActivityResult
+import androidx.activity.result.contract.ActivityResultContracts
+import android.net.Uri
+import java.io.IOException
+import kotlinx.coroutines.Dispatchers
+import kotlinx.coroutines.launch
+import kotlinx.coroutines.withContext
+import org.hapticon.core.pattern.HapticPattern
 import androidx.compose.ui.Alignment
 import androidx.compose.ui.Modifier
 import androidx.compose.ui.semantics.Role
@@ -40,15 +54,63 @@ import org.hapticon.app.AppContainer
 import org.hapticon.core.HapticIcon
 import org.hapticon.app.ui.EnvelopeThumbnail
 
-/** The icon list wired to its [IconsViewModel]. */
+/**
+ * The icon list wired to its [IconsViewModel], with the user's patterns: the file picker and files shared to
+ * Hapticon ([AppContainer.pendingPatternFile]) import, the share sheet exports, and a pattern opens in its editor.
+ */
 @Composable
 fun IconsRoute(container: AppContainer) {
     val viewModel: IconsViewModel = viewModel(
-        factory = viewModelFactory { initializer { IconsViewModel(container.iconRepository, container.player) } },
+        factory = viewModelFactory { initializer { IconsViewModel(container.iconRepository, container.player, container.patterns) } },
     )
     val uiState by viewModel.uiState.collectAsStateWithLifecycle()
-    val actions = remember(viewModel) { IconsActions(onPlay = viewModel::play) }
-    IconsScreen(uiState, actions)
+    val iconsActions = remember(viewModel) { IconsActions(onPlay = viewModel::play) }
+    val patterns = container.patterns
+    if (patterns == null) {
+        IconsScreen(uiState, iconsActions)
+        return
+    }
+    val context = LocalContext.current
+    val scope = rememberCoroutineScope()
+    var editing by remember { mutableStateOf<HapticPattern?>(null) }
+    val importUri: (Uri) -> Unit = { uri ->
+        scope.launch {
+            try {
+                val (bytes, name) = withContext(Dispatchers.IO) { PatternFileAccess.read(context, uri) }
+                viewModel.import(bytes, name)
+            } catch (e: IOException) {
+                viewModel.importFailed(e.message ?: "the file could not be read")
+            }
+        }
+    }
+    val picker = rememberLauncherForActivityResult(ActivityResultContracts.OpenDocument()) { uri -> uri?.let(importUri) }
+    val shared by container.pendingPatternFile.collectAsStateWithLifecycle()
+    LaunchedEffect(shared) {
+        shared?.let { uri ->
+            container.pendingPatternFile.value = null
+            importUri(uri)
+        }
+    }
+    editing?.let { pattern ->
+        PatternEditorRoute(pattern, patterns, container.player, onDone = { editing = null })
+        return
+    }
+    val actions = remember(viewModel) {
+        PatternListActions(
+            // Any type: .ahap and .haptic have no registered MIME type, and providers label JSON differently.
+            onImport = { picker.launch(arrayOf("*/*")) },
+            onPlay = viewModel::play,
+            onEdit = { editing = it },
+            onExport = { pattern, format ->
+                val export = patterns.export(pattern, format)
+                context.startActivity(PatternFileAccess.share(context, pattern, format, export.text))
+                viewModel.showExportNotes(pattern, format, export.notes)
+            },
+            onDelete = viewModel::delete,
+            onDismissMessage = viewModel::dismissImportMessage,
+        )
+    }
+    IconsScreen(uiState, iconsActions, patternActions = actions)
 }
 
 /** What the Icons screen can ask for. */
@@ -58,7 +120,7 @@ class IconsActions(val onPlay: (HapticIcon) -> Unit = {})
 /** The icon list: each icon with its parameters and envelope; pressing one plays it. */
 @OptIn(ExperimentalMaterial3Api::class)
 @Composable
-fun IconsScreen(uiState: IconsUiState, actions: IconsActions) {
+fun IconsScreen(uiState: IconsUiState, actions: IconsActions, patternActions: PatternListActions? = null) {
     Scaffold(topBar = { TopAppBar(title = { Text("Haptic icons") }) }) { padding ->
         when (uiState) {
             IconsUiState.Loading -> Box(Modifier.fillMaxSize().padding(padding), Alignment.Center) {
@@ -76,7 +138,16 @@ fun IconsScreen(uiState: IconsUiState, actions: IconsActions) {
                     )
                 }
                 items(uiState.icons, key = { it.name }) { icon ->
-                    IconCard(icon, playing = uiState.nowPlaying?.takeIf { it.iconName == icon.name }, actions.onPlay)
+                    IconCard(icon, playing = uiState.nowPlaying?.takeIf { it.iconName == icon.name && !it.isPattern }, actions.onPlay)
+                }
+                if (patternActions != null) {
+                    item(key = "patterns-header") { PatternsHeader(uiState.patterns.size, patternActions) }
+                    uiState.importMessage?.let { message ->
+                        item(key = "import-message") { ImportMessageCard(message, patternActions.onDismissMessage) }
+                    }
+                    items(uiState.patterns, key = { "pattern:" + it.pattern.name }) { item ->
+                        PatternCard(item, uiState.nowPlaying?.takeIf { it.isPattern && it.iconName == item.pattern.name }, patternActions)
+                    }
                 }
             }
         }

@@ -52,6 +52,8 @@ class RecorderViewModelTest {
             return Playback.Unsupported
         }
 
+        override fun play(pattern: org.hapticon.core.pattern.HapticPattern): Playback = Playback.Unsupported
+
         override fun stop() = Unit
     }
 

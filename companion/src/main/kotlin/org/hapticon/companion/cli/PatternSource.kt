@@ -1,6 +1,5 @@
-package org.hapticon.companion
+package org.hapticon.companion.cli
 
-import org.hapticon.companion.cli.UsageException
 import org.hapticon.core.HapticIcon
 import org.hapticon.core.io.Json
 import org.hapticon.core.io.JsonException
@@ -13,6 +12,12 @@ import org.hapticon.core.pattern.PatternFormat
 import org.hapticon.core.pattern.PatternImport
 import org.hapticon.core.pattern.PatternJson
 import org.hapticon.core.pattern.toPattern
+import org.hapticon.core.io.WavEncoding
+import org.hapticon.core.io.WavWriter
+import org.hapticon.core.pattern.HapticPattern
+import org.hapticon.core.pattern.signal
+import org.hapticon.core.render.stream
+import java.util.Locale
 import java.io.File
 import java.io.IOException
 
@@ -66,4 +71,20 @@ object PatternSource {
     } catch (e: PatternException) {
         throw UsageException("$spec: ${e.message}")
     }
+}
+
+/** Throws [UsageException] unless [pattern] can be sampled at [rate]: a supported rate, every carrier below Nyquist. */
+fun checkRenderable(pattern: HapticPattern, rate: Int, mapping: FrequencyMapping = FrequencyMapping.DEFAULT) {
+    if (rate !in 8_000..192_000) throw UsageException("--rate must be in 8000..192000 Hz, was $rate")
+    val highest = (pattern.frequency.map { it.hertz } + mapping.maxHz).max()
+    if (highest >= rate / 2.0) throw UsageException(String.format(Locale.ROOT, "cannot render %s at %d Hz: it reaches %.1f Hz, at or above Nyquist", pattern.name, rate, highest))
+}
+
+/** Renders [pattern] into the WAV [file] and returns the summary line. */
+fun writeWav(pattern: HapticPattern, file: File, rate: Int, encoding: WavEncoding, mapping: FrequencyMapping = FrequencyMapping.DEFAULT): String {
+    checkRenderable(pattern, rate, mapping)
+    val stream = pattern.signal(mapping).stream(rate)
+    OutputFiles.write(file) { WavWriter.write(stream, it, encoding) }
+    return String.format(Locale.ROOT, "wrote %s: %s, %d samples, %.3f s at %d Hz, %s", file, pattern.name, stream.totalSamples,
+        stream.totalSamples.toDouble() / rate, rate, encoding.cliName())
 }

@@ -1,0 +1,112 @@
+package org.hapticon.app.screenshots
+
+import androidx.compose.ui.test.hasScrollToKeyAction
+import androidx.compose.ui.test.performScrollToKey
+import java.time.ZoneOffset
+import java.util.Locale
+import org.hapticon.app.data.database.MessageState
+import org.hapticon.app.data.database.StoredMessage
+import org.hapticon.app.feature.chat.ChatClock
+import org.hapticon.app.feature.chat.ConversationActions
+import org.hapticon.app.feature.chat.ConversationScreen
+import org.hapticon.app.feature.chat.ConversationUiState
+import org.hapticon.app.feature.icons.IconsActions
+import org.hapticon.app.feature.icons.IconsScreen
+import org.hapticon.app.feature.icons.IconsUiState
+import org.hapticon.app.feature.icons.PatternEditField
+import org.hapticon.app.feature.icons.PatternEditorScreen
+import org.hapticon.app.feature.icons.PatternEditorViewModel
+import org.hapticon.app.feature.icons.PatternItem
+import org.hapticon.app.feature.icons.PatternListActions
+import org.hapticon.app.playback.DeviceCapabilities
+import org.hapticon.app.playback.PatternPlan
+import org.hapticon.app.study.TestHapticPlayer
+import org.hapticon.core.HapticIcon
+import org.hapticon.core.pattern.AmplitudeKey
+import org.hapticon.core.pattern.EnvelopeEffectInfo
+import org.hapticon.core.pattern.FrequencyKey
+import org.hapticon.core.pattern.HapticPattern
+import org.hapticon.core.pattern.Transient
+import org.hapticon.messaging.RendererKind
+import org.junit.Test
+
+/** Haptic patterns in the app: the Icons tab's pattern section, the pattern editor, a pattern message. */
+class PatternScreenshotTest : ScreenshotTest() {
+    // A falling "boing" with a tap on top, and a slow swell sweeping up: the shapes AHAP and .haptic files hold.
+    private val boing = HapticPattern(
+        "boing",
+        listOf(AmplitudeKey(0.0, 0.0), AmplitudeKey(0.03, 1.0), AmplitudeKey(0.4, 0.0)),
+        listOf(FrequencyKey(0.0, 300.0), FrequencyKey(0.4, 90.0)),
+        listOf(Transient(0.0, 0.9, 0.8)),
+    )
+    private val swell = HapticPattern(
+        "swell",
+        listOf(AmplitudeKey(0.0, 0.0), AmplitudeKey(0.8, 0.9), AmplitudeKey(1.2, 0.9), AmplitudeKey(1.6, 0.0)),
+        listOf(FrequencyKey(0.0, 80.0), FrequencyKey(1.6, 240.0)),
+    )
+
+    // How an API 36 phone with a 120–280 Hz frequency profile plays them, as the app would compute it.
+    private val phone = DeviceCapabilities(
+        hasVibrator = true, hasAmplitudeControl = true, apiLevel = 36, envelopeEffectsSupported = true,
+        frequencyRangeHz = 120.0..280.0, envelopeInfo = EnvelopeEffectInfo.GUARANTEED,
+    )
+    private val actions = PatternListActions({}, {}, {}, { _, _ -> }, {}, {})
+
+    @Test
+    fun icons_patternsImportedAndAnImportRefused() = screen(
+        "icons-patterns",
+        prepare = { compose.onNode(hasScrollToKeyAction()).performScrollToKey("patterns-header") },
+    ) {
+        IconsScreen(
+            IconsUiState.Success(
+                HapticIcon.PRESETS, RendererKind.ENVELOPE, nowPlaying = null,
+                patterns = listOf(
+                    PatternItem(boing, "boing.ahap", PatternPlan.of(phone, boing).summary),
+                    PatternItem(swell, "swell.haptic", PatternPlan.of(phone, swell).summary),
+                ),
+                importMessage = "Not imported: huge.haptic: 2097152 bytes is larger than a pattern file may be (1048576 bytes)",
+            ),
+            IconsActions(),
+            patternActions = actions,
+        )
+    }
+
+    @Test
+    fun patternEditor_octaveDownAndSofter_previewAndHowThisPhonePlaysIt() = screen("pattern-editor") {
+        val fields = mapOf(
+            PatternEditField.NAME to "swell low", PatternEditField.GAIN to "0.7",
+            PatternEditField.SEMITONES to "-12", PatternEditField.TIME_SCALE to "1",
+        )
+        PatternEditorScreen(PatternEditorViewModel.validate(swell, fields, TestHapticPlayer()), { _, _ -> }, {}, {}, {})
+    }
+
+    @Test
+    fun patternEditor_timeScaleOutOfRange_namesTheField() = screen("pattern-editor-error") {
+        val fields = mapOf(
+            PatternEditField.NAME to "swell", PatternEditField.GAIN to "1",
+            PatternEditField.SEMITONES to "0", PatternEditField.TIME_SCALE to "19",
+        )
+        PatternEditorScreen(PatternEditorViewModel.validate(swell, fields, TestHapticPlayer()), { _, _ -> }, {}, {}, {})
+    }
+
+    @Test
+    fun conversation_patternMessage_feelChipWithItsEnvelope() = screen("chats-conversation-pattern") {
+        val now = 1_767_225_600_000L + 15 * 3_600_000L
+        fun message(n: Int, outgoing: Boolean, state: MessageState, text: String, pattern: HapticPattern? = null) = StoredMessage(
+            "0b7e7c1e-3f7b-4a57-9d3e-%012d".format(n), "bob", if (outgoing) "alice" else "bob", now - (10 - n) * 60_000L, text, null,
+            null, outgoing, state, null, pattern = pattern,
+        )
+        ConversationScreen(
+            ConversationUiState.Success(
+                "bob",
+                listOf(
+                    message(1, false, MessageState.RECEIVED, "Made this in Haptics Studio", boing),
+                    message(2, true, MessageState.FELT, "Ha, it bounces. Try mine", swell),
+                    message(3, false, MessageState.RECEIVED, "Slow and rising, nice"),
+                ),
+                HapticIcon.PRESETS, null, null, null, null,
+            ),
+            ConversationActions(), ChatClock(ZoneOffset.UTC, Locale.UK), now,
+        )
+    }
+}
