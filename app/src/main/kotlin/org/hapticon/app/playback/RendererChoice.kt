@@ -7,6 +7,7 @@ import android.os.VibrationEffect
 import android.os.Vibrator
 import android.util.Log
 import java.io.IOException
+import kotlin.coroutines.CoroutineContext
 import kotlin.math.roundToInt
 import org.hapticon.core.HapticIcon
 import org.hapticon.core.render.EnvelopeControlPoints
@@ -102,6 +103,7 @@ object RendererChoice {
      * signal: the audio path carries the icon sample by sample). Null when nothing plays.
      */
     fun fidelityPercent(renderer: RendererKind, icon: HapticIcon): Int? {
+        noteRendering("fidelity of ${icon.name}")
         val rms = when (renderer) {
             RendererKind.AUDIO_COUPLED, RendererKind.AUDIO -> PcmRenderer(icon, IconAudioCache.SAMPLE_RATE).fidelity().rmsError
             RendererKind.ENVELOPE -> EnvelopeControlPoints.render(icon).fidelity.rmsError
@@ -134,6 +136,7 @@ class AdaptiveHapticPlayer(
     private val override: () -> RendererKind?,
     private val audio: AudioCoupledOutput? = null,
     private val audioCache: IconAudioCache? = null,
+    override val renderContext: CoroutineContext = DefaultRenderContext,
 ) : HapticPlayer {
     override val capabilities: PlaybackCapabilities
         get() = device().let { PlaybackCapabilities(it.hasVibrator, it.hasAmplitudeControl, it.apiLevel) }
@@ -146,6 +149,7 @@ class AdaptiveHapticPlayer(
     }
 
     override fun play(icon: HapticIcon): Playback {
+        noteRendering("render ${icon.name}")
         val waveform = when (rendererFor(icon)) {
             // choose() never returns the wire-only kinds AUDIO and UNKNOWN.
             RendererKind.NONE, RendererKind.AUDIO, RendererKind.UNKNOWN -> return Playback.Unsupported

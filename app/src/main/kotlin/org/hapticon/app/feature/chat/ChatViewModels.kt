@@ -15,6 +15,7 @@ import org.hapticon.app.data.IconRepository
 import org.hapticon.app.data.database.ConversationSummary
 import org.hapticon.app.data.database.StoredMessage
 import org.hapticon.app.playback.HapticPlayer
+import org.hapticon.app.playback.playOffMain
 import org.hapticon.app.playback.RendererChoice
 import org.hapticon.core.HapticIcon
 import org.hapticon.messaging.Capabilities
@@ -186,13 +187,13 @@ class ConversationViewModel(
 
     /** Feels [icon] on this phone (a long press in the composer): a press by the user, so not rate-limited. */
     fun play(icon: HapticIcon) {
-        player.play(icon)
+        viewModelScope.launch { player.playOffMain(icon) }
     }
 
     /** Feels a message's icon; for a received message the sender learns it was felt. */
     fun feel(message: StoredMessage) {
         val icon = message.icon ?: return
-        player.play(icon)
+        viewModelScope.launch { player.playOffMain(icon) }
         if (!message.outgoing) onFelt(peer, message.id)
     }
 

@@ -37,6 +37,7 @@ import androidx.compose.ui.ExperimentalComposeUiApi
 import androidx.compose.ui.Modifier
 import androidx.compose.ui.input.pointer.pointerInteropFilter
 import androidx.compose.ui.platform.LocalContext
+import androidx.compose.ui.semantics.clearAndSetSemantics
 import androidx.compose.ui.semantics.contentDescription
 import androidx.compose.ui.semantics.semantics
 import androidx.compose.ui.unit.dp
@@ -142,7 +143,15 @@ private fun SourcePicker(selected: GestureSourceKind, enabled: Boolean, onSelect
 
 @Composable
 private fun LivePlots(plot: PlotSource, channels: List<String>, revision: Long) {
-    channels.take(MAX_PLOTTED).forEachIndexed { i, name -> LivePlot(plot, i, revision, name) }
+    channels.take(MAX_PLOTTED).forEachIndexed { i, name -> NamedPlot(name) { LivePlot(plot, i, revision, name) } }
+}
+
+/** A plot under its channel's name: without it several stacked plots cannot be told apart. */
+@Composable
+private fun NamedPlot(name: String, plot: @Composable () -> Unit) {
+    // The plot's own description names the channel for TalkBack; the visible name would only repeat it.
+    Text(name, style = MaterialTheme.typography.labelMedium, modifier = Modifier.clearAndSetSemantics {})
+    plot()
 }
 
 @Composable
@@ -197,7 +206,7 @@ private fun TrimAndFit(state: RecorderUiState, take: Recording, actions: Recorde
     val last = take.frameCount.toFloat()
     Text("Trim", style = MaterialTheme.typography.titleMedium)
     take.channels.take(MAX_PLOTTED).forEachIndexed { i, channel ->
-        LivePlot(source, i, 0, channel.name, description = "Plot of the recorded ${channel.name}")
+        NamedPlot(channel.name) { LivePlot(source, i, 0, channel.name, description = "Plot of the recorded ${channel.name}") }
     }
     Text(String.format(Locale.ROOT, "Keep %.2f s to %.2f s of %.2f s", state.trimFrom / take.sampleRate, state.trimTo / take.sampleRate, take.durationSeconds))
     Slider(

@@ -38,6 +38,7 @@ import kotlinx.coroutines.launch
 import org.hapticon.app.data.RoomIconRepository
 import org.hapticon.app.designsystem.HapticonIcons
 import org.hapticon.app.playback.HapticPlayer
+import org.hapticon.app.playback.playOffMain
 import org.hapticon.app.ui.EnvelopeThumbnail
 import org.hapticon.core.HapticIcon
 import org.hapticon.core.IconValidationException
@@ -85,7 +86,7 @@ class IconEditorViewModel(
     }
 
     fun play() {
-        uiState.value.icon?.let { player.play(it) }
+        uiState.value.icon?.let { viewModelScope.launch { player.playOffMain(it) } }
     }
 
     fun save(onSaved: () -> Unit = {}) {

@@ -13,6 +13,7 @@ import kotlinx.coroutines.launch
 import org.hapticon.app.data.IconRepository
 import org.hapticon.app.playback.HapticPlayer
 import org.hapticon.app.playback.Playback
+import org.hapticon.app.playback.playOffMain
 import org.hapticon.messaging.RendererKind
 import org.hapticon.core.HapticIcon
 import org.hapticon.core.render.Fidelity
@@ -31,18 +32,18 @@ class IconsViewModel(
             IconsUiState.Success(icons = icons, renderer = player.capabilities.renderer, nowPlaying = playing)
         }.stateIn(viewModelScope, SharingStarted.WhileSubscribed(5_000), IconsUiState.Loading)
 
-    /** Plays [icon] on the vibrator; the UI shows it as playing until it ends. */
+    /** Plays [icon] on the vibrator (rendered off the main thread); the UI shows it as playing until it ends. */
     fun play(icon: HapticIcon) {
         clearWhenDone?.cancel()
-        when (val playback = player.play(icon)) {
-            is Playback.Playing -> {
-                nowPlaying.value = NowPlaying(icon.name, playback.renderer, playback.durationMillis, playback.fidelity)
-                clearWhenDone = viewModelScope.launch {
+        clearWhenDone = viewModelScope.launch {
+            when (val playback = player.playOffMain(icon)) {
+                is Playback.Playing -> {
+                    nowPlaying.value = NowPlaying(icon.name, playback.renderer, playback.durationMillis, playback.fidelity)
                     delay(playback.durationMillis)
                     nowPlaying.value = null
                 }
+                Playback.Unsupported -> nowPlaying.value = null
             }
-            Playback.Unsupported -> nowPlaying.value = null
         }
     }
 

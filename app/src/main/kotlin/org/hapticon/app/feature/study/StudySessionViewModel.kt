@@ -11,6 +11,7 @@ import kotlinx.coroutines.launch
 import kotlinx.coroutines.sync.Mutex
 import kotlinx.coroutines.sync.withLock
 import org.hapticon.app.playback.HapticPlayer
+import org.hapticon.app.playback.playOffMain
 import org.hapticon.app.playback.Playback
 import org.hapticon.app.study.MaskingNoisePlayer
 import org.hapticon.app.study.SessionRecord
@@ -101,7 +102,7 @@ class StudySessionViewModel(
                 else -> return@act
             }
             append(StudyEvent.IconPressed(taskId, stimulus.id))
-            val playback = player.play(stimulus.icon)
+            val playback = player.playOffMain(stimulus.icon)
             if (playback is Playback.Playing) {
                 append(StudyEvent.PlaybackStarted(taskId, stimulus.id))
                 playing = true
