@@ -171,7 +171,9 @@ class AndroidApp:
                "--target-sdk-version", self.target_sdk, "--version-code", self.version_code,
                "--version-name", self.version_name, "--rename-manifest-package", self.application_id,
                "-o", res_apk]
-        cmd += ["--proguard", os.path.join(work, "aapt2-rules.pro")] if release else ["--debug-mode"]
+        # aapt2's keep rules for the classes the manifest and layouts name: R8 needs them (release, and the
+        # debug build's library shrinking).
+        cmd += ["--proguard", os.path.join(work, "aapt2-rules.pro")] + ([] if release else ["--debug-mode"])
         if packages:
             cmd += ["--extra-packages", ":".join(sorted(packages))]
         run(cmd, "aapt2 link", log=os.path.join(work, "aapt2-link.log"))
@@ -194,7 +196,8 @@ class AndroidApp:
         fp = fingerprint(self.b.external_classpath(self.m, "main-runtime"), self._resource_sources(), str(self.m.android))
         stamp = os.path.join(work, "resources.stamp")
         self.res_apk, self.r_jar = os.path.join(work, "resources.apk"), os.path.join(work, "R.jar")
-        if not (os.path.exists(stamp) and open(stamp).read() == fp and os.path.exists(self.r_jar)):
+        fresh = all(os.path.exists(f) for f in (stamp, self.r_jar, os.path.join(work, "aapt2-rules.pro")))
+        if not (fresh and open(stamp).read() == fp):
             with Stage(f"resources {self.m.path}"):
                 self._link("main-runtime", work)
                 with open(stamp, "w") as f:
@@ -209,16 +212,16 @@ class AndroidApp:
             self.compile_main()
         runtime = self.b.runtime_classpath(self.m, "main")
         project_entries = [e for e in runtime if e.startswith(self.b.out) or os.path.isdir(e)]
-        library_jars = []
-        for p in self.b.external_classpath(self.m, "main-runtime"):
-            library_jars += self.b.explode_aar(p)["jars"] if p.endswith(".aar") else [p]
+        library_jars, consumer_rules = self._library_inputs()
+        rules = [os.path.join(self.m.directory, f) for f in ("proguard-rules.pro", "proguard-debug-rules.pro")]
+        rules += [os.path.join(os.path.dirname(self.res_apk), "aapt2-rules.pro")] + consumer_rules
         stamp = self.apk + ".stamp"
-        fp = fingerprint(project_entries, library_jars, self.res_apk, self.r_jar)
+        fp = fingerprint(project_entries, library_jars, self.res_apk, self.r_jar, *rules)
         if os.path.exists(self.apk) and os.path.exists(stamp) and open(stamp).read() == fp:
             info(f"{os.path.relpath(self.apk, self.b.root)} is up to date")
             return self.apk
         with Stage("dex"):
-            dex_files = self._dex(project_entries, library_jars)
+            dex_files = self._dex(project_entries, library_jars, rules)
         with Stage("package and sign"):
             unsigned = os.path.join(self.out, "intermediates", "unsigned.apk")
             shutil.copyfile(self.res_apk, unsigned)
@@ -249,17 +252,7 @@ class AndroidApp:
             res_apk, r_jar = self._link("main-runtime", work, release=True)
         runtime = self.b.runtime_classpath(self.m, "main")
         project_entries = [e for e in runtime if e.startswith(self.b.out) or os.path.isdir(e)]
-        library_jars = []
-        consumer_rules = []
-        for p in self.b.external_classpath(self.m, "main-runtime"):
-            if p.endswith(".aar"):
-                aar = self.b.explode_aar(p)
-                library_jars += aar["jars"]
-                rules = os.path.join(aar["dir"], "proguard.txt")
-                if os.path.exists(rules):
-                    consumer_rules.append(rules)
-            else:
-                library_jars.append(p)
+        library_jars, consumer_rules = self._library_inputs()
         program = os.path.join(work, "program.jar")
         with zipfile.ZipFile(program, "w") as z:
             for entry in project_entries:
@@ -325,23 +318,35 @@ class AndroidApp:
         run([self.tools.java, "-Xmx3g", "-cp", self.tools.r8, "com.android.tools.r8.D8", "--release",
              "--min-api", self.min_sdk, "--lib", self.tools.android_jar, "--lib", self.tools.java_home, *args], what)
 
-    def _dex(self, project_entries: list[str], library_jars: list[str]) -> list[str]:
-        """Dex files for the APK: the libraries' set (built once per exact set of jars and cached), then the
-        program's own. minSdk ≥ 21 loads several dex files natively, so the two are never merged."""
+    def _library_inputs(self) -> tuple[list[str], list[str]]:
+        """The libraries' jars (an AAR's classes.jar and libs/*.jar) and the consumer keep rules their AARs ship."""
+        library_jars, consumer_rules = [], []
+        for p in self.b.external_classpath(self.m, "main-runtime"):
+            if p.endswith(".aar"):
+                aar = self.b.explode_aar(p)
+                library_jars += aar["jars"]
+                rules = os.path.join(aar["dir"], "proguard.txt")
+                if os.path.exists(rules):
+                    consumer_rules.append(rules)
+            else:
+                library_jars.append(p)
+        return library_jars, consumer_rules
+
+    def _dex(self, project_entries: list[str], library_jars: list[str], rules: list[str]) -> list[str]:
+        """Dex files for the debug APK: the libraries shrunk to what the app reaches, then the program's own
+        classes by D8, unshrunk. minSdk ≥ 21 loads several dex files natively, so the two are never merged.
+
+        The libraries' unshrunk dex alone is ~35 MB (12.4 MB deflated) and would put the debug APK over its
+        12 MB target, so they go through R8 with `-dontobfuscate -dontoptimize` (app/proguard-debug-rules.pro):
+        tree shaking only, names and code unchanged. What the app uses is traced from its classes by R8's
+        TraceReferences as keep rules (the way Slack's Keeper shrinks test APKs), beside the rules the release
+        build uses (the app's, aapt2's for the manifest, the libraries' own). The app's classes are not
+        shrunk, so they stay exactly as compiled and debuggable. The result is cached by the libraries, the
+        rules and the traced references, so R8 runs again only when the app starts using another library
+        class or member. Afterwards every library class the app names must be defined in the shrunk dex, and
+        the release smoke check runs on the whole dex set."""
         work = os.path.join(self.out, "intermediates", "dex")
         os.makedirs(work, exist_ok=True)
-        key = hashlib.sha1("\n".join(library_jars).encode())
-        for j in library_jars:
-            key.update(str(os.path.getsize(j)).encode())
-        cache = os.path.join(self.b.cache, "library-dex", key.hexdigest()[:16])
-        if not os.path.exists(os.path.join(cache, ".done")):
-            shutil.rmtree(cache, ignore_errors=True)
-            os.makedirs(os.path.join(cache, "final"))
-            info(f"dexing {len(library_jars)} library jars (cached for later builds)")
-            self._d8(["--output", os.path.join(cache, "final"), *library_jars], "D8 of libraries")
-            open(os.path.join(cache, ".done"), "w").close()
-        library_dex = sorted((os.path.join(cache, "final", f) for f in os.listdir(os.path.join(cache, "final"))),
-                             key=_dex_order)
         program = os.path.join(work, "program.jar")
         with zipfile.ZipFile(program, "w") as z:
             for entry in project_entries:
@@ -349,6 +354,35 @@ class AndroidApp:
             with zipfile.ZipFile(self.r_jar) as r:
                 for n in r.namelist():
                     z.writestr(n, r.read(n))
+        traced = os.path.join(work, "app-references.pro")
+        self._trace_references(["--keep-rules", "--source", program, *_each("--target", library_jars), "--output", traced],
+                               "TraceReferences of the app's library references")
+        key = hashlib.sha1()
+        for j in library_jars:
+            key.update(j.encode() + str(os.path.getsize(j)).encode())
+        for r in rules + [traced]:
+            key.update(open(r, "rb").read())
+        cache = os.path.join(self.b.cache, "library-dex", key.hexdigest()[:16])
+        if not os.path.exists(os.path.join(cache, ".done")):
+            shutil.rmtree(cache, ignore_errors=True)
+            os.makedirs(os.path.join(cache, "final"))
+            with Stage(f"R8 tree shaking of {len(library_jars)} library jars (cached until the app's references change)"):
+                args = ["--release", "--min-api", self.min_sdk, "--lib", self.tools.android_jar, "--lib", self.tools.java_home,
+                        "--classpath", self.r_jar,  # the libraries' R classes: aapt2 generates them with the app's
+                        "--output", os.path.join(cache, "final"), *_each("--pg-conf", rules + [traced])]
+                run([self.tools.java, "-Xmx3g", "-cp", self.tools.r8, "com.android.tools.r8.R8", *args, *library_jars],
+                    "R8 of the libraries", log=os.path.join(work, "r8-libraries.log"))
+            open(os.path.join(cache, ".done"), "w").close()
+        library_dex = sorted((os.path.join(cache, "final", f) for f in os.listdir(os.path.join(cache, "final"))
+                              if f.endswith(".dex")), key=_dex_order)
+        # Every library class the app names must still be defined (its members are kept by the traced rules;
+        # TraceReferences --check cannot read dex, so this checks the classes by their dex definitions).
+        defined = set().union(*(dex_type_names(open(d, "rb").read()) for d in library_dex))
+        named = re.findall(r"(?m)^-keep (?:class|interface|enum|@interface) (\S+) \{", open(traced).read())
+        lost = [n for n in named if "L" + n.replace(".", "/") + ";" not in defined]
+        if lost:
+            raise BuildError(f"the shrunk libraries lack classes the app uses: {', '.join(lost[:5])}")
+        info(f"{len(named)} library classes the app uses are in the shrunk libraries")
         program_out = os.path.join(work, "program")
         shutil.rmtree(program_out, ignore_errors=True)
         os.makedirs(program_out)
@@ -363,7 +397,14 @@ class AndroidApp:
         clash = library_types & program_types
         if clash:
             raise BuildError(f"classes defined by both the app and its libraries: {sorted(clash)[:5]}")
+        manifest = os.path.join(os.path.dirname(self.res_apk), "AndroidManifest.xml")
+        checked = smoke_check(library_dex + program_dex, required_classes(program, manifest))
+        info(f"{checked} classes reached by name found in the dex")
         return library_dex + program_dex
+
+    def _trace_references(self, args: list[str], what: str) -> str:
+        return run([self.tools.java, "-Xmx2g", "-cp", self.tools.r8, "com.android.tools.r8.tracereferences.TraceReferences",
+                    *args, "--lib", self.tools.android_jar, "--lib", self.tools.java_home], what)
 
     def _add_java_resources(self, apk: zipfile.ZipFile, entries: list[str]) -> int:
         taken: dict[str, bytes] = {}
@@ -483,6 +524,10 @@ class AndroidApp:
             f"-Droborazzi.test.{mode}=true", f"-Droborazzi.output.dir={roborazzi}",
             f"-Droborazzi.compare.output.dir={roborazzi}", f"-Droborazzi.result.dir={roborazzi}/results",
             f"-Dhapticon.screens.dir={os.path.join(self.b.root, 'docs', 'images', 'screens')}"])
+
+
+def _each(option: str, values: list[str]) -> list[str]:
+    return [a for v in values for a in (option, v)]
 
 
 def _dex_order(path: str) -> int:

@@ -2,6 +2,8 @@ package org.hapticon.app
 
 import android.app.Application
 import android.content.Context
+import android.content.pm.ApplicationInfo
+import android.os.StrictMode
 import org.hapticon.app.data.IconRepository
 import org.hapticon.app.data.database.HapticonDatabase
 import org.hapticon.app.gesture.GestureComponent
@@ -26,6 +28,10 @@ class HapticonApplication : Application() {
 
     override fun onCreate() {
         super.onCreate()
+        // Debug builds log disk, network and rendering work on the main thread (a phone's logcat shows each).
+        if (applicationInfo.flags and ApplicationInfo.FLAG_DEBUGGABLE != 0) {
+            StrictMode.setThreadPolicy(mainThreadPolicy().penaltyLog().build())
+        }
         container = AppContainer.create(this)
         // The chat sync runs in the application's scope from start-up: it drains the outbox and receives.
         container.chat?.sync?.start()

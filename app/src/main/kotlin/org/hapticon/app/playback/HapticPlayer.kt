@@ -5,6 +5,8 @@ import org.hapticon.core.HapticIcon
 import org.hapticon.core.render.EnvelopeModel
 import org.hapticon.core.pattern.HapticPattern
 import org.hapticon.core.render.Fidelity
+import kotlin.coroutines.CoroutineContext
+import kotlin.coroutines.EmptyCoroutineContext
 
 /** Plays haptic icons on the phone's actuator. */
 interface HapticPlayer {
@@ -14,9 +16,14 @@ interface HapticPlayer {
     /**
      * Starts playing [icon] with the default envelope model ([EnvelopeModel.DEFAULT], what the study's
      * participants felt), replacing whatever is playing. Returns how it is played, or
-     * [Playback.Unsupported] when the phone has no vibrator. Never blocks.
+     * [Playback.Unsupported] when the phone has no vibrator. Renders the icon on the calling thread (and may
+     * write its audio file), so callers use [playOffMain], which runs this in [renderContext]; rendering on the
+     * main thread is a StrictMode violation in debug builds.
      */
     fun play(icon: HapticIcon): Playback
+
+    /** Where [playOffMain] renders: the real players' default is `Dispatchers.Default`; doubles that do not render stay on the caller's. */
+    val renderContext: CoroutineContext get() = EmptyCoroutineContext
 
     /**
      * Starts playing [icon] with its envelope shaped by [model] (a study protocol's `envelopeModel`), as

@@ -7,6 +7,7 @@ import android.os.VibrationEffect
 import android.os.Vibrator
 import android.util.Log
 import java.io.IOException
+import kotlin.coroutines.CoroutineContext
 import kotlin.math.roundToInt
 import org.hapticon.core.HapticIcon
 import org.hapticon.core.pattern.EnvelopeEffectInfo
@@ -130,6 +131,7 @@ object RendererChoice {
      * signal: the audio path carries the icon sample by sample). Null when nothing plays.
      */
     fun fidelityPercent(renderer: RendererKind, icon: HapticIcon): Int? {
+        noteRendering("fidelity of ${icon.name}")
         val rms = when (renderer) {
             RendererKind.AUDIO_COUPLED, RendererKind.AUDIO -> PcmRenderer(icon, IconAudioCache.SAMPLE_RATE).fidelity().rmsError
             RendererKind.ENVELOPE -> EnvelopeControlPoints.render(icon).fidelity.rmsError
@@ -164,6 +166,7 @@ class AdaptiveHapticPlayer(
     private val audioCache: IconAudioCache? = null,
     /** What to do with pattern frequencies the actuator cannot give (a user choice; octaves by default). */
     private val pitchFit: () -> PitchFit = { PitchFit.OCTAVES },
+    override val renderContext: CoroutineContext = DefaultRenderContext,
 ) : HapticPlayer {
     override val capabilities: PlaybackCapabilities
         get() = device().let { PlaybackCapabilities(it.hasVibrator, it.hasAmplitudeControl, it.apiLevel) }
@@ -178,6 +181,7 @@ class AdaptiveHapticPlayer(
     override fun play(icon: HapticIcon): Playback = play(icon, EnvelopeModel.DEFAULT)
 
     override fun play(icon: HapticIcon, model: EnvelopeModel): Playback {
+        noteRendering("render ${icon.name}")
         val waveform = when (rendererFor(icon, model)) {
             // choose() never returns the wire-only kinds AUDIO and UNKNOWN.
             RendererKind.NONE, RendererKind.AUDIO, RendererKind.UNKNOWN -> return Playback.Unsupported

@@ -9,13 +9,17 @@ import org.hapticon.core.HapticIcon
 import org.hapticon.core.render.EnvelopeModel
 import org.hapticon.core.pattern.HapticPattern
 import org.hapticon.core.render.VibrationWaveform
+import kotlin.coroutines.CoroutineContext
 
 /**
  * Plays icons through [Vibrator] as `VibrationEffect.createWaveform` step waveforms rendered by
  * haptics-core ([VibrationWaveform]): amplitude steps where the vibrator supports amplitude
  * control, an on/off pattern otherwise.
  */
-class VibratorHapticPlayer(private val vibrator: Vibrator) : HapticPlayer {
+class VibratorHapticPlayer(
+    private val vibrator: Vibrator,
+    override val renderContext: CoroutineContext = DefaultRenderContext,
+) : HapticPlayer {
 
     // Read at each use: cheap, and right even if the vibrator changes (e.g. an external one attaches).
     override val capabilities: PlaybackCapabilities
@@ -28,6 +32,7 @@ class VibratorHapticPlayer(private val vibrator: Vibrator) : HapticPlayer {
     override fun play(icon: HapticIcon): Playback = play(icon, EnvelopeModel.DEFAULT)
 
     override fun play(icon: HapticIcon, model: EnvelopeModel): Playback {
+        noteRendering("render ${icon.name}")
         val renderer = capabilities.renderer
         val waveform = when (renderer) {
             RendererKind.AMPLITUDE_WAVEFORM -> VibrationWaveform.render(icon, model)

@@ -21,6 +21,7 @@ import kotlinx.coroutines.SupervisorJob
 import kotlinx.coroutines.launch
 import org.hapticon.app.HapticonApplication
 import org.hapticon.app.MainActivity
+import org.hapticon.app.playback.playOffMain
 import org.hapticon.app.R
 import org.hapticon.messaging.ChatMessage
 
@@ -201,7 +202,7 @@ class NotificationActionReceiver : BroadcastReceiver() {
                         val id = intent.getStringExtra(MessageNotifier.EXTRA_MESSAGE) ?: return@launch
                         val message = chat.repository.message(id) ?: return@launch
                         val icon = message.icon ?: return@launch
-                        chat.player.play(icon)
+                        chat.player.playOffMain(icon)
                         if (!message.outgoing) chat.sync.felt(peer, id)
                     }
                 }

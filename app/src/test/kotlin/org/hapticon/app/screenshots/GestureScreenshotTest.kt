@@ -22,6 +22,9 @@ import org.hapticon.gesture.extraction.SyntheticGestures
 import org.hapticon.gesture.recognition.GestureLabel
 import org.hapticon.sensor.live.EmptyPlotSource
 import org.junit.Test
+import org.hapticon.app.feature.gesture.RecordingPlotSource
+import org.hapticon.app.gesture.GestureSourceKind
+import org.hapticon.gesture.synthetic.SyntheticGestures as People
 
 /** The Gestures tab (recorder with a fitted icon, teach, live recognition) and the icon editor. */
 class GestureScreenshotTest : ScreenshotTest() {
@@ -37,6 +40,21 @@ class GestureScreenshotTest : ScreenshotTest() {
         RecorderScreen(
             RecorderUiState.Ready(take = take, trimTo = take.frameCount, fitChannel = "vibration", fit = fit, iconName = "tap", channels = take.channels.map { it.name }),
             EmptyPlotSource, null, RecorderActions(),
+        )
+    }
+
+    @Test
+    fun recorder_midRecordingFromTheSensorBoard() = screen("gestures-recorder-recording", Variant.MAIN) {
+        // 2.4 s into a gentle hug on an FSR board with an accelerometer: what the live plots show mid-take.
+        val person = People.people(1).single()
+        val take = People.perform(person, GestureLabel.parse("hug-gentle"), take = 0).labelled.recording
+        val sofar = take.slice(0, minOf(take.frameCount, (2.4 * take.sampleRate).toInt()))
+        RecorderScreen(
+            RecorderUiState(
+                sourceKind = GestureSourceKind.SENSOR_BOARD, recording = true, seconds = sofar.durationSeconds,
+                channels = sofar.channels.map { it.name }, plotRevision = 1,
+            ),
+            RecordingPlotSource(sofar), null, null, onImport = {},
         )
     }
 

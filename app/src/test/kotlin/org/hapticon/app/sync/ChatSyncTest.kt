@@ -1,5 +1,6 @@
 package org.hapticon.app.sync
 
+import kotlin.coroutines.EmptyCoroutineContext
 import android.content.Context
 import android.os.Vibrator
 import androidx.room.Room
@@ -76,7 +77,8 @@ class ChatSyncTest {
         quietNow: () -> Boolean = { false },
     ) = ChatSync(
         repository, repository, settings, factory,
-        AdaptiveHapticPlayer(vibrator, { device }, { null }), limiter,
+        // Rendered on the test's own thread: this test is about the sync (threading: MainThreadWorkTest).
+        AdaptiveHapticPlayer(vibrator, { device }, { null }, renderContext = EmptyCoroutineContext), limiter,
         { user -> RendererChoice.capabilitiesOf(user, device, null) }, scope, clock = { now },
         retryPolicy = RetryPolicy(initialDelayMillis = 10, maxDelayMillis = 10, jitter = 0.0), quietNow = quietNow,
     )

@@ -1,5 +1,6 @@
 package org.hapticon.app.sync
 
+import kotlin.coroutines.EmptyCoroutineContext
 import android.Manifest
 import android.app.Application
 import android.app.NotificationManager
@@ -90,7 +91,8 @@ class ReachableDeliveryTest {
         sync = ChatSync(
             repository, repository, settings,
             { user, url, password -> MqttMessenger(MqttSettings(BrokerAddress.parse(url), user, password, reconnectPolicy = fastReconnect)) },
-            AdaptiveHapticPlayer(vibrator, { device }, { null }), VibrationRateLimiter(Clock.MONOTONIC),
+            // Rendered on the calling thread: this test is about delivery (threading: MainThreadWorkTest).
+            AdaptiveHapticPlayer(vibrator, { device }, { null }, renderContext = EmptyCoroutineContext), VibrationRateLimiter(Clock.MONOTONIC),
             { user -> RendererChoice.capabilitiesOf(user, device, null) }, scope,
         )
         val notifier = MessageNotifier(context) { "alice" }

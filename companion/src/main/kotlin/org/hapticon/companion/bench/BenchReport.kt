@@ -77,6 +77,12 @@ object BenchReport {
             latency.p50Micros, latency.p99Micros, latency.maxMicros, latency.grains, latency.samples,
         )
         line(
+            "  the worst grain waited %.1f µs runnable in the OS run queue%s; worst grain without its run-queue wait %.1f µs;" +
+                " over 1 ms: %d grains, %d of them under 1 ms without that wait, %d with a GC",
+            latency.runQueueMicrosAtMax, if (latency.gcAtMax) " and saw a GC" else ", no GC", latency.maxWithoutRunQueueMicros,
+            latency.over1ms, latency.over1msByRunQueue, latency.over1msWithGc,
+        )
+        line(
             "  bytes allocated per sample: %s from decoded frame to command encoded; %s on the whole reader thread (with the fake port's own)",
             allocation(latency.handlerBytesPerSample), allocation(latency.readerBytesPerSample),
         )
@@ -174,6 +180,12 @@ object BenchReport {
             "p50Micros" to rounded(sensors.latency.p50Micros, 2),
             "p99Micros" to rounded(sensors.latency.p99Micros, 2),
             "maxMicros" to rounded(sensors.latency.maxMicros, 2),
+            "runQueueMicrosAtMax" to measured(sensors.latency.runQueueMicrosAtMax, 2),
+            "gcAtMax" to JsonBoolean(sensors.latency.gcAtMax),
+            "maxWithoutRunQueueMicros" to measured(sensors.latency.maxWithoutRunQueueMicros, 2),
+            "over1ms" to JsonNumber(sensors.latency.over1ms),
+            "over1msByRunQueue" to JsonNumber(sensors.latency.over1msByRunQueue),
+            "over1msWithGc" to JsonNumber(sensors.latency.over1msWithGc),
             "handlerAllocatedBytesPerSample" to measured(sensors.latency.handlerBytesPerSample, 3),
             "readerAllocatedBytesPerSample" to measured(sensors.latency.readerBytesPerSample, 3),
         ),

@@ -96,6 +96,7 @@ data class BenchResult(
         val grainDecision = sensors.model("grainDecider").medianNanosPerSample
         val p99 = sensors.latency.p99Micros
         val worst = sensors.latency.maxMicros
+        val freeCore = sensors.latency.maxWithoutRunQueueMicros
         return listOf(
             Target("decodeCsv", ">= 50 MB/s", csv, "MB/s", csv >= 50.0),
             Target("decodeFramed", ">= 50 MB/s", framed, "MB/s", framed >= 50.0),
@@ -104,6 +105,8 @@ data class BenchResult(
             Target("grainLatencyP99", "<= 1000 µs", p99, "µs", p99 <= 1000.0),
             // The worst single sample: met on a quiet machine; a loaded one adds scheduler delays (docs/performance.md).
             Target("grainLatencyMax", "<= 1000 µs (quiet)", worst, "µs", worst <= 1000.0),
+            // The same worst case with each grain's own run-queue wait (measured, not assumed) taken off: a free core.
+            Target("grainLatencyMaxFreeCore", "<= 1000 µs", freeCore, "µs", freeCore <= 1000.0),
         )
     }
 }

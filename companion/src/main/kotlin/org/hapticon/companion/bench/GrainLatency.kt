@@ -14,7 +14,11 @@ import org.hapticon.sensor.protocol.framed.FramedEncoder
 import org.hapticon.sensor.protocol.framed.FramedProtocol
 import org.hapticon.sensor.protocol.framed.SampleFrame
 import org.hapticon.sensor.safety.SafetyLimits
+import java.io.File
 import java.lang.management.ManagementFactory
+import java.nio.ByteBuffer
+import java.nio.channels.FileChannel
+import java.nio.file.Path
 import java.util.concurrent.atomic.AtomicInteger
 import kotlin.math.ceil
 
@@ -26,6 +30,14 @@ import kotlin.math.ceil
  * sample, which adds decoding (0, measured by the decoding bench) and the [FakeSerialPort]'s own work (a
  * lock condition node per wait, a recorded copy per write: the test double's, not the app's). NaN where
  * not counted.
+ *
+ * Where the worst case comes from, measured in the same run (Linux; NaN or 0 elsewhere): for each grain the
+ * time the reader thread spent runnable but waiting for a CPU (the kernel's run-queue wait,
+ * `/proc/<pid>/task/<tid>/schedstat` field 2) and whether a garbage collection ran. [runQueueMicrosAtMax] and
+ * [gcAtMax] describe the worst grain; [maxWithoutRunQueueMicros] is the worst grain once each grain's own
+ * run-queue wait is taken off — what a machine with a free core would show; [over1ms] grains took longer
+ * than 1 ms, of which [over1msByRunQueue] are under 1 ms without their run-queue wait and [over1msWithGc] saw
+ * a collection.
  */
 data class GrainLatencyResult(
     val samples: Int,
@@ -35,6 +47,12 @@ data class GrainLatencyResult(
     val maxMicros: Double,
     val handlerBytesPerSample: Double = Double.NaN,
     val readerBytesPerSample: Double = Double.NaN,
+    val runQueueMicrosAtMax: Double = Double.NaN,
+    val gcAtMax: Boolean = false,
+    val maxWithoutRunQueueMicros: Double = Double.NaN,
+    val over1ms: Int = 0,
+    val over1msByRunQueue: Int = 0,
+    val over1msWithGc: Int = 0,
 )
 
 /**
@@ -60,6 +78,13 @@ class GrainLatency(private val samples: Int, private val warmupSamples: Int) {
         val frames = encodeFrames(total)
         val writtenAt = LongArray(total)
         val latencies = LongArray(total) { NOT_A_GRAIN }
+        // The reader's run-queue wait (ns, cumulative) and the JVM's collection count after each sample; read by
+        // this thread between samples, so outside every latency, into preallocated arrays (nothing allocated).
+        val waitedAfter = LongArray(total) { -1L }
+        val collectionsAfter = LongArray(total)
+        val collectors = ManagementFactory.getGarbageCollectorMXBeans()
+        val runQueue = ByteBuffer.allocateDirect(RUN_QUEUE_BYTES)
+        var schedstat: FileChannel? = null
         val handled = AtomicInteger(0)
         val port = FakeSerialPort()
         val path = GrainPath(port, writtenAt, latencies, handled, warmupSamples, total)
@@ -72,18 +97,36 @@ class GrainLatency(private val samples: Int, private val warmupSamples: Int) {
                 writtenAt[i] = System.nanoTime()
                 port.enqueue(frames.samples[i])
                 awaitHandled(handled, i + 1, reader) { failure }
+                if (schedstat == null) schedstat = path.schedstat?.let { openOrNull(it) }
+                waitedAfter[i] = schedstat?.let { runQueueNanos(it, runQueue) } ?: -1L
+                collectionsAfter[i] = collectors.sumOf { it.collectionCount }
             }
         } finally {
+            schedstat?.close()
             reader.stop()
             port.close()
             reader.awaitStop(STALL_MILLIS)
         }
-        val measured = latencies.copyOfRange(warmupSamples, total).filter { it != NOT_A_GRAIN }.sorted()
-        check(measured.isNotEmpty()) { "no grain fired in $samples samples" }
+        val grainIndices = (warmupSamples until total).filter { latencies[it] != NOT_A_GRAIN }
+        check(grainIndices.isNotEmpty()) { "no grain fired in $samples samples" }
+        val measured = grainIndices.map { latencies[it] }.sorted()
+        // Per grain: the reader's run-queue wait during it (NaN when unknown) and whether a collection ran.
+        val waited = grainIndices.associateWith { i ->
+            if (i == 0 || waitedAfter[i] < 0 || waitedAfter[i - 1] < 0) Double.NaN else (waitedAfter[i] - waitedAfter[i - 1]).toDouble()
+        }
+        val collected = grainIndices.associateWith { i -> i > 0 && collectionsAfter[i] != collectionsAfter[i - 1] }
+        val worst = grainIndices.maxBy { latencies[it] }
+        val over = grainIndices.filter { latencies[it] > ONE_MS_NANOS }
         return GrainLatencyResult(
             samples, measured.size, rank(measured, 0.50) / 1e3, rank(measured, 0.99) / 1e3, measured.last() / 1e3,
             handlerBytesPerSample = path.handlerBytes() / samples,
             readerBytesPerSample = path.allocatedBytes() / samples,
+            runQueueMicrosAtMax = waited.getValue(worst) / 1e3,
+            gcAtMax = collected.getValue(worst),
+            maxWithoutRunQueueMicros = grainIndices.maxOf { latencies[it] - waited.getValue(it) } / 1e3,
+            over1ms = over.size,
+            over1msByRunQueue = over.count { latencies[it] - waited.getValue(it) <= ONE_MS_NANOS },
+            over1msWithGc = over.count { collected.getValue(it) },
         )
     }
 
@@ -119,8 +162,12 @@ class GrainLatency(private val samples: Int, private val warmupSamples: Int) {
         private val fullScale = intArrayOf(SafetyLimits.SERVO_MAX)
         private var index = 0
 
+        /** This reader thread's schedstat file (Linux), found on the first sample, a warm-up one; null elsewhere. */
+        @Volatile var schedstat: String? = null
+
         override fun onSample(frame: SampleFrame) {
             val i = index++
+            if (i == 0) schedstat = runCatching { File("/proc/thread-self").canonicalPath + "/schedstat" }.getOrNull()
             val entered = threadBytes()
             if (i == warmupSamples) bytesAtWarmupEnd = entered
             // The allocation-free conversion, as the app's GrainEngine uses (NaN, a fault, never fires).
@@ -166,6 +213,25 @@ class GrainLatency(private val samples: Int, private val warmupSamples: Int) {
         }
     }
 
+    private fun openOrNull(path: String): FileChannel? = runCatching { FileChannel.open(Path.of(path)) }.getOrNull()
+
+    /** Field 2 of a schedstat file ("run ns, run-queue wait ns, slices"), read again from offset 0 into [buffer]. */
+    private fun runQueueNanos(channel: FileChannel, buffer: ByteBuffer): Long {
+        buffer.clear()
+        if (channel.read(buffer, 0) <= 0) return -1L
+        var field = 0
+        var value = 0L
+        for (k in 0 until buffer.position()) {
+            val c = buffer.get(k).toInt()
+            when {
+                c == ' '.code -> if (field++ == 1) return value else value = 0L
+                c in '0'.code..'9'.code -> value = value * 10 + (c - '0'.code)
+                else -> return -1L
+            }
+        }
+        return -1L
+    }
+
     private fun rank(sorted: List<Long>, fraction: Double): Double = sorted[(ceil(fraction * sorted.size).toInt() - 1).coerceAtLeast(0)].toDouble()
 
     private companion object {
@@ -173,5 +239,7 @@ class GrainLatency(private val samples: Int, private val warmupSamples: Int) {
         const val READ_BYTES = 256
         const val WRITE_TIMEOUT_MILLIS = 100
         const val STALL_MILLIS = 5_000L
+        const val RUN_QUEUE_BYTES = 128
+        const val ONE_MS_NANOS = 1_000_000L
     }
 }

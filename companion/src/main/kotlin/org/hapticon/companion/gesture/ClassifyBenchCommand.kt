@@ -31,8 +31,16 @@ fun runClassifyBench(args: List<String>, console: Console) {
         windows = listOf(0.25, 0.5, 1.0, 2.0),
         treeCounts = if (quick) listOf(10, 30) else listOf(10, 30, 100),
     )
+    val started = System.nanoTime()
     val results = RecognitionBench.run(config) { console.err.println("classify-bench: $it") }
+    val parallelSeconds = (System.nanoTime() - started) / 1e9
     console.out.print(formatTable(results, config))
+    // The baseline: the same folds on one thread, in the same run. It runs second, with the JIT already warm,
+    // so the printed speed-up errs low.
+    val sequentialStarted = System.nanoTime()
+    val sequential = RecognitionBench.run(config, parallel = false) { console.err.println("classify-bench (one thread): $it") }
+    val sequentialSeconds = (System.nanoTime() - sequentialStarted) / 1e9
+    console.out.println(formatSpeedUp(parallelSeconds, sequentialSeconds, Runtime.getRuntime().availableProcessors(), sameFigures(results, sequential)))
     val personal = RecognitionBench.personal(config, DEFAULT_TREES)
     console.out.println(
         String.format(
@@ -58,3 +66,16 @@ internal fun formatTable(results: List<RecognitionResult>, config: RecognitionBe
         )
     }
 }
+
+/** Whether two runs agree on every figure but the timing (µs per window), as a run with one seed must. */
+internal fun sameFigures(a: List<RecognitionResult>, b: List<RecognitionResult>): Boolean =
+    a.size == b.size && a.zip(b).all { (x, y) ->
+        x.windowSeconds == y.windowSeconds && x.trees == y.trees && x.accuracyMean == y.accuracyMean &&
+            x.accuracySd == y.accuracySd && x.latencyMs.equals(y.latencyMs) && x.liveHitRate == y.liveHitRate
+    }
+
+/** The parallel run's wall time beside the one-thread baseline's from the same run, and their ratio. */
+internal fun formatSpeedUp(parallelSeconds: Double, sequentialSeconds: Double, cores: Int, identical: Boolean): String = String.format(
+    Locale.ROOT, "leave-one-out wall time: %.1f s on %d cores (folds in parallel), %.1f s on one thread (baseline, same run): speed-up %.2fx; figures %s",
+    parallelSeconds, cores, sequentialSeconds, sequentialSeconds / parallelSeconds, if (identical) "identical" else "DIFFER",
+)

@@ -181,7 +181,7 @@ class BenchmarkTest {
         val allocation = json["allocatedBytesPerBlock"] as JsonObject
         assertEquals(JsonNumber(0), allocation["exact"])
         assertEquals(JsonNumber(0), allocation["fast"])
-        val targets = setOf("fast", "exactVsSine", "firstBlock", "allocation", "decodeCsv", "decodeFramed", "decodeAllocation", "grainDecision", "grainLatencyP99", "grainLatencyMax")
+        val targets = setOf("fast", "exactVsSine", "firstBlock", "allocation", "decodeCsv", "decodeFramed", "decodeAllocation", "grainDecision", "grainLatencyP99", "grainLatencyMax", "grainLatencyMaxFreeCore")
         assertEquals(targets, (json["targets"] as JsonObject).members.keys)
         val latency = (json["sensors"] as JsonObject)["grainLatency"] as JsonObject
         assertEquals(JsonNumber(2_000), latency["samples"])

@@ -2,6 +2,7 @@ package org.hapticon.companion.bench
 
 import org.junit.Assert.assertEquals
 import org.junit.Assert.assertTrue
+import org.junit.Assume.assumeTrue
 import org.junit.Test
 
 class GrainLatencyTest {
@@ -26,6 +27,15 @@ class GrainLatencyTest {
         val result = GrainLatency(samples = 2_000, warmupSamples = 20_000).run()
         assertTrue(result.toString(), !result.handlerBytesPerSample.isNaN() && result.readerBytesPerSample >= result.handlerBytesPerSample)
         assertEquals(result.toString(), 0.0, result.handlerBytesPerSample, 0.0)
+    }
+
+    @Test
+    fun run_onLinux_attributesTheWorstGrainsRunQueueWait() {
+        assumeTrue("the attribution reads Linux's schedstat", java.io.File("/proc/thread-self/schedstat").exists())
+        val result = GrainLatency(samples = 2_000, warmupSamples = 2_000).run()
+        assertTrue(result.toString(), result.runQueueMicrosAtMax >= 0.0)
+        assertTrue(result.toString(), result.maxWithoutRunQueueMicros <= result.maxMicros)
+        assertTrue(result.toString(), result.over1msByRunQueue <= result.over1ms && result.over1msWithGc <= result.over1ms)
     }
 
     @Test(expected = IllegalArgumentException::class)

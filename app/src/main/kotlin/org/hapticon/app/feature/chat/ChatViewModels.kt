@@ -15,6 +15,7 @@ import org.hapticon.app.data.IconRepository
 import org.hapticon.app.data.database.ConversationSummary
 import org.hapticon.app.data.database.StoredMessage
 import org.hapticon.app.playback.HapticPlayer
+import org.hapticon.app.playback.playOffMain
 import org.hapticon.app.playback.RendererChoice
 import org.hapticon.core.HapticIcon
 import org.hapticon.messaging.Capabilities
@@ -196,7 +197,7 @@ class ConversationViewModel(
 
     /** Feels [icon] on this phone (a long press in the composer): a press by the user, so not rate-limited. */
     fun play(icon: HapticIcon) {
-        player.play(icon)
+        viewModelScope.launch { player.playOffMain(icon) }
     }
 
     /** Feels a message's icon; for a received message the sender learns it was felt. */
@@ -204,8 +205,8 @@ class ConversationViewModel(
         val icon = message.icon
         val pattern = message.pattern
         when {
-            icon != null -> player.play(icon)
-            pattern != null -> player.play(pattern)
+            icon != null -> viewModelScope.launch { player.playOffMain(icon) }
+            pattern != null -> viewModelScope.launch { player.playOffMain(pattern) }
             else -> return
         }
         if (!message.outgoing) onFelt(peer, message.id)

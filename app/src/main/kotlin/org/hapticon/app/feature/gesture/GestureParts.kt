@@ -17,6 +17,7 @@ import androidx.compose.runtime.Composable
 import androidx.compose.ui.Alignment
 import androidx.compose.ui.ExperimentalComposeUiApi
 import androidx.compose.ui.Modifier
+import androidx.compose.ui.semantics.clearAndSetSemantics
 import androidx.compose.ui.input.pointer.pointerInteropFilter
 import androidx.compose.ui.semantics.contentDescription
 import androidx.compose.ui.semantics.semantics
@@ -52,7 +53,15 @@ internal fun SourcePicker(selected: GestureSourceKind, enabled: Boolean, onSelec
 
 @Composable
 internal fun LivePlots(plot: PlotSource, channels: List<String>, revision: Long) {
-    channels.take(MAX_PLOTTED).forEachIndexed { i, name -> LivePlot(plot, i, revision, name) }
+    channels.take(MAX_PLOTTED).forEachIndexed { i, name -> NamedPlot(name) { LivePlot(plot, i, revision, name) } }
+}
+
+/** A plot under its channel's name: without it several stacked plots cannot be told apart. */
+@Composable
+internal fun NamedPlot(name: String, plot: @Composable () -> Unit) {
+    // The plot's own description names the channel for TalkBack; the visible name would only repeat it.
+    Text(name, style = MaterialTheme.typography.labelMedium, modifier = Modifier.clearAndSetSemantics {})
+    plot()
 }
 
 @Composable

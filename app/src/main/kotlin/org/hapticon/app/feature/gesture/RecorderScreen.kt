@@ -144,7 +144,7 @@ private fun TrimAndFit(state: RecorderUiState.Ready, take: Recording, actions: R
     val last = take.frameCount.toFloat()
     Text("Trim", style = MaterialTheme.typography.titleMedium)
     take.channels.take(MAX_PLOTTED).forEachIndexed { i, channel ->
-        LivePlot(source, i, 0, channel.name, description = "Plot of the recorded ${channel.name}")
+        NamedPlot(channel.name) { LivePlot(source, i, 0, channel.name, description = "Plot of the recorded ${channel.name}") }
     }
     Text(String.format(Locale.ROOT, "Keep %.2f s to %.2f s of %.2f s", state.trimFrom / take.sampleRate, state.trimTo / take.sampleRate, take.durationSeconds))
     Slider(

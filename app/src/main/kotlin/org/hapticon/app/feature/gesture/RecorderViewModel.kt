@@ -23,6 +23,7 @@ import org.hapticon.app.gesture.RecordingImport
 import org.hapticon.app.gesture.SavedRecording
 import org.hapticon.app.gesture.SourceRecorder
 import org.hapticon.app.playback.HapticPlayer
+import org.hapticon.app.playback.playOffMain
 import org.hapticon.core.HapticIcon
 import org.hapticon.core.IconValidationException
 import org.hapticon.gesture.Recording
@@ -211,7 +212,7 @@ class RecorderViewModel(
 
     /** Plays the fitted icon. */
     fun play() {
-        namedIcon()?.let { player.play(it) }
+        namedIcon()?.let { viewModelScope.launch { player.playOffMain(it) } }
     }
 
     /** Saves the fitted icon as a custom icon (replacing one of the same name). */

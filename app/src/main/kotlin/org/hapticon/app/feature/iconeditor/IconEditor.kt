@@ -25,6 +25,7 @@ import kotlinx.coroutines.launch
 import org.hapticon.app.data.RoomIconRepository
 import org.hapticon.app.playback.HapticPlayer
 import org.hapticon.app.ui.EditorScaffold
+import org.hapticon.app.playback.playOffMain
 import org.hapticon.app.ui.EnvelopeThumbnail
 import org.hapticon.app.ui.PlayAndSave
 import org.hapticon.app.ui.ValidatedField
@@ -94,7 +95,7 @@ class IconEditorViewModel(
     }
 
     fun play() {
-        uiState.value.icon?.let { player.play(it) }
+        uiState.value.icon?.let { viewModelScope.launch { player.playOffMain(it) } }
     }
 
     fun save(onSaved: () -> Unit = {}) {

@@ -20,6 +20,7 @@ import org.hapticon.app.playback.DeviceCapabilities
 import org.hapticon.app.playback.PatternPlan
 import org.hapticon.app.playback.HapticPlayer
 import org.hapticon.app.playback.Playback
+import org.hapticon.app.playback.playOffMain
 import org.hapticon.messaging.RendererKind
 import org.hapticon.core.HapticIcon
 import org.hapticon.core.pattern.HapticPattern
@@ -46,11 +47,11 @@ class IconsViewModel(
             )
         }.stateIn(viewModelScope, SharingStarted.WhileSubscribed(5_000), IconsUiState.Loading)
 
-    /** Plays [icon] on the vibrator; the UI shows it as playing until it ends. */
-    fun play(icon: HapticIcon) = show(icon.name, isPattern = false, player.play(icon))
+    /** Plays [icon] on the vibrator (rendered off the main thread); the UI shows it as playing until it ends. */
+    fun play(icon: HapticIcon) = show(icon.name, isPattern = false) { player.playOffMain(icon) }
 
-    /** Plays [pattern] on the vibrator (the best way this phone can: [AdaptiveHapticPlayer.planFor]). */
-    fun play(pattern: HapticPattern) = show(pattern.name, isPattern = true, player.play(pattern))
+    /** Plays [pattern] on the vibrator (the best way this phone can: [AdaptiveHapticPlayer.planFor]), off the main thread. */
+    fun play(pattern: HapticPattern) = show(pattern.name, isPattern = true) { player.playOffMain(pattern) }
 
     /** Imports a pattern file from outside; the screen shows what was imported, with notes, or the one-line error. */
     fun import(bytes: ByteArray, fileName: String) {
@@ -84,17 +85,17 @@ class IconsViewModel(
         viewModelScope.launch { repository.delete(pattern.name) }
     }
 
-    private fun show(name: String, isPattern: Boolean, playback: Playback) {
+    private fun show(name: String, isPattern: Boolean, play: suspend () -> Playback) {
         clearWhenDone?.cancel()
-        when (playback) {
-            is Playback.Playing -> {
-                nowPlaying.value = NowPlaying(name, playback.renderer, playback.durationMillis, playback.fidelity, isPattern)
-                clearWhenDone = viewModelScope.launch {
+        clearWhenDone = viewModelScope.launch {
+            when (val playback = play()) {
+                is Playback.Playing -> {
+                    nowPlaying.value = NowPlaying(name, playback.renderer, playback.durationMillis, playback.fidelity, isPattern)
                     delay(playback.durationMillis)
                     nowPlaying.value = null
                 }
+                Playback.Unsupported -> nowPlaying.value = null
             }
-            Playback.Unsupported -> nowPlaying.value = null
         }
     }
 

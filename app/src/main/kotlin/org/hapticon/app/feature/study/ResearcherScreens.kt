@@ -100,7 +100,7 @@ fun ResearcherScreen(state: ResearcherUiState, actions: ResearcherActions) {
                     )
                     val masking = selected.masking
                     Text(
-                        "${selected.protocol.tasks.size} tasks · tasks ${selected.protocol.taskOrder.jsonName} · seed ${selected.seed} · masking " +
+                        "${selected.protocol.tasks.size} tasks · task order ${selected.protocol.taskOrder.jsonName} · seed ${selected.seed} · masking " +
                             if (masking.isOn) "${masking.color.label} at ${"%.0f".format(Locale.ROOT, masking.cappedLevelDbfs)} dBFS" else "off",
                         style = MaterialTheme.typography.bodyMedium,
                     )

@@ -11,6 +11,7 @@ import kotlinx.coroutines.launch
 import kotlinx.coroutines.sync.Mutex
 import kotlinx.coroutines.sync.withLock
 import org.hapticon.app.playback.HapticPlayer
+import org.hapticon.app.playback.playOffMain
 import org.hapticon.app.playback.Playback
 import org.hapticon.app.study.MaskingNoisePlayer
 import org.hapticon.app.study.SessionRecord
@@ -93,7 +94,7 @@ class StudySessionViewModel(
             }
             append(StudyEvent.IconPressed(taskId, stimulus.id))
             // The protocol's envelope model: a paper-model protocol plays the paper's trapezoids, the default what the study's participants felt.
-            val playback = player.play(stimulus.icon, record.protocol.envelopeModel)
+            val playback = player.playOffMain(stimulus.icon, record.protocol.envelopeModel)
             if (playback is Playback.Playing) {
                 append(StudyEvent.PlaybackStarted(taskId, stimulus.id))
                 playing = true

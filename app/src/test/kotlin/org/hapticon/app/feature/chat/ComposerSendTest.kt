@@ -88,6 +88,7 @@ class ComposerSendTest {
     @Test
     fun textWithIcon_longPressPreviewsTapChoosesAndSendStoresBothAndQueuesIt() {
         compose.onNodeWithContentDescription("Icon knock").performTouchInput { longClick() }
+        compose.waitUntil(5_000) { lastVibration(vibrator) != null } // rendered off the main thread, then played
         // A long press previews: the knock went to the vibrator, and nothing was chosen.
         // The processing knock (the default model): 10 ms at 175, 10 ms at 111, then 250 ms off, three times.
         assertEquals(RecordedVibration(listOf(10L, 10L, 250L, 10L, 10L, 250L, 10L, 10L), listOf(175, 111, 0, 175, 111, 0, 175, 111)), lastVibration(vibrator))

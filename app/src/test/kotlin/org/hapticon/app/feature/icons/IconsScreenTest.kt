@@ -8,6 +8,7 @@ import androidx.compose.ui.test.hasContentDescription
 import androidx.compose.ui.test.hasScrollToNodeAction
 import androidx.compose.ui.test.hasText
 import androidx.compose.ui.test.junit4.createAndroidComposeRule
+import androidx.compose.ui.test.onAllNodesWithText
 import androidx.compose.ui.test.onNodeWithContentDescription
 import androidx.compose.ui.test.onNodeWithText
 import androidx.compose.ui.test.performClick
@@ -55,7 +56,8 @@ class IconsScreenTest {
         scrollTo(hasContentDescription("Play knock"))
 
         rule.onNodeWithContentDescription("Play knock").performClick()
-        rule.waitForIdle()
+        // The player renders off the main thread, then vibrates.
+        rule.waitUntil(5_000) { rule.onAllNodesWithText("Playing 560 ms", substring = true).fetchSemanticsNodes().isNotEmpty() }
 
         assertEquals(
             RecordedVibration(timings = listOf(10L, 10L, 250L, 10L, 10L, 250L, 10L, 10L), amplitudes = listOf(175, 111, 0, 175, 111, 0, 175, 111)),
