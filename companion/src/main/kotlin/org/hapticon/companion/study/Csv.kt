@@ -1,5 +1,6 @@
 package org.hapticon.companion.study
 
+import org.hapticon.study.export.CsvInjection
 import java.io.IOException
 import java.io.Reader
 import java.io.StringReader
@@ -48,11 +49,7 @@ object Csv {
      * spreadsheet evaluates them as a formula, and `hapticon analyze` must read negative responses back).
      * The stored value is never changed; only what is written out.
      */
-    fun neutralise(value: String): String =
-        if (value.isNotEmpty() && value[0] in FORMULA_STARTS && !PLAIN_NUMBER.matches(value)) "'$value" else value
-
-    private const val FORMULA_STARTS = "=+-@\t\r"
-    private val PLAIN_NUMBER = Regex("[+-]?(?:[0-9]+(?:\\.[0-9]*)?|\\.[0-9]+)(?:[eE][+-]?[0-9]+)?")
+    fun neutralise(value: String): String = CsvInjection.neutralise(value)
 }
 
 /** Reads one [CsvRecord] at a time from [reader] through its own buffer (no per-character virtual calls). */
