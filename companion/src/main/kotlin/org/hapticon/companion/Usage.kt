@@ -70,7 +70,9 @@ val USAGE: String = """
     |      Study collector: an HTTP service the app uploads results to (POST /v1/results, text/csv with
     |      X-Study-Id); GET /v1/studies/ID/results.csv, GET /health. Every /v1 request needs a bearer token
     |      of its study and role; --allow-anonymous turns that off (loudly). Defaults: 127.0.0.1:8080,
-    |      sqlite:hapticon-results.db. Runs until Ctrl-C.
+    |      sqlite:hapticon-results.db. Runs until Ctrl-C. Limits: --max-connections N (256),
+    |      --idle-timeout-ms N (10000), --max-body-mb N (16), --rate N requests/s per client address (20)
+    |      with --burst N (100); over the rate: 429.
     |  hapticon collect token add --study ID --role upload|download [--db DB]
     |  hapticon collect token list [--db DB]
     |  hapticon collect token revoke TOKEN_ID [--db DB]
