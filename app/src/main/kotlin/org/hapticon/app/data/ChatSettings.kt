@@ -31,12 +31,17 @@ data class ChatPreferences(
      * ties topics to it), or null for a broker run with `--allow-anonymous`.
      */
     val brokerPassword: String? = null,
+    /**
+     * Seal every message end to end ([org.hapticon.messaging.e2e.EndToEnd], keys in [AppKeys]). Off by default
+     * while peers may run without it: a sealed chat refuses plaintext and cannot write to a peer without keys.
+     */
+    val endToEnd: Boolean = false,
 ) {
     /** Omits the password, so that it never reaches a log. */
     override fun toString(): String =
         "ChatPreferences(userName=$userName, brokerUrl=$brokerUrl, autoPlay=$autoPlay, rendererOverride=$rendererOverride, " +
             "dynamicColor=$dynamicColor, sendFeltReceipts=$sendFeltReceipts, stayReachable=$stayReachable, " +
-            "reachableAfterBoot=$reachableAfterBoot, archived=$archived, brokerPassword=${if (brokerPassword == null) "none" else "***"})"
+            "reachableAfterBoot=$reachableAfterBoot, archived=$archived, endToEnd=$endToEnd, brokerPassword=${if (brokerPassword == null) "none" else "***"})"
 }
 
 /** Reads and writes [ChatPreferences]. */
@@ -75,6 +80,7 @@ class SharedPreferencesChatSettings(
             .putBoolean(STAY_REACHABLE, next.stayReachable)
             .putBoolean(AFTER_BOOT, next.reachableAfterBoot)
             .putStringSet(ARCHIVED, next.archived)
+            .putBoolean(END_TO_END, next.endToEnd)
             .apply()
         writePassword(next.brokerPassword)
         state.value = next
@@ -111,6 +117,7 @@ class SharedPreferencesChatSettings(
         stayReachable = prefs.getBoolean(STAY_REACHABLE, false),
         reachableAfterBoot = prefs.getBoolean(AFTER_BOOT, false),
         archived = prefs.getStringSet(ARCHIVED, null)?.toSet() ?: emptySet(),
+        endToEnd = prefs.getBoolean(END_TO_END, false),
     )
 
     private companion object {
@@ -126,6 +133,7 @@ class SharedPreferencesChatSettings(
         const val STAY_REACHABLE = "stay_reachable"
         const val AFTER_BOOT = "reachable_after_boot"
         const val ARCHIVED = "archived"
+        const val END_TO_END = "end_to_end"
     }
 }
 

@@ -19,6 +19,9 @@ import java.security.Security
 class KeystoreSecrets(private val aead: () -> Aead = { keystoreAead(KEY_ALIAS) }) {
     private val key by lazy(aead)
 
+    /** The Keystore-backed AEAD itself, for wrapping Tink keysets (the end-to-end keys, [AppKeys]). */
+    val wrappingKey: Aead get() = key
+
     /** [plaintext] sealed for [purpose], as base64 text for SharedPreferences. Throws [GeneralSecurityException]. */
     fun seal(plaintext: String, purpose: String): String =
         Base64.encodeToString(key.encrypt(plaintext.toByteArray(Charsets.UTF_8), purpose.toByteArray(Charsets.UTF_8)), Base64.NO_WRAP)

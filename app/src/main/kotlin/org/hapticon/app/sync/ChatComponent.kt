@@ -5,6 +5,7 @@ import kotlinx.coroutines.CoroutineScope
 import kotlinx.coroutines.Dispatchers
 import kotlinx.coroutines.SupervisorJob
 import kotlinx.coroutines.flow.MutableStateFlow
+import org.hapticon.app.data.AppKeys
 import org.hapticon.app.data.ChatRepository
 import org.hapticon.app.data.ChatSettingsRepository
 import org.hapticon.app.data.OfflineFirstChatRepository
@@ -59,6 +60,7 @@ class ChatComponent(
         ): ChatComponent {
             val repository = OfflineFirstChatRepository(db)
             val settings = SharedPreferencesChatSettings(context)
+            val keys = AppKeys(java.io.File(context.filesDir, "e2e"))
             val vibrator = defaultVibrator(context)
             // Audio support does not change while the app runs; asking for it costs an effect-library query.
             val audio = DeviceCapabilities.detect(context, vibrator)
@@ -75,7 +77,9 @@ class ChatComponent(
                 repository = repository,
                 outbox = repository,
                 settings = settings,
-                messengerFactory = { user, broker, password -> mqttMessenger(user, broker, password) },
+                messengerFactory = { user, broker, password ->
+                    mqttMessenger(user, broker, password, keys.takeIf { settings.preferences.value.endToEnd })
+                },
                 player = player,
                 rateLimiter = VibrationRateLimiter(Clock.MONOTONIC),
                 localCapabilities = { user -> RendererChoice.capabilitiesOf(user, device(), override()) },
@@ -88,11 +92,18 @@ class ChatComponent(
             return ChatComponent(repository, RoomIconRepository(db.iconDao()), settings, sync, player, device, probe, notifier)
         }
 
-        // The client id is the user name (the broker binds it to the login), so no per-device id any more.
-        private fun mqttMessenger(user: String, broker: String, password: String?): Messenger? = try {
-            MqttMessenger(MqttSettings(BrokerAddress.parse(broker), user, password))
+        /**
+         * The messenger of [user] at [broker]; with [keys], sealed end to end. The client id is the user name (the
+         * broker binds it to the login), so no per-device id any more. Null, logged, when the address is not
+         * valid or the end-to-end keys do not open (the Keystore key is gone): rather no chat than a plaintext one.
+         */
+        internal fun mqttMessenger(user: String, broker: String, password: String?, keys: AppKeys?): Messenger? = try {
+            MqttMessenger(MqttSettings(BrokerAddress.parse(broker), user, password), keys?.endToEnd(user))
         } catch (e: IllegalArgumentException) {
             android.util.Log.w("ChatComponent", "no messenger for $user at $broker: ${e.message}")
+            null
+        } catch (e: java.security.GeneralSecurityException) {
+            android.util.Log.w("ChatComponent", "no messenger for $user: end-to-end keys do not open (${e.message})")
             null
         }
 
