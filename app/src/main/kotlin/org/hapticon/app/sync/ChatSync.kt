@@ -32,6 +32,7 @@ import org.hapticon.messaging.Outbox
 import org.hapticon.messaging.OutboxSender
 import org.hapticon.messaging.Receipt
 import org.hapticon.messaging.ReceiptState
+import org.hapticon.messaging.RejectionReason
 import org.hapticon.messaging.RetryPolicy
 import org.hapticon.messaging.VibrationDecision
 import org.hapticon.messaging.VibrationRateLimiter
@@ -88,6 +89,15 @@ class ChatSync(
     /** The connection of the current account, Disconnected without one. */
     val connection: StateFlow<ConnectionState> = connectionState.asStateFlow()
 
+    private val warnings = MutableStateFlow<List<String>>(emptyList())
+
+    /**
+     * End-to-end warnings for the user, newest last (at most [MAX_SECURITY_WARNINGS]): a peer's changed key (with
+     * both safety numbers), a forged or undecryptable payload, plaintext refused. Shown, never silently dropped;
+     * the refused payload itself stays in the sender's outbox.
+     */
+    val securityWarnings: StateFlow<List<String>> = warnings.asStateFlow()
+
     /** The latest capabilities each peer published (retained on the broker, so known soon after connecting). */
     val peerCapabilities: StateFlow<Map<String, Capabilities>> = peers.asStateFlow()
 
@@ -106,9 +116,11 @@ class ChatSync(
         if (job != null) return
         job = scope.launch {
             settings.preferences
-                .map { Triple(it.userName, it.brokerUrl, it.brokerPassword) }
+                // endToEnd too: switching it makes a new (sealing or plain) messenger.
+                .map { Triple(it.userName, it.brokerUrl, it.brokerPassword) to it.endToEnd }
                 .distinctUntilChanged()
-                .collectLatest { (user, broker, password) ->
+                .collectLatest { (target, _) ->
+                    val (user, broker, password) = target
                     if (user == null) return@collectLatest
                     // Set before the session starts, so a waiter never takes the previous session's state for this one's.
                     connectionState.value = ConnectionState.Connecting(null)
@@ -195,7 +207,10 @@ class ChatSync(
                 }
                 is InboxEvent.CapabilitiesReceived -> peers.update { it + (event.capabilities.user to event.capabilities) }
                 is InboxEvent.HandPoseReceived -> hands[event.pose.from]?.offer(event.pose, nanoClock())
-                is InboxEvent.Rejected -> Log.w(TAG, "rejected payload on ${event.topic}: ${event.rejection.reason} ${event.rejection.field ?: ""} ${event.rejection.detail}")
+                is InboxEvent.Rejected -> {
+                    Log.w(TAG, "rejected payload on ${event.topic}: ${event.rejection.reason} ${event.rejection.field ?: ""} ${event.rejection.detail}")
+                    if (event.rejection.reason in SECURITY_REASONS) warnings.update { (it + event.rejection.detail).takeLast(MAX_SECURITY_WARNINGS) }
+                }
             }
         } catch (e: Exception) {
             if (e is kotlinx.coroutines.CancellationException) throw e
@@ -293,6 +308,11 @@ class ChatSync(
 
     private companion object {
         const val TAG = "ChatSync"
+        const val MAX_SECURITY_WARNINGS = 20
+        val SECURITY_REASONS = setOf(
+            RejectionReason.KEY_CHANGED, RejectionReason.FORGED, RejectionReason.UNDECRYPTABLE,
+            RejectionReason.NOT_ENCRYPTED, RejectionReason.ENCRYPTED,
+        )
     }
 }
 

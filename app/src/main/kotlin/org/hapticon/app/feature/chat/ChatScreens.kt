@@ -199,6 +199,7 @@ private fun SettingsRoute(component: ChatComponent, onBack: () -> Unit, onOpenSt
             }
         }
     }
+    val securityWarnings by component.sync.securityWarnings.collectAsStateWithLifecycle()
     val state = SettingsUiState(
         prefs, RendererChoice.possible(component.device, null),
         when (val c = connection) {
@@ -207,6 +208,7 @@ private fun SettingsRoute(component: ChatComponent, onBack: () -> Unit, onOpenSt
             ConnectionState.Disconnected -> "not connected"
             is ConnectionState.Failed -> "refused: ${c.reason}"
         },
+        securityWarnings = securityWarnings,
     )
     SettingsScreen(
         state,

@@ -223,4 +223,10 @@ class ConversationViewModel(
 }
 
 /** The settings screen's values, read from the chat settings. */
-data class SettingsUiState(val preferences: ChatPreferences, val renderers: List<RendererKind>, val connection: String)
+data class SettingsUiState(
+    val preferences: ChatPreferences,
+    val renderers: List<RendererKind>,
+    val connection: String,
+    /** End-to-end warnings (a peer's changed key, forged payloads), newest last ([org.hapticon.app.sync.ChatSync.securityWarnings]). */
+    val securityWarnings: List<String> = emptyList(),
+)

@@ -117,6 +117,16 @@ fun SettingsScreen(
                 onCheckedChange = { on -> actions.update { it.copy(reachableAfterBoot = on) } },
             )
 
+            Section("Privacy")
+            SwitchRow("Encrypt messages end to end", prefs.endToEnd, onCheckedChange = { on -> actions.update { it.copy(endToEnd = on) } })
+            Text(
+                "Only you and your peer can read or write your messages, not whoever runs the broker. Your peers need it on too.",
+                style = MaterialTheme.typography.bodyMedium, color = MaterialTheme.colorScheme.onSurfaceVariant,
+            )
+            for (warning in uiState.securityWarnings) {
+                Text("⚠ $warning", style = MaterialTheme.typography.bodyMedium, color = MaterialTheme.colorScheme.error)
+            }
+
             Section("Appearance")
             SwitchRow("Colours from the wallpaper (Android 12+)", prefs.dynamicColor, onCheckedChange = { on -> actions.update { it.copy(dynamicColor = on) } })
 
