@@ -12,13 +12,19 @@ import java.security.GeneralSecurityException
  * app's files opens nothing without this phone's Keystore), and `pins-USER/` the peers' public keys as first seen.
  */
 class AppKeys(private val dir: File, private val secrets: KeystoreSecrets = KeystoreSecrets()) {
+    // One instance per user, so that a changed key the messenger holds back is the one [trust] accepts.
+    private val loaded = java.util.concurrent.ConcurrentHashMap<String, EndToEnd>()
+
     /**
      * [user]'s end-to-end protection, its keys made on first use. Throws [GeneralSecurityException] when the key
      * file does not open (the Keystore key is gone): the caller decides whether to make new keys, which peers
      * will then see as a key change.
      */
-    fun endToEnd(user: String): EndToEnd {
+    fun endToEnd(user: String): EndToEnd = loaded.getOrPut(user) {
         val identity = Identity.loadOrCreate(user, File(dir, "$user.keys"), secrets.wrappingKey)
-        return EndToEnd(identity, FileKeyPins(File(dir, "pins-$user")))
+        EndToEnd(identity, FileKeyPins(File(dir, "pins-$user")))
     }
+
+    /** [user] accepts [peer]'s changed key (after comparing safety numbers); false when none is waiting. */
+    fun trust(user: String, peer: String): Boolean = loaded[user]?.trust(peer) != null
 }

@@ -39,6 +39,8 @@ class ChatComponent(
     val probe: org.hapticon.app.feature.chat.BrokerProbe = { _, _, _ -> null },
     /** Posts arriving messages as notifications; null where there is none (some tests). */
     val notifier: MessageNotifier? = null,
+    /** Accepts a peer's changed end-to-end key for the current user; false when none is waiting. */
+    val trustKey: (peer: String) -> Boolean = { false },
 ) {
     /** An invite link opened from outside, waiting for the Chats screen to apply it. */
     val pendingInvite: MutableStateFlow<String?> = MutableStateFlow(null)
@@ -89,7 +91,11 @@ class ChatComponent(
             val notifier = MessageNotifier(context) { settings.preferences.value.userName }
             sync.onIncoming = { message, _ -> notifier.show(message) }
             val probe: org.hapticon.app.feature.chat.BrokerProbe = { user, broker, password -> probeBroker(settings, sync, user, broker, password) }
-            return ChatComponent(repository, RoomIconRepository(db.iconDao()), settings, sync, player, device, probe, notifier)
+            val trustKey = { peer: String ->
+                val user = settings.preferences.value.userName
+                (user != null && keys.trust(user, peer)).also { trusted -> if (trusted) sync.keyTrusted(peer) }
+            }
+            return ChatComponent(repository, RoomIconRepository(db.iconDao()), settings, sync, player, device, probe, notifier, trustKey)
         }
 
         /**

@@ -98,6 +98,14 @@ class ChatSync(
      */
     val securityWarnings: StateFlow<List<String>> = warnings.asStateFlow()
 
+    private val changedPeers = MutableStateFlow<Set<String>>(emptySet())
+
+    /** Peers whose key changed and is held back until the user trusts it ([keyTrusted] takes one off). */
+    val changedKeys: StateFlow<Set<String>> = changedPeers.asStateFlow()
+
+    /** [peer]'s new key was trusted: its warning is settled. */
+    fun keyTrusted(peer: String) = changedPeers.update { it - peer }
+
     /** The latest capabilities each peer published (retained on the broker, so known soon after connecting). */
     val peerCapabilities: StateFlow<Map<String, Capabilities>> = peers.asStateFlow()
 
@@ -210,6 +218,11 @@ class ChatSync(
                 is InboxEvent.Rejected -> {
                     Log.w(TAG, "rejected payload on ${event.topic}: ${event.rejection.reason} ${event.rejection.field ?: ""} ${event.rejection.detail}")
                     if (event.rejection.reason in SECURITY_REASONS) warnings.update { (it + event.rejection.detail).takeLast(MAX_SECURITY_WARNINGS) }
+                    if (event.rejection.reason == RejectionReason.KEY_CHANGED) {
+                        val user = messenger.user
+                        val peer = org.hapticon.messaging.Topics.inboxSender(user, event.topic) ?: org.hapticon.messaging.Topics.keysOwner(event.topic)
+                        if (peer != null) changedPeers.update { it + peer }
+                    }
                 }
             }
         } catch (e: Exception) {

@@ -352,5 +352,8 @@ class ChatSyncTest {
         messenger.deliver(InboxEvent.Rejected("hapticon/v1/inbox/alice/bob", org.hapticon.messaging.Decoded.Rejected(org.hapticon.messaging.RejectionReason.MALFORMED_JSON, null, "not JSON")))
         messenger.deliver(InboxEvent.Rejected("hapticon/v1/inbox/alice/bob", org.hapticon.messaging.Decoded.Rejected(org.hapticon.messaging.RejectionReason.KEY_CHANGED, null, keyChanged)))
         assertEquals(listOf(keyChanged), await(sync.securityWarnings) { it.isNotEmpty() })
+        assertEquals(setOf("bob"), sync.changedKeys.value)
+        sync.keyTrusted("bob")
+        assertEquals(emptySet<String>(), sync.changedKeys.value)
     }
 }

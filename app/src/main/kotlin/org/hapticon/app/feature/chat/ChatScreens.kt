@@ -200,6 +200,7 @@ private fun SettingsRoute(component: ChatComponent, onBack: () -> Unit, onOpenSt
         }
     }
     val securityWarnings by component.sync.securityWarnings.collectAsStateWithLifecycle()
+    val changedKeys by component.sync.changedKeys.collectAsStateWithLifecycle()
     val state = SettingsUiState(
         prefs, RendererChoice.possible(component.device, null),
         when (val c = connection) {
@@ -209,6 +210,7 @@ private fun SettingsRoute(component: ChatComponent, onBack: () -> Unit, onOpenSt
             is ConnectionState.Failed -> "refused: ${c.reason}"
         },
         securityWarnings = securityWarnings,
+        changedKeys = changedKeys,
     )
     SettingsScreen(
         state,
@@ -260,6 +262,7 @@ private fun SettingsRoute(component: ChatComponent, onBack: () -> Unit, onOpenSt
             },
             onExport = { export.launch("hapticon-chats.json") },
             onOpenStudy = onOpenStudy,
+            onTrustKey = { peer -> component.trustKey(peer) },
         ),
         notice = notice,
         version = runCatching { context.packageManager.getPackageInfo(context.packageName, 0).versionName }.getOrNull() ?: "",

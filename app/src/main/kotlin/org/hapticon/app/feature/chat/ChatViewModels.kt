@@ -229,4 +229,6 @@ data class SettingsUiState(
     val connection: String,
     /** End-to-end warnings (a peer's changed key, forged payloads), newest last ([org.hapticon.app.sync.ChatSync.securityWarnings]). */
     val securityWarnings: List<String> = emptyList(),
+    /** Peers whose changed key waits for the user's trust. */
+    val changedKeys: Set<String> = emptySet(),
 )

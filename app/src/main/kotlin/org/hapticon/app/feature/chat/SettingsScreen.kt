@@ -48,6 +48,8 @@ data class SettingsActions(
     val onStayReachable: (Boolean) -> Unit = {},
     val onExport: () -> Unit = {},
     val onOpenStudy: () -> Unit = {},
+    /** Accepts a peer's changed end-to-end key after the user compared safety numbers. */
+    val onTrustKey: (peer: String) -> Unit = {},
 )
 
 /**
@@ -125,6 +127,10 @@ fun SettingsScreen(
             )
             for (warning in uiState.securityWarnings) {
                 Text("⚠ $warning", style = MaterialTheme.typography.bodyMedium, color = MaterialTheme.colorScheme.error)
+            }
+            // Signal's rule: a changed key is accepted only by the user, after comparing safety numbers with the peer.
+            for (peer in uiState.changedKeys.sorted()) {
+                OutlinedButton(onClick = { actions.onTrustKey(peer) }) { Text("Trust $peer's new key (safety numbers compared)") }
             }
 
             Section("Appearance")

@@ -58,15 +58,18 @@ class SettingsScreenTest {
     fun privacy_endToEndSwitchStored_warningsShown() {
         val settings = InMemoryChatSettings(ChatPreferences(userName = "alice", brokerUrl = "tcp://10.0.0.2:1883"))
         val warning = "bob's key changed (safety number now 12345, was 67890); message held back until you trust the new key"
+        val trusted = mutableListOf<String>()
         compose.setContent {
             val prefs by settings.preferences.collectAsState()
             SettingsScreen(
-                SettingsUiState(prefs, listOf(RendererKind.ON_OFF), "connected", securityWarnings = listOf(warning)),
-                SettingsActions(update = settings::update),
+                SettingsUiState(prefs, listOf(RendererKind.ON_OFF), "connected", securityWarnings = listOf(warning), changedKeys = setOf("bob")),
+                SettingsActions(update = settings::update, onTrustKey = { trusted += it }),
             )
         }
         compose.onNodeWithText("Encrypt messages end to end").performScrollTo().assertIsOff().performClick()
         assertEquals(true, settings.preferences.value.endToEnd)
         compose.onNodeWithText("⚠ $warning").performScrollTo().assertExists()
+        compose.onNodeWithText("Trust bob's new key (safety numbers compared)").performScrollTo().performClick()
+        assertEquals(listOf("bob"), trusted)
     }
 }
