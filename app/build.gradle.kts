@@ -48,6 +48,8 @@ dependencies {
     implementation(libs.androidx.media3.exoplayer)
     implementation(libs.material.color.utilities)
     implementation(libs.zxing.core)
+    // The broker password and the end-to-end keys are wrapped by an AES key in Android Keystore (Tink).
+    implementation(libs.tink.android)
 
     testImplementation(project(":test-fixtures"))
     // The embedded broker: "Stay reachable" is tested end to end over real MQTT.

@@ -14,6 +14,7 @@ dependencies {
     api(project(":haptics-core"))
     api(libs.kotlinx.coroutines.core)
     implementation(libs.hivemq.mqtt.client)
+    implementation(libs.tink.android)
 
     testImplementation(project(":messaging:broker"))
     testImplementation(libs.junit4)

@@ -40,12 +40,14 @@ val USAGE: String = """
     |  hapticon handshake --self ANGLES.csv --partner ANGLES.csv
     |      Tele-handshake commands for the self hand at each of its rows (header time_s,thumb_deg,middle_deg)
     |      as CSV time_s,active, then per region pressure V, actuator deg, servo (not palm), vibration amp.
-    |  hapticon chat --broker URL --user NAME --password-file FILE [--to PEER] [--wav-dir DIR]
+    |  hapticon chat --broker URL --user NAME --password-file FILE [--to PEER] [--wav-dir DIR] [--e2e [--keys-dir DIR]]
     |      Chat over MQTT (tcp://HOST:PORT, or ssl://HOST:PORT for TLS) with the app or another chat: lines
     |      are sent to PEER; /icon ICON [TEXT], /sticker NAME [TEXT], /to PEER, /help, /quit. Received icons
     |      are rendered to WAV files in DIR. Delivered and read receipts both ways. Says why it cannot
     |      connect; exits 2 when the broker refuses the user or typed lines never reached it.
     |      --anonymous instead of --password-file for a broker run with --allow-anonymous.
+    |      --e2e encrypts and signs every message end to end (keys in ~/.hapticon/keys/NAME, peers' keys
+    |      pinned on first contact): /safety PEER shows the safety number, /trust PEER accepts a changed key.
     |  hapticon broker [--port N] [--host ADDR] [--data DIR] [--users FILE] [--acl FILE] [--allow-anonymous]
     |      Run the embedded MQTT broker until Ctrl-C (default 127.0.0.1:1883, files in ~/.hapticon/broker).
     |      Every client logs in with a user from the users file (Mosquitto's password-file format, created
@@ -70,7 +72,9 @@ val USAGE: String = """
     |      Study collector: an HTTP service the app uploads results to (POST /v1/results, text/csv with
     |      X-Study-Id); GET /v1/studies/ID/results.csv, GET /health. Every /v1 request needs a bearer token
     |      of its study and role; --allow-anonymous turns that off (loudly). Defaults: 127.0.0.1:8080,
-    |      sqlite:hapticon-results.db. Runs until Ctrl-C.
+    |      sqlite:hapticon-results.db. Runs until Ctrl-C. Limits: --max-connections N (256),
+    |      --idle-timeout-ms N (10000), --max-body-mb N (16), --rate N requests/s per client address (20)
+    |      with --burst N (100); over the rate: 429.
     |  hapticon collect token add --study ID --role upload|download [--db DB]
     |  hapticon collect token list [--db DB]
     |  hapticon collect token revoke TOKEN_ID [--db DB]

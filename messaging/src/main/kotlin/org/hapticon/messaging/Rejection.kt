@@ -37,6 +37,21 @@ public enum class RejectionReason {
 
     /** The payload arrived on a topic this client does not expect. */
     UNEXPECTED_TOPIC,
+
+    /** End-to-end protection is on and the payload is not sealed (an old client, or one without it). */
+    NOT_ENCRYPTED,
+
+    /** The payload is sealed and this client has no end-to-end keys to open it. */
+    ENCRYPTED,
+
+    /** The sealed payload's signature does not verify, or its keys are not the topic's sender's: forged or altered. */
+    FORGED,
+
+    /** The sender's key differs from the one pinned on first contact; held back until the user trusts it. */
+    KEY_CHANGED,
+
+    /** The sealed payload verified but does not decrypt with this user's key. */
+    UNDECRYPTABLE,
 }
 
 /**

@@ -18,11 +18,15 @@ public object Topics {
     /** The filter that matches every user's capabilities topic. */
     public const val ALL_CAPABILITIES: String = "$ROOT/capabilities/+"
 
+    /** The filter that matches every user's public-key topic (end-to-end protection, [keys]). */
+    public const val ALL_KEYS: String = "$ROOT/keys/+"
+
     /** Longest user name: short enough for MQTT client ids and file names. */
     public const val MAX_USER_NAME_LENGTH: Int = 32
 
     private const val INBOX_PREFIX = "$ROOT/inbox/"
     private const val CAPABILITIES_PREFIX = "$ROOT/capabilities/"
+    private const val KEYS_PREFIX = "$ROOT/keys/"
 
     // Letters, digits, '.', '_' and '-': no MQTT wildcards ('+', '#'), no level separator ('/'), nothing a
     // terminal or a file system would interpret. Must start with a letter or digit (no "." or "..").
@@ -55,6 +59,16 @@ public object Topics {
     /** The user whose capabilities [topic] holds, or null when [topic] is not a capabilities topic of a valid user. */
     public fun capabilitiesOwner(topic: String): String? =
         topic.removePrefix(CAPABILITIES_PREFIX).takeIf { topic.startsWith(CAPABILITIES_PREFIX) && isValidUserName(it) }
+
+    /**
+     * `hapticon/v1/keys/<user>`: [user]'s retained public keys (`org.hapticon.messaging.e2e.KeyBundle`), which
+     * only [user] may write (ACL). Throws [IllegalArgumentException] when [user] is not a valid user name.
+     */
+    public fun keys(user: String): String = KEYS_PREFIX + requireUserName(user)
+
+    /** The user whose keys [topic] holds, or null when [topic] is not a key topic of a valid user. */
+    public fun keysOwner(topic: String): String? =
+        topic.removePrefix(KEYS_PREFIX).takeIf { topic.startsWith(KEYS_PREFIX) && isValidUserName(it) }
 
     /** Returns [name]; throws [IllegalArgumentException] when it is not a valid user name. */
     public fun requireUserName(name: String): String {

@@ -36,12 +36,16 @@ data class ChatPreferences(
      * Google Messages' "Press Enter to send"); off by default in both, so here too.
      */
     val enterSends: Boolean = false,
+     * Seal every message end to end ([org.hapticon.messaging.e2e.EndToEnd], keys in [AppKeys]). Off by default
+     * while peers may run without it: a sealed chat refuses plaintext and cannot write to a peer without keys.
+     */
+    val endToEnd: Boolean = false,
 ) {
     /** Omits the password, so that it never reaches a log. */
     override fun toString(): String =
         "ChatPreferences(userName=$userName, brokerUrl=$brokerUrl, autoPlay=$autoPlay, rendererOverride=$rendererOverride, " +
             "dynamicColor=$dynamicColor, sendFeltReceipts=$sendFeltReceipts, stayReachable=$stayReachable, " +
-            "reachableAfterBoot=$reachableAfterBoot, archived=$archived, enterSends=$enterSends, brokerPassword=${if (brokerPassword == null) "none" else "***"})"
+            "reachableAfterBoot=$reachableAfterBoot, archived=$archived, enterSends=$enterSends, endToEnd=$endToEnd, brokerPassword=${if (brokerPassword == null) "none" else "***"})"
 }
 
 /** Reads and writes [ChatPreferences]. */
@@ -52,11 +56,17 @@ interface ChatSettingsRepository {
 
 /**
  * Settings kept in SharedPreferences (small, synchronous reads at start-up are fine). The broker password
- * lives in a file of its own, `chat_credentials`, private to the app like the rest, so that settings can be
- * exported or shown without it. It is not encrypted at rest: Jetpack Security's EncryptedSharedPreferences is
- * deprecated, and a Keystore-wrapped key is left for later (docs/security.md).
+ * lives in a file of its own, `chat_credentials`, so that settings can be exported or shown without it, and is
+ * encrypted there by [secrets] (AES-GCM under a key in Android Keystore; Jetpack Security's
+ * EncryptedSharedPreferences, the usual answer, is deprecated). A password an older version stored in clear is
+ * encrypted on first read and the clear copy removed. Only where no Keystore exists at all (a plain JVM) is it
+ * kept in clear, with a warning in the log.
  */
-class SharedPreferencesChatSettings(context: Context) : ChatSettingsRepository {
+class SharedPreferencesChatSettings(
+    context: Context,
+    private val secrets: KeystoreSecrets = KeystoreSecrets(),
+    private val keystoreAvailable: () -> Boolean = KeystoreSecrets::keystoreAvailable,
+) : ChatSettingsRepository {
     private val prefs = context.getSharedPreferences("chat", Context.MODE_PRIVATE)
     private val credentials = context.getSharedPreferences("chat_credentials", Context.MODE_PRIVATE)
     private val state = MutableStateFlow(read())
@@ -75,9 +85,30 @@ class SharedPreferencesChatSettings(context: Context) : ChatSettingsRepository {
             .putBoolean(AFTER_BOOT, next.reachableAfterBoot)
             .putStringSet(ARCHIVED, next.archived)
             .putBoolean(ENTER_SENDS, next.enterSends)
+            .putBoolean(END_TO_END, next.endToEnd)
             .apply()
-        credentials.edit().putString(PASSWORD, next.brokerPassword).apply()
+        writePassword(next.brokerPassword)
         state.value = next
+    }
+
+    private fun writePassword(password: String?) {
+        val edit = credentials.edit()
+        when {
+            password == null -> edit.remove(PASSWORD).remove(SEALED_PASSWORD)
+            keystoreAvailable() -> edit.putString(SEALED_PASSWORD, secrets.seal(password, PASSWORD_PURPOSE)).remove(PASSWORD)
+            else -> {
+                android.util.Log.w("ChatSettings", "no Android Keystore here: the broker password is stored unencrypted")
+                edit.putString(PASSWORD, password).remove(SEALED_PASSWORD)
+            }
+        }
+        edit.apply()
+    }
+
+    private fun readPassword(): String? {
+        credentials.getString(SEALED_PASSWORD, null)?.let { return secrets.open(it, PASSWORD_PURPOSE) }
+        val clear = credentials.getString(PASSWORD, null) ?: return null
+        if (keystoreAvailable()) writePassword(clear) // written in clear by an older version: encrypt it now
+        return clear
     }
 
     private fun read() = ChatPreferences(
@@ -85,13 +116,14 @@ class SharedPreferencesChatSettings(context: Context) : ChatSettingsRepository {
         brokerUrl = prefs.getString(BROKER, null) ?: "",
         autoPlay = prefs.getBoolean(AUTO_PLAY, false),
         rendererOverride = prefs.getString(RENDERER, null),
-        brokerPassword = credentials.getString(PASSWORD, null),
+        brokerPassword = readPassword(),
         dynamicColor = prefs.getBoolean(DYNAMIC_COLOR, false),
         sendFeltReceipts = prefs.getBoolean(FELT_RECEIPTS, true),
         stayReachable = prefs.getBoolean(STAY_REACHABLE, false),
         reachableAfterBoot = prefs.getBoolean(AFTER_BOOT, false),
         archived = prefs.getStringSet(ARCHIVED, null)?.toSet() ?: emptySet(),
         enterSends = prefs.getBoolean(ENTER_SENDS, false),
+        endToEnd = prefs.getBoolean(END_TO_END, false),
     )
 
     private companion object {
@@ -100,12 +132,15 @@ class SharedPreferencesChatSettings(context: Context) : ChatSettingsRepository {
         const val AUTO_PLAY = "auto_play"
         const val RENDERER = "renderer"
         const val PASSWORD = "broker_password"
+        const val SEALED_PASSWORD = "broker_password_sealed"
+        const val PASSWORD_PURPOSE = "hapticon broker password"
         const val DYNAMIC_COLOR = "dynamic_color"
         const val FELT_RECEIPTS = "felt_receipts"
         const val STAY_REACHABLE = "stay_reachable"
         const val AFTER_BOOT = "reachable_after_boot"
         const val ARCHIVED = "archived"
         const val ENTER_SENDS = "enter_sends"
+        const val END_TO_END = "end_to_end"
     }
 }
 

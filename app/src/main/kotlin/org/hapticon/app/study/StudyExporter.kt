@@ -56,7 +56,9 @@ class StudyExporter(private val directory: File, private val clock: () -> Long =
         val csv = ResponseCsv.write(rows)
         val json = StudyExport.encode(StudyExport(protocol, sessions.map { (record, entries) -> SessionLog(record.participant, entries) }))
         val stem = "${protocol.id}-r${protocol.revision}-${clock()}"
-        val csvFile = File(directory, "$stem.csv").apply { writeText(csv) }
+        // The shared file is opened in spreadsheets: formula-like cells neutralised (OWASP). The upload keeps [csv]
+        // as it is; the collector neutralises its own downloads.
+        val csvFile = File(directory, "$stem.csv").apply { writeText(ResponseCsv.write(rows, forSpreadsheet = true)) }
         val jsonFile = File(directory, "$stem.json").apply { writeText(json) }
         val checks = sessions.map { (record, entries) -> SessionCheck(record.participant, HashChain.verify(entries)) }
         return ExportResult(csvFile, jsonFile, csv, rows.size, checks)

@@ -5,6 +5,7 @@ import kotlinx.coroutines.CoroutineScope
 import kotlinx.coroutines.Dispatchers
 import kotlinx.coroutines.SupervisorJob
 import kotlinx.coroutines.flow.MutableStateFlow
+import org.hapticon.app.data.AppKeys
 import org.hapticon.app.data.ChatRepository
 import org.hapticon.app.data.ChatSettingsRepository
 import org.hapticon.app.data.OfflineFirstChatRepository
@@ -38,6 +39,8 @@ class ChatComponent(
     val probe: org.hapticon.app.feature.chat.BrokerProbe = { _, _, _ -> null },
     /** Posts arriving messages as notifications; null where there is none (some tests). */
     val notifier: MessageNotifier? = null,
+    /** Accepts a peer's changed end-to-end key for the current user; false when none is waiting. */
+    val trustKey: (peer: String) -> Boolean = { false },
 ) {
     /** An invite link opened from outside, waiting for the Chats screen to apply it. */
     val pendingInvite: MutableStateFlow<String?> = MutableStateFlow(null)
@@ -59,6 +62,7 @@ class ChatComponent(
         ): ChatComponent {
             val repository = OfflineFirstChatRepository(db)
             val settings = SharedPreferencesChatSettings(context)
+            val keys = AppKeys(java.io.File(context.filesDir, "e2e"))
             val vibrator = defaultVibrator(context)
             // Audio support does not change while the app runs; asking for it costs an effect-library query.
             val audio = DeviceCapabilities.detect(context, vibrator)
@@ -75,7 +79,9 @@ class ChatComponent(
                 repository = repository,
                 outbox = repository,
                 settings = settings,
-                messengerFactory = { user, broker, password -> mqttMessenger(user, broker, password) },
+                messengerFactory = { user, broker, password ->
+                    mqttMessenger(user, broker, password, keys.takeIf { settings.preferences.value.endToEnd })
+                },
                 player = player,
                 rateLimiter = VibrationRateLimiter(Clock.MONOTONIC),
                 localCapabilities = { user -> RendererChoice.capabilitiesOf(user, device(), override()) },
@@ -87,14 +93,25 @@ class ChatComponent(
             // Lives as long as the process, like the sync it nudges.
             NetworkWatcher(context, sync).start()
             val probe: org.hapticon.app.feature.chat.BrokerProbe = { user, broker, password -> probeBroker(settings, sync, user, broker, password) }
-            return ChatComponent(repository, RoomIconRepository(db.iconDao()), settings, sync, player, device, probe, notifier)
+            val trustKey = { peer: String ->
+                val user = settings.preferences.value.userName
+                (user != null && keys.trust(user, peer)).also { trusted -> if (trusted) sync.keyTrusted(peer) }
+            }
+            return ChatComponent(repository, RoomIconRepository(db.iconDao()), settings, sync, player, device, probe, notifier, trustKey)
         }
 
-        // The client id is the user name (the broker binds it to the login), so no per-device id any more.
-        private fun mqttMessenger(user: String, broker: String, password: String?): Messenger? = try {
-            MqttMessenger(MqttSettings(BrokerAddress.parse(broker), user, password))
+        /**
+         * The messenger of [user] at [broker]; with [keys], sealed end to end. The client id is the user name (the
+         * broker binds it to the login), so no per-device id any more. Null, logged, when the address is not
+         * valid or the end-to-end keys do not open (the Keystore key is gone): rather no chat than a plaintext one.
+         */
+        internal fun mqttMessenger(user: String, broker: String, password: String?, keys: AppKeys?): Messenger? = try {
+            MqttMessenger(MqttSettings(BrokerAddress.parse(broker), user, password), keys?.endToEnd(user))
         } catch (e: IllegalArgumentException) {
             android.util.Log.w("ChatComponent", "no messenger for $user at $broker: ${e.message}")
+            null
+        } catch (e: java.security.GeneralSecurityException) {
+            android.util.Log.w("ChatComponent", "no messenger for $user: end-to-end keys do not open (${e.message})")
             null
         }
 

@@ -33,6 +33,7 @@ import org.hapticon.messaging.Outbox
 import org.hapticon.messaging.OutboxSender
 import org.hapticon.messaging.Receipt
 import org.hapticon.messaging.ReceiptState
+import org.hapticon.messaging.RejectionReason
 import org.hapticon.messaging.RetryPolicy
 import org.hapticon.messaging.VibrationDecision
 import org.hapticon.messaging.VibrationRateLimiter
@@ -94,6 +95,23 @@ class ChatSync(
     /** The connection of the current account, Disconnected without one. */
     val connection: StateFlow<ConnectionState> = connectionState.asStateFlow()
 
+    private val warnings = MutableStateFlow<List<String>>(emptyList())
+
+    /**
+     * End-to-end warnings for the user, newest last (at most [MAX_SECURITY_WARNINGS]): a peer's changed key (with
+     * both safety numbers), a forged or undecryptable payload, plaintext refused. Shown, never silently dropped;
+     * the refused payload itself stays in the sender's outbox.
+     */
+    val securityWarnings: StateFlow<List<String>> = warnings.asStateFlow()
+
+    private val changedPeers = MutableStateFlow<Set<String>>(emptySet())
+
+    /** Peers whose key changed and is held back until the user trusts it ([keyTrusted] takes one off). */
+    val changedKeys: StateFlow<Set<String>> = changedPeers.asStateFlow()
+
+    /** [peer]'s new key was trusted: its warning is settled. */
+    fun keyTrusted(peer: String) = changedPeers.update { it - peer }
+
     /** The latest capabilities each peer published (retained on the broker, so known soon after connecting). */
     val peerCapabilities: StateFlow<Map<String, Capabilities>> = peers.asStateFlow()
 
@@ -111,9 +129,13 @@ class ChatSync(
     fun start() {
         if (job != null) return
         job = scope.launch {
-            val accounts = settings.preferences.map { Triple(it.userName, it.brokerUrl, it.brokerPassword) }.distinctUntilChanged()
+            val accounts = settings.preferences
+                // endToEnd too: switching it makes a new (sealing or plain) messenger.
+                .map { Triple(it.userName, it.brokerUrl, it.brokerPassword) to it.endToEnd }
+                .distinctUntilChanged()
             kotlinx.coroutines.flow.combine(accounts, restarts) { account, _ -> account }
-                .collectLatest { (user, broker, password) ->
+                .collectLatest { (target, _) ->
+                    val (user, broker, password) = target
                     if (user == null) return@collectLatest
                     // Set before the session starts, so a waiter never takes the previous session's state for this one's.
                     connectionState.value = ConnectionState.Connecting(null)
@@ -232,7 +254,15 @@ class ChatSync(
                 }
                 is InboxEvent.CapabilitiesReceived -> peers.update { it + (event.capabilities.user to event.capabilities) }
                 is InboxEvent.HandPoseReceived -> hands[event.pose.from]?.offer(event.pose, nanoClock())
-                is InboxEvent.Rejected -> Log.w(TAG, "rejected payload on ${event.topic}: ${event.rejection.reason} ${event.rejection.field ?: ""} ${event.rejection.detail}")
+                is InboxEvent.Rejected -> {
+                    Log.w(TAG, "rejected payload on ${event.topic}: ${event.rejection.reason} ${event.rejection.field ?: ""} ${event.rejection.detail}")
+                    if (event.rejection.reason in SECURITY_REASONS) warnings.update { (it + event.rejection.detail).takeLast(MAX_SECURITY_WARNINGS) }
+                    if (event.rejection.reason == RejectionReason.KEY_CHANGED) {
+                        val user = messenger.user
+                        val peer = org.hapticon.messaging.Topics.inboxSender(user, event.topic) ?: org.hapticon.messaging.Topics.keysOwner(event.topic)
+                        if (peer != null) changedPeers.update { it + peer }
+                    }
+                }
             }
         } catch (e: Exception) {
             if (e is kotlinx.coroutines.CancellationException) throw e
@@ -332,6 +362,11 @@ class ChatSync(
 
     private companion object {
         const val TAG = "ChatSync"
+        const val MAX_SECURITY_WARNINGS = 20
+        val SECURITY_REASONS = setOf(
+            RejectionReason.KEY_CHANGED, RejectionReason.FORGED, RejectionReason.UNDECRYPTABLE,
+            RejectionReason.NOT_ENCRYPTED, RejectionReason.ENCRYPTED,
+        )
     }
 }
 

@@ -346,4 +346,16 @@ class ChatSyncTest {
         assertEquals(true, problem!!.startsWith("No answer from tcp://10.1.1.1:1883 within 5 s."))
         assertEquals(before, settings.preferences.value)
     }
+
+    @Test
+    fun securityRejections_becomeWarnings_otherRejectionsOnlyLogged() = runBlocking {
+        await(messenger.state) { it == org.hapticon.messaging.ConnectionState.Connected }
+        val keyChanged = "bob's key changed (safety number now 1, was 2); message held back until you trust the new key"
+        messenger.deliver(InboxEvent.Rejected("hapticon/v1/inbox/alice/bob", org.hapticon.messaging.Decoded.Rejected(org.hapticon.messaging.RejectionReason.MALFORMED_JSON, null, "not JSON")))
+        messenger.deliver(InboxEvent.Rejected("hapticon/v1/inbox/alice/bob", org.hapticon.messaging.Decoded.Rejected(org.hapticon.messaging.RejectionReason.KEY_CHANGED, null, keyChanged)))
+        assertEquals(listOf(keyChanged), await(sync.securityWarnings) { it.isNotEmpty() })
+        assertEquals(setOf("bob"), sync.changedKeys.value)
+        sync.keyTrusted("bob")
+        assertEquals(emptySet<String>(), sync.changedKeys.value)
+    }
 }

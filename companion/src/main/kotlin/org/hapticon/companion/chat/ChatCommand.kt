@@ -14,20 +14,26 @@ import org.hapticon.messaging.VibrationRateLimiter
 import org.hapticon.messaging.mqtt.BrokerAddress
 import org.hapticon.messaging.mqtt.MqttMessenger
 import org.hapticon.messaging.mqtt.MqttSettings
+import org.hapticon.messaging.e2e.EndToEnd
+import org.hapticon.messaging.e2e.FileKeyPins
+import org.hapticon.messaging.e2e.Identity
 import java.io.BufferedReader
+import java.io.IOException
+import java.security.GeneralSecurityException
 import java.io.File
 import java.io.InputStreamReader
 import java.io.Reader
 
 /**
- * `hapticon chat --broker URL --user NAME [--to PEER] [--password-file FILE | --anonymous] [--wav-dir DIR]`:
+ * `hapticon chat --broker URL --user NAME [--to PEER] [--password-file FILE | --anonymous] [--wav-dir DIR] [--e2e [--keys-dir DIR]]`:
  * a terminal chat over MQTT with the phone app or another `hapticon chat`. Reads lines from [input]
  * (stdin by default) until `/quit` or its end; see [ChatSession]. Connection failures are printed as they
  * happen (refused, TLS trust, unknown host); a refusal by the broker (bad password) or lines that never
- * reached it end the command with one line and a non-zero exit.
+ * reached it end the command with one line and a non-zero exit. With `--e2e` every payload is sealed
+ * end to end (org.hapticon.messaging.e2e.EndToEnd), so the broker's operator can neither read nor forge it.
  */
 fun runChat(args: List<String>, console: Console, input: Reader = InputStreamReader(System.`in`, Charsets.UTF_8)) {
-    val arguments = Arguments.parse("chat", args, valueOptions = setOf("broker", "user", "to", "password-file", "wav-dir"), flagOptions = setOf("anonymous"))
+    val arguments = Arguments.parse("chat", args, valueOptions = setOf("broker", "user", "to", "password-file", "wav-dir", "keys-dir"), flagOptions = setOf("anonymous", "e2e"))
     arguments.requireNoPositionals()
     val broker = try {
         BrokerAddress.parse(arguments.required("broker"))
@@ -43,15 +49,36 @@ fun runChat(args: List<String>, console: Console, input: Reader = InputStreamRea
     if (password != null && arguments.flag("anonymous")) throw UsageException("--password-file and --anonymous exclude each other")
     val wavDir = arguments.value("wav-dir")?.let(::File)?.also(OutputFiles::ensureDirectory)
 
-    val messenger = MqttMessenger(MqttSettings(broker, user, password))
+    if (arguments.value("keys-dir") != null && !arguments.flag("e2e")) throw UsageException("--keys-dir needs --e2e")
+    val e2e = if (arguments.flag("e2e")) endToEnd(user, arguments.value("keys-dir"), console) else null
+
+    val messenger = MqttMessenger(MqttSettings(broker, user, password), e2e)
     val gate = InboxGate(BoundedDeduplicator(), VibrationRateLimiter(Clock.MONOTONIC))
     console.err.println("chat: connecting to $broker as $user")
-    val session = ChatSession(messenger, peer, console.out, console.err, wavDir, gate)
+    val session = ChatSession(messenger, peer, console.out, console.err, wavDir, gate, e2e = e2e)
     try {
         runBlocking { session.run(BufferedReader(input)) }
     } catch (e: MessagingException) {
         throw UsageException(e.message ?: "cannot connect to $broker")
     }
+}
+
+/**
+ * [user]'s keys from [keysDir] (default `~/.hapticon/keys/USER`): `identity.keys` (private, mode 600, made on
+ * first use) and `pins/PEER.pub` (the peers' keys as first seen).
+ */
+private fun endToEnd(user: String, keysDir: String?, console: Console): EndToEnd {
+    val dir = File(keysDir ?: File(System.getProperty("user.home"), ".hapticon/keys/$user").path)
+    val identityFile = File(dir, "identity.keys")
+    val identity = try {
+        Identity.loadOrCreate(user, identityFile)
+    } catch (e: GeneralSecurityException) {
+        throw UsageException("--keys-dir: $identityFile is not a key file of $user (${e.message})")
+    } catch (e: IOException) {
+        throw UsageException("--keys-dir: cannot write $identityFile (${e.message})")
+    }
+    console.err.println("chat: end-to-end encryption on; keys of $user in $dir")
+    return EndToEnd(identity, FileKeyPins(File(dir, "pins")))
 }
 
 private fun userName(name: String, option: String): String {

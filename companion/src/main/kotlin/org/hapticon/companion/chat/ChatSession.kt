@@ -40,7 +40,10 @@ import org.hapticon.messaging.Receipt
 import org.hapticon.messaging.ReceiptState
 import org.hapticon.messaging.RendererKind
 import org.hapticon.messaging.Topics
+import org.hapticon.messaging.RejectionReason
 import org.hapticon.messaging.VibrationDecision
+import org.hapticon.messaging.e2e.EndToEnd
+import org.hapticon.messaging.e2e.SafetyNumber
 import java.io.BufferedReader
 import java.io.File
 import java.io.PrintStream
@@ -65,6 +68,8 @@ class ChatSession(
     private val gate: InboxGate,
     private val clock: Clock = Clock.SYSTEM,
     private val drainTimeoutMillis: Long = 5_000,
+    /** The end-to-end protection [messenger] uses, for `/safety` and `/trust`; null when it is off. */
+    private val e2e: EndToEnd? = null,
 ) : InboxListener {
     private val user = messenger.user
     private val outbox = InMemoryOutbox()
@@ -185,10 +190,25 @@ class ChatSession(
                     say("no icon sent: ${e.message}")
                 }
             }
+            "/safety" -> say(safety(rest.ifEmpty { peer }))
+            "/trust" -> say(trust(rest))
             "/sticker" -> send(rest.substringAfter(' ', ""), sticker = rest.substringBefore(' '), icon = null)
             else -> say("unknown command $command; /help lists them")
         }
         return true
+    }
+
+    private fun safety(of: String?): String {
+        val e2e = e2e ?: return "end-to-end encryption is off (start the chat with --e2e)"
+        if (of == null || !Topics.isValidUserName(of)) return "usage: /safety PEER"
+        return e2e.safetyNumber(of)?.let { "safety number with $of: $it (compare it with $of's)" } ?: "no key of $of yet"
+    }
+
+    private fun trust(user: String): String {
+        val e2e = e2e ?: return "end-to-end encryption is off (start the chat with --e2e)"
+        if (!Topics.isValidUserName(user)) return "usage: /trust PEER"
+        val trusted = e2e.trust(user) ?: return "no changed key of $user is waiting"
+        return "now trusting $user's new key; safety number ${SafetyNumber.of(e2e.identity.bundle, trusted)}"
     }
 
     private suspend fun send(text: String, sticker: String?, icon: HapticIcon?, pattern: HapticPattern? = null) {
@@ -228,6 +248,11 @@ class ChatSession(
             is InboxEvent.Rejected -> {
                 val r = event.rejection
                 err.println("chat: rejected a payload on ${event.topic}: ${r.reason}${r.field?.let { " ($it)" } ?: ""}: ${r.detail}")
+                if (r.reason == RejectionReason.KEY_CHANGED) {
+                    val who = Topics.inboxSender(user, event.topic) ?: Topics.keysOwner(event.topic)
+                    // Signal's rule: a changed key is shown, never silently accepted; the user decides after comparing.
+                    err.println("chat: WARNING: compare safety numbers with $who (in person or by phone), then /trust $who; until then their messages wait in their outbox")
+                }
             }
         }
     }
@@ -336,6 +361,8 @@ class ChatSession(
             |                        (.ahap, .haptic, pattern JSON), with optional text
             |  /sticker NAME [TEXT]  send a sticker (a-z, 0-9, '_', '-'), with optional text
             |  /to PEER              talk to PEER from now on
+            |  /safety [PEER]        show the safety number with PEER (end-to-end encryption)
+            |  /trust PEER           accept PEER's changed key after comparing safety numbers
             |  /quit                 leave (so does end of input)
         """.trimMargin()
 

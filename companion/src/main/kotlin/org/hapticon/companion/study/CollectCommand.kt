@@ -12,8 +12,23 @@ const val DEFAULT_COLLECT_PORT: Int = 8080
 /** The database `hapticon collect` uses unless told otherwise: a SQLite file in the working directory. */
 const val DEFAULT_COLLECT_DB: String = "sqlite:hapticon-results.db"
 
+/** [CollectorLimits] from the command line: each option within a range that keeps the service usable. */
+private fun limits(arguments: Arguments): CollectorLimits {
+    val defaults = CollectorLimits()
+    fun bounded(name: String, default: Int, range: IntRange): Int =
+        arguments.int(name, default).also { if (it !in range) throw UsageException("--$name must be in ${range.first}..${range.last}, got $it") }
+    return CollectorLimits(
+        idleTimeoutMillis = bounded("idle-timeout-ms", defaults.idleTimeoutMillis.toInt(), 100..600_000).toLong(),
+        maxConnections = bounded("max-connections", defaults.maxConnections, 1..100_000),
+        maxBodyBytes = bounded("max-body-mb", defaults.maxBodyBytes shr 20, 1..1024) shl 20,
+        requestsPerSecondPerAddress = bounded("rate", defaults.requestsPerSecondPerAddress, 1..100_000),
+        burstPerAddress = bounded("burst", defaults.burstPerAddress, 1..1_000_000),
+    )
+}
+
 /**
- * `hapticon collect [--port N] [--host H] [--db sqlite:PATH|postgresql://HOST/DB?user=..] [--allow-anonymous]`:
+ * `hapticon collect [--port N] [--host H] [--db sqlite:PATH|postgresql://HOST/DB?user=..] [--allow-anonymous]
+ * [--max-connections N] [--idle-timeout-ms N] [--max-body-mb N] [--rate N] [--burst N]`:
  * runs the [CollectorServer] in the foreground until the process is stopped; [waitForStop] blocks until
  * then (tests pass their own and get the started server through [started]).
  * `hapticon collect token add|list|revoke …` manages the tokens in the same database ([runToken]).
@@ -25,8 +40,14 @@ fun runCollect(
     waitForStop: () -> Unit = { Thread.currentThread().join() },
 ) {
     if (args.firstOrNull() == "token") return runToken(args.drop(1), console)
-    val arguments = Arguments.parse("collect", args, valueOptions = setOf("port", "host", "db"), flagOptions = setOf("allow-anonymous"))
+    val arguments = Arguments.parse(
+        "collect",
+        args,
+        valueOptions = setOf("port", "host", "db", "max-connections", "idle-timeout-ms", "max-body-mb", "rate", "burst"),
+        flagOptions = setOf("allow-anonymous"),
+    )
     arguments.requireNoPositionals()
+    val limits = limits(arguments)
     val port = arguments.int("port", DEFAULT_COLLECT_PORT)
     if (port !in 0..65_535) throw UsageException("--port must be in 0..65535, got $port")
     val host = arguments.value("host") ?: "127.0.0.1"
@@ -34,7 +55,7 @@ fun runCollect(
     val store = openStore(db)
     val tokens = openTokens(store, db)
     val anonymous = arguments.flag("allow-anonymous")
-    val server = CollectorServer(store, if (anonymous) CollectorAccess.Anonymous else CollectorAccess.Tokens(tokens), host, port)
+    val server = CollectorServer(store, if (anonymous) CollectorAccess.Anonymous else CollectorAccess.Tokens(tokens), host, port, limits)
     try {
         server.start()
     } catch (e: IOException) {
@@ -48,6 +69,10 @@ fun runCollect(
         console.err.flush()
     }
     val auth = if (anonymous) "anonymous access" else tokenSummary(tokens)
+    console.out.println(
+        "collect: limits: ${limits.maxConnections} connections, ${limits.idleTimeoutMillis} ms idle timeout, ${limits.maxBodyBytes shr 20} MiB per upload, " +
+            "${limits.requestsPerSecondPerAddress} requests/s per address (bursts of ${limits.burstPerAddress})",
+    )
     console.out.println("collect: listening on http://$host:${server.port} (${dbLabel(db)}, $auth); Ctrl-C stops it")
     console.out.flush()
     try {

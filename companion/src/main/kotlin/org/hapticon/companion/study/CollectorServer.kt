@@ -1,6 +1,7 @@
 package org.hapticon.companion.study
 
 import org.eclipse.jetty.http.HttpHeader
+import org.eclipse.jetty.http.HttpStatus
 import org.eclipse.jetty.io.Content
 import org.eclipse.jetty.server.Handler
 import org.eclipse.jetty.server.HttpConfiguration
@@ -10,6 +11,7 @@ import org.eclipse.jetty.server.Request
 import org.eclipse.jetty.server.Response
 import org.eclipse.jetty.server.Server
 import org.eclipse.jetty.server.ServerConnector
+import org.eclipse.jetty.server.handler.DoSHandler
 import org.eclipse.jetty.util.Callback
 import org.eclipse.jetty.util.thread.QueuedThreadPool
 import org.hapticon.core.io.Json
@@ -22,6 +24,7 @@ import java.nio.ByteBuffer
 import java.nio.charset.CharacterCodingException
 import java.nio.charset.CodingErrorAction
 import java.sql.SQLException
+import java.time.Duration
 import java.util.concurrent.CompletionException
 import java.util.concurrent.TimeoutException
 
@@ -30,18 +33,27 @@ import java.util.concurrent.TimeoutException
  * (a stalled upload gets 408 if it can still hear it). [maxConnections]: connections beyond this wait in the
  * kernel's accept queue. [maxThreads]: Jetty's pool; a request body is read without holding a thread, so a
  * stalled upload costs a connection, not a thread. [maxBodyBytes]: larger uploads get 413.
+ * [requestsPerSecondPerAddress] and [burstPerAddress]: each client address may make requests at this rate
+ * with bursts up to this many (a leaky bucket, Jetty's `DoSHandler`); beyond it the request gets 429 at once,
+ * before authentication or any body byte is read, so one address cannot flood the token checks or the
+ * database. A phone uploads once per session, so the defaults only stop floods. Behind a reverse proxy every
+ * request comes from the proxy's address: then set the limit there (docs/security.md).
  */
 class CollectorLimits(
     val idleTimeoutMillis: Long = 10_000,
     val maxConnections: Int = 256,
     val maxThreads: Int = 32,
     val maxBodyBytes: Int = 16 shl 20,
+    val requestsPerSecondPerAddress: Int = 20,
+    val burstPerAddress: Int = 100,
 ) {
     init {
         require(idleTimeoutMillis > 0) { "idle timeout must be > 0 ms" }
         require(maxConnections > 0) { "at least one connection" }
         require(maxThreads >= MIN_THREADS) { "Jetty needs at least $MIN_THREADS threads (acceptor, selector, requests)" }
         require(maxBodyBytes > 0) { "body limit must be > 0 bytes" }
+        require(requestsPerSecondPerAddress > 0) { "rate limit must be > 0 requests per second" }
+        require(burstPerAddress > 0) { "burst must be > 0 requests" }
     }
 
     companion object {
@@ -91,7 +103,16 @@ class CollectorServer(
         connector.idleTimeout = limits.idleTimeoutMillis
         server.addConnector(connector)
         server.addBean(NetworkConnectionLimit(limits.maxConnections, connector))
-        server.handler = Routes()
+        // Tracks at most MAX_TRACKED_ADDRESSES addresses at once (idle ones are forgotten after a few seconds);
+        // beyond that Jetty refuses new addresses too, so a spoofing flood cannot grow the table without bound.
+        server.handler = DoSHandler(
+            Routes(),
+            DoSHandler.ID_FROM_REMOTE_ADDRESS,
+            // Jetty refuses the request that fills the bucket (12.1.14: `++bucket >= size`), so size = burst + 1.
+            DoSHandler.LeakingBucketTrackerFactory(limits.requestsPerSecondPerAddress, limits.burstPerAddress + 1, Duration.ofSeconds(10)),
+            DoSHandler.StatusRejectHandler(HttpStatus.TOO_MANY_REQUESTS_429),
+            MAX_TRACKED_ADDRESSES,
+        )
         server.stopTimeout = STOP_TIMEOUT_MILLIS
     }
 
@@ -238,6 +259,7 @@ class CollectorServer(
     companion object {
         private const val MIN_IDLE_THREADS = 4
         private const val STOP_TIMEOUT_MILLIS = 0L
+        private const val MAX_TRACKED_ADDRESSES = 10_000
         private val DOWNLOAD_PATH = Regex("/v1/studies/([A-Za-z0-9._-]{1,64})/results\\.csv")
 
         /**

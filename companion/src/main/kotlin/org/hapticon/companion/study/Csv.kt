@@ -1,5 +1,7 @@
 package org.hapticon.companion.study
 
+import org.hapticon.study.export.CsvInjection
+import java.io.IOException
 import java.io.Reader
 import org.hapticon.study.export.Csv as StudyCsv
 
@@ -36,9 +38,5 @@ object Csv {
      * spreadsheet evaluates them as a formula, and `hapticon analyze` must read negative responses back).
      * The stored value is never changed; only what is written out.
      */
-    fun neutralise(value: String): String =
-        if (value.isNotEmpty() && value[0] in FORMULA_STARTS && !PLAIN_NUMBER.matches(value)) "'$value" else value
-
-    private const val FORMULA_STARTS = "=+-@\t\r"
-    private val PLAIN_NUMBER = Regex("[+-]?(?:[0-9]+(?:\\.[0-9]*)?|\\.[0-9]+)(?:[eE][+-]?[0-9]+)?")
+    fun neutralise(value: String): String = CsvInjection.neutralise(value)
 }

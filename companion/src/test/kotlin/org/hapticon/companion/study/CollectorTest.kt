@@ -126,7 +126,7 @@ class CollectorTest {
             },
             waitForStop = {},
         )
-        assertTrue(out.toString("UTF-8"), out.toString("UTF-8").matches(Regex("collect: listening on http://127\\.0\\.0\\.1:\\d+ \\(sqlite:.*cli\\.db, 2 tokens\\); Ctrl-C stops it\n")))
+        assertTrue(out.toString("UTF-8"), out.toString("UTF-8").matches(Regex("collect: limits: 256 connections, 10000 ms idle timeout, 16 MiB per upload, 20 requests/s per address \\(bursts of 100\\)\ncollect: listening on http://127\\.0\\.0\\.1:\\d+ \\(sqlite:.*cli\\.db, 2 tokens\\); Ctrl-C stops it\n")))
         assertEquals(upload, downloaded)
         val results = temp.newFile("downloaded.csv").apply { writeText(downloaded) }
         val analysis = cli("analyze", results.path, "--out", File(temp.root, "analysis").path)
@@ -146,18 +146,21 @@ class CollectorTest {
         assertTrue(out.toString("UTF-8"), out.toString("UTF-8").contains("no tokens yet: every /v1 request gets 401; add one with 'hapticon collect token add --study ID --role upload'"))
         assertEquals("", err.toString("UTF-8"))
         out.reset()
-        runCollect(listOf("--port", "0", "--db", db, "--allow-anonymous"), Console(PrintStream(out, true, "UTF-8"), PrintStream(err, true, "UTF-8")), started = { server ->
+        runCollect(listOf("--port", "0", "--db", db, "--allow-anonymous", "--rate", "5", "--burst", "7", "--max-body-mb", "2"), Console(PrintStream(out, true, "UTF-8"), PrintStream(err, true, "UTF-8")), started = { server ->
             val get = HttpRequest.newBuilder(URI("http://127.0.0.1:${server.port}/v1/studies/demo-study/results.csv")).build()
             status = HttpClient.newHttpClient().send(get, HttpResponse.BodyHandlers.ofString()).statusCode()
         }, waitForStop = {})
         assertEquals(404, status) // no token needed, and no such study yet
         assertTrue(out.toString("UTF-8"), out.toString("UTF-8").contains(", anonymous access); Ctrl-C stops it"))
+        assertTrue(out.toString("UTF-8"), out.toString("UTF-8").contains("collect: limits: 256 connections, 10000 ms idle timeout, 2 MiB per upload, 5 requests/s per address (bursts of 7)\n"))
         assertTrue(err.toString("UTF-8"), err.toString("UTF-8").startsWith("collect: WARNING: --allow-anonymous: NO AUTHENTICATION. Anyone who can reach 127.0.0.1:"))
     }
 
     @Test fun collectUsageErrors() {
         assertEquals(listOf("hapticon: --db must be sqlite:PATH or postgresql://HOST/DB?user=.., got 'mysql://x'"), cli("collect", "--db", "mysql://x").stderrLines)
         assertEquals(listOf("hapticon: --port must be in 0..65535, got 70000"), cli("collect", "--port", "70000").stderrLines)
+        assertEquals(listOf("hapticon: --rate must be in 1..100000, got 0"), cli("collect", "--rate", "0").stderrLines)
+        assertEquals(listOf("hapticon: --max-body-mb must be in 1..1024, got 2048"), cli("collect", "--max-body-mb", "2048").stderrLines)
         assertEquals(listOf("hapticon: unknown option --token-file for collect"), cli("collect", "--token-file", "nope").stderrLines)
         val db = "sqlite:" + File(temp.root, "tokens.db").path
         assertEquals(listOf("hapticon: collect token needs add, list or revoke"), cli("collect", "token").stderrLines)

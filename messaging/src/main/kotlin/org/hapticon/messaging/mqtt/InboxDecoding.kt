@@ -9,13 +9,32 @@ import org.hapticon.messaging.MessageLimits
 import org.hapticon.messaging.Receipt
 import org.hapticon.messaging.RejectionReason
 import org.hapticon.messaging.Topics
+import org.hapticon.messaging.e2e.EndToEnd
+import org.hapticon.messaging.e2e.KeyNews
+import org.hapticon.messaging.e2e.Opened
 
 /** Turns what arrives on a topic into an [InboxEvent]; never throws. Transport-independent, so testable alone. */
 internal object InboxDecoding {
-    fun decode(user: String, topic: String, payload: ByteArray): InboxEvent {
+    /**
+     * With [e2e], inbox payloads must be sealed and open (see [EndToEnd.open]) and key topics are learnt;
+     * without it, a sealed payload is named as such rather than rejected as an unknown schema. Returns null
+     * for a key that needs no one's attention (first seen or unchanged).
+     */
+    fun decode(user: String, topic: String, payload: ByteArray, e2e: EndToEnd? = null): InboxEvent? {
         val sender = Topics.inboxSender(user, topic)
         if (sender != null) {
-            return when (val decoded = MessageCodec.decodeInbox(payload)) {
+            val plaintext = when {
+                e2e != null -> when (val opened = e2e.open(sender, payload)) {
+                    is Opened.Plain -> opened.plaintext
+                    is Opened.Refused -> return InboxEvent.Rejected(topic, Decoded.Rejected(opened.reason, null, opened.detail))
+                }
+                EndToEnd.looksSealed(payload) -> return InboxEvent.Rejected(
+                    topic,
+                    Decoded.Rejected(RejectionReason.ENCRYPTED, null, "end-to-end encrypted payload from $sender: this client has no keys to open it (turn end-to-end encryption on)"),
+                )
+                else -> payload
+            }
+            return when (val decoded = MessageCodec.decodeInbox(plaintext)) {
                 is Decoded.Accepted -> {
                     // The topic's sender is the broker's word (its ACL lets a user publish only under its own
                     // name); the payload's is the sender's claim. A disagreement is a forgery or a bug.
@@ -31,6 +50,21 @@ internal object InboxDecoding {
                     }
                 }
                 is Decoded.Rejected -> InboxEvent.Rejected(topic, decoded)
+            }
+        }
+        val keyOwner = Topics.keysOwner(topic)
+        if (keyOwner != null && e2e != null) {
+            return when (val news = e2e.learn(keyOwner, payload)) {
+                is KeyNews.Changed -> InboxEvent.Rejected(
+                    topic,
+                    Decoded.Rejected(
+                        RejectionReason.KEY_CHANGED,
+                        null,
+                        "$keyOwner's key changed (safety number now ${news.newSafetyNumber}, was ${news.pinnedSafetyNumber}); the pinned key stays until you trust the new one",
+                    ),
+                )
+                is KeyNews.Invalid -> InboxEvent.Rejected(topic, Decoded.Rejected(RejectionReason.FORGED, null, news.detail))
+                is KeyNews.Pinned, KeyNews.Unchanged -> null // nothing for the listener: the key is there for sealing
             }
         }
         val owner = Topics.capabilitiesOwner(topic)

@@ -32,6 +32,8 @@ import org.hapticon.messaging.MessagingException
 import org.hapticon.messaging.Messenger
 import org.hapticon.messaging.Receipt
 import org.hapticon.messaging.Topics
+import org.hapticon.messaging.e2e.E2eException
+import org.hapticon.messaging.e2e.EndToEnd
 import java.nio.charset.StandardCharsets
 import java.util.concurrent.CompletableFuture
 import java.util.concurrent.ExecutorService
@@ -51,8 +53,19 @@ import java.util.logging.Logger
  * Incoming payloads are decoded by [MessageCodec] on a delivery thread of this messenger (never on the
  * network thread) and acknowledged to the broker only after the listener returned. One instance connects
  * once; make a new one to connect again.
+ *
+ * With [EndToEnd] protection the broker sees only sealed payloads on inbox topics (see docs/security.md);
+ * capabilities stay in clear (they describe a phone's vibrator to everyone).
  */
-public class MqttMessenger(private val settings: MqttSettings) : Messenger {
+public class MqttMessenger(
+    private val settings: MqttSettings,
+    /**
+     * End-to-end protection, or null for none: with it every inbox payload is sealed for its recipient and
+     * must arrive sealed ([EndToEnd]), this user's keys are retained at `hapticon/v1/keys/<user>` on every
+     * connection and everyone's are read from `hapticon/v1/keys/+`.
+     */
+    private val e2e: EndToEnd? = null,
+) : Messenger {
     override val user: String = settings.user
 
     private val mutableState = MutableStateFlow<ConnectionState>(ConnectionState.Disconnected)
@@ -117,20 +130,30 @@ public class MqttMessenger(private val settings: MqttSettings) : Messenger {
     }
 
     override suspend fun send(recipient: String, message: ChatMessage) {
-        publish(Topics.inbox(recipient, user), MessageCodec.encode(message), retain = false)
+        publish(Topics.inbox(recipient, user), seal(recipient, MessageCodec.encode(message)), retain = false)
     }
 
     override suspend fun send(recipient: String, receipt: Receipt) {
-        publish(Topics.inbox(recipient, user), MessageCodec.encode(receipt), retain = false)
+        publish(Topics.inbox(recipient, user), seal(recipient, MessageCodec.encode(receipt)), retain = false)
     }
 
     override suspend fun send(recipient: String, pose: HandPose) {
-        publish(Topics.inbox(recipient, user), MessageCodec.encode(pose), retain = false, qos = MqttQos.AT_MOST_ONCE)
+        publish(Topics.inbox(recipient, user), seal(recipient, MessageCodec.encode(pose)), retain = false, qos = MqttQos.AT_MOST_ONCE)
     }
 
     override suspend fun publishCapabilities(capabilities: Capabilities) {
         require(capabilities.user == user) { "capabilities of ${capabilities.user} cannot be published by $user" }
         publish(Topics.capabilities(user), MessageCodec.encode(capabilities), retain = true)
+    }
+
+    private fun seal(recipient: String, plaintext: ByteArray): ByteArray {
+        val e2e = e2e ?: return plaintext
+        return try {
+            e2e.seal(recipient, plaintext)
+        } catch (e: E2eException) {
+            // Like any send failure: an outbox keeps the message and tries again (the key may arrive meanwhile).
+            throw MessagingException("not sent: ${e.message}", e)
+        }
     }
 
     private suspend fun publish(topic: String, payload: ByteArray, retain: Boolean, qos: MqttQos = MqttQos.AT_LEAST_ONCE) {
@@ -176,13 +199,14 @@ public class MqttMessenger(private val settings: MqttSettings) : Messenger {
         // always subscribes: one round trip, and it picks up subscriptions a newer version of this class
         // added to an old session. A session the broker lost is subscribed again here.
         if (sessionPresent && subscribedOnce) {
-            mutableState.value = ConnectionState.Connected
+            publishKeysThen { mutableState.value = ConnectionState.Connected }
             return
         }
-        client.subscribeWith()
+        var subscribe = client.subscribeWith()
             .addSubscription().topicFilter(inboxTopic).qos(MqttQos.AT_LEAST_ONCE).applySubscription()
             .addSubscription().topicFilter(Topics.ALL_CAPABILITIES).qos(MqttQos.AT_LEAST_ONCE).applySubscription()
-            .send()
+        if (e2e != null) subscribe = subscribe.addSubscription().topicFilter(Topics.ALL_KEYS).qos(MqttQos.AT_LEAST_ONCE).applySubscription()
+        subscribe.send()
             .whenComplete { subAck: Mqtt3SubAck?, error: Throwable? ->
                 when {
                     // The connection dropped meanwhile; the disconnected listener has it in hand.
@@ -196,8 +220,27 @@ public class MqttMessenger(private val settings: MqttSettings) : Messenger {
                     }
                     !closing -> {
                         subscribedOnce = true
-                        mutableState.value = ConnectionState.Connected
+                        publishKeysThen { mutableState.value = ConnectionState.Connected }
                     }
+                }
+            }
+    }
+
+    /**
+     * Retains this user's public keys (when end-to-end protection is on), then runs [connected]: before this
+     * messenger reports itself connected, peers can already seal for it. Every connection publishes them, so a
+     * broker that lost its retained messages has them again. A failed publish is left to the disconnect
+     * listener (the connection is gone).
+     */
+    private fun publishKeysThen(connected: () -> Unit) {
+        val e2e = e2e ?: return connected()
+        val client = client ?: return
+        client.publishWith().topic(Topics.keys(user)).qos(MqttQos.AT_LEAST_ONCE).retain(true).payload(e2e.identity.bundle.encoded).send()
+            .whenComplete { _, error ->
+                if (error == null) {
+                    if (!closing) connected()
+                } else {
+                    LOG.log(Level.FINE, "key publish of ${settings.clientId} failed", error)
                 }
             }
     }
@@ -230,9 +273,9 @@ public class MqttMessenger(private val settings: MqttSettings) : Messenger {
             val event = if (size > MessageLimits.MAX_PAYLOAD_BYTES) {
                 InboxDecoding.oversized(publish.topic.toString(), size)
             } else {
-                InboxDecoding.decode(user, publish.topic.toString(), publish.payloadAsBytes)
+                InboxDecoding.decode(user, publish.topic.toString(), publish.payloadAsBytes, e2e)
             }
-            listener.onInboxEvent(event)
+            if (event != null) listener.onInboxEvent(event)
         } catch (e: Exception) {
             LOG.log(Level.WARNING, "inbox listener of ${settings.clientId} failed; message acknowledged anyway", e)
         } finally {

@@ -13,8 +13,12 @@ public object ResponseCsv {
 
     private val COLUMNS = HEADER.split(',')
 
-    /** [rows] as CSV text: the header, then one line per row, every line ending in CRLF. Does not throw. */
-    public fun write(rows: List<ResponseRow>): String {
+    /**
+     * [rows] as CSV text: the header, then one line per row, every line ending in CRLF. With [forSpreadsheet] every
+     * cell that a spreadsheet would run as a formula is [neutralised][CsvInjection.neutralise] (for files people
+     * open; [read] would then return the quoted text, so uploads and round trips use the plain form). Does not throw.
+     */
+    public fun write(rows: List<ResponseRow>, forSpreadsheet: Boolean = false): String {
         val out = StringBuilder(HEADER).append("\r\n")
         for (row in rows) {
             val fields = listOf(
@@ -23,7 +27,7 @@ public object ResponseCsv {
                 row.question, row.response.toString(), row.responseTimeMillis?.toString().orEmpty(), row.iconPresses.toString(),
                 row.answeredAtMillis.toString(),
             )
-            fields.joinTo(out, ",") { Csv.quote(it) }
+            fields.joinTo(out, ",") { Csv.quote(if (forSpreadsheet) CsvInjection.neutralise(it) else it) }
             out.append("\r\n")
         }
         return out.toString()

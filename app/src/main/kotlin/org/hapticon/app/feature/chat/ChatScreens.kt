@@ -219,6 +219,8 @@ private fun SettingsRoute(component: ChatComponent, onBack: () -> Unit, onOpenSt
             }
         }
     }
+    val securityWarnings by component.sync.securityWarnings.collectAsStateWithLifecycle()
+    val changedKeys by component.sync.changedKeys.collectAsStateWithLifecycle()
     val state = SettingsUiState(
         prefs, RendererChoice.possible(component.device, null),
         when (val c = connection) {
@@ -228,6 +230,8 @@ private fun SettingsRoute(component: ChatComponent, onBack: () -> Unit, onOpenSt
             is ConnectionState.Failed -> "refused: ${c.reason}"
         },
         notificationsAllowed = notificationsAllowed,
+        securityWarnings = securityWarnings,
+        changedKeys = changedKeys,
     )
     SettingsScreen(
         state,
@@ -284,6 +288,7 @@ private fun SettingsRoute(component: ChatComponent, onBack: () -> Unit, onOpenSt
             },
             onExport = { export.launch("hapticon-chats.json") },
             onOpenStudy = onOpenStudy,
+            onTrustKey = { peer -> component.trustKey(peer) },
         ),
         notice = notice,
         version = runCatching { context.packageManager.getPackageInfo(context.packageName, 0).versionName }.getOrNull() ?: "",

@@ -245,4 +245,8 @@ data class SettingsUiState(
     val connection: String,
     /** False when Android will not show this app's notifications (permission refused, or turned off). */
     val notificationsAllowed: Boolean = true,
+    /** End-to-end warnings (a peer's changed key, forged payloads), newest last ([org.hapticon.app.sync.ChatSync.securityWarnings]). */
+    val securityWarnings: List<String> = emptyList(),
+    /** Peers whose changed key waits for the user's trust. */
+    val changedKeys: Set<String> = emptySet(),
 )

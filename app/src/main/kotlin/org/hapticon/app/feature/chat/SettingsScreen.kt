@@ -50,6 +50,8 @@ data class SettingsActions(
     val onAllowNotifications: () -> Unit = {},
     val onExport: () -> Unit = {},
     val onOpenStudy: () -> Unit = {},
+    /** Accepts a peer's changed end-to-end key after the user compared safety numbers. */
+    val onTrustKey: (peer: String) -> Unit = {},
 )
 
 /**
@@ -132,6 +134,19 @@ fun SettingsScreen(
 
             Section("Typing")
             SwitchRow("Enter key sends", prefs.enterSends, onCheckedChange = { on -> actions.update { it.copy(enterSends = on) } })
+            Section("Privacy")
+            SwitchRow("Encrypt messages end to end", prefs.endToEnd, onCheckedChange = { on -> actions.update { it.copy(endToEnd = on) } })
+            Text(
+                "Only you and your peer can read or write your messages, not whoever runs the broker. Your peers need it on too.",
+                style = MaterialTheme.typography.bodyMedium, color = MaterialTheme.colorScheme.onSurfaceVariant,
+            )
+            for (warning in uiState.securityWarnings) {
+                Text("⚠ $warning", style = MaterialTheme.typography.bodyMedium, color = MaterialTheme.colorScheme.error)
+            }
+            // Signal's rule: a changed key is accepted only by the user, after comparing safety numbers with the peer.
+            for (peer in uiState.changedKeys.sorted()) {
+                OutlinedButton(onClick = { actions.onTrustKey(peer) }) { Text("Trust $peer's new key (safety numbers compared)") }
+            }
 
             Section("Appearance")
             SwitchRow("Colours from the wallpaper (Android 12+)", prefs.dynamicColor, onCheckedChange = { on -> actions.update { it.copy(dynamicColor = on) } })

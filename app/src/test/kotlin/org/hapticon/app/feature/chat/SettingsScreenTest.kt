@@ -7,6 +7,7 @@ import androidx.compose.ui.test.assertIsOn
 import androidx.compose.ui.test.junit4.createComposeRule
 import androidx.compose.ui.test.onNodeWithText
 import androidx.compose.ui.test.performClick
+import androidx.compose.ui.test.performScrollTo
 import org.hapticon.app.data.ChatPreferences
 import org.hapticon.app.data.InMemoryChatSettings
 import org.hapticon.messaging.RendererKind
@@ -51,5 +52,24 @@ class SettingsScreenTest {
         assertEquals(listOf(true), reachable)
         compose.onNodeWithText("tcp://10.0.0.2:1883").assertExists()
         compose.onNodeWithText("Connection: connected").assertExists()
+    }
+
+    @Test
+    fun privacy_endToEndSwitchStored_warningsShown() {
+        val settings = InMemoryChatSettings(ChatPreferences(userName = "alice", brokerUrl = "tcp://10.0.0.2:1883"))
+        val warning = "bob's key changed (safety number now 12345, was 67890); message held back until you trust the new key"
+        val trusted = mutableListOf<String>()
+        compose.setContent {
+            val prefs by settings.preferences.collectAsState()
+            SettingsScreen(
+                SettingsUiState(prefs, listOf(RendererKind.ON_OFF), "connected", securityWarnings = listOf(warning), changedKeys = setOf("bob")),
+                SettingsActions(update = settings::update, onTrustKey = { trusted += it }),
+            )
+        }
+        compose.onNodeWithText("Encrypt messages end to end").performScrollTo().assertIsOff().performClick()
+        assertEquals(true, settings.preferences.value.endToEnd)
+        compose.onNodeWithText("⚠ $warning").performScrollTo().assertExists()
+        compose.onNodeWithText("Trust bob's new key (safety numbers compared)").performScrollTo().performClick()
+        assertEquals(listOf("bob"), trusted)
     }
 }

@@ -77,6 +77,9 @@ public class AclFile private constructor(private val rules: List<Rule>) {
             |# Read everyone's capabilities; write (retain) only your own.
             |pattern read hapticon/v1/capabilities/+
             |pattern write hapticon/v1/capabilities/%u
+            |# Read everyone's public keys (end-to-end encryption); write (retain) only your own.
+            |pattern read hapticon/v1/keys/+
+            |pattern write hapticon/v1/keys/%u
             |""".trimMargin()
 
         /** The rules of [DEFAULT_TEXT]. */
