@@ -36,6 +36,7 @@ data class ChatPreferences(
      * Google Messages' "Press Enter to send"); off by default in both, so here too.
      */
     val enterSends: Boolean = false,
+    /**
      * Seal every message end to end ([org.hapticon.messaging.e2e.EndToEnd], keys in [AppKeys]). Off by default
      * while peers may run without it: a sealed chat refuses plaintext and cannot write to a peer without keys.
      */

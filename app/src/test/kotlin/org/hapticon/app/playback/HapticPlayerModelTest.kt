@@ -1,6 +1,7 @@
 package org.hapticon.app.playback
 
 import org.hapticon.core.HapticIcon
+import org.hapticon.core.pattern.HapticPattern
 import org.hapticon.core.render.EnvelopeModel
 import org.hapticon.core.render.Fidelity
 import org.hapticon.messaging.RendererKind
@@ -17,6 +18,8 @@ class HapticPlayerModelTest {
             played += icon.name
             return Playback.Playing(RendererKind.AMPLITUDE_WAVEFORM, 560, Fidelity(0.0, 0.0, "exact"))
         }
+
+        override fun play(pattern: HapticPattern): Playback = Playback.Unsupported
 
         override fun stop() = Unit
     }

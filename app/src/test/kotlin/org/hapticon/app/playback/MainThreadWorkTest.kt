@@ -11,6 +11,7 @@ import kotlinx.coroutines.flow.flowOf
 import org.hapticon.app.data.IconRepository
 import org.hapticon.app.feature.icons.IconsViewModel
 import org.hapticon.core.HapticIcon
+import org.hapticon.core.pattern.HapticPattern
 import org.hapticon.core.render.Fidelity
 import org.hapticon.messaging.RendererKind
 import org.junit.After
@@ -47,6 +48,8 @@ class MainThreadWorkTest {
             played.countDown()
             return Playback.Playing(RendererKind.AMPLITUDE_WAVEFORM, 10, Fidelity(0.0, 0.0, "exact"))
         }
+
+        override fun play(pattern: HapticPattern): Playback = Playback.Unsupported
 
         override fun stop() {}
     }

@@ -4,7 +4,11 @@ import org.hapticon.core.HapticIcon
 import org.hapticon.messaging.RendererKind
 import org.junit.Assert.assertEquals
 import org.junit.Test
+import org.junit.runner.RunWith
+import org.robolectric.RobolectricTestRunner
 
+// Robolectric: fidelityPercent marks its rendering for StrictMode, which needs the Android runtime.
+@RunWith(RobolectricTestRunner::class)
 class RendererChoiceTest {
     private val base = DeviceCapabilities(hasVibrator = true, hasAmplitudeControl = true, apiLevel = 35)
 

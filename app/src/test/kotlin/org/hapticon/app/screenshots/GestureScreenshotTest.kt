@@ -50,11 +50,11 @@ class GestureScreenshotTest : ScreenshotTest() {
         val take = People.perform(person, GestureLabel.parse("hug-gentle"), take = 0).labelled.recording
         val sofar = take.slice(0, minOf(take.frameCount, (2.4 * take.sampleRate).toInt()))
         RecorderScreen(
-            RecorderUiState(
+            RecorderUiState.Ready(
                 sourceKind = GestureSourceKind.SENSOR_BOARD, recording = true, seconds = sofar.durationSeconds,
                 channels = sofar.channels.map { it.name }, plotRevision = 1,
             ),
-            RecordingPlotSource(sofar), null, null, onImport = {},
+            RecordingPlotSource(sofar), null, RecorderActions(),
         )
     }
 

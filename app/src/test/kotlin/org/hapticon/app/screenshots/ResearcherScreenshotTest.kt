@@ -1,33 +1,23 @@
 package org.hapticon.app.screenshots
 
 import android.content.Context
-import androidx.room.Room
 import androidx.test.core.app.ApplicationProvider
 import java.io.File
-import org.hapticon.app.data.database.HapticonDatabase
 import org.hapticon.app.feature.study.LockState
 import org.hapticon.app.feature.study.ResearcherScreen
 import org.hapticon.app.feature.study.ResearcherUiState
-import org.hapticon.app.feature.study.ResearcherViewModel
+import org.hapticon.app.feature.study.ResearcherActions
 import org.hapticon.app.feature.study.UploadState
 import org.hapticon.app.study.ExportResult
-import org.hapticon.app.study.HttpResultUploader
 import org.hapticon.app.study.MaskingSetting
 import org.hapticon.app.study.NoiseColor
-import org.hapticon.app.study.PinGate
-import org.hapticon.app.study.RoomStudyRepository
 import org.hapticon.app.study.SessionCheck
 import org.hapticon.app.study.SessionSummary
 import org.hapticon.app.study.StoredProtocol
-import org.hapticon.app.study.StudyComponent
-import org.hapticon.app.study.StudyExporter
-import org.hapticon.app.study.TestMaskingNoise
-import org.hapticon.app.study.TestStudySettings
 import org.hapticon.study.log.ChainVerification
 import androidx.compose.ui.test.hasScrollToNodeAction
 import androidx.compose.ui.test.hasText
 import androidx.compose.ui.test.performScrollToNode
-import org.junit.After
 import org.junit.Test
 
 /**
@@ -36,22 +26,7 @@ import org.junit.Test
  */
 class ResearcherScreenshotTest : ScreenshotTest() {
     private val context = ApplicationProvider.getApplicationContext<Context>()
-    private val db = Room.inMemoryDatabaseBuilder(context, HapticonDatabase::class.java).build()
     private val exports = File(context.cacheDir, "exports")
-    private val viewModel = ResearcherViewModel(
-        StudyComponent(
-            repository = RoomStudyRepository(db),
-            settings = TestStudySettings(),
-            pin = PinGate(context.getSharedPreferences("researcher-screenshots", Context.MODE_PRIVATE)),
-            noise = TestMaskingNoise(),
-            headphones = { false },
-            exporter = StudyExporter(exports),
-            uploader = HttpResultUploader(),
-        ),
-    )
-
-    @After
-    fun tearDown() = db.close()
 
     private val masked = StoredProtocol.DEFAULT.copy(masking = MaskingSetting(NoiseColor.PINK, -30.0))
     private val sessions = listOf(
@@ -70,7 +45,7 @@ class ResearcherScreenshotTest : ScreenshotTest() {
 
     @Test
     fun researcher_maskedProtocolWithSessions() = screen("study-researcher", Variant.MAIN) {
-        ResearcherScreen(unlocked, viewModel, onEdit = {})
+        ResearcherScreen(unlocked, ResearcherActions())
     }
 
     @Test
@@ -88,7 +63,7 @@ class ResearcherScreenshotTest : ScreenshotTest() {
                 export = export, collectorUrl = "https://lab.example.org:8443",
                 upload = UploadState.Failed("The collector did not answer within 10 s"),
             ),
-            viewModel, onEdit = {},
+            ResearcherActions(),
         )
     }
 }
