@@ -99,7 +99,8 @@ class AppContainer(
                 chat = chat,
                 study = StudyComponent.create(context, db),
                 gestures = GestureComponent.create(context, hub) { grains.currentConfig },
-                patterns = org.hapticon.app.data.RoomPatternRepository(db.patternDao()),
+                // The chat's pattern store: the Icons tab and the composer see the same patterns.
+                patterns = chat.patterns,
             )
         }
     }

@@ -41,6 +41,8 @@ class ChatComponent(
     val notifier: MessageNotifier? = null,
     /** Accepts a peer's changed end-to-end key for the current user; false when none is waiting. */
     val trustKey: (peer: String) -> Boolean = { false },
+    /** The user's haptic patterns, offered in the composer after the icons; null in containers built without them. */
+    val patterns: org.hapticon.app.data.RoomPatternRepository? = null,
 ) {
     /** An invite link opened from outside, waiting for the Chats screen to apply it. */
     val pendingInvite: MutableStateFlow<String?> = MutableStateFlow(null)
@@ -97,7 +99,8 @@ class ChatComponent(
                 val user = settings.preferences.value.userName
                 (user != null && keys.trust(user, peer)).also { trusted -> if (trusted) sync.keyTrusted(peer) }
             }
-            return ChatComponent(repository, RoomIconRepository(db.iconDao()), settings, sync, player, device, probe, notifier, trustKey)
+            val patterns = org.hapticon.app.data.RoomPatternRepository(db.patternDao())
+            return ChatComponent(repository, RoomIconRepository(db.iconDao()), settings, sync, player, device, probe, notifier, trustKey, patterns)
         }
 
         /**

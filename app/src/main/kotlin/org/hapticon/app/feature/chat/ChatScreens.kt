@@ -27,6 +27,8 @@ import androidx.lifecycle.viewmodel.initializer
 import androidx.lifecycle.viewmodel.viewModelFactory
 import kotlinx.coroutines.Dispatchers
 import kotlinx.coroutines.launch
+import kotlinx.coroutines.flow.flowOf
+import kotlinx.coroutines.flow.map
 import kotlinx.coroutines.withContext
 import org.hapticon.app.data.ChatExport
 import org.hapticon.app.feature.iconeditor.IconEditorRoute
@@ -159,6 +161,7 @@ fun ConversationRoute(component: ChatComponent, peer: String, onBack: () -> Unit
                 ConversationViewModel(
                     peer, { component.settings.preferences.value.userName }, component.repository, component.icons,
                     component.player, component.sync.peerCapabilities, component.sync::wake, component.sync::felt,
+                    component.patterns?.patterns()?.map { stored -> stored.map { it.pattern } } ?: flowOf(emptyList()),
                 )
             }
         },
@@ -177,6 +180,7 @@ fun ConversationRoute(component: ChatComponent, peer: String, onBack: () -> Unit
             onBack = onBack, onSend = { viewModel.send(it) }, onSelectIcon = viewModel::selectIcon,
             onSelectSticker = viewModel::selectSticker, onFeel = viewModel::feel, onPreview = viewModel::play,
             onRetry = viewModel::retry, onEditIcon = onEditIcon,
+            onSelectPattern = viewModel::selectPattern, onPreviewPattern = viewModel::play,
         ),
         enterSends = prefs.enterSends,
     )

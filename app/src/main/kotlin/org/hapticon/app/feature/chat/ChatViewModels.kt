@@ -5,7 +5,9 @@ import androidx.lifecycle.viewModelScope
 import kotlinx.coroutines.flow.MutableStateFlow
 import kotlinx.coroutines.flow.SharingStarted
 import kotlinx.coroutines.flow.StateFlow
+import kotlinx.coroutines.flow.Flow
 import kotlinx.coroutines.flow.combine
+import kotlinx.coroutines.flow.flowOf
 import kotlinx.coroutines.flow.stateIn
 import kotlinx.coroutines.launch
 import org.hapticon.app.data.ChatPreferences
@@ -18,6 +20,7 @@ import org.hapticon.app.playback.HapticPlayer
 import org.hapticon.app.playback.playOffMain
 import org.hapticon.app.playback.RendererChoice
 import org.hapticon.core.HapticIcon
+import org.hapticon.core.pattern.HapticPattern
 import org.hapticon.messaging.Capabilities
 import org.hapticon.messaging.InvalidMessageException
 import org.hapticon.messaging.InviteLink
@@ -145,8 +148,31 @@ suspend fun applyInvite(text: String, repository: ChatRepository, settings: Chat
     return InviteOutcome.Added(link.user, fill, note)
 }
 
-/** What the peer's phone makes of the chosen icon ("how will this feel there"). */
-data class PeerFeel(val renderer: RendererKind, val fidelityPercent: Int?)
+/**
+ * What the peer's phone makes of the chosen icon or pattern ("how will this feel there"). [alternative] is
+ * set when the peer's capabilities leave two renderers possible (a pattern on an audio-coupled API 36 phone:
+ * envelope if its vibrator offers envelope effects, else amplitude steps), shown as "X or Y".
+ */
+data class PeerFeel(val renderer: RendererKind, val fidelityPercent: Int?, val alternative: RendererKind? = null) {
+    companion object {
+        /**
+         * How [caps]'s phone plays a pattern, following [org.hapticon.app.playback.PatternPlan.of]: patterns have
+         * no audio path; an envelope effect needs API 36; otherwise amplitude steps, or on/off without amplitude
+         * control. The peer publishes its icon renderer, not whether its vibrator has envelope effects, so an
+         * audio-coupled API 36 peer is "envelope or amplitude waveform".
+         */
+        fun ofPattern(caps: Capabilities): PeerFeel {
+            val steps = if (caps.amplitudeControl) RendererKind.AMPLITUDE_WAVEFORM else RendererKind.ON_OFF
+            return when (caps.renderer) {
+                RendererKind.AUDIO_COUPLED ->
+                    if ((caps.apiLevel ?: 0) >= 36) PeerFeel(RendererKind.ENVELOPE, null, steps) else PeerFeel(steps, null)
+                RendererKind.AMPLITUDE_WAVEFORM -> PeerFeel(steps, null)
+                // Envelope, on/off, no actuator, the CLI's audio and unknown stay what the peer said.
+                else -> PeerFeel(caps.renderer, null)
+            }
+        }
+    }
+}
 
 sealed interface ConversationUiState {
     data object Loading : ConversationUiState
@@ -159,6 +185,9 @@ sealed interface ConversationUiState {
         /** Null until the peer's capabilities are known. */
         val peerFeel: PeerFeel?,
         val error: String?,
+        /** The user's imported patterns, offered after the icons; a message carries an icon or a pattern. */
+        val patterns: List<HapticPattern> = emptyList(),
+        val selectedPattern: HapticPattern? = null,
     ) : ConversationUiState
 }
 
@@ -173,22 +202,41 @@ class ConversationViewModel(
     private val onSent: () -> Unit,
     /** Tells the sync that the user felt a received message's icon (the felt receipt). */
     private val onFelt: (peer: String, messageId: String) -> Unit = { _, _ -> },
+    /** The user's patterns ([org.hapticon.app.data.RoomPatternRepository]); none where the app has no pattern store. */
+    patterns: Flow<List<HapticPattern>> = flowOf(emptyList()),
 ) : ViewModel() {
-    private data class Draft(val icon: HapticIcon? = null, val sticker: Sticker? = null, val error: String? = null)
+    /** The message being composed: at most one of [icon] and [pattern], as [org.hapticon.messaging.ChatMessage] requires. */
+    private data class Draft(
+        val icon: HapticIcon? = null,
+        val pattern: HapticPattern? = null,
+        val sticker: Sticker? = null,
+        val error: String? = null,
+    )
 
     private val draft = MutableStateFlow(Draft())
 
     val uiState: StateFlow<ConversationUiState> = combine(
-        repository.messages(peer), icons.icons(), draft, peerCapabilities,
-    ) { messages, iconList, draft, capabilities ->
+        repository.messages(peer), icons.icons(), patterns, draft, peerCapabilities,
+    ) { messages, iconList, patternList, draft, capabilities ->
         val feel = capabilities[peer]?.let { caps ->
-            PeerFeel(caps.renderer, draft.icon?.let { RendererChoice.fidelityPercent(caps.renderer, it) })
+            if (draft.pattern != null) PeerFeel.ofPattern(caps)
+            else PeerFeel(caps.renderer, draft.icon?.let { RendererChoice.fidelityPercent(caps.renderer, it) })
         }
-        ConversationUiState.Success(peer, messages, iconList, draft.icon, draft.sticker, feel, draft.error)
+        ConversationUiState.Success(
+            peer, messages, iconList, draft.icon, draft.sticker, feel, draft.error, patternList, draft.pattern,
+        )
     }.stateIn(viewModelScope, SharingStarted.WhileSubscribed(5_000), ConversationUiState.Loading)
 
+    /** Chooses [icon] (null: none); it replaces a chosen pattern, as a message carries one or the other. */
     fun selectIcon(icon: HapticIcon?) {
-        draft.value = draft.value.copy(icon = icon, error = null)
+        val current = draft.value
+        draft.value = current.copy(icon = icon, pattern = if (icon != null) null else current.pattern, error = null)
+    }
+
+    /** Chooses [pattern] (null: none); it replaces a chosen icon. */
+    fun selectPattern(pattern: HapticPattern?) {
+        val current = draft.value
+        draft.value = current.copy(pattern = pattern, icon = if (pattern != null) null else current.icon, error = null)
     }
 
     fun selectSticker(sticker: Sticker?) {
@@ -198,6 +246,11 @@ class ConversationViewModel(
     /** Feels [icon] on this phone (a long press in the composer): a press by the user, so not rate-limited. */
     fun play(icon: HapticIcon) {
         viewModelScope.launch { player.playOffMain(icon) }
+    }
+
+    /** Feels [pattern] on this phone (a long press in the composer), planned for this phone as a received one is. */
+    fun play(pattern: HapticPattern) {
+        viewModelScope.launch { player.playOffMain(pattern) }
     }
 
     /** Feels a message's icon; for a received message the sender learns it was felt. */
@@ -221,13 +274,13 @@ class ConversationViewModel(
         }
     }
 
-    /** Stores the message with the selected sticker and icon (into the outbox), then clears the selection. */
+    /** Stores the message with the selected sticker and icon or pattern (into the outbox), then clears the selection. */
     fun send(text: String, onStored: () -> Unit = {}) {
         val sender = user() ?: return
         val current = draft.value
         viewModelScope.launch {
             try {
-                repository.send(sender, peer, text, current.sticker?.wireName, current.icon)
+                repository.send(sender, peer, text, current.sticker?.wireName, current.icon, current.pattern)
                 draft.value = Draft()
                 onSent()
                 onStored()

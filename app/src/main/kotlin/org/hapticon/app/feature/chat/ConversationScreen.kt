@@ -85,6 +85,7 @@ import org.hapticon.app.playback.label
 import org.hapticon.app.ui.EnvelopeThumbnail
 import org.hapticon.app.ui.PatternThumbnail
 import org.hapticon.core.HapticIcon
+import org.hapticon.core.pattern.HapticPattern
 
 /** What the conversation screen can ask for; the route wires each to the view model. */
 data class ConversationActions(
@@ -98,6 +99,10 @@ data class ConversationActions(
     val onPreview: (HapticIcon) -> Unit = {},
     val onRetry: (StoredMessage) -> Unit = {},
     val onEditIcon: () -> Unit = {},
+    /** Choose (or, with null, drop) one of the user's patterns for the next message. */
+    val onSelectPattern: (HapticPattern?) -> Unit = {},
+    /** Preview a pattern from the composer on this phone (a long press). */
+    val onPreviewPattern: (HapticPattern) -> Unit = {},
 )
 
 /**
@@ -209,6 +214,9 @@ private fun MessageList(
     }
 }
 
+/** The composer's icon row's test tag; its patterns are keyed `pattern:NAME`. */
+const val COMPOSER_ICONS_TAG: String = "composer-icons"
+
 /** The message list's test tag. */
 const val MESSAGE_LIST_TAG: String = "messages"
 
@@ -319,10 +327,14 @@ private fun Composer(uiState: ConversationUiState.Success, actions: Conversation
                 horizontalArrangement = Arrangement.spacedBy(6.dp),
                 verticalAlignment = Alignment.CenterVertically,
                 contentPadding = PaddingValues(horizontal = 4.dp),
-                modifier = Modifier.fillMaxWidth().fadingEdges(iconRow),
+                modifier = Modifier.fillMaxWidth().fadingEdges(iconRow).testTag(COMPOSER_ICONS_TAG),
             ) {
                 items(uiState.icons, key = { it.name }) { icon ->
                     IconChip(icon, selected = uiState.selectedIcon == icon, actions)
+                }
+                // The user's patterns after the icons; keyed apart, as a pattern may share an icon's name.
+                items(uiState.patterns, key = { "pattern:" + it.name }) { pattern ->
+                    PatternChip(pattern, selected = uiState.selectedPattern == pattern, actions)
                 }
                 item { TextButton(onClick = actions.onEditIcon) { Text("New icon…") } }
             }
@@ -345,11 +357,12 @@ private fun Composer(uiState: ConversationUiState.Success, actions: Conversation
                     )
                 }
             }
-            uiState.selectedIcon?.let { icon ->
+            (uiState.selectedIcon?.name ?: uiState.selectedPattern?.name)?.let { name ->
                 val feel = uiState.peerFeel
                 Text(
-                    if (feel == null) "How ${icon.name} will feel there: unknown until ${uiState.peer} connects"
-                    else "How ${icon.name} will feel there: ${feel.renderer.label}" + (feel.fidelityPercent?.let { ", $it% fidelity" } ?: ""),
+                    if (feel == null) "How $name will feel there: unknown until ${uiState.peer} connects"
+                    else "How $name will feel there: ${feel.renderer.label}" + (feel.alternative?.let { " or ${it.label}" } ?: "") +
+                        (feel.fidelityPercent?.let { ", $it% fidelity" } ?: ""),
                     style = MaterialTheme.typography.bodySmall, color = MaterialTheme.colorScheme.onSurfaceVariant,
                     modifier = Modifier.padding(horizontal = 4.dp),
                 )
@@ -384,9 +397,37 @@ private fun Composer(uiState: ConversationUiState.Success, actions: Conversation
 }
 
 /** A composer icon: a tap chooses it for the next message, a long press previews it on this phone. */
+@Composable
+private fun IconChip(icon: HapticIcon, selected: Boolean, actions: ConversationActions) =
+    ComposerChip(
+        "Icon ${icon.name}", icon.name, selected,
+        onPreview = { actions.onPreview(icon) }, onToggle = { actions.onSelectIcon(if (selected) null else icon) },
+    ) { EnvelopeThumbnail(icon, Modifier.width(36.dp).height(18.dp)) }
+
+/**
+ * A composer pattern, after the icons: the same chip, told apart by its thumbnail's frequency line and a
+ * "pattern" tag. A tap chooses it (the message travels as version 2), a long press previews it here.
+ */
+@Composable
+private fun PatternChip(pattern: HapticPattern, selected: Boolean, actions: ConversationActions) =
+    ComposerChip(
+        "Pattern ${pattern.name}", pattern.name, selected,
+        onPreview = { actions.onPreviewPattern(pattern) }, onToggle = { actions.onSelectPattern(if (selected) null else pattern) },
+        tag = "pattern",
+    ) { PatternThumbnail(pattern, Modifier.width(36.dp).height(18.dp)) }
+
+/** The chip of the composer's icon row: [thumbnail], [name] and an optional small [tag]. */
 @OptIn(ExperimentalFoundationApi::class)
 @Composable
-private fun IconChip(icon: HapticIcon, selected: Boolean, actions: ConversationActions) {
+private fun ComposerChip(
+    description: String,
+    name: String,
+    selected: Boolean,
+    onPreview: () -> Unit,
+    onToggle: () -> Unit,
+    tag: String? = null,
+    thumbnail: @Composable () -> Unit,
+) {
     val colors = MaterialTheme.colorScheme
     Surface(
         shape = RoundedCornerShape(8.dp),
@@ -397,18 +438,19 @@ private fun IconChip(icon: HapticIcon, selected: Boolean, actions: ConversationA
             .clip(RoundedCornerShape(8.dp))
             .combinedClickable(
                 onClickLabel = if (selected) "Remove from message" else "Add to message",
-                onLongClickLabel = "Feel ${icon.name} here",
-                onLongClick = { actions.onPreview(icon) },
-                onClick = { actions.onSelectIcon(if (selected) null else icon) },
+                onLongClickLabel = "Feel $name here",
+                onLongClick = onPreview,
+                onClick = onToggle,
             )
             .semantics {
-                contentDescription = "Icon ${icon.name}"
+                contentDescription = description
                 stateDescription = if (selected) "selected" else "not selected"
             },
     ) {
         Row(Modifier.padding(horizontal = 10.dp, vertical = 6.dp), verticalAlignment = Alignment.CenterVertically) {
-            EnvelopeThumbnail(icon, Modifier.width(36.dp).height(18.dp))
-            Text(icon.name, style = MaterialTheme.typography.labelLarge, modifier = Modifier.padding(start = 6.dp))
+            thumbnail()
+            Text(name, style = MaterialTheme.typography.labelLarge, modifier = Modifier.padding(start = 6.dp))
+            tag?.let { Text(it, style = MaterialTheme.typography.labelSmall, color = colors.onSurfaceVariant, modifier = Modifier.padding(start = 4.dp)) }
         }
     }
 }
