@@ -10,6 +10,10 @@ import org.hapticon.app.feature.chat.ChatClock
 import org.hapticon.app.feature.chat.ConversationActions
 import org.hapticon.app.feature.chat.ConversationScreen
 import org.hapticon.app.feature.chat.ConversationUiState
+import org.hapticon.app.feature.chat.COMPOSER_ICONS_TAG
+import org.hapticon.app.feature.chat.PeerFeel
+import androidx.compose.ui.test.onNodeWithTag
+import org.hapticon.messaging.Capabilities
 import org.hapticon.app.feature.icons.IconsActions
 import org.hapticon.app.feature.icons.IconsScreen
 import org.hapticon.app.feature.icons.IconsUiState
@@ -90,7 +94,11 @@ class PatternScreenshotTest : ScreenshotTest() {
     }
 
     @Test
-    fun conversation_patternMessage_feelChipWithItsEnvelope() = screen("chats-conversation-pattern") {
+    fun conversation_patternMessage_feelChipWithItsEnvelope_composerOffersPatternsAfterIcons() = screen(
+        "chats-conversation-pattern",
+        // The patterns follow the four presets in the composer's row: scroll it to them, as a user would.
+        prepare = { compose.onNodeWithTag(COMPOSER_ICONS_TAG).performScrollToKey("pattern:swell") },
+    ) {
         val now = 1_767_225_600_000L + 15 * 3_600_000L
         fun message(n: Int, outgoing: Boolean, state: MessageState, text: String, pattern: HapticPattern? = null) = StoredMessage(
             "0b7e7c1e-3f7b-4a57-9d3e-%012d".format(n), "bob", if (outgoing) "alice" else "bob", now - (10 - n) * 60_000L, text, null,
@@ -104,7 +112,9 @@ class PatternScreenshotTest : ScreenshotTest() {
                     message(2, true, MessageState.FELT, "Ha, it bounces. Try mine", swell),
                     message(3, false, MessageState.RECEIVED, "Slow and rising, nice"),
                 ),
-                HapticIcon.PRESETS, null, null, null, null,
+                HapticIcon.PRESETS, null, null,
+                PeerFeel.ofPattern(Capabilities("bob", RendererKind.AUDIO_COUPLED, amplitudeControl = true, apiLevel = 36)), null,
+                patterns = listOf(boing, swell), selectedPattern = boing,
             ),
             ConversationActions(), ChatClock(ZoneOffset.UTC, Locale.UK), now,
         )
