@@ -212,14 +212,24 @@ class ChatSync(
         session = Session(messenger, sender)
         try {
             launch {
-                // One collector, so every (re)connection the screens see is one that flushes what is owed.
+                // One collector, so every (re)connection the screens see is one that flushes what is owed. The
+                // flushing runs beside it, never in it: a QoS 1 publish in flight when the connection drops is
+                // kept by the HiveMQ client for the next connection, so its await ends only after the
+                // reconnection, and a collector waiting on it would show Connected through the whole backoff
+                // (ChatSyncReconnectTest). A new state cancels the previous connection's flush; what it did not
+                // finish is flushed again on the next Connected (owed receipts stay owed until sent).
+                var flush: Job? = null
                 messenger.state.collect { state ->
+                    flush?.cancel()
                     connectionState.value = state
                     if (state == ConnectionState.Connected) {
-                        runCatching { messenger.publishCapabilities(localCapabilities(messenger.user)) }
-                            .onFailure { Log.w(TAG, "publishing capabilities failed: ${it.message}") }
-                        sendOwedReceipts(messenger)
-                        for (peer in openConversations.value) markReadAndReceipt(peer)
+                        // Undispatched: the flush starts before the next state, as when it ran in the collector.
+                        flush = launch(start = kotlinx.coroutines.CoroutineStart.UNDISPATCHED) {
+                            runCatching { messenger.publishCapabilities(localCapabilities(messenger.user)) }
+                                .onFailure { if (it is kotlinx.coroutines.CancellationException) throw it else Log.w(TAG, "publishing capabilities failed: ${it.message}") }
+                            sendOwedReceipts(messenger)
+                            for (peer in openConversations.value) markReadAndReceipt(peer)
+                        }
                     }
                 }
             }
@@ -340,7 +350,12 @@ class ChatSync(
         try {
             messenger.send(to, receipt)
         } catch (e: Exception) {
-            if (e is kotlinx.coroutines.CancellationException) throw e
+            if (e is kotlinx.coroutines.CancellationException) {
+                // Cancelled mid-send (the connection dropped under an on-connect flush, or the session ended):
+                // whether it went out is unknown, so it is owed; a receipt sent twice changes nothing.
+                kotlinx.coroutines.withContext(kotlinx.coroutines.NonCancellable) { repository.queueReceipt(to, receipt) }
+                throw e
+            }
             Log.w(TAG, "receipt ${receipt.state} for ${receipt.messageId} not sent now, kept for later: ${e.message}")
             repository.queueReceipt(to, receipt)
         }

@@ -50,6 +50,13 @@ class BrokerProcess(private val data: File, val port: Int) : AutoCloseable {
         process = null
     }
 
+    /** Kills the broker with SIGKILL: its connections end at once, nothing in flight is acknowledged. */
+    fun kill() {
+        val p = process ?: return
+        p.destroyForcibly().waitFor(10, TimeUnit.SECONDS)
+        process = null
+    }
+
     fun restart() {
         stop()
         start()

@@ -19,7 +19,9 @@ import java.util.concurrent.atomic.AtomicInteger
  * The embedded broker for a test, and the messengers and raw clients the test made (disconnected after
  * it). A start costs a second or more (five in a cold JVM) and a stop 4.5 s, so the tests of this module
  * share one broker ([SharedBroker]) and keep apart by using their own user names ([uniqueUser]). A test
- * may restart it: the others reconnect.
+ * may restart it: the others reconnect. A test that retains a message deletes it before it ends (an empty
+ * retained publish): a retained payload left across a restart of this broker was once delivered in place of
+ * a later test's publish (docs/security.md, "Known weaknesses").
  */
 class BrokerFixture : ExternalResource() {
     val broker: EmbeddedBroker get() = SharedBroker.instance

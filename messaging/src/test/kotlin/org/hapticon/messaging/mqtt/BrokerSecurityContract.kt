@@ -69,9 +69,9 @@ abstract class BrokerSecurityContract {
         return client
     }
 
-    private fun Mqtt3AsyncClient.publishQuietly(topic: String, payload: ByteArray) {
+    private fun Mqtt3AsyncClient.publishQuietly(topic: String, payload: ByteArray, retain: Boolean = false) {
         // A broker may drop a denied publish (Mosquitto) or close the connection (HiveMQ with MQTT 3.1.1).
-        runCatching { publishWith().topic(topic).qos(MqttQos.AT_LEAST_ONCE).payload(payload).send().get(10, TimeUnit.SECONDS) }
+        runCatching { publishWith().topic(topic).qos(MqttQos.AT_LEAST_ONCE).retain(retain).payload(payload).send().get(10, TimeUnit.SECONDS) }
     }
 
     private fun returnCodeOf(connect: () -> Unit): Mqtt3ConnAckReturnCode? = try {
@@ -124,6 +124,24 @@ abstract class BrokerSecurityContract {
         val rejection = (events[0] as InboxEvent.Rejected).rejection
         assertEquals(RejectionReason.INVALID_VALUE to "sender", rejection.reason to rejection.field)
         assertEquals(InboxEvent.MessageReceived(genuine), events[1])
+    }
+
+    @Test
+    fun thirdUser_retainingKeysUnderAlicesName_isRefused_ownKeysAreReadByAll() {
+        // End-to-end keys are pinned on first contact: a key retained under alice's name by mallory must never be
+        // seen. The permitted publish goes first: HiveMQ closes the connection on the denied one.
+        val forger = raw(mallory)
+        forger.publishQuietly(Topics.keys(mallory), "mallory's own key".toByteArray(), retain = true)
+        forger.publishQuietly(Topics.keys(alice), "mallory's key for alice".toByteArray(), retain = true)
+        val seen = LinkedBlockingQueue<String>()
+        raw(bob).subscribeWith().topicFilter(Topics.ALL_KEYS).qos(MqttQos.AT_LEAST_ONCE)
+            .callback { seen.put(it.topic.toString() + " " + String(it.payloadAsBytes)) }.send().get(20, TimeUnit.SECONDS)
+        assertEquals("${Topics.keys(mallory)} mallory's own key", seen.poll(CollectingListener.WAIT_SECONDS, TimeUnit.SECONDS))
+        Thread.sleep(300)
+        assertEquals(emptyList<String>(), seen.filter { it.contains(alice) })
+        // An empty retained message deletes mallory's: a retained payload left on the shared embedded broker
+        // outlives this test and its restarts (see BrokerFixture).
+        raw(mallory).publishQuietly(Topics.keys(mallory), ByteArray(0), retain = true)
     }
 
     private lateinit var aliceMessenger: MqttMessenger
