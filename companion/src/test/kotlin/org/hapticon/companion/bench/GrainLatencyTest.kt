@@ -26,7 +26,10 @@ class GrainLatencyTest {
     fun run_afterWarmup_frameToCommandAllocatesNothingPerSample() {
         val result = GrainLatency(samples = 2_000, warmupSamples = 20_000).run()
         assertTrue(result.toString(), !result.handlerBytesPerSample.isNaN() && result.readerBytesPerSample >= result.handlerBytesPerSample)
-        assertEquals(result.toString(), 0.0, result.handlerBytesPerSample, 0.0)
+        // Nothing per sample: one object per sample would cost at least 16 bytes per sample. Below one byte allows
+        // only a one-off allocation in the run (a JIT tier change briefly running unoptimised code: 432 bytes once
+        // in 2,000 samples was seen in a full `./build test`).
+        assertTrue(result.toString(), result.handlerBytesPerSample < 1.0)
     }
 
     @Test

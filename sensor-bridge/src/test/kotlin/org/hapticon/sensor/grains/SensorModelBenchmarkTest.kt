@@ -14,8 +14,10 @@ class SensorModelBenchmarkTest {
             assertEquals(65_536, result.samplesPerRun)
             assertTrue(result.bestNanosPerSample > 0.0)
             assertTrue(result.medianNanosPerSample >= result.bestNanosPerSample)
-            // The hot paths use primitive fields and preallocated arrays only.
-            assertEquals(result.name, 0.0, result.allocatedBytesPerSample, 0.0)
+            // The hot paths use primitive fields and preallocated arrays only: an object per sample would cost at
+            // least 16 bytes per sample. Below one byte allows only a one-off allocation in the whole run (a JIT
+            // tier change briefly running unoptimised code, seen under load as 0.0029 bytes per sample).
+            assertTrue("${result.name}: ${result.allocatedBytesPerSample} bytes per sample", result.allocatedBytesPerSample < 1.0)
         }
     }
 
