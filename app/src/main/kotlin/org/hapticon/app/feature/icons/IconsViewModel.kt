@@ -10,6 +10,7 @@ import kotlinx.coroutines.flow.StateFlow
 import kotlinx.coroutines.flow.combine
 import kotlinx.coroutines.flow.first
 import kotlinx.coroutines.flow.flowOf
+import kotlinx.coroutines.flow.map
 import kotlinx.coroutines.flow.stateIn
 import kotlinx.coroutines.launch
 import org.hapticon.app.data.IconRepository
@@ -38,11 +39,17 @@ class IconsViewModel(
     private val importMessage = MutableStateFlow<String?>(null)
     private var clearWhenDone: Job? = null
 
+    // Each pattern's playback plan (control-point fitting) is made when the stored patterns change, not again
+    // on every press or message.
+    private val patternItems = (patterns?.patterns() ?: flowOf(emptyList())).map { stored ->
+        stored.map { PatternItem(it.pattern, it.source, planFor(player, it.pattern).summary) }
+    }
+
     val uiState: StateFlow<IconsUiState> =
-        combine(iconRepository.icons(), nowPlaying, patterns?.patterns() ?: flowOf(emptyList()), importMessage) { icons, playing, stored, message ->
+        combine(iconRepository.icons(), nowPlaying, patternItems, importMessage) { icons, playing, items, message ->
             IconsUiState.Success(
                 icons = icons, renderer = player.capabilities.renderer, nowPlaying = playing,
-                patterns = stored.map { PatternItem(it.pattern, it.source, planFor(player, it.pattern).summary) },
+                patterns = items,
                 importMessage = message,
             )
         }.stateIn(viewModelScope, SharingStarted.WhileSubscribed(5_000), IconsUiState.Loading)
