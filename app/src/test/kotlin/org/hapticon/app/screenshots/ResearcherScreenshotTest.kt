@@ -34,7 +34,7 @@ class ResearcherScreenshotTest : ScreenshotTest() {
         SessionSummary(2, masked.protocol.id, "P001-B", 1, answers = 24, trials = 24, finished = true),
         SessionSummary(3, masked.protocol.id, "P002-A", 2, answers = 9, trials = 24, finished = false),
     )
-    private val unlocked = ResearcherUiState(
+    private val unlocked = ResearcherUiState.Success(
         lock = LockState.UNLOCKED,
         protocols = listOf(masked),
         selected = masked,

@@ -189,18 +189,28 @@ fun ConversationRoute(component: ChatComponent, peer: String, onBack: () -> Unit
 @Composable
 private fun SettingsRoute(component: ChatComponent, onBack: () -> Unit, onOpenStudy: () -> Unit) {
     val context = LocalContext.current
-    val scope = rememberCoroutineScope()
-    val prefs by component.settings.preferences.collectAsStateWithLifecycle()
-    val connection by component.sync.connection.collectAsStateWithLifecycle()
-    var notice by remember { mutableStateOf<String?>(null) }
+    val viewModel: SettingsViewModel = viewModel(
+        factory = viewModelFactory {
+            initializer {
+                SettingsViewModel(
+                    component.settings, component.sync.connection, component.sync.securityWarnings, component.sync.changedKeys,
+                    renderers = { RendererChoice.possible(component.device, null) },
+                    canNotify = { component.notifier?.canNotify() },
+                    probe = component.probe,
+                    trustKey = component.trustKey,
+                    exportJson = { ChatExport.toJson(component.repository.allMessages()) },
+                )
+            }
+        },
+    )
+    val state by viewModel.uiState.collectAsStateWithLifecycle()
     // Asked again on every return to the screen: the user may have changed it in Android's settings.
-    var notificationsAllowed by remember { mutableStateOf(component.notifier?.canNotify() ?: true) }
     androidx.lifecycle.compose.LifecycleResumeEffect(Unit) {
-        notificationsAllowed = component.notifier?.canNotify() ?: true
+        viewModel.refreshNotifications()
         onPauseOrDispose { }
     }
     val setReachable = { on: Boolean ->
-        component.settings.update { it.copy(stayReachable = on, reachableAfterBoot = on && it.reachableAfterBoot) }
+        viewModel.setStayReachable(on)
         if (on) ReachableService.start(context) else ReachableService.stop(context)
     }
     // Android 13+: the ongoing and message notifications need the permission; it is asked when the user
@@ -208,78 +218,20 @@ private fun SettingsRoute(component: ChatComponent, onBack: () -> Unit, onOpenSt
     // foreground service run without it), and the settings say that nothing will be announced.
     val permission = rememberLauncherForActivityResult(ActivityResultContracts.RequestPermission()) { granted ->
         setReachable(true)
-        notificationsAllowed = component.notifier?.canNotify() ?: granted
-        if (!granted) notice = "Notifications are off: messages still arrive, but nothing announces them."
+        viewModel.permissionAnswered(granted)
     }
     val export = rememberLauncherForActivityResult(ActivityResultContracts.CreateDocument("application/json")) { uri ->
         if (uri == null) return@rememberLauncherForActivityResult
-        scope.launch {
-            notice = withContext(Dispatchers.IO) {
-                runCatching {
-                    val json = ChatExport.toJson(component.repository.allMessages())
-                    context.contentResolver.openOutputStream(uri)!!.use { it.write(json.toByteArray(Charsets.UTF_8)) }
-                    "Exported to ${uri.lastPathSegment}"
-                }.getOrElse { "Export failed: ${it.message}" }
-            }
-        }
+        viewModel.export(uri.lastPathSegment.orEmpty()) { checkNotNull(context.contentResolver.openOutputStream(uri)) { "cannot write $uri" } }
     }
-    val securityWarnings by component.sync.securityWarnings.collectAsStateWithLifecycle()
-    val changedKeys by component.sync.changedKeys.collectAsStateWithLifecycle()
-    val state = SettingsUiState(
-        prefs, RendererChoice.possible(component.device, null),
-        when (val c = connection) {
-            ConnectionState.Connected -> "connected"
-            is ConnectionState.Connecting -> "connecting" + (c.lastFailure?.let { " ($it)" } ?: "")
-            ConnectionState.Disconnected -> "not connected"
-            is ConnectionState.Failed -> "refused: ${c.reason}"
-        },
-        notificationsAllowed = notificationsAllowed,
-        securityWarnings = securityWarnings,
-        changedKeys = changedKeys,
-    )
     SettingsScreen(
         state,
         SettingsActions(
             onBack = onBack,
-            update = component.settings::update,
-            onBroker = { url ->
-                // Like first launch: the new broker is saved only once it answered.
-                runCatching { BrokerAddress.parse(url) }.fold(
-                    onSuccess = { address ->
-                        val user = prefs.userName
-                        if (user == null) {
-                            "Set a user name first"
-                        } else {
-                            notice = "Testing $address…"
-                            scope.launch {
-                                val problem = component.probe(user, address, prefs.brokerPassword)
-                                if (problem == null) component.settings.update { it.copy(brokerUrl = address.toString()) }
-                                notice = problem?.let { "Broker not changed: $it" } ?: "Broker changed to $address"
-                            }
-                            null
-                        }
-                    },
-                    onFailure = { it.message },
-                )
-            },
-            onPassword = { password ->
-                val user = prefs.userName
-                val address = runCatching { BrokerAddress.parse(prefs.brokerUrl) }.getOrNull()
-                if (user == null || address == null) {
-                    "Set a user name and broker first"
-                } else {
-                    notice = "Testing the password with $address…"
-                    scope.launch {
-                        val problem = component.probe(user, address, password.takeIf { it.isNotEmpty() })
-                        notice = problem?.let { "Password not changed: $it" } ?: "Password changed"
-                    }
-                    null
-                }
-            },
-            onUserName = { name ->
-                if (Topics.isValidUserName(name.trim())) { component.settings.update { it.copy(userName = name.trim()) }; null }
-                else "Use 1 to 32 letters, digits, '.', '_' or '-'"
-            },
+            update = viewModel::update,
+            onBroker = viewModel::setBroker,
+            onPassword = viewModel::setPassword,
+            onUserName = viewModel::setUserName,
             onStayReachable = { on ->
                 val needsPermission = on && Build.VERSION.SDK_INT >= 33 &&
                     ContextCompat.checkSelfPermission(context, Manifest.permission.POST_NOTIFICATIONS) != PackageManager.PERMISSION_GRANTED
@@ -288,13 +240,12 @@ private fun SettingsRoute(component: ChatComponent, onBack: () -> Unit, onOpenSt
             onAllowNotifications = {
                 val page = Intent(android.provider.Settings.ACTION_APP_NOTIFICATION_SETTINGS)
                     .putExtra(android.provider.Settings.EXTRA_APP_PACKAGE, context.packageName)
-                runCatching { context.startActivity(page) }.onFailure { notice = "Open Android's settings, Apps, Hapticon, Notifications." }
+                runCatching { context.startActivity(page) }.onFailure { viewModel.notify("Open Android's settings, Apps, Hapticon, Notifications.") }
             },
             onExport = { export.launch("hapticon-chats.json") },
             onOpenStudy = onOpenStudy,
-            onTrustKey = { peer -> component.trustKey(peer) },
+            onTrustKey = viewModel::trust,
         ),
-        notice = notice,
         version = runCatching { context.packageManager.getPackageInfo(context.packageName, 0).versionName }.getOrNull() ?: "",
     )
 }

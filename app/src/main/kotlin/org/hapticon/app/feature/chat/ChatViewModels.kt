@@ -302,4 +302,6 @@ data class SettingsUiState(
     val securityWarnings: List<String> = emptyList(),
     /** Peers whose changed key waits for the user's trust. */
     val changedKeys: Set<String> = emptySet(),
+    /** The outcome of the last action that takes a moment (broker test, export, permission), one line. */
+    val notice: String? = null,
 )

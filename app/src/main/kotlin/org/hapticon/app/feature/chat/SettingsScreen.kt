@@ -63,8 +63,6 @@ data class SettingsActions(
 fun SettingsScreen(
     uiState: SettingsUiState,
     actions: SettingsActions,
-    /** The outcome of the last action that takes a moment (broker test, export, permission), one line. */
-    notice: String? = null,
     version: String = "",
 ) {
     val prefs = uiState.preferences
@@ -80,7 +78,7 @@ fun SettingsScreen(
             Modifier.fillMaxSize().padding(padding).verticalScroll(rememberScrollState()).padding(horizontal = 16.dp, vertical = 8.dp),
             verticalArrangement = Arrangement.spacedBy(8.dp),
         ) {
-            notice?.let {
+            uiState.notice?.let {
                 androidx.compose.material3.Surface(color = MaterialTheme.colorScheme.secondaryContainer, shape = MaterialTheme.shapes.medium) {
                     Text(it, style = MaterialTheme.typography.bodyMedium, modifier = Modifier.fillMaxWidth().padding(12.dp))
                 }

@@ -51,15 +51,24 @@ data class ProtocolDraft(
 }
 
 /** What the protocol editor shows. */
-data class ProtocolEditorUiState(
-    val draft: ProtocolDraft? = null,
-    /** The study module's message for the first problem, or null when the draft is a valid protocol. */
-    val problem: String? = null,
-    val icons: List<HapticIcon> = emptyList(),
-    /** The JSON text box: the protocol exported, or text pasted to import. */
-    val json: String = "",
-    val message: String? = null,
-)
+sealed interface ProtocolEditorUiState {
+    /** The stored protocol is being read. */
+    data object Loading : ProtocolEditorUiState
+
+    /** The protocol cannot be edited (it does not exist, or it is the read-only default); [message] says so. */
+    data class Error(val message: String) : ProtocolEditorUiState
+
+    /** The draft being edited. */
+    data class Success(
+        val draft: ProtocolDraft,
+        /** The study module's message for the first problem, or null when the draft is a valid protocol. */
+        val problem: String? = null,
+        val icons: List<HapticIcon> = emptyList(),
+        /** The JSON text box: the protocol exported, or text pasted to import. */
+        val json: String = "",
+        val message: String? = null,
+    ) : ProtocolEditorUiState
+}
 
 /**
  * Edits the stored protocol [protocolId] (never the read-only default): title, scale points, tasks, each stimulus's
@@ -71,24 +80,32 @@ class ProtocolEditorViewModel(
     private val repository: StudyRepository,
     iconRepository: IconRepository,
 ) : ViewModel() {
-    private val local = MutableStateFlow(ProtocolEditorUiState())
+    // The editor's own state; the icons come from the repository and are combined in below.
+    private val local = MutableStateFlow<ProtocolEditorUiState>(ProtocolEditorUiState.Loading)
 
     /** Completes once the protocol is loaded. */
     val loaded: Job = viewModelScope.launch {
         val stored = repository.protocol(protocolId)
         if (stored == null || stored.readOnly) {
-            local.update { it.copy(message = "protocol $protocolId cannot be edited; duplicate it first") }
+            local.value = ProtocolEditorUiState.Error("protocol $protocolId cannot be edited; duplicate it first")
         } else {
             setDraft(ProtocolDraft.of(stored))
         }
     }
 
-    val uiState: StateFlow<ProtocolEditorUiState> = combine(local, iconRepository.icons()) { state, icons -> state.copy(icons = icons) }
-        .stateIn(viewModelScope, SharingStarted.Eagerly, ProtocolEditorUiState())
+    val uiState: StateFlow<ProtocolEditorUiState> = combine(local, iconRepository.icons()) { state, icons ->
+        if (state is ProtocolEditorUiState.Success) state.copy(icons = icons) else state
+    }.stateIn(viewModelScope, SharingStarted.Eagerly, ProtocolEditorUiState.Loading)
+
+    private val editing: ProtocolEditorUiState.Success? get() = local.value as? ProtocolEditorUiState.Success
+
+    // Changes the state while a draft is being edited; before (loading) and instead (error) there is nothing to change.
+    private fun updateEditing(transform: (ProtocolEditorUiState.Success) -> ProtocolEditorUiState.Success) =
+        local.update { if (it is ProtocolEditorUiState.Success) transform(it) else it }
 
     /** Changes the draft with [transform] and re-validates. */
     fun edit(transform: (ProtocolDraft) -> ProtocolDraft) {
-        local.value.draft?.let { setDraft(transform(it)) }
+        editing?.draft?.let { setDraft(transform(it)) }
     }
 
     /** Sets the scale's number of points, keeping the labels that still fit (per-point labels shrink to the two ends). */
@@ -112,25 +129,26 @@ class ProtocolEditorViewModel(
 
     /** Puts the draft's protocol JSON into the text box. */
     fun exportJson() {
-        val draft = local.value.draft ?: return
+        val draft = editing?.draft ?: return
         val json = runCatching { ProtocolJson.encode(draft.build()) }
-        local.update { it.copy(json = json.getOrDefault(it.json), message = json.exceptionOrNull()?.message ?: "JSON exported below") }
+        updateEditing { it.copy(json = json.getOrDefault(it.json), message = json.exceptionOrNull()?.message ?: "JSON exported below") }
     }
 
     /** Sets the text box. */
-    fun setJson(text: String) = local.update { it.copy(json = text) }
+    fun setJson(text: String) = updateEditing { it.copy(json = text) }
 
     /** Replaces the draft's protocol by the text box's JSON; the id stays this protocol's. Shows the parse error otherwise. */
     fun importJson() {
-        val draft = local.value.draft ?: return
+        val current = editing ?: return
+        val draft = current.draft
         try {
-            val imported = ProtocolJson.decode(local.value.json)
+            val imported = ProtocolJson.decode(current.json)
             setDraft(ProtocolDraft.of(StoredProtocol(imported.copy(id = draft.id), draft.seed, draft.masking)))
-            local.update { it.copy(message = "imported ${imported.tasks.size} tasks") }
+            updateEditing { it.copy(message = "imported ${imported.tasks.size} tasks") }
         } catch (e: JsonException) {
-            local.update { it.copy(message = "not JSON: ${e.message}") }
+            updateEditing { it.copy(message = "not JSON: ${e.message}") }
         } catch (e: IllegalArgumentException) {
-            local.update { it.copy(message = e.message) }
+            updateEditing { it.copy(message = e.message) }
         }
     }
 
@@ -139,11 +157,11 @@ class ProtocolEditorViewModel(
      * so old sessions keep meaning what they meant.
      */
     fun save(): Job = viewModelScope.launch {
-        val draft = local.value.draft ?: return@launch
+        val draft = editing?.draft ?: return@launch
         val protocol = try {
             draft.build()
         } catch (e: IllegalArgumentException) {
-            local.update { it.copy(problem = e.message, message = "not saved: fix the problem first") }
+            updateEditing { it.copy(problem = e.message, message = "not saved: fix the problem first") }
             return@launch
         }
         val stored = repository.protocol(protocolId)?.protocol
@@ -151,7 +169,7 @@ class ProtocolEditorViewModel(
         val revised = if (ran && stored != protocol) protocol.copy(revision = protocol.revision + 1) else protocol
         repository.saveProtocol(StoredProtocol(revised, draft.seed, draft.masking))
         setDraft(draft.copy(revision = revised.revision))
-        local.update { it.copy(message = "saved revision ${revised.revision}") }
+        updateEditing { it.copy(message = "saved revision ${revised.revision}") }
     }
 
     private fun setDraft(draft: ProtocolDraft) {
@@ -161,6 +179,9 @@ class ProtocolEditorViewModel(
         } catch (e: IllegalArgumentException) {
             e.message
         }
-        local.update { it.copy(draft = draft, problem = problem, message = null) }
+        local.update {
+            (it as? ProtocolEditorUiState.Success)?.copy(draft = draft, problem = problem, message = null)
+                ?: ProtocolEditorUiState.Success(draft, problem)
+        }
     }
 }

@@ -3,6 +3,7 @@ package org.hapticon.app.feature.study
 import android.content.ActivityNotFoundException
 import android.content.Intent
 import androidx.compose.foundation.layout.Arrangement
+import androidx.compose.foundation.layout.Box
 import androidx.compose.foundation.layout.Column
 import androidx.compose.foundation.layout.PaddingValues
 import androidx.compose.foundation.layout.Row
@@ -15,6 +16,7 @@ import androidx.compose.foundation.text.KeyboardOptions
 import androidx.compose.material3.AlertDialog
 import androidx.compose.material3.Button
 import androidx.compose.material3.Card
+import androidx.compose.material3.CircularProgressIndicator
 import androidx.compose.material3.HorizontalDivider
 import androidx.compose.material3.MaterialTheme
 import androidx.compose.material3.OutlinedButton
@@ -28,6 +30,7 @@ import androidx.compose.runtime.getValue
 import androidx.compose.runtime.mutableStateOf
 import androidx.compose.runtime.saveable.rememberSaveable
 import androidx.compose.runtime.setValue
+import androidx.compose.ui.Alignment
 import androidx.compose.ui.Modifier
 import androidx.compose.ui.platform.LocalContext
 import androidx.compose.ui.semantics.contentDescription
@@ -69,9 +72,19 @@ class ResearcherActions(
     val onOpenCompliance: () -> Unit = {},
 )
 
-/** The researcher screen: protocol, next session, sessions, export, share and upload. */
+/** The researcher screen: protocol, next session, sessions, export, share and upload; a spinner while they are read. */
 @Composable
 fun ResearcherScreen(state: ResearcherUiState, actions: ResearcherActions) {
+    when (state) {
+        is ResearcherUiState.Loading -> Box(Modifier.fillMaxSize(), contentAlignment = Alignment.Center) {
+            CircularProgressIndicator(Modifier.semantics { contentDescription = "Loading the study" })
+        }
+        is ResearcherUiState.Success -> ResearcherContent(state, actions)
+    }
+}
+
+@Composable
+private fun ResearcherContent(state: ResearcherUiState.Success, actions: ResearcherActions) {
     val context = LocalContext.current
     fun share(file: File, type: String) {
         try {
@@ -166,7 +179,7 @@ fun ResearcherScreen(state: ResearcherUiState, actions: ResearcherActions) {
 }
 
 @Composable
-private fun CollectorSettings(state: ResearcherUiState, actions: ResearcherActions) {
+private fun CollectorSettings(state: ResearcherUiState.Success, actions: ResearcherActions) {
     var url by rememberSaveable(state.collectorUrl) { mutableStateOf(state.collectorUrl) }
     var token by rememberSaveable(state.collectorToken) { mutableStateOf(state.collectorToken) }
     Column(verticalArrangement = Arrangement.spacedBy(8.dp)) {
@@ -213,7 +226,6 @@ class ProtocolEditorActions(
 /** The protocol editor: every field of the draft, the study module's validation message, JSON import and export. */
 @Composable
 fun ProtocolEditorScreen(state: ProtocolEditorUiState, actions: ProtocolEditorActions) {
-    val draft = state.draft
     LazyColumn(Modifier.fillMaxSize(), contentPadding = PaddingValues(16.dp), verticalArrangement = Arrangement.spacedBy(12.dp)) {
         item {
             Row(Modifier.fillMaxWidth(), horizontalArrangement = Arrangement.SpaceBetween) {
@@ -221,8 +233,16 @@ fun ProtocolEditorScreen(state: ProtocolEditorUiState, actions: ProtocolEditorAc
                 TextButton(onClick = actions.onBack) { Text("Back") }
             }
         }
-        state.message?.let { item { Text(it, style = MaterialTheme.typography.bodyMedium) } }
-        if (draft == null) return@LazyColumn
+        val editing = when (state) {
+            ProtocolEditorUiState.Loading -> return@LazyColumn
+            is ProtocolEditorUiState.Error -> {
+                item { Text(state.message, style = MaterialTheme.typography.bodyMedium) }
+                return@LazyColumn
+            }
+            is ProtocolEditorUiState.Success -> state
+        }
+        val draft = editing.draft
+        editing.message?.let { item { Text(it, style = MaterialTheme.typography.bodyMedium) } }
         item {
             Column(verticalArrangement = Arrangement.spacedBy(8.dp)) {
                 Text("${draft.id} · revision ${draft.revision}", style = MaterialTheme.typography.labelLarge)
@@ -249,7 +269,7 @@ fun ProtocolEditorScreen(state: ProtocolEditorUiState, actions: ProtocolEditorAc
                     task.stimuli.forEachIndexed { s, stimulus ->
                         HorizontalDivider()
                         Text("Stimulus ${s + 1}: ${stimulus.id}", style = MaterialTheme.typography.labelLarge)
-                        val icons = if (state.icons.any { it == stimulus.icon }) state.icons else listOf(stimulus.icon) + state.icons
+                        val icons = if (editing.icons.any { it == stimulus.icon }) editing.icons else listOf(stimulus.icon) + editing.icons
                         DropdownField("Task ${t + 1} stimulus ${s + 1} icon", icons, stimulus.icon, { it.name }, { icon ->
                             actions.onEditStimulus(t, s) { it.copy(icon = icon) }
                         })
@@ -266,14 +286,14 @@ fun ProtocolEditorScreen(state: ProtocolEditorUiState, actions: ProtocolEditorAc
         }
         item {
             Column(verticalArrangement = Arrangement.spacedBy(8.dp)) {
-                val problem = state.problem
+                val problem = editing.problem
                 if (problem != null) ErrorText(problem) else Text("The protocol is valid.", style = MaterialTheme.typography.bodyMedium)
                 Button(onClick = actions.onSave, enabled = problem == null) { Text("Save") }
                 Text("Protocol JSON", style = MaterialTheme.typography.titleMedium, modifier = Modifier.semantics { heading() })
-                OutlinedTextField(state.json, actions.onSetJson, label = { Text("Protocol JSON") }, minLines = 4, modifier = Modifier.fillMaxWidth())
+                OutlinedTextField(editing.json, actions.onSetJson, label = { Text("Protocol JSON") }, minLines = 4, modifier = Modifier.fillMaxWidth())
                 Row(horizontalArrangement = Arrangement.spacedBy(8.dp)) {
                     OutlinedButton(onClick = actions.onExportJson) { Text("Export JSON") }
-                    OutlinedButton(onClick = actions.onImportJson, enabled = state.json.isNotBlank()) { Text("Import JSON") }
+                    OutlinedButton(onClick = actions.onImportJson, enabled = editing.json.isNotBlank()) { Text("Import JSON") }
                 }
             }
         }

@@ -43,24 +43,39 @@ sealed interface UploadState {
     data class Failed(val message: String) : UploadState
 }
 
-/** What the researcher screen shows. */
-data class ResearcherUiState(
-    val lock: LockState,
-    val pinError: String? = null,
-    val protocols: List<StoredProtocol> = emptyList(),
-    val selected: StoredProtocol? = null,
-    val sessions: List<SessionSummary> = emptyList(),
-    val activeSessionId: Long? = null,
-    /** The id the next session of the selected protocol gets. */
-    val nextParticipant: String = ParticipantId.of(0),
-    /** Masking noise is on but no headphones are connected: the researcher confirms or cancels the start. */
-    val headphoneWarning: Boolean = false,
-    val export: ExportResult? = null,
-    val message: String? = null,
-    val upload: UploadState = UploadState.Idle,
-    val collectorUrl: String = "",
-    val collectorToken: String = "",
-)
+/**
+ * What the researcher screen shows. The PIN gate ([lock], [pinError]) is known at once; the stored protocols,
+ * sessions and the running session's id only once Room and the settings have answered ([Success]).
+ */
+sealed interface ResearcherUiState {
+    /** Whether the researcher screen is open. */
+    val lock: LockState
+
+    /** Why the last PIN was refused, if it was. */
+    val pinError: String?
+
+    /** The stored protocols and sessions are being read: which screen to show (session, PIN, researcher) is not known yet. */
+    data class Loading(override val lock: LockState, override val pinError: String? = null) : ResearcherUiState
+
+    /** Everything read: the protocols, the selected one, the sessions run, and the last export and upload. */
+    data class Success(
+        override val lock: LockState,
+        override val pinError: String? = null,
+        val protocols: List<StoredProtocol> = emptyList(),
+        val selected: StoredProtocol? = null,
+        val sessions: List<SessionSummary> = emptyList(),
+        val activeSessionId: Long? = null,
+        /** The id the next session of the selected protocol gets. */
+        val nextParticipant: String = ParticipantId.of(0),
+        /** Masking noise is on but no headphones are connected: the researcher confirms or cancels the start. */
+        val headphoneWarning: Boolean = false,
+        val export: ExportResult? = null,
+        val message: String? = null,
+        val upload: UploadState = UploadState.Idle,
+        val collectorUrl: String = "",
+        val collectorToken: String = "",
+    ) : ResearcherUiState
+}
 
 /**
  * The researcher's side: the PIN gate, picking a protocol, starting the next participant's session, the session list,
@@ -87,7 +102,7 @@ class ResearcherViewModel(
     ) { protocols, sessions, prefs, l ->
         val selected = protocols.firstOrNull { it.protocol.id == prefs.selectedProtocolId } ?: protocols.firstOrNull()
         val last = sessions.filter { it.protocolId == selected?.protocol?.id }.maxOfOrNull { it.participantIndex } ?: -1
-        ResearcherUiState(
+        ResearcherUiState.Success(
             lock = l.lock,
             pinError = l.pinError,
             protocols = protocols,
@@ -102,7 +117,7 @@ class ResearcherViewModel(
             collectorUrl = prefs.collectorUrl,
             collectorToken = prefs.collectorToken,
         )
-    }.stateIn(viewModelScope, SharingStarted.Eagerly, ResearcherUiState(local.value.lock))
+    }.stateIn(viewModelScope, SharingStarted.Eagerly, ResearcherUiState.Loading(local.value.lock))
 
     /** Sets the first PIN; [confirm] must repeat it. The state says when it is done. */
     fun setPin(pin: String, confirm: String): Job = viewModelScope.launch {
@@ -140,7 +155,7 @@ class ResearcherViewModel(
 
     /**
      * Starts the next participant's session of the selected protocol. With masking noise on and no headphones it
-     * first asks ([ResearcherUiState.headphoneWarning]); [ignoreHeadphones] proceeds anyway.
+     * first asks ([ResearcherUiState.Success.headphoneWarning]); [ignoreHeadphones] proceeds anyway.
      */
     fun startSession(ignoreHeadphones: Boolean = false): Job = viewModelScope.launch {
         val protocol = selectedProtocol() ?: return@launch
@@ -169,7 +184,7 @@ class ResearcherViewModel(
     /** Deletes stored protocol [id] (not the default); its sessions are kept. */
     fun delete(id: String): Job = viewModelScope.launch {
         study.repository.deleteProtocol(id)
-        if (uiState.value.selected?.protocol?.id == id) select(StoredProtocol.DEFAULT.protocol.id)
+        if ((uiState.value as? ResearcherUiState.Success)?.selected?.protocol?.id == id) select(StoredProtocol.DEFAULT.protocol.id)
     }
 
     /** Writes the selected protocol's CSV and JSON to the export directory and checks every session's chain. */

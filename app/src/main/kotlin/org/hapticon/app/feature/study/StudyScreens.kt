@@ -78,8 +78,11 @@ fun StudyRoute(container: AppContainer) {
     val state by researcher.uiState.collectAsStateWithLifecycle()
     var editing by rememberSaveable { mutableStateOf<String?>(null) }
     var compliance by rememberSaveable { mutableStateOf(false) }
-    val active = state.activeSessionId
+    // Until the stored sessions are read it is not known whether a session is running: the researcher screen's spinner.
+    val ready = state as? ResearcherUiState.Success
+    val active = ready?.activeSessionId
     when {
+        ready == null -> ResearcherScreen(state, ResearcherActions())
         active != null -> {
             val session: StudySessionViewModel = viewModel(
                 key = "study-session-$active",
@@ -161,7 +164,7 @@ fun StudyRoute(container: AppContainer) {
                     onOpenCompliance = { compliance = true },
                 )
             }
-            ResearcherScreen(state, actions)
+            ResearcherScreen(ready, actions)
         }
     }
 }

@@ -5,8 +5,10 @@ import androidx.lifecycle.viewModelScope
 import kotlinx.coroutines.Job
 import kotlinx.coroutines.delay
 import kotlinx.coroutines.flow.MutableStateFlow
+import kotlinx.coroutines.flow.SharingStarted
 import kotlinx.coroutines.flow.StateFlow
-import kotlinx.coroutines.flow.asStateFlow
+import kotlinx.coroutines.flow.map
+import kotlinx.coroutines.flow.stateIn
 import kotlinx.coroutines.launch
 import kotlinx.coroutines.sync.Mutex
 import kotlinx.coroutines.sync.withLock
@@ -39,10 +41,15 @@ class StudySessionViewModel(
     private val clock: () -> Long = System::currentTimeMillis,
 ) : ViewModel() {
     private val mutex = Mutex()
-    private val state = MutableStateFlow<SessionUiState>(SessionUiState.Loading)
 
-    /** What the participant sees. */
-    val uiState: StateFlow<SessionUiState> = state.asStateFlow()
+    /**
+     * Where the walk stands: the events logged so far and the screen's own choices (the value picked, whether the
+     * icon plays). Written only under [mutex], after the event is stored; the participant's screen is derived from it.
+     */
+    private val walk = MutableStateFlow<Walk>(Walk.Loading)
+
+    /** What the participant sees: the step the log says comes next, with the progress and the screen's choices. */
+    val uiState: StateFlow<SessionUiState> = walk.map(::uiStateOf).stateIn(viewModelScope, SharingStarted.Eagerly, SessionUiState.Loading)
 
     private lateinit var record: SessionRecord
     private lateinit var log: EventLog
@@ -125,7 +132,7 @@ class StudySessionViewModel(
     /** Logs the selected answer and moves to the next trial or the task end. Ignored until the icon was pressed and a value selected. */
     fun next(): Job = act { step ->
         val value = selection
-        if (step is StudyStep.Trial && value != null && pressed(step)) {
+        if (step is StudyStep.Trial && value != null && pressed(log.events, step)) {
             append(StudyEvent.Answer(step.task.id, step.stimulus.id, value))
             selection = null
             enter()
@@ -163,7 +170,7 @@ class StudySessionViewModel(
     private fun act(block: suspend (StudyStep) -> Unit): Job = viewModelScope.launch {
         loaded.join()
         mutex.withLock {
-            if (state.value is SessionUiState.Active) block(session.nextStep(log.events))
+            if (walk.value is Walk.Going) block(session.nextStep(log.events))
         }
     }
 
@@ -203,32 +210,49 @@ class StudySessionViewModel(
         repository.append(sessionId, entry)
     }
 
-    private fun pressedIn(taskId: String): Set<String> =
-        log.events.mapNotNullTo(HashSet()) { (it as? StudyEvent.IconPressed)?.takeIf { e -> e.taskId == taskId }?.stimulusId }
+    private fun pressedIn(events: List<StudyEvent>, taskId: String): Set<String> =
+        events.mapNotNullTo(HashSet()) { (it as? StudyEvent.IconPressed)?.takeIf { e -> e.taskId == taskId }?.stimulusId }
 
-    private fun pressed(step: StudyStep.Trial): Boolean = log.events.any {
+    private fun pressed(events: List<StudyEvent>, step: StudyStep.Trial): Boolean = events.any {
         it is StudyEvent.IconPressed && it.taskId == step.task.id && it.stimulusId == step.stimulus.id
     }
 
+    // Publishes the walk as it stands (the log hands out a fresh list of its events each time).
     private fun publish() {
-        val step = session.nextStep(log.events)
-        val events = log.events
-        state.value = SessionUiState.Active(
-            participant = record.participant,
-            step = step,
-            scale = record.protocol.scale,
-            answered = session.answeredTrials(events),
-            trials = session.plan.trials.size,
-            selected = selection,
-            iconPressed = step is StudyStep.Trial && pressed(step),
-            pressedStimuli = if (step is StudyStep.Explore) pressedIn(step.task.id) else emptySet(),
-            playing = playing,
-        )
+        walk.value = Walk.Going(log.events, selection, playing)
+    }
+
+    private fun uiStateOf(walk: Walk): SessionUiState = when (walk) {
+        Walk.Loading -> SessionUiState.Loading
+        is Walk.Failed -> SessionUiState.Failed(walk.message)
+        is Walk.Going -> {
+            val step = session.nextStep(walk.events)
+            SessionUiState.Active(
+                participant = record.participant,
+                step = step,
+                scale = record.protocol.scale,
+                answered = session.answeredTrials(walk.events),
+                trials = session.plan.trials.size,
+                selected = walk.selection,
+                iconPressed = step is StudyStep.Trial && pressed(walk.events, step),
+                pressedStimuli = if (step is StudyStep.Explore) pressedIn(walk.events, step.task.id) else emptySet(),
+                playing = walk.playing,
+            )
+        }
     }
 
     private fun fail(message: String) {
         stopNoise()
-        state.value = SessionUiState.Failed(message)
+        walk.value = Walk.Failed(message)
+    }
+
+    /** The walk's sources: nothing read yet, a log that cannot go on, or the events logged and the screen's choices. */
+    private sealed interface Walk {
+        data object Loading : Walk
+
+        data class Failed(val message: String) : Walk
+
+        data class Going(val events: List<StudyEvent>, val selection: Int?, val playing: Boolean) : Walk
     }
 }
 

@@ -58,9 +58,9 @@ class StudyProtocolEditorTest {
     }
 
     /** The state once every queued update has run. */
-    private fun ProtocolEditorViewModel.now(): ProtocolEditorUiState {
+    private fun ProtocolEditorViewModel.now(): ProtocolEditorUiState.Success {
         dispatcher.scheduler.advanceUntilIdle()
-        return uiState.value
+        return uiState.value as ProtocolEditorUiState.Success
     }
 
     private suspend fun editor(id: String) = ProtocolEditorViewModel(id, repository, icons).also { it.loaded.join() }
@@ -68,8 +68,10 @@ class StudyProtocolEditorTest {
     @Test
     fun defaultProtocol_isReadOnly_andCannotBeOverwritten() = runTest(dispatcher) {
         val vm = editor(OriginatingStudy.ID)
-        assertNull(vm.uiState.first { it.message != null }.draft)
-        assertEquals("protocol hapticon-icons cannot be edited; duplicate it first", vm.now().message)
+        assertEquals(
+            ProtocolEditorUiState.Error("protocol hapticon-icons cannot be edited; duplicate it first"),
+            vm.uiState.first { it !is ProtocolEditorUiState.Loading },
+        )
         assertEquals(
             "protocol hapticon-icons is read-only; duplicate it to edit",
             assertThrows(IllegalArgumentException::class.java) { kotlinx.coroutines.runBlocking { repository.saveProtocol(StoredProtocol.DEFAULT) } }.message,

@@ -10,6 +10,7 @@ import java.io.File
 import java.net.InetSocketAddress
 import kotlinx.coroutines.Dispatchers
 import kotlinx.coroutines.ExperimentalCoroutinesApi
+import kotlinx.coroutines.flow.filterIsInstance
 import kotlinx.coroutines.flow.first
 import kotlinx.coroutines.runBlocking
 import kotlinx.coroutines.test.StandardTestDispatcher
@@ -143,13 +144,13 @@ class StudyResearcherTest {
         vm.select("masked")
 
         vm.startSession().join()
-        vm.uiState.first { it.headphoneWarning }
+        vm.ready { it.headphoneWarning }
         assertNull(settings.preferences.value.activeSessionId)
 
         vm.startSession(ignoreHeadphones = true).join()
         val active = settings.preferences.value.activeSessionId!!
         // The active session is set last, after the warning is cleared and the screen locked.
-        val started = vm.uiState.first { it.nextParticipant == "P001-D" && it.activeSessionId == active }
+        val started = vm.ready { it.nextParticipant == "P001-D" && it.activeSessionId == active }
         assertFalse(started.headphoneWarning)
         assertEquals(LockState.LOCKED, started.lock)
         assertEquals("P000-A", study.repository.session(active)!!.participant)
@@ -161,7 +162,7 @@ class StudyResearcherTest {
 
         headphones = true
         vm.startSession().join()
-        assertFalse("with headphones there is nothing to warn about", vm.uiState.first { it.activeSessionId != null }.headphoneWarning)
+        assertFalse("with headphones there is nothing to warn about", vm.ready { it.activeSessionId != null }.headphoneWarning)
         assertEquals("P001-D", study.repository.session(settings.preferences.value.activeSessionId!!)!!.participant)
     }
 
@@ -172,13 +173,13 @@ class StudyResearcherTest {
         val vm = ResearcherViewModel(study, hashing = dispatcher)
         vm.export().join()
 
-        val export = vm.uiState.first { it.export != null }.export!!
+        val export = vm.ready { it.export != null }.export!!
         assertEquals(File(exports, "hapticon-icons-r1-1700000999000.csv"), export.csvFile)
         assertEquals(File(exports, "hapticon-icons-r1-1700000999000.json"), export.jsonFile)
         assertEquals("${ResponseCsv.HEADER}\r\n", export.csvFile.readText())
         assertTrue(export.jsonFile.readText().contains("\"${record.participant}\""))
         assertEquals(listOf("P000-A: log intact"), export.checks.map { "${it.participant}: ${it.summary}" })
-        assertEquals("exported 0 rows", vm.uiState.value.message)
+        assertEquals("exported 0 rows", vm.now.message)
 
         val intent = StudyExporter.shareIntent(context, export.csvFile, "text/csv")
         assertEquals(Intent.ACTION_SEND, intent.action)
@@ -217,15 +218,15 @@ class StudyResearcherTest {
         val down = HttpServer.create(InetSocketAddress("127.0.0.1", 0), 0).let { val port = it.address.port; it.stop(0); port }
         vm.setCollector("http://127.0.0.1:$down", "")
         vm.upload().join()
-        val failed = vm.uiState.first { it.upload is UploadState.Failed }.upload as UploadState.Failed
+        val failed = vm.ready { it.upload is UploadState.Failed }.upload as UploadState.Failed
         assertTrue(failed.message, failed.message.startsWith("upload failed: "))
-        val export = vm.uiState.value.export!!
+        val export = vm.now.export!!
         assertTrue("the export stays for the retry", export.csvFile.isFile)
 
         vm.setCollector(startCollector(), "")
         vm.upload().join()
-        assertEquals(UploadState.Done("0 rows uploaded to 127.0.0.1"), vm.uiState.first { it.upload is UploadState.Done }.upload)
-        assertEquals(export, vm.uiState.value.export)
+        assertEquals(UploadState.Done("0 rows uploaded to 127.0.0.1"), vm.ready { it.upload is UploadState.Done }.upload)
+        assertEquals(export, vm.now.export)
         assertEquals(listOf("POST text/csv; charset=utf-8 hapticon-icons null ${export.csv.length}"), uploads)
     }
 
@@ -240,17 +241,17 @@ class StudyResearcherTest {
         suspend fun uploadState(): UploadState {
             vm.upload().join()
             advanceUntilIdle()
-            return vm.uiState.value.upload
+            return vm.now.upload
         }
         fun failed(message: String) = UploadState.Failed("$message: enter the upload token of study 'hapticon-icons' and upload again")
 
         // Export first, so that an export problem shows as itself rather than as an upload that never ran.
         vm.export().join()
         // uiState combines Room flows, which first emit from Room's own threads: wait for them, not for the scheduler.
-        val export = vm.uiState.first { it.export != null || it.message != null }.let { checkNotNull(it.export) { "no export: ${it.message}" } }
+        val export = vm.ready { it.export != null || it.message != null }.let { checkNotNull(it.export) { "no export: ${it.message}" } }
         vm.setCollector(url, "")
         assertEquals(failed("the collector needs a token"), uploadState())
-        assertEquals(export, vm.uiState.value.export)
+        assertEquals(export, vm.now.export)
         vm.setCollector(url, DOWNLOAD_TOKEN)
         assertEquals(failed("the collector refused this token (this token may only download, not upload)"), uploadState())
         vm.setCollector(url, "hct1.ffffffffffffffff.wrong")
@@ -260,10 +261,10 @@ class StudyResearcherTest {
         // Saved trimmed, where a restarted app reads it back.
         assertEquals(UPLOAD_TOKEN, SharedPreferencesStudySettings(prefs).preferences.value.collectorToken)
         advanceUntilIdle()
-        assertEquals(UPLOAD_TOKEN, vm.uiState.value.collectorToken)
+        assertEquals(UPLOAD_TOKEN, vm.now.collectorToken)
         assertEquals(UploadState.Done("0 rows uploaded to 127.0.0.1"), uploadState())
         // The refused uploads lost nothing: the same export went out each time, and the last with the token.
-        assertEquals(export, vm.uiState.value.export)
+        assertEquals(export, vm.now.export)
         assertTrue(export.csvFile.isFile)
         val sent = "POST text/csv; charset=utf-8 hapticon-icons"
         assertEquals(
@@ -276,4 +277,10 @@ class StudyResearcherTest {
         const val UPLOAD_TOKEN = "hct1.0123456789abcdef.AAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAA"
         const val DOWNLOAD_TOKEN = "hct1.fedcba9876543210.BBBBBBBBBBBBBBBBBBBBBBBBBBBBBBBBBBBBBBBBBBB"
     }
+
+    // The researcher's state once Room and the settings have answered (before, it is Loading: only the PIN gate).
+    private suspend fun ResearcherViewModel.ready(predicate: (ResearcherUiState.Success) -> Boolean) =
+        uiState.filterIsInstance<ResearcherUiState.Success>().first(predicate)
+
+    private val ResearcherViewModel.now: ResearcherUiState.Success get() = uiState.value as ResearcherUiState.Success
 }

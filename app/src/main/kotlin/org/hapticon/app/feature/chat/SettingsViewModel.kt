@@ -1,0 +1,144 @@
+package org.hapticon.app.feature.chat
+
+import androidx.lifecycle.ViewModel
+import androidx.lifecycle.viewModelScope
+import java.io.OutputStream
+import kotlinx.coroutines.CoroutineDispatcher
+import kotlinx.coroutines.Dispatchers
+import kotlinx.coroutines.Job
+import kotlinx.coroutines.flow.MutableStateFlow
+import kotlinx.coroutines.flow.SharingStarted
+import kotlinx.coroutines.flow.StateFlow
+import kotlinx.coroutines.flow.combine
+import kotlinx.coroutines.flow.stateIn
+import kotlinx.coroutines.launch
+import kotlinx.coroutines.withContext
+import org.hapticon.app.data.ChatPreferences
+import org.hapticon.app.data.ChatSettingsRepository
+import org.hapticon.messaging.ConnectionState
+import org.hapticon.messaging.RendererKind
+import org.hapticon.messaging.Topics
+import org.hapticon.messaging.mqtt.BrokerAddress
+
+/**
+ * The chat settings screen's state and the changes that need more than a write: a new broker or password is
+ * tested ([probe]) before it is saved, a user name is checked, the export is written off the main thread. What
+ * needs an Activity (the permission prompt, Android's settings page, the reachable service) stays in the route.
+ */
+class SettingsViewModel(
+    private val settings: ChatSettingsRepository,
+    connection: StateFlow<ConnectionState>,
+    securityWarnings: StateFlow<List<String>>,
+    changedKeys: StateFlow<Set<String>>,
+    /** The renderers this phone can play (asked again for every state: a test may change the device). */
+    private val renderers: () -> List<RendererKind>,
+    /** Whether Android shows this app's notifications now; null where there is no notifier to ask. */
+    private val canNotify: () -> Boolean?,
+    private val probe: BrokerProbe,
+    private val trustKey: (peer: String) -> Boolean,
+    /** Every stored message as the export's JSON ([org.hapticon.app.data.ChatExport]). */
+    private val exportJson: suspend () -> String,
+    private val io: CoroutineDispatcher = Dispatchers.IO,
+) : ViewModel() {
+    private val notice = MutableStateFlow<String?>(null)
+    private val notificationsAllowed = MutableStateFlow(canNotify() ?: true)
+
+    /** What the settings screen shows; it starts from the sources' current values, so the first frame is complete. */
+    val uiState: StateFlow<SettingsUiState> = combine(
+        settings.preferences, connection, securityWarnings, changedKeys, combine(notice, notificationsAllowed, ::Pair),
+    ) { prefs, c, warnings, keys, (notice, allowed) ->
+        SettingsUiState(prefs, renderers(), connectionLabel(c), allowed, warnings, keys, notice)
+    }.stateIn(
+        viewModelScope, SharingStarted.WhileSubscribed(5_000),
+        SettingsUiState(
+            settings.preferences.value, renderers(), connectionLabel(connection.value), notificationsAllowed.value,
+            securityWarnings.value, changedKeys.value,
+        ),
+    )
+
+    /** Asks Android again whether notifications are shown (the user may have changed it in Android's settings). */
+    fun refreshNotifications() {
+        notificationsAllowed.value = canNotify() ?: true
+    }
+
+    /** The notification permission prompt was answered; refused, the screen says that nothing will announce messages. */
+    fun permissionAnswered(granted: Boolean) {
+        notificationsAllowed.value = canNotify() ?: granted
+        if (!granted) notice.value = "Notifications are off: messages still arrive, but nothing announces them."
+    }
+
+    /** Shows [text] as the screen's one-line notice (an outcome the route learnt, e.g. no settings page to open). */
+    fun notify(text: String) {
+        notice.value = text
+    }
+
+    /** Applies [transform] to the stored settings. */
+    fun update(transform: (ChatPreferences) -> ChatPreferences) = settings.update(transform)
+
+    /**
+     * Tests [url] as the new broker and saves it once it answered, as first launch does. Returns why not at once
+     * (a bad address, no user name), null when the test started; its outcome becomes the notice.
+     */
+    fun setBroker(url: String): String? {
+        val address = runCatching { BrokerAddress.parse(url) }.getOrElse { return it.message }
+        val prefs = settings.preferences.value
+        val user = prefs.userName ?: return "Set a user name first"
+        notice.value = "Testing $address…"
+        viewModelScope.launch {
+            val problem = probe(user, address, prefs.brokerPassword)
+            if (problem == null) settings.update { it.copy(brokerUrl = address.toString()) }
+            notice.value = problem?.let { "Broker not changed: $it" } ?: "Broker changed to $address"
+        }
+        return null
+    }
+
+    /** Tests [password] (empty: none) with the stored broker; returns why not at once, null when the test started. */
+    fun setPassword(password: String): String? {
+        val prefs = settings.preferences.value
+        val user = prefs.userName
+        val address = runCatching { BrokerAddress.parse(prefs.brokerUrl) }.getOrNull()
+        if (user == null || address == null) return "Set a user name and broker first"
+        notice.value = "Testing the password with $address…"
+        viewModelScope.launch {
+            val problem = probe(user, address, password.takeIf { it.isNotEmpty() })
+            notice.value = problem?.let { "Password not changed: $it" } ?: "Password changed"
+        }
+        return null
+    }
+
+    /** Saves [name] (trimmed) as the user name; returns why not, null when saved. */
+    fun setUserName(name: String): String? {
+        val trimmed = name.trim()
+        if (!Topics.isValidUserName(trimmed)) return "Use 1 to 32 letters, digits, '.', '_' or '-'"
+        settings.update { it.copy(userName = trimmed) }
+        return null
+    }
+
+    /** Stores "Stay reachable"; off also turns off "after the phone restarts". */
+    fun setStayReachable(on: Boolean) = settings.update { it.copy(stayReachable = on, reachableAfterBoot = on && it.reachableAfterBoot) }
+
+    /** Accepts [peer]'s changed end-to-end key. */
+    fun trust(peer: String) {
+        trustKey(peer)
+    }
+
+    /** Writes every message's JSON to [open]'s stream (named [target] in the notice), off the main thread. */
+    fun export(target: String, open: () -> OutputStream): Job = viewModelScope.launch {
+        notice.value = withContext(io) {
+            runCatching {
+                val json = exportJson()
+                open().use { it.write(json.toByteArray(Charsets.UTF_8)) }
+                "Exported to $target"
+            }.getOrElse { "Export failed: ${it.message}" }
+        }
+    }
+
+    private companion object {
+        fun connectionLabel(c: ConnectionState): String = when (c) {
+            ConnectionState.Connected -> "connected"
+            is ConnectionState.Connecting -> "connecting" + (c.lastFailure?.let { " ($it)" } ?: "")
+            ConnectionState.Disconnected -> "not connected"
+            is ConnectionState.Failed -> "refused: ${c.reason}"
+        }
+    }
+}
