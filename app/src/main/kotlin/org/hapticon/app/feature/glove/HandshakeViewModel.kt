@@ -22,30 +22,24 @@ import org.hapticon.app.sensors.HandshakeLink
 import org.hapticon.app.sensors.NetworkPartnerHand
 import org.hapticon.app.sensors.NoHandshakeLink
 import org.hapticon.sensor.glove.FlexCalibration
-import org.hapticon.sensor.glove.ForceFeedbackStream
 import org.hapticon.sensor.glove.GloveFinger
 import org.hapticon.sensor.glove.GloveListener
 import org.hapticon.sensor.glove.GloveSource
 import org.hapticon.sensor.glove.HandRegion
-import org.hapticon.sensor.glove.HandshakeSession
+import org.hapticon.sensor.glove.HandPoseSink
+import org.hapticon.sensor.glove.HandshakeLoop
 import org.hapticon.sensor.glove.NoPartner
 import org.hapticon.sensor.glove.PartnerHand
 
 /**
- * A tele-handshake for one glove: the wearer's thumb and middle angles (from the glove, through the
- * current user's calibration), the partner's angles from a [PartnerHand] (the simulated one while
- * the toggle is on, or a chat peer's hand arriving through the broker ([setNetworkPartner], which also
- * streams the wearer's angles to them at 30 samples/s), and
- * sensor-bridge's [HandshakeSession] turning both into per-region pressures.
- *
- * A LucidGloves force-feedback glove on the line gets the five finger servo values
- * ([ForceFeedbackStream]: changes only, at most 20 commands/s, released at once when the handshake
- * ends). The pressure also drives the phone's vibrator, for a phone without such a glove:
- * the largest region amplitude ([org.hapticon.sensor.glove.VibrationMapping]) through a
- * [ContinuousVibration] (rate-limited to 20 updates/s, each update a 250 ms one-shot so it dies out
- * by itself, capped by the safety limits). Everything per sample runs on the sensor's reading
- * thread without allocating (the divider reading aside); the UI copies a snapshot every
- * [refreshMillis].
+ * The handshake screen's wiring around sensor-bridge's [HandshakeLoop] (which holds the tele-handshake itself:
+ * angles, the 30.9° start, the regional pressures, force feedback and the pose stream). This view model only
+ * connects it to Android and the screen: the current user's stored calibration, the partner chosen (the
+ * simulated one while the toggle is on, or a chat peer's hand arriving through the broker
+ * ([setNetworkPartner]), which also receives the wearer's pose), the phone's vibrator (the loop's amplitude
+ * through a [ContinuousVibration]: rate-limited to 20 updates/s, each update a 250 ms one-shot so it dies out by
+ * itself, capped by the safety limits) and a snapshot for the UI every [refreshMillis]. Samples run on the
+ * sensor's reading thread under [lock], as do the UI's snapshots.
  */
 @OptIn(ExperimentalCoroutinesApi::class)
 class HandshakeViewModel(
@@ -58,31 +52,11 @@ class HandshakeViewModel(
     private val link: HandshakeLink = NoHandshakeLink,
 ) : ViewModel() {
     private val lock = Any()
-    private val session = HandshakeSession()
     private val continuous = ContinuousVibration(vibration)
-    private val feedback = ForceFeedbackStream()
-    private val regions = HandRegion.entries.size
+    private val loop = HandshakeLoop(glove.divider, glove.forceFeedback)
 
-    // Written on the reading thread under lock.
-    private val pressures = DoubleArray(regions)
-    private val actuatorAngles = DoubleArray(regions)
-    private val servos = IntArray(regions)
-    private val amplitudes = IntArray(regions)
-    private val partnerAngles = DoubleArray(2)
-    private var selfThumb = 0.0
-    private var selfMiddle = 0.0
-    private var thumbFault = false
-    private var middleFault = false
-    private var active = false
-    private var samples = 0L
-
-    @Volatile private var thumbCalibration = FlexCalibration.THUMB_DEFAULT
-    @Volatile private var middleCalibration = FlexCalibration.MIDDLE_DEFAULT
-    @Volatile private var partner: PartnerHand = NoPartner
     @Volatile private var vibrate = true
-    @Volatile private var forceFeedbackOn = true
     @Volatile private var networkPartner: NetworkPartnerHand? = null
-    private var lastPoseSentNanos = Long.MIN_VALUE / 2
 
     private val simulated = MutableStateFlow(false)
     private val vibrationOn = MutableStateFlow(true)
@@ -111,8 +85,8 @@ class HandshakeViewModel(
         combine(store.currentUser, store.revision, ::Pair).onEach { (user, _) ->
             val thumb = store.load(user, GloveFinger.THUMB)
             val middle = store.load(user, GloveFinger.MIDDLE)
-            thumbCalibration = thumb?.calibration ?: FlexCalibration.THUMB_DEFAULT
-            middleCalibration = middle?.calibration ?: FlexCalibration.MIDDLE_DEFAULT
+            loop.thumbCalibration = thumb?.calibration ?: FlexCalibration.THUMB_DEFAULT
+            loop.middleCalibration = middle?.calibration ?: FlexCalibration.MIDDLE_DEFAULT
             calibrationSource.value = CalibrationSource(thumb != null, middle != null)
         }.launchIn(viewModelScope)
         // Nothing streams: nothing may keep vibrating.
@@ -128,7 +102,7 @@ class HandshakeViewModel(
 
     /**
      * Shakes hands with [peer] over the chat's broker: their hand as it arrives, the wearer's sent to them
-     * at most every [POSE_INTERVAL_NANOS]; null ends it (an open hand).
+     * at most every [HandshakeLoop.POSE_INTERVAL_NANOS]; null ends it (an open hand).
      */
     fun setNetworkPartner(peer: String?) {
         if (peer == null) {
@@ -139,18 +113,20 @@ class HandshakeViewModel(
         simulated.value = false
         val hand = link.partner(peer)
         networkPartner = hand
+        loop.poseSink = HandPoseSink { thumb, middle -> link.sendOwnHand(peer, thumb, middle) }
         networkPeer.value = peer
         setPartner(hand)
     }
 
     private fun stopNetwork() {
         networkPartner = null
+        loop.poseSink = null
         networkPeer.value = null
     }
 
     /** Plays against [hand]; the messaging task's network partner comes in here. */
     fun setPartner(hand: PartnerHand) {
-        partner = hand
+        loop.partner = hand
     }
 
     /** Whether the pressure drives the phone's vibrator. */
@@ -163,8 +139,8 @@ class HandshakeViewModel(
     /** Whether a LucidGloves glove on the line gets force-feedback commands; off releases it at once. */
     fun setForceFeedback(enabled: Boolean) {
         forceFeedbackEnabled.value = enabled
-        forceFeedbackOn = enabled
-        if (!enabled) synchronized(lock) { feedback.release(clock(), glove.forceFeedback) }
+        loop.forceFeedbackOn = enabled
+        if (!enabled) synchronized(lock) { loop.releaseForceFeedback(clock()) }
     }
 
     override fun onCleared() {
@@ -172,34 +148,14 @@ class HandshakeViewModel(
         synchronized(lock) {
             continuous.stop()
             // Leaving the screen must not leave the wearer's fingers held.
-            feedback.release(clock(), glove.forceFeedback)
+            loop.releaseForceFeedback(clock())
         }
     }
 
     private fun onSample(thumbVolts: Double, middleVolts: Double, now: Long) {
         synchronized(lock) {
-            val thumb = glove.divider.resistanceOrNaN(thumbVolts)
-            val middle = glove.divider.resistanceOrNaN(middleVolts)
-            // A faulty finger counts as open (0°): that releases the partner's actuators.
-            thumbFault = thumb.isNaN()
-            middleFault = middle.isNaN()
-            selfThumb = if (thumbFault) 0.0 else thumbCalibration.angleOf(thumb)
-            selfMiddle = if (middleFault) 0.0 else middleCalibration.angleOf(middle)
-            partner.readAngles(now, partnerAngles)
-            active = session.computeInto(
-                selfThumb, selfMiddle, partnerAngles[0], partnerAngles[1],
-                pressures, actuatorAngles, servos, amplitudes,
-            )
-            samples++
-            var phone = 0
-            for (a in amplitudes) if (a > phone) phone = a
-            continuous.update(if (active && vibrate) phone else 0, now)
-            if (forceFeedbackOn) feedback.update(servos, now, glove.forceFeedback)
-            val remote = networkPartner
-            if (remote != null && now - lastPoseSentNanos >= POSE_INTERVAL_NANOS) {
-                link.sendOwnHand(remote.peer, selfThumb, selfMiddle)
-                lastPoseSentNanos = now
-            }
+            val phone = loop.onSample(thumbVolts, middleVolts, now)
+            continuous.update(if (vibrate) phone else 0, now)
         }
     }
 
@@ -220,23 +176,23 @@ class HandshakeViewModel(
                 networkPartnerLive = networkPartner?.isLive(clock()) ?: false,
                 forceFeedbackAvailable = feedbackAvailable,
                 forceFeedbackEnabled = feedbackOn,
-                forceFeedbackCommands = feedback.commands,
-                servoValues = feedback.lastSentValues().toList(),
+                forceFeedbackCommands = loop.forceFeedbackCommands,
+                servoValues = loop.servoValues().toList(),
                 simulatedPartner = sim,
                 vibrationEnabled = vib,
                 user = user,
                 thumbCalibrated = source.thumb,
                 middleCalibrated = source.middle,
-                selfThumbDegrees = selfThumb,
-                selfMiddleDegrees = selfMiddle,
-                thumbFault = thumbFault,
-                middleFault = middleFault,
-                partnerThumbDegrees = partnerAngles[0],
-                partnerMiddleDegrees = partnerAngles[1],
-                active = active,
-                regions = HandRegion.entries.map { RegionUi(it, pressures[it.ordinal], amplitudes[it.ordinal]) },
+                selfThumbDegrees = loop.selfThumbDegrees,
+                selfMiddleDegrees = loop.selfMiddleDegrees,
+                thumbFault = loop.thumbFault,
+                middleFault = loop.middleFault,
+                partnerThumbDegrees = loop.partnerThumbDegrees,
+                partnerMiddleDegrees = loop.partnerMiddleDegrees,
+                active = loop.active,
+                regions = HandRegion.entries.map { RegionUi(it, loop.pressureVolts(it), loop.amplitude(it)) },
                 phoneAmplitude = continuous.currentAmplitude,
-                samples = samples,
+                samples = loop.samples,
             )
         }
 
@@ -250,9 +206,6 @@ class HandshakeViewModel(
     )
 
     private companion object {
-        /** 30 samples/s: smooth enough for a grip, light enough for a phone's uplink. */
-        const val POSE_INTERVAL_NANOS = 33_000_000L
-
         fun ticker(periodMillis: Long): Flow<Unit> = flow {
             while (true) {
                 emit(Unit)
