@@ -4,7 +4,6 @@ import java.net.URI
 import java.net.URISyntaxException
 import java.net.URLDecoder
 import java.net.URLEncoder
-import org.hapticon.messaging.mqtt.BrokerAddress
 
 /**
  * An invitation to chat: who invites ([user], null for a bare broker invitation such as the one

@@ -1,6 +1,5 @@
 package org.hapticon.messaging
 
-import org.hapticon.messaging.mqtt.BrokerAddress
 import org.junit.Assert.assertEquals
 import org.junit.Assert.assertTrue
 import org.junit.Test

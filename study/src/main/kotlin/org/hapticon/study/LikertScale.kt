@@ -1,5 +1,6 @@
 package org.hapticon.study
 
+import org.hapticon.study.schema.ProtocolException
 /**
  * A rating scale of [points] answers, 1..[points]. [labels] are either empty, the two end anchors, or one label
  * per point, lowest first (for example "strongly disagree" .. "strongly agree").

@@ -1,5 +1,7 @@
 package org.hapticon.study
 
+import org.hapticon.study.schema.ProtocolException
+import org.hapticon.study.schema.StudyReport
 import kotlinx.serialization.json.JsonElement
 import org.hapticon.core.IconValidationException
 import org.hapticon.core.io.IconJson

@@ -1,6 +1,6 @@
 package org.hapticon.study
 
-import org.hapticon.study.design.ParticipantSchedule
+import org.hapticon.study.ParticipantSchedule
 import org.hapticon.study.log.StudyEvent
 
 /**

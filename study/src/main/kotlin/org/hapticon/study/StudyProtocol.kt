@@ -1,5 +1,6 @@
 package org.hapticon.study
 
+import org.hapticon.study.schema.ProtocolException
 import org.hapticon.core.render.EnvelopeModel
 import org.hapticon.study.design.OrderScheme
 

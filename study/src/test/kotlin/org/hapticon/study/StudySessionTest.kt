@@ -2,7 +2,7 @@ package org.hapticon.study
 
 import org.hapticon.core.HapticIcon
 import org.hapticon.study.design.OrderScheme
-import org.hapticon.study.design.ParticipantSchedule
+import org.hapticon.study.ParticipantSchedule
 import org.hapticon.study.log.EventLog
 import org.hapticon.study.log.StudyEvent
 import org.junit.Assert.assertEquals

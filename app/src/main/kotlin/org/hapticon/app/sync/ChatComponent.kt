@@ -23,7 +23,7 @@ import org.hapticon.core.HapticIcon
 import org.hapticon.messaging.Clock
 import org.hapticon.messaging.Messenger
 import org.hapticon.messaging.VibrationRateLimiter
-import org.hapticon.messaging.mqtt.BrokerAddress
+import org.hapticon.messaging.BrokerAddress
 import org.hapticon.messaging.mqtt.MqttMessenger
 import org.hapticon.messaging.mqtt.MqttSettings
 

@@ -14,7 +14,7 @@ import org.hapticon.messaging.broker.EmbeddedBroker
 import org.hapticon.messaging.e2e.EndToEnd
 import org.hapticon.messaging.e2e.Identity
 import org.hapticon.messaging.e2e.InMemoryKeyPins
-import org.hapticon.messaging.mqtt.BrokerAddress
+import org.hapticon.messaging.BrokerAddress
 import org.hapticon.messaging.mqtt.MqttMessenger
 import org.hapticon.messaging.mqtt.MqttSettings
 import org.junit.After

@@ -30,7 +30,7 @@ import org.hapticon.core.HapticIcon
 import org.hapticon.core.io.IconJson
 import org.hapticon.messaging.InviteLink
 import org.hapticon.messaging.RendererKind
-import org.hapticon.messaging.mqtt.BrokerAddress
+import org.hapticon.messaging.BrokerAddress
 import org.junit.Assert.assertEquals
 import org.junit.Assert.assertTrue
 import org.junit.Test

@@ -22,7 +22,7 @@ import org.hapticon.messaging.InboxEvent
 import org.hapticon.messaging.InboxListener
 import org.hapticon.messaging.RetryPolicy
 import org.hapticon.messaging.broker.EmbeddedBroker
-import org.hapticon.messaging.mqtt.BrokerAddress
+import org.hapticon.messaging.BrokerAddress
 import org.hapticon.messaging.mqtt.MqttMessenger
 import org.hapticon.messaging.mqtt.MqttSettings
 import org.junit.After

@@ -28,7 +28,7 @@ import org.hapticon.messaging.Messenger
 import org.hapticon.messaging.RetryPolicy
 import org.hapticon.messaging.VibrationRateLimiter
 import org.hapticon.messaging.broker.EmbeddedBroker
-import org.hapticon.messaging.mqtt.BrokerAddress
+import org.hapticon.messaging.BrokerAddress
 import org.hapticon.messaging.mqtt.MqttMessenger
 import org.hapticon.messaging.mqtt.MqttSettings
 import org.junit.After

@@ -327,7 +327,7 @@ class ChatSyncTest {
 
     @Test
     fun probe_answeringBroker_connectsTheRealSessionAndKeepsTheSettings() = runBlocking {
-        val broker = org.hapticon.messaging.mqtt.BrokerAddress.parse("tcp://192.168.1.20:1883")
+        val broker = org.hapticon.messaging.BrokerAddress.parse("tcp://192.168.1.20:1883")
         val problem = ChatComponent.probeBroker(settings, sync, "alice", broker, "alice-secret")
         assertNull(problem)
         val saved = settings.preferences.value
@@ -341,7 +341,7 @@ class ChatSyncTest {
         val silent = newSync(factory = { _, _, _ -> null })
         silent.start()
         val before = settings.preferences.value
-        val broker = org.hapticon.messaging.mqtt.BrokerAddress.parse("tcp://10.1.1.1:1883")
+        val broker = org.hapticon.messaging.BrokerAddress.parse("tcp://10.1.1.1:1883")
         val problem = ChatComponent.probeBroker(settings, silent, "carol", broker, null)
         assertEquals(true, problem!!.startsWith("No answer from tcp://10.1.1.1:1883 within 5 s."))
         assertEquals(before, settings.preferences.value)

@@ -1,6 +1,6 @@
 package org.hapticon.companion.bench
 
-import org.hapticon.sensor.protocol.StreamDecoder
+import org.hapticon.sensor.protocol.stream.StreamDecoder
 import org.hapticon.sensor.protocol.csv.CsvDecoder
 import org.hapticon.sensor.protocol.framed.FramedDecoder
 import org.hapticon.sensor.protocol.framed.FramedEncoder

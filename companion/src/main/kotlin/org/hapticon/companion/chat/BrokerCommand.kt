@@ -13,7 +13,7 @@ import java.io.File
 import java.net.Inet4Address
 import java.net.NetworkInterface
 import org.hapticon.messaging.InviteLink
-import org.hapticon.messaging.mqtt.BrokerAddress
+import org.hapticon.messaging.BrokerAddress
 import java.io.IOException
 import java.io.InputStreamReader
 import java.io.Reader

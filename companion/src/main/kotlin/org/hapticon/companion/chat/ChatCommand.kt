@@ -11,7 +11,7 @@ import org.hapticon.messaging.InboxGate
 import org.hapticon.messaging.MessagingException
 import org.hapticon.messaging.Topics
 import org.hapticon.messaging.VibrationRateLimiter
-import org.hapticon.messaging.mqtt.BrokerAddress
+import org.hapticon.messaging.BrokerAddress
 import org.hapticon.messaging.mqtt.MqttMessenger
 import org.hapticon.messaging.mqtt.MqttSettings
 import org.hapticon.messaging.e2e.EndToEnd

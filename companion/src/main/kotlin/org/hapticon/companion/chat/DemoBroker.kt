@@ -4,7 +4,7 @@ import org.hapticon.messaging.broker.AclFile
 import org.hapticon.messaging.broker.BrokerSecurity
 import org.hapticon.messaging.broker.EmbeddedBroker
 import org.hapticon.messaging.broker.PasswordFile
-import org.hapticon.messaging.mqtt.BrokerAddress
+import org.hapticon.messaging.BrokerAddress
 import org.hapticon.messaging.mqtt.MqttSettings
 import java.io.File
 import java.security.SecureRandom

@@ -6,8 +6,8 @@ import org.hapticon.core.io.JsonNumber
 import org.hapticon.core.io.JsonObject
 import org.hapticon.core.io.JsonString
 import org.hapticon.core.io.JsonValue
-import org.hapticon.sensor.protocol.FrameError
-import org.hapticon.sensor.protocol.StreamStats
+import org.hapticon.sensor.protocol.stream.FrameError
+import org.hapticon.sensor.protocol.stream.StreamStats
 import org.hapticon.sensor.protocol.csv.CsvSample
 import org.hapticon.sensor.protocol.framed.AckStatus
 import org.hapticon.sensor.protocol.framed.DeviceInfo

@@ -6,7 +6,7 @@ import org.hapticon.sensor.grains.GrainSettings
 import org.hapticon.sensor.port.ReplayPort
 import org.hapticon.sensor.protocol.ProtocolListener
 import org.hapticon.sensor.protocol.SensorProtocol
-import org.hapticon.sensor.protocol.StreamStats
+import org.hapticon.sensor.protocol.stream.StreamStats
 import org.hapticon.sensor.protocol.decoderFor
 import org.hapticon.sensor.protocol.framed.ChannelUnit
 import org.hapticon.sensor.protocol.framed.DeviceInfo

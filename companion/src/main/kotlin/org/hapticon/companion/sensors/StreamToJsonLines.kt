@@ -3,7 +3,7 @@ package org.hapticon.companion.sensors
 import org.hapticon.sensor.port.SensorReader
 import org.hapticon.sensor.port.SerialPort
 import org.hapticon.sensor.protocol.SensorProtocol
-import org.hapticon.sensor.protocol.StreamStats
+import org.hapticon.sensor.protocol.stream.StreamStats
 import org.hapticon.sensor.protocol.decoderFor
 import java.io.Writer
 

@@ -8,12 +8,12 @@ import org.hapticon.companion.sensors.InputFiles
 import org.hapticon.core.io.JsonException
 import org.hapticon.study.OriginatingStudy
 import org.hapticon.study.ParticipantId
-import org.hapticon.study.ProtocolException
+import org.hapticon.study.schema.ProtocolException
 import org.hapticon.study.ProtocolJson
 import org.hapticon.study.StudyProtocol
 import org.hapticon.study.design.Counterbalancing
 import org.hapticon.study.design.OrderScheme
-import org.hapticon.study.design.ParticipantSchedule
+import org.hapticon.study.ParticipantSchedule
 import java.io.File
 
 /** Most participants `schedule` lists: far beyond any lab study, small enough that the output stays a file, not a flood. */

@@ -6,7 +6,7 @@ import org.hapticon.companion.cli
 import org.hapticon.messaging.ChatMessage
 import org.hapticon.messaging.InboxEvent
 import org.hapticon.messaging.broker.AclFile
-import org.hapticon.messaging.mqtt.BrokerAddress
+import org.hapticon.messaging.BrokerAddress
 import org.hapticon.messaging.mqtt.MqttMessenger
 import org.hapticon.messaging.mqtt.MqttSettings
 import org.junit.Assert.assertEquals

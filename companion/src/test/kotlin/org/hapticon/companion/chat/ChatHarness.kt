@@ -10,7 +10,7 @@ import org.hapticon.messaging.broker.AclFile
 import org.hapticon.messaging.broker.BrokerSecurity
 import org.hapticon.messaging.broker.EmbeddedBroker
 import org.hapticon.messaging.broker.PasswordFile
-import org.hapticon.messaging.mqtt.BrokerAddress
+import org.hapticon.messaging.BrokerAddress
 import org.hapticon.messaging.mqtt.MqttMessenger
 import org.hapticon.messaging.mqtt.MqttSettings
 import org.junit.rules.ExternalResource

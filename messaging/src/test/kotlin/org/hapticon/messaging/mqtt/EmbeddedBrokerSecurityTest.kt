@@ -1,5 +1,6 @@
 package org.hapticon.messaging.mqtt
 
+import org.hapticon.messaging.BrokerAddress
 import org.junit.Rule
 
 /** [BrokerSecurityContract] against the embedded broker with the shipped ACL. */

@@ -1,5 +1,6 @@
 package org.hapticon.messaging.mqtt
 
+import org.hapticon.messaging.BrokerAddress
 import org.junit.Assert.fail
 import org.junit.Assume.assumeTrue
 import java.io.File

@@ -1,5 +1,6 @@
 package org.hapticon.messaging.mqtt
 
+import org.hapticon.messaging.BrokerAddress
 import org.junit.After
 import org.junit.Before
 import org.junit.Rule

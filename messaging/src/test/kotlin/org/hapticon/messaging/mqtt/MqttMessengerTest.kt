@@ -1,5 +1,6 @@
 package org.hapticon.messaging.mqtt
 
+import org.hapticon.messaging.BrokerAddress
 import kotlinx.coroutines.async
 import kotlinx.coroutines.flow.first
 import kotlinx.coroutines.runBlocking

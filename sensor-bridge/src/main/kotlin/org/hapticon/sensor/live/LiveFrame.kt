@@ -2,7 +2,7 @@ package org.hapticon.sensor.live
 
 import org.hapticon.sensor.protocol.ProtocolListener
 import org.hapticon.sensor.protocol.SensorProtocol
-import org.hapticon.sensor.protocol.StreamDecoder
+import org.hapticon.sensor.protocol.stream.StreamDecoder
 import org.hapticon.sensor.protocol.csv.CsvDecoder
 import org.hapticon.sensor.protocol.csv.CsvSample
 import org.hapticon.sensor.protocol.decoderFor

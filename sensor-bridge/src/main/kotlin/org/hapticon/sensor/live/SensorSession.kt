@@ -13,8 +13,8 @@ import org.hapticon.sensor.port.LineSettings
 import org.hapticon.sensor.port.SensorReader
 import org.hapticon.sensor.port.SerialPort
 import org.hapticon.sensor.protocol.SensorProtocol
-import org.hapticon.sensor.protocol.StreamDecoder
-import org.hapticon.sensor.protocol.StreamStats
+import org.hapticon.sensor.protocol.stream.StreamDecoder
+import org.hapticon.sensor.protocol.stream.StreamStats
 
 /** Where the connection to a board is. */
 public sealed interface ConnectionState {

@@ -1,7 +1,7 @@
 package org.hapticon.sensor.live
 
-import org.hapticon.sensor.protocol.FrameError
-import org.hapticon.sensor.protocol.StreamStats
+import org.hapticon.sensor.protocol.stream.FrameError
+import org.hapticon.sensor.protocol.stream.StreamStats
 
 /** The decoder's counters, copied for the UI. */
 public data class StreamCounters(

@@ -1,6 +1,6 @@
 package org.hapticon.sensor.port
 
-import org.hapticon.sensor.protocol.StreamDecoder
+import org.hapticon.sensor.protocol.stream.StreamDecoder
 import java.io.IOException
 
 /**

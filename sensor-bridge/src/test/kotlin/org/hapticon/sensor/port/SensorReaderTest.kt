@@ -1,10 +1,10 @@
 package org.hapticon.sensor.port
 
-import org.hapticon.sensor.protocol.FrameError
-import org.hapticon.sensor.protocol.StreamDecoder
+import org.hapticon.sensor.protocol.stream.FrameError
+import org.hapticon.sensor.protocol.stream.StreamDecoder
 import org.hapticon.sensor.protocol.framed.FramedDecoder
 import org.hapticon.sensor.protocol.framed.SampleFrame
-import org.hapticon.sensor.protocol.StreamStats
+import org.hapticon.sensor.protocol.stream.StreamStats
 import org.hapticon.testing.RecordedStreams
 import org.junit.Assert.assertEquals
 import org.junit.Assert.assertFalse

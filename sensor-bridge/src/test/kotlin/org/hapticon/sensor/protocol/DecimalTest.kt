@@ -1,5 +1,6 @@
 package org.hapticon.sensor.protocol
 
+import org.hapticon.sensor.protocol.stream.Decimal
 import org.junit.Assert.assertEquals
 import org.junit.Assert.assertTrue
 import org.junit.Test

@@ -1,5 +1,7 @@
 package org.hapticon.sensor.protocol
 
+import org.hapticon.sensor.protocol.stream.StreamDecoder
+import org.hapticon.sensor.protocol.stream.StreamStats
 import org.hapticon.sensor.protocol.csv.CsvDecoder
 import org.hapticon.sensor.protocol.csv.CsvSample
 import org.hapticon.sensor.protocol.framed.AckStatus

@@ -6,9 +6,9 @@ import org.hapticon.core.io.JsonException
 import org.hapticon.core.io.SchemaJson
 import org.hapticon.core.io.toJsonElement
 import org.hapticon.study.ProtocolDocument
-import org.hapticon.study.ProtocolException
+import org.hapticon.study.schema.ProtocolException
 import org.hapticon.study.ProtocolJson
-import org.hapticon.study.StudyReport
+import org.hapticon.study.schema.StudyReport
 import org.hapticon.study.StudyProtocol
 import org.hapticon.study.log.LogEntry
 

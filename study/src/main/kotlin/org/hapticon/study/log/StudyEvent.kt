@@ -8,8 +8,8 @@ import org.hapticon.core.io.JsonValue
 import org.hapticon.core.io.SchemaJson
 import org.hapticon.core.io.toJsonElement
 import org.hapticon.core.io.toJsonValue
-import org.hapticon.study.ProtocolException
-import org.hapticon.study.StudyReport
+import org.hapticon.study.schema.ProtocolException
+import org.hapticon.study.schema.StudyReport
 
 /**
  * Something that happened in a session. The time is not part of the event: the [LogEntry] that records it carries

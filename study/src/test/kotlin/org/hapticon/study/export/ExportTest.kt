@@ -1,7 +1,7 @@
 package org.hapticon.study.export
 
 import org.hapticon.study.OriginatingStudy
-import org.hapticon.study.ProtocolException
+import org.hapticon.study.schema.ProtocolException
 import org.hapticon.study.StudyPlan
 import org.hapticon.study.StudySession
 import org.hapticon.study.StudyStep

@@ -38,7 +38,7 @@ import org.hapticon.app.sync.ReachableService
 import org.hapticon.messaging.ConnectionState
 import org.hapticon.messaging.InviteLink
 import org.hapticon.messaging.Topics
-import org.hapticon.messaging.mqtt.BrokerAddress
+import org.hapticon.messaging.BrokerAddress
 
 /** The screens of the Chats destination. */
 private enum class ChatScreen { LIST, CONVERSATION, SETTINGS, INVITE, EDITOR }

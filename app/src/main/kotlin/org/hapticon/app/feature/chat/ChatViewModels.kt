@@ -26,7 +26,7 @@ import org.hapticon.messaging.InvalidMessageException
 import org.hapticon.messaging.InviteLink
 import org.hapticon.messaging.RendererKind
 import org.hapticon.messaging.Topics
-import org.hapticon.messaging.mqtt.BrokerAddress
+import org.hapticon.messaging.BrokerAddress
 
 /** The conversation list, or the first-launch screen while there is no account. */
 sealed interface ChatListUiState {

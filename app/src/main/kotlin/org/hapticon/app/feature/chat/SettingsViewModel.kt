@@ -18,7 +18,7 @@ import org.hapticon.app.data.ChatSettingsRepository
 import org.hapticon.messaging.ConnectionState
 import org.hapticon.messaging.RendererKind
 import org.hapticon.messaging.Topics
-import org.hapticon.messaging.mqtt.BrokerAddress
+import org.hapticon.messaging.BrokerAddress
 
 /**
  * The chat settings screen's state and the changes that need more than a write: a new broker or password is

@@ -39,7 +39,7 @@ data class ProtocolDraft(
     val seed: Long,
     val masking: MaskingSetting,
 ) {
-    /** The protocol; throws [org.hapticon.study.ProtocolException] naming the path of the first problem. */
+    /** The protocol; throws [org.hapticon.study.schema.ProtocolException] naming the path of the first problem. */
     fun build(): StudyProtocol = StudyProtocol(id, title, LikertScale(points, labels), tasks, taskOrder, fixedFirst, revision)
 
     companion object {

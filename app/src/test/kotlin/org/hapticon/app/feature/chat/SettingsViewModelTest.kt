@@ -12,7 +12,7 @@ import org.hapticon.app.data.ChatSettingsRepository
 import org.hapticon.app.gesture.MainDispatcherRule
 import org.hapticon.messaging.ConnectionState
 import org.hapticon.messaging.RendererKind
-import org.hapticon.messaging.mqtt.BrokerAddress
+import org.hapticon.messaging.BrokerAddress
 import org.junit.Assert.assertEquals
 import org.junit.Assert.assertNull
 import org.junit.Rule

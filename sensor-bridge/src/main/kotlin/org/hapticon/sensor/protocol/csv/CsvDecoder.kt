@@ -1,11 +1,11 @@
 package org.hapticon.sensor.protocol.csv
 
-import org.hapticon.sensor.protocol.Decimal
-import org.hapticon.sensor.protocol.FrameError
-import org.hapticon.sensor.protocol.LineFramer
-import org.hapticon.sensor.protocol.LineHandler
-import org.hapticon.sensor.protocol.StreamDecoder
-import org.hapticon.sensor.protocol.StreamStats
+import org.hapticon.sensor.protocol.stream.Decimal
+import org.hapticon.sensor.protocol.stream.FrameError
+import org.hapticon.sensor.protocol.stream.LineFramer
+import org.hapticon.sensor.protocol.stream.LineHandler
+import org.hapticon.sensor.protocol.stream.StreamDecoder
+import org.hapticon.sensor.protocol.stream.StreamStats
 
 /**
  * Decodes the lines of numbers Arduino sketches print (`512,498,1023\n`, integers or decimals,

@@ -1,9 +1,9 @@
 package org.hapticon.sensor.protocol.framed
 
-import org.hapticon.sensor.protocol.FrameError
-import org.hapticon.sensor.protocol.StreamDecoder
-import org.hapticon.sensor.protocol.StreamStats
-import org.hapticon.sensor.protocol.checkRange
+import org.hapticon.sensor.protocol.stream.FrameError
+import org.hapticon.sensor.protocol.stream.StreamDecoder
+import org.hapticon.sensor.protocol.stream.StreamStats
+import org.hapticon.sensor.protocol.stream.checkRange
 import org.hapticon.sensor.protocol.framed.FramedProtocol.ACK_LENGTH
 import org.hapticon.sensor.protocol.framed.FramedProtocol.CRC_LENGTH
 import org.hapticon.sensor.protocol.framed.FramedProtocol.DEVICE_INFO_FIXED_LENGTH

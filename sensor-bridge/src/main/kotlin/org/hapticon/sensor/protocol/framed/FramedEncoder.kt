@@ -1,6 +1,6 @@
 package org.hapticon.sensor.protocol.framed
 
-import org.hapticon.sensor.protocol.checkRange
+import org.hapticon.sensor.protocol.stream.checkRange
 import org.hapticon.sensor.protocol.framed.FramedProtocol.HEADER_LENGTH
 import org.hapticon.sensor.safety.SafetyLimitException
 import org.hapticon.sensor.safety.SafetyLimits

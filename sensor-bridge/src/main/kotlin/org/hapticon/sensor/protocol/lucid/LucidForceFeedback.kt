@@ -1,6 +1,6 @@
 package org.hapticon.sensor.protocol.lucid
 
-import org.hapticon.sensor.protocol.checkRange
+import org.hapticon.sensor.protocol.stream.checkRange
 import org.hapticon.sensor.safety.SafetyLimitException
 import org.hapticon.sensor.safety.SafetyLimits
 

@@ -1,10 +1,10 @@
 package org.hapticon.sensor.protocol.lucid
 
-import org.hapticon.sensor.protocol.FrameError
-import org.hapticon.sensor.protocol.LineFramer
-import org.hapticon.sensor.protocol.LineHandler
-import org.hapticon.sensor.protocol.StreamDecoder
-import org.hapticon.sensor.protocol.StreamStats
+import org.hapticon.sensor.protocol.stream.FrameError
+import org.hapticon.sensor.protocol.stream.LineFramer
+import org.hapticon.sensor.protocol.stream.LineHandler
+import org.hapticon.sensor.protocol.stream.StreamDecoder
+import org.hapticon.sensor.protocol.stream.StreamStats
 
 /**
  * Decodes the LucidGloves / OpenGloves "alpha" encoding, one newline-terminated line per frame:

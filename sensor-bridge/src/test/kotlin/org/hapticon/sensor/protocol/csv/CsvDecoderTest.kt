@@ -1,6 +1,6 @@
 package org.hapticon.sensor.protocol.csv
 
-import org.hapticon.sensor.protocol.FrameError
+import org.hapticon.sensor.protocol.stream.FrameError
 import org.hapticon.sensor.protocol.Recorder
 import org.hapticon.sensor.protocol.ascii
 import org.hapticon.sensor.protocol.feedInChunks

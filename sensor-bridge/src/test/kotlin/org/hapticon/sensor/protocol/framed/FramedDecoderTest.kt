@@ -1,6 +1,6 @@
 package org.hapticon.sensor.protocol.framed
 
-import org.hapticon.sensor.protocol.FrameError
+import org.hapticon.sensor.protocol.stream.FrameError
 import org.hapticon.sensor.protocol.Recorder
 import org.hapticon.sensor.protocol.feedInChunks
 import org.junit.Assert.assertEquals

@@ -54,7 +54,7 @@ class SharedVectorsTest {
                 "ack" -> assertEquals(v.name, listOf("ack ${a[0]} ${AckStatus.of(a[1].toInt())} ${a[2]}"), recorder.events)
                 else -> {
                     // Host-to-device commands are not for this decoder.
-                    assertEquals(v.name, 1L, decoder.stats.badFrames(org.hapticon.sensor.protocol.FrameError.UNKNOWN_TYPE))
+                    assertEquals(v.name, 1L, decoder.stats.badFrames(org.hapticon.sensor.protocol.stream.FrameError.UNKNOWN_TYPE))
                     continue
                 }
             }

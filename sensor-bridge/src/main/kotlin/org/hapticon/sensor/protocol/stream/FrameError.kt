@@ -1,4 +1,4 @@
-package org.hapticon.sensor.protocol
+package org.hapticon.sensor.protocol.stream
 
 /** Why a decoder rejected a frame or line; [StreamStats.badFrames] counts each kind separately. */
 public enum class FrameError {

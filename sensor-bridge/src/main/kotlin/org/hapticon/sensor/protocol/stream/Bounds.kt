@@ -1,4 +1,4 @@
-package org.hapticon.sensor.protocol
+package org.hapticon.sensor.protocol.stream
 
 /** Throws [IndexOutOfBoundsException] unless [offset], [length] describe a range inside [size]. */
 internal fun checkRange(size: Int, offset: Int, length: Int) {

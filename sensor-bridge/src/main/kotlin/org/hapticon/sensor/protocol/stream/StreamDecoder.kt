@@ -1,4 +1,4 @@
-package org.hapticon.sensor.protocol
+package org.hapticon.sensor.protocol.stream
 
 /**
  * A push-style decoder: bytes go in through [feed] in chunks of any size, and complete frames go out

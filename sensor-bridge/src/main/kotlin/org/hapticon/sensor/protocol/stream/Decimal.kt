@@ -1,4 +1,4 @@
-package org.hapticon.sensor.protocol
+package org.hapticon.sensor.protocol.stream
 
 /**
  * Parses ASCII decimal numbers (`-12`, `3.25`, `.5`, `1e3`) from bytes without allocating, with the

@@ -1,8 +1,6 @@
-package org.hapticon.study.design
+package org.hapticon.study
 
-import org.hapticon.study.Stimulus
-import org.hapticon.study.StudyProtocol
-import org.hapticon.study.StudyTask
+import org.hapticon.study.design.Counterbalancing
 
 /**
  * What one participant does, in order: [tasks] (fixed-first tasks, then the counterbalanced ones), and the order of

@@ -1,4 +1,4 @@
-package org.hapticon.sensor.protocol
+package org.hapticon.sensor.protocol.stream
 
 /** Receives the lines a [LineFramer] cuts. Primitive parameters, so no call boxes anything. */
 internal interface LineHandler {

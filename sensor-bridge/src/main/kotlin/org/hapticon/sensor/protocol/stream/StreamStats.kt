@@ -1,4 +1,4 @@
-package org.hapticon.sensor.protocol
+package org.hapticon.sensor.protocol.stream
 
 /**
  * Counters kept by a decoder over the life of its stream (they survive [StreamDecoder.finish]).

@@ -1,4 +1,4 @@
-package org.hapticon.study
+package org.hapticon.study.schema
 
 /**
  * A study protocol is invalid. [path] names the offending member as in the protocol JSON, for example
