@@ -10,6 +10,7 @@ kotlin {
 
 dependencies {
     api(project(":haptics-core"))
+    api(project(":sensor-bridge")) // TestUsbDevices: the USB device list double of the live session
 
     testImplementation(libs.junit4)
 }

@@ -2,7 +2,7 @@ package org.hapticon.app.gesture
 
 import java.io.File
 import org.hapticon.app.feature.gesture.RecordingPlotSource
-import org.hapticon.app.sensors.TestUsbDevices
+import org.hapticon.testing.TestUsbDevices
 import org.hapticon.gesture.Channel
 import org.hapticon.gesture.Recording
 import org.hapticon.gesture.recognition.GestureLabel

@@ -9,7 +9,7 @@ import org.hapticon.app.feature.sensors.SensorsActions
 import org.hapticon.app.feature.sensors.SensorsScreen
 import org.hapticon.app.feature.sensors.SensorsUiState
 import org.hapticon.app.feature.sensors.StreamUi
-import org.hapticon.app.sensors.TEST_UNO
+import org.hapticon.testing.TEST_UNO
 import org.hapticon.sensor.grains.BinDistribution
 import org.hapticon.sensor.live.ChannelHistory
 import org.hapticon.sensor.live.ConnectionState

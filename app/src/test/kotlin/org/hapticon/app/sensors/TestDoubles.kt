@@ -1,7 +1,6 @@
 package org.hapticon.app.sensors
 
 import java.io.Closeable
-import java.io.IOException
 import java.util.concurrent.CopyOnWriteArrayList
 import kotlinx.coroutines.flow.Flow
 import kotlinx.coroutines.flow.MutableStateFlow
@@ -17,35 +16,6 @@ import org.hapticon.sensor.glove.GloveFinger
 import org.hapticon.sensor.glove.GloveListener
 import org.hapticon.sensor.glove.GloveSource
 import org.hapticon.sensor.glove.PartnerHand
-import org.hapticon.sensor.live.SensorDevice
-import org.hapticon.sensor.live.UsbDevices
-import org.hapticon.sensor.port.LineSettings
-import org.hapticon.sensor.port.SerialPort
-
-/** An Arduino Uno as [SensorDevice]. */
-val TEST_UNO = SensorDevice("/dev/bus/usb/001/002", "CDC-ACM", 0x2341, 0x0043, "Uno")
-
-/** [UsbDevices] that lists [devices] and opens the ports a test put in [ports]. */
-class TestUsbDevices(devices: List<SensorDevice> = listOf(TEST_UNO), override val hasUsbHost: Boolean = true) : UsbDevices {
-    val deviceList = MutableStateFlow(devices)
-    val ports = mutableMapOf<String, SerialPort>()
-    var grantPermission = true
-    val opened = mutableListOf<Pair<SensorDevice, LineSettings>>()
-    var refreshes = 0
-
-    override val devices: Flow<List<SensorDevice>> = deviceList
-    override fun currentDevices(): List<SensorDevice> = deviceList.value
-    override fun refresh() {
-        refreshes++
-    }
-
-    override suspend fun requestPermission(device: SensorDevice): Boolean = grantPermission
-
-    override suspend fun open(device: SensorDevice, settings: LineSettings): SerialPort {
-        opened += device to settings
-        return ports[device.id] ?: throw IOException("no such test port")
-    }
-}
 
 /** A glove whose samples the test pushes with [push] (on the test's thread, as if it were the sensor's). */
 class TestGloveSource(connected: Boolean = true, override val divider: FlexDivider = FlexDivider()) : GloveSource {

@@ -5,8 +5,8 @@ import kotlinx.coroutines.runBlocking
 import org.hapticon.sensor.live.CommandWriter
 import org.hapticon.sensor.live.ConnectionState
 import org.hapticon.sensor.live.SensorSession
-import org.hapticon.sensor.live.TEST_UNO
-import org.hapticon.sensor.live.TestUsbDevices
+import org.hapticon.testing.TEST_UNO
+import org.hapticon.testing.TestUsbDevices
 import org.hapticon.sensor.protocol.SensorProtocol
 import org.hapticon.sensor.port.FakeSerialPort
 import org.hapticon.sensor.safety.SafetyLimitException

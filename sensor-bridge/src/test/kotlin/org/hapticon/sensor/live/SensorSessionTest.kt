@@ -1,5 +1,7 @@
 package org.hapticon.sensor.live
 
+import org.hapticon.testing.TestUsbDevices
+import org.hapticon.testing.TEST_UNO
 import kotlinx.coroutines.runBlocking
 import org.hapticon.sensor.port.FakeSerialPort
 import org.hapticon.sensor.protocol.SensorProtocol

@@ -10,8 +10,8 @@ import androidx.compose.ui.test.junit4.createComposeRule
 import androidx.compose.ui.test.onNodeWithContentDescription
 import androidx.compose.ui.test.onNodeWithText
 import org.hapticon.app.gesture.MainDispatcherRule
-import org.hapticon.app.sensors.TEST_UNO
-import org.hapticon.app.sensors.TestUsbDevices
+import org.hapticon.testing.TEST_UNO
+import org.hapticon.testing.TestUsbDevices
 import org.hapticon.sensor.electrotactile.ElectrodePattern
 import org.hapticon.sensor.port.FakeSerialPort
 import org.hapticon.sensor.protocol.framed.FramedEncoder

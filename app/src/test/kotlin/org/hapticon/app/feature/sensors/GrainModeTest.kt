@@ -19,8 +19,8 @@ import org.hapticon.app.playback.VibratorVibrationOutput
 import org.hapticon.app.playback.defaultVibrator
 import org.hapticon.app.playback.lastVibration
 import org.hapticon.app.sensors.RecordingVibrationOutput
-import org.hapticon.app.sensors.TEST_UNO
-import org.hapticon.app.sensors.TestUsbDevices
+import org.hapticon.testing.TEST_UNO
+import org.hapticon.testing.TestUsbDevices
 import org.hapticon.sensor.glove.HubGloveSource
 import org.hapticon.sensor.grains.BinDistribution
 import org.hapticon.sensor.grains.ForceInput

@@ -10,7 +10,7 @@ import androidx.compose.ui.test.onNodeWithText
 import androidx.compose.ui.test.performClick
 import androidx.compose.ui.test.performScrollToNode
 import org.hapticon.app.designsystem.HapticonTheme
-import org.hapticon.app.sensors.TEST_UNO
+import org.hapticon.testing.TEST_UNO
 import org.hapticon.sensor.grains.BinDistribution
 import org.hapticon.sensor.live.ChannelHistory
 import org.hapticon.sensor.live.ConnectionState

@@ -12,8 +12,8 @@ import kotlinx.coroutines.test.runTest
 import kotlinx.coroutines.test.setMain
 import org.hapticon.app.playback.PlaybackCapabilities
 import org.hapticon.app.playback.VibrationOutput
-import org.hapticon.app.sensors.TEST_UNO
-import org.hapticon.app.sensors.TestUsbDevices
+import org.hapticon.testing.TEST_UNO
+import org.hapticon.testing.TestUsbDevices
 import org.hapticon.core.render.VibrationWaveform
 import org.hapticon.sensor.glove.HubGloveSource
 import org.hapticon.sensor.grains.GrainEngine
