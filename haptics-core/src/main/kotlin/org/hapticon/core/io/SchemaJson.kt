@@ -192,6 +192,12 @@ public fun shortNumber(value: Double): JsonPrimitive {
     }
 }
 
+/** [value] as a JSON integer. Does not throw. */
+public fun shortNumber(value: Long): JsonPrimitive = JsonPrimitive(value)
+
+/** [value] as a JSON integer. Does not throw. */
+public fun shortNumber(value: Int): JsonPrimitive = JsonPrimitive(value)
+
 /** What a schema member holds, as [SchemaJson.check] sees it. */
 public enum class JsonKind {
     /** A JSON string. */
