@@ -3,6 +3,8 @@
 // the companion share it. The embedded broker lives in :messaging:broker and never reaches the app.
 plugins {
     alias(libs.plugins.kotlin.jvm)
+    // The wire documents are @Serializable types (MessageCodec, docs/json.md).
+    alias(libs.plugins.kotlin.serialization)
 }
 
 kotlin {
@@ -13,6 +15,7 @@ kotlin {
 dependencies {
     api(project(":haptics-core"))
     api(libs.kotlinx.coroutines.core)
+    implementation(libs.kotlinx.serialization.json)
     implementation(libs.hivemq.mqtt.client)
     implementation(libs.tink.android)
 

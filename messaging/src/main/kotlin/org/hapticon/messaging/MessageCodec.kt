@@ -1,15 +1,23 @@
 package org.hapticon.messaging
 
+import kotlinx.serialization.EncodeDefault
+import kotlinx.serialization.ExperimentalSerializationApi
+import kotlinx.serialization.KSerializer
+import kotlinx.serialization.Serializable
+import kotlinx.serialization.json.JsonArray
+import kotlinx.serialization.json.JsonElement
+import kotlinx.serialization.json.JsonNull
+import kotlinx.serialization.json.JsonObject
+import kotlinx.serialization.json.JsonPrimitive
+import kotlinx.serialization.json.doubleOrNull
 import org.hapticon.core.IconValidationException
 import org.hapticon.core.io.IconJson
-import org.hapticon.core.io.Json
-import org.hapticon.core.io.JsonBoolean
 import org.hapticon.core.io.JsonException
-import org.hapticon.core.io.JsonNull
-import org.hapticon.core.io.JsonNumber
-import org.hapticon.core.io.JsonObject
-import org.hapticon.core.io.JsonString
-import org.hapticon.core.io.JsonValue
+import org.hapticon.core.io.JsonKind
+import org.hapticon.core.io.SchemaJson
+import org.hapticon.core.io.SchemaReport
+import org.hapticon.core.io.ShortDouble
+import org.hapticon.core.pattern.HapticPattern
 import org.hapticon.core.pattern.PatternException
 import org.hapticon.core.pattern.PatternJson
 
@@ -26,8 +34,12 @@ import org.hapticon.core.pattern.PatternJson
  *  "apiLevel":34|null,"resonantFrequencyHz":170.0|null}
  * ```
  *
- * Decoding is for untrusted input and never throws: the size is checked before parsing, the parser is
- * strict and depth-limited, and every problem becomes a [Decoded.Rejected] with a [RejectionReason].
+ * Each document is a `@Serializable` type (`MessageDocument` …, this file), encoded by kotlinx-serialization;
+ * the schema names and versions are in [WireFormats]. Decoding is for untrusted input and never throws: the
+ * size is checked before parsing, the strict reader ([SchemaJson.parseUtf8]) refuses malformed text, duplicate
+ * names and nesting deeper than [MessageLimits.MAX_JSON_DEPTH], [SchemaJson.check] checks the members against
+ * the type with this format's wording ([WireReport]), and every problem becomes a [Decoded.Rejected] with a
+ * [RejectionReason].
  * Unknown members are ignored, so that newer writers can add optional members within version 1.
  *
  * A message with a haptic pattern ([ChatMessage.pattern], [PatternJson]) is written as version 2, every other
@@ -37,128 +49,105 @@ import org.hapticon.core.pattern.PatternJson
  * and showing the text as if nothing were missing.
  */
 public object MessageCodec {
-    /** `schema` of a chat message. */
-    public const val MESSAGE_SCHEMA: String = "hapticon.message"
+    /** `schema` of a chat message ([WireFormats.MESSAGE_SCHEMA]). */
+    public const val MESSAGE_SCHEMA: String = WireFormats.MESSAGE_SCHEMA
 
-    /** `schema` of a receipt. */
-    public const val RECEIPT_SCHEMA: String = "hapticon.receipt"
+    /** `schema` of a receipt ([WireFormats.RECEIPT_SCHEMA]). */
+    public const val RECEIPT_SCHEMA: String = WireFormats.RECEIPT_SCHEMA
 
-    /** `schema` of a tele-handshake sample. */
-    public const val HAND_SCHEMA: String = "hapticon.hand"
+    /** `schema` of a tele-handshake sample ([WireFormats.HAND_SCHEMA]). */
+    public const val HAND_SCHEMA: String = WireFormats.HAND_SCHEMA
 
-    /** `schema` of a capabilities document. */
-    public const val CAPABILITIES_SCHEMA: String = "hapticon.capabilities"
+    /** `schema` of a capabilities document ([WireFormats.CAPABILITIES_SCHEMA]). */
+    public const val CAPABILITIES_SCHEMA: String = WireFormats.CAPABILITIES_SCHEMA
 
-    /** The version this build writes for receipts, poses, capabilities and messages without a pattern. */
-    public const val VERSION: Int = 1
+    /** The version this build writes for receipts, poses, capabilities and messages without a pattern ([WireFormats.VERSION]). */
+    public const val VERSION: Int = WireFormats.VERSION
 
-    /** The version of a message with a pattern; this build reads messages of versions [VERSION]..[PATTERN_VERSION]. */
-    public const val PATTERN_VERSION: Int = 2
+    /** The version of a message with a pattern; this build reads messages of versions [VERSION]..[PATTERN_VERSION] ([WireFormats.PATTERN_MESSAGE_VERSION]). */
+    public const val PATTERN_VERSION: Int = WireFormats.PATTERN_MESSAGE_VERSION
 
     /** [message] as UTF-8 JSON. Does not throw: every valid message is encodable and within the payload limit. */
-    public fun encode(message: ChatMessage): ByteArray {
-        val members = listOf(
-            "schema" to JsonString(MESSAGE_SCHEMA),
-            "version" to JsonNumber(if (message.pattern != null) PATTERN_VERSION else VERSION),
-            "id" to JsonString(message.id),
-            "sender" to JsonString(message.sender),
-            "sentAt" to JsonNumber(message.sentAtMillis),
-            "text" to JsonString(message.text),
-            "sticker" to (message.sticker?.let(::JsonString) ?: JsonNull),
-            "icon" to (message.icon?.let(IconJson::toJsonValue) ?: JsonNull),
-        )
-        val pattern = message.pattern?.let { listOf("pattern" to PatternJson.toJsonValue(it)) }.orEmpty()
-        return encodeObject(*(members + pattern).toTypedArray())
-    }
+    public fun encode(message: ChatMessage): ByteArray = encode(
+        MessageDocument.serializer(),
+        MessageDocument(
+            MESSAGE_SCHEMA, if (message.pattern != null) PATTERN_VERSION else VERSION, message.id, message.sender, message.sentAtMillis,
+            message.text, message.sticker, message.icon?.let(IconJson::toJsonElement), message.pattern?.let(PatternJson::toJsonElement),
+        ),
+    )
 
     /** [receipt] as UTF-8 JSON. Does not throw. */
-    public fun encode(receipt: Receipt): ByteArray = encodeObject(
-        "schema" to JsonString(RECEIPT_SCHEMA),
-        "version" to JsonNumber(VERSION),
-        "messageId" to JsonString(receipt.messageId),
-        "from" to JsonString(receipt.from),
-        "state" to JsonString(receipt.state.wireName),
-        "at" to JsonNumber(receipt.atMillis),
+    public fun encode(receipt: Receipt): ByteArray = encode(
+        ReceiptDocument.serializer(),
+        ReceiptDocument(RECEIPT_SCHEMA, VERSION, receipt.messageId, receipt.from, receipt.state.wireName, receipt.atMillis),
     )
 
     /** [pose] as UTF-8 JSON. Does not throw. */
-    public fun encode(pose: HandPose): ByteArray = encodeObject(
-        "schema" to JsonString(HAND_SCHEMA),
-        "version" to JsonNumber(VERSION),
-        "from" to JsonString(pose.from),
-        "thumb" to JsonNumber(pose.thumbDegrees),
-        "middle" to JsonNumber(pose.middleDegrees),
-        "at" to JsonNumber(pose.atMillis),
+    public fun encode(pose: HandPose): ByteArray = encode(
+        HandDocument.serializer(),
+        HandDocument(HAND_SCHEMA, VERSION, pose.from, pose.thumbDegrees, pose.middleDegrees, pose.atMillis),
     )
 
     /** [capabilities] as UTF-8 JSON. Does not throw. */
-    public fun encode(capabilities: Capabilities): ByteArray = encodeObject(
-        "schema" to JsonString(CAPABILITIES_SCHEMA),
-        "version" to JsonNumber(VERSION),
-        "user" to JsonString(capabilities.user),
-        "renderer" to JsonString(capabilities.renderer.wireName),
-        "amplitudeControl" to JsonBoolean(capabilities.amplitudeControl),
-        "apiLevel" to (capabilities.apiLevel?.let { JsonNumber(it) } ?: JsonNull),
-        "resonantFrequencyHz" to (capabilities.resonantFrequencyHz?.let { JsonNumber(it) } ?: JsonNull),
+    public fun encode(capabilities: Capabilities): ByteArray = encode(
+        CapabilitiesDocument.serializer(),
+        CapabilitiesDocument(
+            CAPABILITIES_SCHEMA, VERSION, capabilities.user, capabilities.renderer.wireName, capabilities.amplitudeControl,
+            capabilities.apiLevel?.toLong(), capabilities.resonantFrequencyHz,
+        ),
     )
 
     /** Decodes what arrives in an inbox: a [ChatMessage], a [Receipt] or a [HandPose]. Never throws. */
-    public fun decodeInbox(payload: ByteArray): Decoded<InboxPayload> = decodeWith(payload) { fields ->
-        when (fields.schema(MESSAGE_SCHEMA, RECEIPT_SCHEMA, HAND_SCHEMA, messageVersions = VERSION..PATTERN_VERSION)) {
-            MESSAGE_SCHEMA -> decodeMessage(fields)
-            HAND_SCHEMA -> HandPose(
-                from = fields.requiredString("from"),
-                thumbDegrees = fields.optionalNumber("thumb") ?: throw InvalidMessageException(RejectionReason.MISSING_FIELD, "thumb", "missing"),
-                middleDegrees = fields.optionalNumber("middle") ?: throw InvalidMessageException(RejectionReason.MISSING_FIELD, "middle", "missing"),
-                atMillis = fields.requiredWhole("at"),
-            )
-            else -> decodeReceipt(fields)
+    public fun decodeInbox(payload: ByteArray): Decoded<InboxPayload> = decodeWith(payload) { json ->
+        val (schema, version) = schema(json, MESSAGE_SCHEMA, RECEIPT_SCHEMA, HAND_SCHEMA)
+        when (schema) {
+            MESSAGE_SCHEMA -> decodeMessage(SchemaJson.decode(MessageDocument.serializer(), json, WireReport), version)
+            HAND_SCHEMA -> SchemaJson.decode(HandDocument.serializer(), json, WireReport).let { HandPose(it.from, it.thumb, it.middle, it.at) }
+            else -> decodeReceipt(SchemaJson.decode(ReceiptDocument.serializer(), json, WireReport))
         }
     }
 
     /** Decodes a capabilities document. Never throws. */
-    public fun decodeCapabilities(payload: ByteArray): Decoded<Capabilities> = decodeWith(payload) { fields ->
-        fields.schema(CAPABILITIES_SCHEMA)
-        val renderer = fields.requiredString("renderer").let { name ->
-            RendererKind.entries.firstOrNull { it.wireName == name }
-                ?: if (RENDERER_FORM.matches(name)) RendererKind.UNKNOWN else invalid("renderer", "expected a renderer name, got ${quote(name)}")
-        }
+    public fun decodeCapabilities(payload: ByteArray): Decoded<Capabilities> = decodeWith(payload) { json ->
+        schema(json, CAPABILITIES_SCHEMA)
+        val doc = SchemaJson.decode(CapabilitiesDocument.serializer(), json, WireReport)
+        val renderer = RendererKind.entries.firstOrNull { it.wireName == doc.renderer }
+            ?: if (RENDERER_FORM.matches(doc.renderer)) RendererKind.UNKNOWN else invalid("renderer", "expected a renderer name, got ${quote(doc.renderer)}")
         Capabilities(
-            user = fields.requiredString("user"),
+            user = doc.user,
             renderer = renderer,
-            amplitudeControl = fields.requiredBoolean("amplitudeControl"),
-            apiLevel = fields.optionalWhole("apiLevel")?.let { if (it in 1..Capabilities.MAX_API_LEVEL) it.toInt() else invalid("apiLevel", "expected 1..${Capabilities.MAX_API_LEVEL}, got $it") },
-            resonantFrequencyHz = fields.optionalNumber("resonantFrequencyHz"),
+            amplitudeControl = doc.amplitudeControl,
+            apiLevel = doc.apiLevel?.let { if (it in 1..Capabilities.MAX_API_LEVEL) it.toInt() else invalid("apiLevel", "expected 1..${Capabilities.MAX_API_LEVEL}, got $it") },
+            resonantFrequencyHz = doc.resonantFrequencyHz,
         )
     }
 
-    private fun decodeMessage(fields: Fields): ChatMessage {
-        val icon = when (val value = fields.optional("icon")) {
-            null -> null
-            else -> try {
-                IconJson.fromJsonValue(value)
+    private fun decodeMessage(doc: MessageDocument, version: Int): ChatMessage {
+        val icon = doc.icon?.takeUnless { it is JsonNull }?.let { value ->
+            try {
+                IconJson.fromJsonElement(value)
             } catch (e: IconValidationException) {
                 val detail = e.message.orEmpty().removePrefix("${e.field}: ")
                 throw InvalidMessageException(RejectionReason.INVALID_ICON, if (e.field == "icon") "icon" else "icon.${e.field}", detail)
             }
         }
-        val pattern = if (fields.version < PATTERN_VERSION) null else decodePattern(fields.optional("pattern"))
+        val pattern = if (version < PATTERN_VERSION) null else decodePattern(doc.pattern?.takeUnless { it is JsonNull })
         return ChatMessage(
             // Upper-case UUIDs name the same message; one spelling keeps deduplication by id exact.
-            id = fields.requiredString("id").lowercase(),
-            sender = fields.requiredString("sender"),
-            sentAtMillis = fields.requiredWhole("sentAt"),
-            text = fields.requiredString("text"),
-            sticker = fields.optionalString("sticker"),
+            id = doc.id.lowercase(),
+            sender = doc.sender,
+            sentAtMillis = doc.sentAt,
+            text = doc.text,
+            sticker = doc.sticker,
             icon = icon,
             pattern = pattern,
         )
     }
 
-    private fun decodePattern(value: JsonValue?): org.hapticon.core.pattern.HapticPattern? {
+    private fun decodePattern(value: JsonElement?): HapticPattern? {
         if (value == null) return null
         // Only a pattern document: PatternJson.read would also turn an icon into a pattern, which belongs in "icon".
-        val schema = ((value as? JsonObject)?.get("schema") as? JsonString)?.value
+        val schema = ((value as? JsonObject)?.get("schema") as? JsonPrimitive)?.takeIf { it.isString }?.content
         if (schema != PatternJson.SCHEMA) {
             throw InvalidMessageException(RejectionReason.INVALID_ICON, "pattern.schema", "expected \"${PatternJson.SCHEMA}\"")
         }
@@ -170,19 +159,39 @@ public object MessageCodec {
         }
     }
 
-    private fun decodeReceipt(fields: Fields): Receipt {
-        val stateName = fields.requiredString("state")
-        val state = ReceiptState.entries.firstOrNull { it.wireName == stateName }
-            ?: invalid("state", "expected \"delivered\" or \"read\", got ${quote(stateName)}")
-        return Receipt(
-            messageId = fields.requiredString("messageId").lowercase(),
-            from = fields.requiredString("from"),
-            state = state,
-            atMillis = fields.requiredWhole("at"),
-        )
+    private fun decodeReceipt(doc: ReceiptDocument): Receipt {
+        val state = ReceiptState.entries.firstOrNull { it.wireName == doc.state }
+            ?: invalid("state", "expected \"delivered\" or \"read\", got ${quote(doc.state)}")
+        return Receipt(messageId = doc.messageId.lowercase(), from = doc.from, state = state, atMillis = doc.at)
     }
 
-    private inline fun <T> decodeWith(payload: ByteArray, decode: (Fields) -> T): Decoded<T> {
+    /**
+     * The document's schema, one of [accepted], and its version, checked before any other member: a newer
+     * document may have changed any of them.
+     */
+    private fun schema(json: JsonObject, vararg accepted: String): Pair<String, Int> {
+        val schema = json["schema"] ?: throw InvalidMessageException(RejectionReason.UNKNOWN_SCHEMA, "schema", "missing")
+        val name = (schema as? JsonPrimitive)?.takeIf { it.isString }?.content
+        if (name == null || name !in accepted) {
+            throw InvalidMessageException(
+                RejectionReason.UNKNOWN_SCHEMA, "schema",
+                "expected ${accepted.joinToString(" or ") { "\"$it\"" }}, got ${snippet(schema)}",
+            )
+        }
+        val version = json["version"]
+        val readable = if (name == MESSAGE_SCHEMA) VERSION..PATTERN_VERSION else VERSION..VERSION
+        val number = (version as? JsonPrimitive)?.takeUnless { it.isString || it is JsonNull }?.doubleOrNull
+        if (number == null || number != Math.rint(number) || number < readable.first || number > readable.last) {
+            val versions = if (readable.first == readable.last) "version ${readable.first}" else "versions ${readable.first}–${readable.last}"
+            throw InvalidMessageException(
+                RejectionReason.UNSUPPORTED_VERSION, "version",
+                "this build reads $versions of \"$name\", got ${version?.let(::snippet) ?: "none"}",
+            )
+        }
+        return name to number.toInt()
+    }
+
+    private inline fun <T> decodeWith(payload: ByteArray, decode: (JsonObject) -> T): Decoded<T> {
         // Checked before the bytes are even decoded as UTF-8: an oversized payload costs nothing more.
         if (payload.size > MessageLimits.MAX_PAYLOAD_BYTES) {
             return Decoded.Rejected(
@@ -191,9 +200,9 @@ public object MessageCodec {
             )
         }
         return try {
-            val value = Json.decodeUtf8(payload, MessageLimits.MAX_PAYLOAD_BYTES, MessageLimits.MAX_JSON_DEPTH)
+            val value = SchemaJson.parseUtf8(payload, MessageLimits.MAX_PAYLOAD_BYTES, MessageLimits.MAX_JSON_DEPTH)
             if (value !is JsonObject) return Decoded.Rejected(RejectionReason.NOT_AN_OBJECT, null, "expected an object, got ${kind(value)}")
-            Decoded.Accepted(decode(Fields(value)))
+            Decoded.Accepted(decode(value))
         } catch (e: JsonException) {
             Decoded.Rejected(RejectionReason.MALFORMED_JSON, null, e.message.orEmpty())
         } catch (e: InvalidMessageException) {
@@ -204,98 +213,108 @@ public object MessageCodec {
         }
     }
 
-    private fun encodeObject(vararg members: Pair<String, JsonValue>): ByteArray =
-        Json.encode(JsonObject(linkedMapOf(*members))).toByteArray(Charsets.UTF_8)
+    private fun <T> encode(serializer: KSerializer<T>, document: T): ByteArray =
+        SchemaJson.format.encodeToString(serializer, document).toByteArray(Charsets.UTF_8)
 
     private val RENDERER_FORM = Regex("[a-z0-9-]{1,32}")
+}
 
-    /** Typed access to the members of a decoded object; every problem is an [InvalidMessageException]. */
-    private class Fields(private val json: JsonObject) {
-        /** The document's version, known once [schema] has accepted it. */
-        var version: Int = VERSION
-            private set
+/** A chat message on the wire (`hapticon.message`, versions 1 and 2); members in wire order. */
+@OptIn(ExperimentalSerializationApi::class)
+@Serializable
+internal class MessageDocument(
+    val schema: String,
+    val version: Int,
+    val id: String,
+    val sender: String,
+    val sentAt: Long,
+    val text: String,
+    val sticker: String? = null,
+    // Icon and pattern keep their own formats' checks and wording (IconJson, PatternJson), so they are read as trees.
+    val icon: JsonElement? = null,
+    // Absent from version 1 messages, which is what builds before patterns expect.
+    @EncodeDefault(EncodeDefault.Mode.NEVER) val pattern: JsonElement? = null,
+)
 
-        fun schema(vararg accepted: String, messageVersions: IntRange = VERSION..VERSION): String {
-            val schema = json["schema"] ?: throw InvalidMessageException(RejectionReason.UNKNOWN_SCHEMA, "schema", "missing")
-            val name = (schema as? JsonString)?.value
-            if (name == null || name !in accepted) {
-                throw InvalidMessageException(
-                    RejectionReason.UNKNOWN_SCHEMA, "schema",
-                    "expected ${accepted.joinToString(" or ") { "\"$it\"" }}, got ${snippet(schema)}",
-                )
-            }
-            // The version comes right after the schema: a newer document may have changed any other member.
-            val version = json["version"]
-            val readable = if (name == MESSAGE_SCHEMA) messageVersions else VERSION..VERSION
-            val number = (version as? JsonNumber)?.value
-            if (number == null || number != Math.rint(number) || number < readable.first || number > readable.last) {
-                val versions = if (readable.first == readable.last) "version ${readable.first}" else "versions ${readable.first}–${readable.last}"
-                throw InvalidMessageException(
-                    RejectionReason.UNSUPPORTED_VERSION, "version",
-                    "this build reads $versions of \"$name\", got ${version?.let(::snippet) ?: "none"}",
-                )
-            }
-            this.version = number.toInt()
-            return name
+/** A receipt on the wire (`hapticon.receipt`, version 1). */
+@Serializable
+internal class ReceiptDocument(val schema: String, val version: Int, val messageId: String, val from: String, val state: String, val at: Long)
+
+/** A tele-handshake sample on the wire (`hapticon.hand`, version 1); angles written without a fraction when whole. */
+@Serializable
+internal class HandDocument(
+    val schema: String,
+    val version: Int,
+    val from: String,
+    @Serializable(with = ShortDouble::class) val thumb: Double,
+    @Serializable(with = ShortDouble::class) val middle: Double,
+    val at: Long,
+)
+
+/** A capabilities document on the wire (`hapticon.capabilities`, version 1). */
+@Serializable
+internal class CapabilitiesDocument(
+    val schema: String,
+    val version: Int,
+    val user: String,
+    val renderer: String,
+    val amplitudeControl: Boolean,
+    val apiLevel: Long? = null,
+    @Serializable(with = ShortDouble::class) val resonantFrequencyHz: Double? = null,
+)
+
+/** The wire format's wording of schema problems: an [InvalidMessageException] with the [RejectionReason] and a one-line detail. */
+internal object WireReport : SchemaReport {
+    override fun notAnObject(path: String, value: JsonElement): Nothing =
+        throw InvalidMessageException(RejectionReason.WRONG_TYPE, path, "expected an object, got ${kind(value)}")
+
+    override fun wrongType(path: String, member: String, expected: JsonKind, value: JsonElement?): Nothing {
+        val field = if (path.isEmpty()) member else "$path.$member"
+        if (value == null) throw InvalidMessageException(RejectionReason.MISSING_FIELD, field, "missing")
+        val number = (value as? JsonPrimitive)?.takeUnless { it.isString || it is JsonNull }?.doubleOrNull
+        val wanted = when (expected) {
+            JsonKind.STRING -> "a string"
+            JsonKind.BOOLEAN -> "true or false"
+            JsonKind.OBJECT -> "an object"
+            JsonKind.ARRAY -> "an array"
+            else -> "a number"
         }
-
-        fun optional(field: String): JsonValue? = json[field]?.takeUnless { it == JsonNull }
-
-        fun requiredString(field: String): String = optionalString(field) ?: missing(field)
-
-        fun optionalString(field: String): String? {
-            val value = optional(field) ?: return null
-            return (value as? JsonString)?.value ?: wrongType(field, "a string", value)
-        }
-
-        fun requiredBoolean(field: String): Boolean {
-            val value = optional(field) ?: missing(field)
-            return (value as? JsonBoolean)?.value ?: wrongType(field, "true or false", value)
-        }
-
-        fun optionalNumber(field: String): Double? {
-            val value = optional(field) ?: return null
-            val number = (value as? JsonNumber)?.value ?: wrongType(field, "a number", value)
+        when {
+            number == null || expected == JsonKind.STRING || expected == JsonKind.BOOLEAN ->
+                throw InvalidMessageException(RejectionReason.WRONG_TYPE, field, "expected $wanted, got ${snippet(value)}")
             // JSON has no NaN or infinity, but 1e400 overflows a double to infinity.
-            if (!number.isFinite()) invalid(field, "expected a finite number, got ${snippet(value)}")
-            return number
+            !number.isFinite() -> invalid(field, "expected a finite number, got ${snippet(value)}")
+            number != Math.rint(number) -> invalid(field, "expected a whole number, got ${snippet(value)}")
+            // Beyond 2^53 a double is no longer an exact integer; no member of ours gets near it.
+            else -> invalid(field, "${snippet(value)} is out of range")
         }
-
-        fun requiredWhole(field: String): Long = optionalWhole(field) ?: missing(field)
-
-        fun optionalWhole(field: String): Long? {
-            val number = optionalNumber(field) ?: return null
-            if (number != Math.rint(number)) invalid(field, "expected a whole number, got ${snippet(json[field]!!)}")
-            // Beyond 2^53 a double is no longer an exact integer; no field of ours gets near it.
-            if (Math.abs(number) > MAX_EXACT_INTEGER) invalid(field, "${snippet(json[field]!!)} is out of range")
-            return number.toLong()
-        }
-
-        private fun missing(field: String): Nothing = throw InvalidMessageException(RejectionReason.MISSING_FIELD, field, "missing")
-
-        private fun wrongType(field: String, expected: String, value: JsonValue): Nothing =
-            throw InvalidMessageException(RejectionReason.WRONG_TYPE, field, "expected $expected, got ${snippet(value)}")
     }
 
-    private const val MAX_EXACT_INTEGER = 9.007199254740992E15
+    override fun wrongElement(path: String, member: String, index: Int, expected: JsonKind, value: JsonElement): Nothing =
+        throw InvalidMessageException(RejectionReason.WRONG_TYPE, "$member[$index]", "expected ${expected.name.lowercase()}, got ${snippet(value)}")
 }
 
 private fun invalid(field: String, detail: String): Nothing = throw InvalidMessageException(RejectionReason.INVALID_VALUE, field, detail)
 
-private fun kind(value: JsonValue): String = when (value) {
+private fun kind(value: JsonElement): String = when (value) {
     is JsonObject -> "an object"
-    is org.hapticon.core.io.JsonArray -> "an array"
-    is JsonString -> "a string"
-    is JsonNumber -> "a number"
-    is JsonBoolean -> "a boolean"
+    is JsonArray -> "an array"
     JsonNull -> "null"
+    is JsonPrimitive -> when {
+        value.isString -> "a string"
+        value.content == "true" || value.content == "false" -> "a boolean"
+        else -> "a number"
+    }
 }
 
-/** A short rendering of [value] for a one-line detail: strings quoted and cut, containers by kind. */
-private fun snippet(value: JsonValue): String = when (value) {
-    is JsonString -> quote(value.value)
-    is JsonNumber -> if (value.isIntegral && Math.abs(value.value) <= 9.007199254740992E15) value.value.toLong().toString() else value.value.toString()
-    is JsonBoolean -> value.value.toString()
-    JsonNull -> "null"
+/** A short rendering of [value] for a one-line detail: strings quoted and cut, containers by kind, numbers as written before. */
+private fun snippet(value: JsonElement): String = when {
+    value is JsonPrimitive && value.isString -> quote(value.content)
+    value is JsonPrimitive && value !is JsonNull && value.content != "true" && value.content != "false" -> {
+        // Integers beyond ±2^53 were always shown as the double they read as.
+        val whole = value.content.toLongOrNull()
+        if (whole != null && Math.abs(whole.toDouble()) > 9.007199254740992E15) whole.toDouble().toString() else value.content
+    }
+    value is JsonPrimitive -> value.content
     else -> kind(value)
 }

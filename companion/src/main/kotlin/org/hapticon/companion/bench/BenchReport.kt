@@ -1,12 +1,11 @@
 package org.hapticon.companion.bench
 
-import org.hapticon.core.io.Json
-import org.hapticon.core.io.JsonArray
-import org.hapticon.core.io.JsonBoolean
-import org.hapticon.core.io.JsonNumber
-import org.hapticon.core.io.JsonObject
-import org.hapticon.core.io.JsonString
-import org.hapticon.core.io.JsonValue
+import kotlinx.serialization.json.JsonArray
+import kotlinx.serialization.json.JsonElement
+import kotlinx.serialization.json.JsonObject
+import kotlinx.serialization.json.JsonPrimitive
+import org.hapticon.core.io.SchemaJson
+import org.hapticon.core.io.shortNumber
 import java.util.Locale
 
 /** Formats a [BenchResult] as a human-readable table or as one JSON object. */
@@ -91,17 +90,17 @@ object BenchReport {
     }
 
     /** One JSON object with every figure; rates in samples per second, times in µs. */
-    fun json(result: BenchResult): String = Json.encode(jsonValue(result), indent = "  ")
+    fun json(result: BenchResult): String = SchemaJson.encodeElement(jsonValue(result), "  ")
 
     /** The object [json] prints. */
     fun jsonValue(result: BenchResult): JsonObject = obj(
-        "sampleRate" to JsonNumber(result.sampleRate),
-        "blockSamples" to JsonNumber(result.blockSamples),
+        "sampleRate" to shortNumber(result.sampleRate),
+        "blockSamples" to shortNumber(result.blockSamples),
         "throughput" to JsonArray(
             result.throughputs.map { t ->
                 obj(
-                    "workload" to JsonString(t.workload),
-                    "samples" to JsonNumber(t.samples),
+                    "workload" to JsonPrimitive(t.workload),
+                    "samples" to shortNumber(t.samples),
                     "sineLoop" to spreadJson(t.sineLoop, 0),
                     "phasor" to spreadJson(t.phasor, 0),
                     "exact" to spreadJson(t.exact, 0),
@@ -111,38 +110,38 @@ object BenchReport {
                 )
             },
         ),
-        "fastMaxAbsError" to JsonNumber(result.worstError.maxAbsError),
-        "fastMaxAbsErrorDouble" to JsonNumber(result.worstDoubleError.maxAbsDoubleError),
+        "fastMaxAbsError" to shortNumber(result.worstError.maxAbsError),
+        "fastMaxAbsErrorDouble" to shortNumber(result.worstDoubleError.maxAbsDoubleError),
         "fastErrorCases" to JsonArray(
             result.errorCases.map { e ->
                 obj(
-                    "model" to JsonString(e.model.name.lowercase()),
-                    "sampleRate" to JsonNumber(e.sampleRate),
-                    "note" to JsonNumber(e.note),
-                    "samples" to JsonNumber(e.samples),
-                    "maxAbsError" to JsonNumber(e.maxAbsError),
-                    "maxAbsErrorDouble" to JsonNumber(e.maxAbsDoubleError),
+                    "model" to JsonPrimitive(e.model.name.lowercase()),
+                    "sampleRate" to shortNumber(e.sampleRate),
+                    "note" to shortNumber(e.note),
+                    "samples" to shortNumber(e.samples),
+                    "maxAbsError" to shortNumber(e.maxAbsError),
+                    "maxAbsErrorDouble" to shortNumber(e.maxAbsDoubleError),
                 )
             },
         ),
-        "firstBlockSamples" to JsonNumber(result.firstBlockSamples),
+        "firstBlockSamples" to shortNumber(result.firstBlockSamples),
         "firstBlockMicros" to JsonArray(
             result.firstBlocks.map { f ->
-                obj("icon" to JsonString(f.icon), "exact" to rounded(f.exactMicros, 2), "fast" to rounded(f.fastMicros, 2))
+                obj("icon" to JsonPrimitive(f.icon), "exact" to rounded(f.exactMicros, 2), "fast" to rounded(f.fastMicros, 2))
             },
         ),
         "allocatedBytesPerBlock" to obj(
-            "exact" to JsonNumber(result.allocatedBytesPerBlockExact),
-            "fast" to JsonNumber(result.allocatedBytesPerBlockFast),
+            "exact" to shortNumber(result.allocatedBytesPerBlockExact),
+            "fast" to shortNumber(result.allocatedBytesPerBlockFast),
         ),
         "sensors" to sensorsJson(result.sensors),
         "targets" to JsonObject(
             result.targets.associateTo(LinkedHashMap()) { target ->
                 target.name to obj(
-                    "goal" to JsonString(target.goal),
+                    "goal" to JsonPrimitive(target.goal),
                     "measured" to measured(target.measured, 3),
-                    "unit" to JsonString(target.unit),
-                    "met" to JsonBoolean(target.met),
+                    "unit" to JsonPrimitive(target.unit),
+                    "met" to JsonPrimitive(target.met),
                 )
             },
         ),
@@ -153,11 +152,11 @@ object BenchReport {
         "decode" to JsonArray(
             sensors.decode.map { d ->
                 obj(
-                    "protocol" to JsonString(d.name),
-                    "bytes" to JsonNumber(d.bytes),
-                    "frames" to JsonNumber(d.frames),
+                    "protocol" to JsonPrimitive(d.name),
+                    "bytes" to shortNumber(d.bytes),
+                    "frames" to shortNumber(d.frames),
                     "megabytesPerSecond" to rounded(d.megabytesPerSecond, 2),
-                    "framesPerSecond" to JsonNumber(Math.round(d.framesPerSecond)),
+                    "framesPerSecond" to shortNumber(Math.round(d.framesPerSecond)),
                     "allocatedBytesPerFrame" to measured(d.bytesAllocatedPerFrame, 3),
                 )
             },
@@ -165,34 +164,34 @@ object BenchReport {
         "models" to JsonArray(
             sensors.models.map { m ->
                 obj(
-                    "name" to JsonString(m.name),
+                    "name" to JsonPrimitive(m.name),
                     "medianNanosPerSample" to rounded(m.medianNanosPerSample, 2),
                     "bestNanosPerSample" to rounded(m.bestNanosPerSample, 2),
                     "allocatedBytesPerSample" to measured(m.allocatedBytesPerSample, 3),
-                    "samplesPerRun" to JsonNumber(m.samplesPerRun),
-                    "runs" to JsonNumber(m.runs),
+                    "samplesPerRun" to shortNumber(m.samplesPerRun),
+                    "runs" to shortNumber(m.runs),
                 )
             },
         ),
         "grainLatency" to obj(
-            "samples" to JsonNumber(sensors.latency.samples),
-            "grains" to JsonNumber(sensors.latency.grains),
+            "samples" to shortNumber(sensors.latency.samples),
+            "grains" to shortNumber(sensors.latency.grains),
             "p50Micros" to rounded(sensors.latency.p50Micros, 2),
             "p99Micros" to rounded(sensors.latency.p99Micros, 2),
             "maxMicros" to rounded(sensors.latency.maxMicros, 2),
             "runQueueMicrosAtMax" to measured(sensors.latency.runQueueMicrosAtMax, 2),
-            "gcAtMax" to JsonBoolean(sensors.latency.gcAtMax),
+            "gcAtMax" to JsonPrimitive(sensors.latency.gcAtMax),
             "maxWithoutRunQueueMicros" to measured(sensors.latency.maxWithoutRunQueueMicros, 2),
-            "over1ms" to JsonNumber(sensors.latency.over1ms),
-            "over1msByRunQueue" to JsonNumber(sensors.latency.over1msByRunQueue),
-            "over1msWithGc" to JsonNumber(sensors.latency.over1msWithGc),
+            "over1ms" to shortNumber(sensors.latency.over1ms),
+            "over1msByRunQueue" to shortNumber(sensors.latency.over1msByRunQueue),
+            "over1msWithGc" to shortNumber(sensors.latency.over1msWithGc),
             "handlerAllocatedBytesPerSample" to measured(sensors.latency.handlerBytesPerSample, 3),
             "readerAllocatedBytesPerSample" to measured(sensors.latency.readerBytesPerSample, 3),
         ),
     )
 
     /** [value] rounded, or null (left out) where it was not measured: NaN or negative, as the sensor benchmarks say so. */
-    private fun measured(value: Double, decimals: Int): JsonNumber? = if (value.isNaN() || value < 0) null else rounded(value, decimals)
+    private fun measured(value: Double, decimals: Int): JsonPrimitive? = if (value.isNaN() || value < 0) null else rounded(value, decimals)
 
     /** An allocation figure for the table; `n/a` where the JVM could not count. */
     private fun allocation(bytes: Double): String = if (bytes.isNaN() || bytes < 0) "n/a" else number(bytes)
@@ -202,17 +201,17 @@ object BenchReport {
         "min" to rounded(spread.min, decimals),
         "median" to rounded(spread.median, decimals),
         "max" to rounded(spread.max, decimals),
-        "runs" to JsonNumber(spread.runs),
+        "runs" to shortNumber(spread.runs),
     )
 
     /** An object of [members] in order, leaving out those whose value is null (not measured). */
-    private fun obj(vararg members: Pair<String, JsonValue?>): JsonObject {
-        val present = LinkedHashMap<String, JsonValue>()
+    private fun obj(vararg members: Pair<String, JsonElement?>): JsonObject {
+        val present = LinkedHashMap<String, JsonElement>()
         for ((key, value) in members) if (value != null) present[key] = value
         return JsonObject(present)
     }
 
-    private fun rounded(value: Double, decimals: Int): JsonNumber = JsonNumber(Math.round(value * POWERS[decimals]) / POWERS[decimals])
+    private fun rounded(value: Double, decimals: Int): JsonPrimitive = shortNumber(Math.round(value * POWERS[decimals]) / POWERS[decimals])
 
     private val POWERS = doubleArrayOf(1.0, 10.0, 100.0, 1000.0)
 

@@ -1,12 +1,12 @@
 package org.hapticon.companion.chat
 
+import kotlinx.serialization.json.JsonObject
+import kotlinx.serialization.json.JsonPrimitive
+import org.hapticon.core.io.SchemaJson
+import org.hapticon.core.io.shortNumber
 import org.hapticon.companion.cli.Console
 import kotlinx.coroutines.runBlocking
 import org.hapticon.core.HapticIcon
-import org.hapticon.core.io.Json
-import org.hapticon.core.io.JsonBoolean
-import org.hapticon.core.io.JsonNumber
-import org.hapticon.core.io.JsonObject
 import org.hapticon.messaging.ChatMessage
 import org.hapticon.messaging.Decoded
 import org.hapticon.messaging.InboxEvent
@@ -82,18 +82,18 @@ object MessagingBenchmark {
     }
 
     /** The figures as one JSON object. */
-    fun json(result: Result): String = Json.encode(
+    fun json(result: Result): String = SchemaJson.encodeElement(
         JsonObject(
             linkedMapOf(
-                "codecMessagesPerSecond" to JsonNumber(Math.round(result.codecPerSecond).toDouble()),
-                "encodedBytes" to JsonNumber(result.encodedBytes),
-                "latencyP50Micros" to JsonNumber(result.latencyP50Micros),
-                "latencyP99Micros" to JsonNumber(result.latencyP99Micros),
-                "latencySamples" to JsonNumber(result.latencySamples),
-                "codecTargetMet" to JsonBoolean(result.codecTargetMet),
+                "codecMessagesPerSecond" to shortNumber(Math.round(result.codecPerSecond).toDouble()),
+                "encodedBytes" to shortNumber(result.encodedBytes),
+                "latencyP50Micros" to shortNumber(result.latencyP50Micros),
+                "latencyP99Micros" to shortNumber(result.latencyP99Micros),
+                "latencySamples" to shortNumber(result.latencySamples),
+                "codecTargetMet" to JsonPrimitive(result.codecTargetMet),
             ),
         ),
-        indent = "  ",
+        "  ",
     )
 
     /** Seconds to encode and decode [message] [count] times. */

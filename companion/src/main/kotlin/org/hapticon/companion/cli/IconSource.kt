@@ -5,6 +5,7 @@ import org.hapticon.core.IconValidationException
 import org.hapticon.core.io.IconJson
 import org.hapticon.core.io.Json
 import org.hapticon.core.io.JsonException
+import org.hapticon.core.io.SchemaJson
 import java.io.File
 import java.io.IOException
 
@@ -32,7 +33,7 @@ object IconSource {
             throw UsageException("cannot read icon file $spec: ${e.message}")
         }
         return try {
-            IconJson.fromJsonValue(Json.decodeUtf8(bytes))
+            IconJson.fromJsonElement(SchemaJson.parseUtf8(bytes))
         } catch (e: JsonException) {
             throw UsageException("icon file $spec is not valid JSON: ${e.message}")
         } catch (e: IconValidationException) {

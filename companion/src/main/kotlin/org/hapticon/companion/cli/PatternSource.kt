@@ -1,10 +1,12 @@
 package org.hapticon.companion.cli
 
+import kotlinx.serialization.json.JsonObject
+import kotlinx.serialization.json.JsonPrimitive
+
 import org.hapticon.core.HapticIcon
 import org.hapticon.core.io.Json
 import org.hapticon.core.io.JsonException
-import org.hapticon.core.io.JsonObject
-import org.hapticon.core.io.JsonString
+import org.hapticon.core.io.SchemaJson
 import org.hapticon.core.pattern.FrequencyMapping
 import org.hapticon.core.pattern.PatternException
 import org.hapticon.core.pattern.PatternFiles
@@ -39,11 +41,11 @@ object PatternSource {
         if (!file.isFile || file.length() > Json.DEFAULT_MAX_LENGTH) return null
         val bytes = readBytes(spec, file)
         val root = try {
-            Json.decodeUtf8(bytes)
+            SchemaJson.parseUtf8(bytes)
         } catch (e: JsonException) {
             return null // IconSource reports the JSON error
         }
-        if (root !is JsonObject || root["schema"] != JsonString(PatternJson.SCHEMA)) return null
+        if (root !is JsonObject || root["schema"] != JsonPrimitive(PatternJson.SCHEMA)) return null
         return parse(spec, file, PatternFormat.JSON, bytes, mapping)
     }
 

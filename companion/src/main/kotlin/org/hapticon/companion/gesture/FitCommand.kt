@@ -1,17 +1,17 @@
 package org.hapticon.companion.gesture
 
+import kotlinx.serialization.json.JsonArray
+import kotlinx.serialization.json.JsonElement
+import kotlinx.serialization.json.JsonNull
+import kotlinx.serialization.json.JsonObject
+import kotlinx.serialization.json.JsonPrimitive
+import org.hapticon.core.io.SchemaJson
+import org.hapticon.core.io.shortNumber
 import org.hapticon.companion.cli.Arguments
 import org.hapticon.companion.cli.Console
 import org.hapticon.companion.cli.OutputFiles
 import org.hapticon.companion.cli.UsageException
 import org.hapticon.core.io.IconJson
-import org.hapticon.core.io.Json
-import org.hapticon.core.io.JsonArray
-import org.hapticon.core.io.JsonNull
-import org.hapticon.core.io.JsonNumber
-import org.hapticon.core.io.JsonObject
-import org.hapticon.core.io.JsonString
-import org.hapticon.core.io.JsonValue
 import org.hapticon.gesture.Recording
 import org.hapticon.gesture.extraction.EnvelopeMethod
 import org.hapticon.gesture.extraction.FitBenchmark
@@ -86,7 +86,7 @@ fun runFit(args: List<String>, console: Console) {
         OutputFiles.ensureDirectory(out)
         for ((i, fit) in fits.withIndex()) {
             OutputFiles.write(File(out, files[i].nameWithoutExtension + ".json")) { it.write((IconJson.encode(fit.icon, "  ") + "\n").toByteArray(Charsets.UTF_8)) }
-            if (arguments.flag("json")) console.out.println(Json.encode(fitJson(fit), "  ")) else console.out.print("${files[i].name}: " + describeFit(fit))
+            if (arguments.flag("json")) console.out.println(SchemaJson.encodeElement(fitJson(fit), "  ")) else console.out.print("${files[i].name}: " + describeFit(fit))
         }
         return
     }
@@ -101,7 +101,7 @@ fun runFit(args: List<String>, console: Console) {
         throw UsageException("$path: ${e.message}")
     }
     OutputFiles.write(out) { it.write((IconJson.encode(fit.icon, "  ") + "\n").toByteArray(Charsets.UTF_8)) }
-    if (arguments.flag("json")) console.out.println(Json.encode(fitJson(fit), "  ")) else console.out.print(describeFit(fit))
+    if (arguments.flag("json")) console.out.println(SchemaJson.encodeElement(fitJson(fit), "  ")) else console.out.print(describeFit(fit))
 }
 
 /** `hapticon fit-bench [--trials N] [--seed S]`: the synthetic parameter-recovery table. */
@@ -156,24 +156,24 @@ internal fun describeFit(fit: IconFit): String {
 /** The fit as one JSON object: the icon (IconJson) and the report. */
 internal fun fitJson(fit: IconFit): JsonObject {
     val r = fit.report
-    val report = linkedMapOf<String, JsonValue>(
-        "channel" to JsonString(r.channel),
-        "sample_rate" to JsonNumber(r.sampleRate),
-        "kind" to JsonString(r.kind.name.lowercase()),
-        "dominant_frequency_hz" to JsonNumber(r.dominantFrequencyHz),
-        "envelope" to JsonString(r.envelopeMethod.name.lowercase()),
-        "envelope_setting" to JsonString(r.envelopeSetting),
-        "envelope_peak" to JsonNumber(r.envelopePeak),
-        "level_reference" to JsonString(r.levelReference),
-        "level_reference_value" to JsonNumber(r.levelReferenceValue),
+    val report = linkedMapOf<String, JsonElement>(
+        "channel" to JsonPrimitive(r.channel),
+        "sample_rate" to shortNumber(r.sampleRate),
+        "kind" to JsonPrimitive(r.kind.name.lowercase()),
+        "dominant_frequency_hz" to shortNumber(r.dominantFrequencyHz),
+        "envelope" to JsonPrimitive(r.envelopeMethod.name.lowercase()),
+        "envelope_setting" to JsonPrimitive(r.envelopeSetting),
+        "envelope_peak" to shortNumber(r.envelopePeak),
+        "level_reference" to JsonPrimitive(r.levelReference),
+        "level_reference_value" to shortNumber(r.levelReferenceValue),
         "parameters" to JsonArray(r.parameters.map {
-            JsonObject(linkedMapOf("name" to JsonString(it.name), "value" to JsonNumber(it.value), "measured" to JsonNumber(it.measured), "how" to JsonString(it.how)))
+            JsonObject(linkedMapOf("name" to JsonPrimitive(it.name), "value" to shortNumber(it.value), "measured" to shortNumber(it.measured), "how" to JsonPrimitive(it.how)))
         }),
-        "onsets_s" to JsonArray(r.onsets.map { JsonNumber(it) }),
-        "fit_rms_error" to JsonNumber(r.fitRmsError),
-        "r_squared" to JsonNumber(r.rSquared),
-        "snr_db" to (r.snrDb?.let { JsonNumber(it) } ?: JsonNull),
-        "warnings" to JsonArray(r.warnings.map { JsonString(it) }),
+        "onsets_s" to JsonArray(r.onsets.map { shortNumber(it) }),
+        "fit_rms_error" to shortNumber(r.fitRmsError),
+        "r_squared" to shortNumber(r.rSquared),
+        "snr_db" to (r.snrDb?.let { shortNumber(it) } ?: JsonNull),
+        "warnings" to JsonArray(r.warnings.map { JsonPrimitive(it) }),
     )
-    return JsonObject(linkedMapOf("icon" to IconJson.toJsonValue(fit.icon), "report" to JsonObject(report)))
+    return JsonObject(linkedMapOf("icon" to IconJson.toJsonElement(fit.icon), "report" to JsonObject(report)))
 }

@@ -1,7 +1,7 @@
 package org.hapticon.companion.sensors
 
-import org.hapticon.core.io.Json
-import org.hapticon.core.io.JsonObject
+import kotlinx.serialization.json.JsonObject
+import org.hapticon.core.io.SchemaJson
 import org.hapticon.sensor.protocol.ProtocolListener
 import org.hapticon.sensor.protocol.csv.CsvSample
 import org.hapticon.sensor.protocol.framed.AckStatus
@@ -24,7 +24,7 @@ class JsonLinesListener(private val out: Writer) : ProtocolListener {
 
     /** Writes [value] as one line. */
     fun write(value: JsonObject) {
-        out.write(Json.encode(value))
+        out.write(SchemaJson.encodeElement(value))
         out.write("\n")
     }
 }

@@ -1,5 +1,10 @@
 package org.hapticon.companion.study
 
+import kotlinx.serialization.json.JsonElement
+import kotlinx.serialization.json.JsonObject
+import kotlinx.serialization.json.JsonPrimitive
+import org.hapticon.core.io.SchemaJson
+import org.hapticon.core.io.shortNumber
 import org.eclipse.jetty.http.HttpHeader
 import org.eclipse.jetty.http.HttpStatus
 import org.eclipse.jetty.io.Content
@@ -14,11 +19,6 @@ import org.eclipse.jetty.server.ServerConnector
 import org.eclipse.jetty.server.handler.DoSHandler
 import org.eclipse.jetty.util.Callback
 import org.eclipse.jetty.util.thread.QueuedThreadPool
-import org.hapticon.core.io.Json
-import org.hapticon.core.io.JsonNumber
-import org.hapticon.core.io.JsonObject
-import org.hapticon.core.io.JsonString
-import org.hapticon.core.io.JsonValue
 import java.io.IOException
 import java.nio.ByteBuffer
 import java.nio.charset.CharacterCodingException
@@ -150,15 +150,15 @@ class CollectorServer(
         }
     }
 
-    private fun json(status: Int, vararg members: Pair<String, JsonValue>): Reply =
-        Reply(status, "application/json", (Json.encode(JsonObject(linkedMapOf(*members))) + "\n").toByteArray(Charsets.UTF_8))
+    private fun json(status: Int, vararg members: Pair<String, JsonElement>): Reply =
+        Reply(status, "application/json", (SchemaJson.encodeElement(JsonObject(linkedMapOf(*members))) + "\n").toByteArray(Charsets.UTF_8))
 
     private fun error(status: Int, message: String, line: Int? = null): Reply =
-        if (line == null) json(status, "error" to JsonString(message)) else json(status, "error" to JsonString(message), "line" to JsonNumber(line.toDouble()))
+        if (line == null) json(status, "error" to JsonPrimitive(message)) else json(status, "error" to JsonPrimitive(message), "line" to shortNumber(line.toDouble()))
 
     private fun health(request: Request): Reply {
         if (request.method != "GET") return error(405, "use GET")
-        return if (store.isHealthy()) json(200, "status" to JsonString("ok")) else error(503, "database unavailable")
+        return if (store.isHealthy()) json(200, "status" to JsonPrimitive("ok")) else error(503, "database unavailable")
     }
 
     private fun upload(request: Request, response: Response, callback: Callback) {
@@ -192,8 +192,8 @@ class CollectorServer(
             val upload = ResultRows.parse(text, studyId)
             val outcome = store.store(upload.rows, upload.lines)
             json(
-                200, "study_id" to JsonString(studyId), "rows" to JsonNumber(upload.rows.size.toDouble()),
-                "inserted" to JsonNumber(outcome.inserted.toDouble()), "unchanged" to JsonNumber(outcome.unchanged.toDouble()),
+                200, "study_id" to JsonPrimitive(studyId), "rows" to shortNumber(upload.rows.size.toDouble()),
+                "inserted" to shortNumber(outcome.inserted.toDouble()), "unchanged" to shortNumber(outcome.unchanged.toDouble()),
             )
         } catch (e: InvalidUploadException) {
             error(400, e.message.orEmpty(), e.line)

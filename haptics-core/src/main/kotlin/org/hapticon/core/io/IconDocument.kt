@@ -31,7 +31,7 @@ internal class IconDocument(
  * A double written as an integer when it is one within ±2^53 (`57`, not `57.0`), as icons have always been
  * written: messages and files stay byte-identical to those of earlier builds. Reads either spelling.
  */
-internal object ShortDouble : KSerializer<Double> {
+public object ShortDouble : KSerializer<Double> {
     override val descriptor: SerialDescriptor = PrimitiveSerialDescriptor("org.hapticon.ShortDouble", PrimitiveKind.DOUBLE)
 
     override fun serialize(encoder: Encoder, value: Double) {

@@ -16,10 +16,10 @@ import org.hapticon.core.IconValidationException
  */
 public object IconJson {
     /** The value of the `schema` member. */
-    public const val SCHEMA: String = "hapticon.icon"
+    public const val SCHEMA: String = HapticFormats.ICON_SCHEMA
 
     /** The schema version this build writes, and the newest it reads. */
-    public const val VERSION: Int = 1
+    public const val VERSION: Int = HapticFormats.ICON_VERSION
 
     /** [icon] as a JSON object with members in schema order. Does not throw. */
     public fun toJsonValue(icon: HapticIcon): JsonObject = SchemaJson.encodeToElement(IconDocument.serializer(), document(icon)).toJsonValue() as JsonObject
@@ -31,8 +31,15 @@ public object IconJson {
      * `schema` is not [SCHEMA], when `version` is newer than [VERSION] ("unsupported icon schema version 2"),
      * or when a member is missing, of the wrong type, not finite, or out of range.
      */
-    public fun fromJsonValue(value: JsonValue): HapticIcon {
-        val doc = SchemaJson.decode(IconDocument.serializer(), value.toJsonElement(), IconReport)
+    public fun fromJsonValue(value: JsonValue): HapticIcon = fromJsonElement(value.toJsonElement())
+
+    /** [icon] as a kotlinx JSON object with members in schema order (whole numbers without a fraction). Does not throw. */
+    public fun toJsonElement(icon: HapticIcon): kotlinx.serialization.json.JsonObject =
+        SchemaJson.encodeToElement(IconDocument.serializer(), document(icon)) as kotlinx.serialization.json.JsonObject
+
+    /** The icon [element] describes; throws [IconValidationException] as [fromJsonValue] does. */
+    public fun fromJsonElement(element: kotlinx.serialization.json.JsonElement): HapticIcon {
+        val doc = SchemaJson.decode(IconDocument.serializer(), element, IconReport)
         if (doc.count !in 1L..HapticIcon.MAX_COUNT.toLong()) fail("count", "must be in 1..${HapticIcon.MAX_COUNT}, was ${doc.count}")
         return HapticIcon(doc.name, doc.attack, doc.sustain, doc.level, doc.release, doc.note, doc.period, doc.count.toInt())
     }

@@ -52,7 +52,7 @@ public object Json {
     public fun decodeUtf8AllowingTrailingCommas(bytes: ByteArray, maxLength: Int = DEFAULT_MAX_LENGTH): JsonValue =
         decodeUtf8(bytes, maxLength, DEFAULT_MAX_DEPTH, allowTrailingCommas = true)
 
-    private fun decodeUtf8(bytes: ByteArray, maxLength: Int, maxDepth: Int, allowTrailingCommas: Boolean): JsonValue {
+    internal fun decodeUtf8(bytes: ByteArray, maxLength: Int, maxDepth: Int, allowTrailingCommas: Boolean): JsonValue {
         checkLimits(maxLength, maxDepth)
         if (bytes.size > maxLength) {
             throw JsonException("input of ${bytes.size} bytes exceeds the limit of $maxLength", maxLength)

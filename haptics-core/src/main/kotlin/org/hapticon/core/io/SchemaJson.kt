@@ -8,6 +8,7 @@ import kotlinx.serialization.descriptors.SerialDescriptor
 import kotlinx.serialization.descriptors.StructureKind
 import kotlinx.serialization.json.JsonElement
 import kotlinx.serialization.json.JsonPrimitive
+import kotlinx.serialization.json.JsonUnquotedLiteral
 import kotlinx.serialization.json.doubleOrNull
 import kotlinx.serialization.json.Json as KotlinxJson
 import kotlinx.serialization.json.JsonArray as KArray
@@ -55,6 +56,25 @@ public object SchemaJson {
         }
         return pretty.encodeToString(serializer, value)
     }
+
+    /**
+     * Parses UTF-8 [bytes] with the strict reader ([Json.decodeUtf8]: size, depth, duplicate names, surrogates,
+     * offsets) into a kotlinx tree. [allowTrailingCommas] accepts a comma before `]` or `}` (the same liberty as
+     * kotlinx's `Json { allowTrailingComma = true }`), for AHAP files as Apple writes them. Throws [JsonException].
+     */
+    public fun parseUtf8(
+        bytes: ByteArray,
+        maxLength: Int = Json.DEFAULT_MAX_LENGTH,
+        maxDepth: Int = Json.DEFAULT_MAX_DEPTH,
+        allowTrailingCommas: Boolean = false,
+    ): JsonElement = Json.decodeUtf8(bytes, maxLength, maxDepth, allowTrailingCommas).toJsonElement()
+
+    /** Parses [text] with the strict reader ([Json.decode]) into a kotlinx tree. Throws [JsonException]. */
+    public fun parse(text: String, maxLength: Int = Json.DEFAULT_MAX_LENGTH, maxDepth: Int = Json.DEFAULT_MAX_DEPTH): JsonElement =
+        Json.decode(text, maxLength, maxDepth).toJsonElement()
+
+    /** [element] as JSON text, compact or indented as [encode] writes it. */
+    public fun encodeElement(element: JsonElement, indent: String = ""): String = encode(JsonElement.serializer(), element, indent)
 
     /** [value] as a kotlinx tree (members in schema order). */
     public fun <T> encodeToElement(serializer: SerializationStrategy<T>, value: T): JsonElement =
@@ -156,6 +176,28 @@ public object SchemaJson {
     private const val MAX_EXACT = 9.007199254740992E15
 }
 
+/**
+ * [value] as a JSON number spelled as our formats always spelled it: a whole number within ±2^53 without a
+ * fraction (`57`, `-0`), anything else as [Double.toString] writes it (`0.27`, `7.8125E-4`), which kotlinx
+ * writes unchanged. Keeps files and messages byte-identical to those of earlier builds. Throws
+ * [IllegalArgumentException] for NaN or ±infinity (JSON has no spelling for them).
+ */
+@OptIn(ExperimentalSerializationApi::class)
+public fun shortNumber(value: Double): JsonPrimitive {
+    require(value.isFinite()) { "JSON cannot represent $value" }
+    return when {
+        value != Math.rint(value) || Math.abs(value) > 9.007199254740992E15 -> JsonPrimitive(value)
+        value == 0.0 && 1.0 / value < 0 -> JsonUnquotedLiteral("-0")
+        else -> JsonPrimitive(value.toLong())
+    }
+}
+
+/** [value] as a JSON integer. Does not throw. */
+public fun shortNumber(value: Long): JsonPrimitive = JsonPrimitive(value)
+
+/** [value] as a JSON integer. Does not throw. */
+public fun shortNumber(value: Int): JsonPrimitive = JsonPrimitive(value)
+
 /** What a schema member holds, as [SchemaJson.check] sees it. */
 public enum class JsonKind {
     /** A JSON string. */
@@ -234,3 +276,6 @@ public fun JsonValue.toJsonElement(): JsonElement = when (this) {
     is JsonBoolean -> JsonPrimitive(value)
     JsonNull -> KNull
 }
+
+/** [element] as short JSON for an error message, as [snippet] of a [JsonValue] writes it. */
+internal fun snippet(element: JsonElement): String = snippet(element.toJsonValue())

@@ -1,11 +1,12 @@
 package org.hapticon.core.pattern
 
-import org.hapticon.core.io.Json
-import org.hapticon.core.io.JsonArray
-import org.hapticon.core.io.JsonNumber
-import org.hapticon.core.io.JsonObject
-import org.hapticon.core.io.JsonString
-import org.hapticon.core.io.JsonValue
+import kotlinx.serialization.json.JsonArray
+import kotlinx.serialization.json.JsonElement
+import kotlinx.serialization.json.JsonObject
+import kotlinx.serialization.json.JsonPrimitive
+import org.hapticon.core.io.HapticFormats
+import org.hapticon.core.io.SchemaJson
+import org.hapticon.core.io.shortNumber
 import java.util.Locale
 import kotlin.math.abs
 import kotlin.math.sqrt
@@ -50,15 +51,15 @@ public object Ahap {
      * (`Pattern[3].Event.EventDuration: missing`) or [org.hapticon.core.io.JsonException] for malformed JSON.
      */
     public fun read(bytes: ByteArray, name: String, mapping: FrequencyMapping = FrequencyMapping.DEFAULT): PatternImport {
-        val root = Json.decodeUtf8AllowingTrailingCommas(bytes).asObject("AHAP")
+        val root = SchemaJson.parseUtf8(bytes, allowTrailingCommas = true).asObject("AHAP")
         root["Version"]?.asNumber("Version")
         val notes = ArrayList<String>()
         val continuous = ArrayList<ContinuousEvent>()
         val taps = ArrayList<Pair<Double, Pair<Double, Double>>>()
         val controls = mapOf(INTENSITY_CONTROL to ArrayList<ControlCurve>(), SHARPNESS_CONTROL to ArrayList())
         for ((path, entry) in root["Pattern"].asArray("Pattern").objects("Pattern")) {
-            val kinds = entry.members.keys.filter { it in ENTRY_KINDS }
-            if (kinds.size != 1) fail(path, "expected exactly one of Event, Parameter, ParameterCurve; got ${entry.members.keys}")
+            val kinds = entry.keys.filter { it in ENTRY_KINDS }
+            if (kinds.size != 1) fail(path, "expected exactly one of Event, Parameter, ParameterCurve; got ${entry.keys}")
             val kind = kinds.single()
             val body = entry[kind].asObject("$path.$kind")
             val at = "$path.$kind"
@@ -100,10 +101,10 @@ public object Ahap {
     /** [pattern] as AHAP text, with notes on what the format could not keep (frequencies outside [mapping]). */
     public fun write(pattern: HapticPattern, mapping: FrequencyMapping = FrequencyMapping.DEFAULT): PatternExport {
         val notes = ArrayList<String>()
-        val entries = ArrayList<JsonValue>()
+        val entries = ArrayList<JsonElement>()
         if (pattern.amplitude.isNotEmpty()) {
             val start = pattern.amplitude.first().time
-            entries += entry("Event", "Time" to num(start), "EventType" to JsonString("HapticContinuous"),
+            entries += entry("Event", "Time" to num(start), "EventType" to JsonPrimitive("HapticContinuous"),
                 "EventDuration" to num(pattern.continuousDuration - start),
                 "EventParameters" to params("HapticIntensity" to 1.0, "HapticSharpness" to 0.0))
             entries += curves(INTENSITY_CONTROL, densify(pattern.amplitude.map { it.time to it.amplitude }, ::sqrt, { it * it }, { AMPLITUDE_TOLERANCE }))
@@ -113,15 +114,15 @@ public object Ahap {
             entries += curves(SHARPNESS_CONTROL, densify(frequency, mapping::sharpnessOf, mapping::hertzOfSharpness) { it * FREQUENCY_TOLERANCE })
         }
         for (tap in pattern.transients) {
-            entries += entry("Event", "Time" to num(tap.time), "EventType" to JsonString("HapticTransient"),
+            entries += entry("Event", "Time" to num(tap.time), "EventType" to JsonPrimitive("HapticTransient"),
                 "EventParameters" to params("HapticIntensity" to tap.intensity, "HapticSharpness" to tap.sharpness))
         }
         val root = JsonObject(linkedMapOf(
-            "Version" to num(1.0),
-            "Metadata" to JsonObject(linkedMapOf("Project" to JsonString(pattern.name), "Created" to JsonString("Hapticon"))),
+            "Version" to num(HapticFormats.AHAP_VERSION.toDouble()),
+            "Metadata" to JsonObject(linkedMapOf("Project" to JsonPrimitive(pattern.name), "Created" to JsonPrimitive("Hapticon"))),
             "Pattern" to JsonArray(entries),
         ))
-        return PatternExport(Json.encode(root, "  ") + "\n", notes)
+        return PatternExport(SchemaJson.encodeElement(root, "  ") + "\n", notes)
     }
 
     private fun readEvent(
@@ -166,27 +167,27 @@ public object Ahap {
     }
 
     // Curves of at most MAX_CURVE_POINTS points; each further curve begins with the previous one's last point.
-    private fun curves(id: String, points: List<Pair<Double, Double>>): List<JsonValue> {
-        val out = ArrayList<JsonValue>()
+    private fun curves(id: String, points: List<Pair<Double, Double>>): List<JsonElement> {
+        val out = ArrayList<JsonElement>()
         var from = 0
         while (true) {
             val to = minOf(points.size, from + MAX_CURVE_POINTS)
             val chunk = points.subList(from, to)
             val start = chunk.first().first
-            out += entry("ParameterCurve", "ParameterID" to JsonString(id), "Time" to num(start),
+            out += entry("ParameterCurve", "ParameterID" to JsonPrimitive(id), "Time" to num(start),
                 "ParameterCurveControlPoints" to JsonArray(chunk.map { (t, v) -> JsonObject(linkedMapOf("Time" to num(t - start), "ParameterValue" to num(v))) }))
             if (to == points.size) return out
             from = to - 1
         }
     }
 
-    private fun entry(kind: String, vararg members: Pair<String, JsonValue>): JsonValue =
+    private fun entry(kind: String, vararg members: Pair<String, JsonElement>): JsonElement =
         JsonObject(linkedMapOf(kind to JsonObject(linkedMapOf(*members))))
 
-    private fun params(vararg values: Pair<String, Double>): JsonValue =
-        JsonArray(values.map { (id, v) -> JsonObject(linkedMapOf("ParameterID" to JsonString(id), "ParameterValue" to num(v))) })
+    private fun params(vararg values: Pair<String, Double>): JsonElement =
+        JsonArray(values.map { (id, v) -> JsonObject(linkedMapOf("ParameterID" to JsonPrimitive(id), "ParameterValue" to num(v))) })
 
-    private fun num(x: Double): JsonValue = JsonNumber(x)
+    private fun num(x: Double): JsonElement = shortNumber(x)
 
     // Written curves stay within these of the pattern (absolute amplitude, relative frequency).
     private const val AMPLITUDE_TOLERANCE = 0.004

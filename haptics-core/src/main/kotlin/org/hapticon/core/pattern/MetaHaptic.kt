@@ -1,11 +1,12 @@
 package org.hapticon.core.pattern
 
-import org.hapticon.core.io.Json
-import org.hapticon.core.io.JsonArray
-import org.hapticon.core.io.JsonNumber
-import org.hapticon.core.io.JsonObject
-import org.hapticon.core.io.JsonString
-import org.hapticon.core.io.JsonValue
+import kotlinx.serialization.json.JsonArray
+import kotlinx.serialization.json.JsonElement
+import kotlinx.serialization.json.JsonObject
+import kotlinx.serialization.json.JsonPrimitive
+import org.hapticon.core.io.HapticFormats
+import org.hapticon.core.io.SchemaJson
+import org.hapticon.core.io.shortNumber
 import java.util.Locale
 import kotlin.math.abs
 import kotlin.math.sqrt
@@ -30,7 +31,7 @@ import kotlin.math.sqrt
  */
 public object MetaHaptic {
     /** The data-model major version this build reads and writes. */
-    public const val MAJOR_VERSION: Int = 1
+    public const val MAJOR_VERSION: Int = HapticFormats.HAPTIC_MAJOR_VERSION
 
     /**
      * The pattern in `.haptic` [bytes], named [name]. Throws [PatternException] naming the member
@@ -38,7 +39,7 @@ public object MetaHaptic {
      * [org.hapticon.core.io.JsonException] for malformed JSON.
      */
     public fun read(bytes: ByteArray, name: String, mapping: FrequencyMapping = FrequencyMapping.DEFAULT): PatternImport {
-        val root = Json.decodeUtf8(bytes).asObject("haptic")
+        val root = SchemaJson.parseUtf8(bytes).asObject("haptic")
         val version = root["version"].asObject("version")
         val major = version["major"].asNumber("version.major")
         version["minor"].asNumber("version.minor")
@@ -71,7 +72,7 @@ public object MetaHaptic {
         if (last <= first) fail(amplitudePath, "has zero duration (every breakpoint at $first s)")
         val frequencyPath = "$envelopesPath.frequency"
         val frequency = when (val f = envelopes["frequency"]) {
-            null, is org.hapticon.core.io.JsonNull -> {
+            null, is kotlinx.serialization.json.JsonNull -> {
                 notes += "no frequency envelope: the carrier stays at ${hz(mapping.hertzOf(0.5))}, the middle of the range"
                 listOf(FrequencyKey(0.0, mapping.hertzOf(0.5)))
             }
@@ -118,14 +119,14 @@ public object MetaHaptic {
             emphasis[index] = tap
         }
         val amplitude = keys.mapIndexed { i, key ->
-            val members = linkedMapOf<String, JsonValue>("time" to JsonNumber(key.time), "amplitude" to JsonNumber(key.amplitude))
+            val members = linkedMapOf<String, JsonElement>("time" to shortNumber(key.time), "amplitude" to shortNumber(key.amplitude))
             emphasis[i]?.let { tap ->
                 var strength = tap.intensity * tap.intensity
                 if (strength < key.amplitude) {
                     notes += "transient at ${seconds(tap.time)} raised to the breakpoint's amplitude ${"%.3f".format(Locale.ROOT, key.amplitude)}: an emphasis cannot be weaker"
                     strength = key.amplitude
                 }
-                members["emphasis"] = JsonObject(linkedMapOf("amplitude" to JsonNumber(strength), "frequency" to JsonNumber(tap.sharpness)))
+                members["emphasis"] = JsonObject(linkedMapOf("amplitude" to shortNumber(strength), "frequency" to shortNumber(tap.sharpness)))
             }
             JsonObject(members)
         }
@@ -135,17 +136,17 @@ public object MetaHaptic {
         val withStart = listOf(FrequencyKey(span.start, pattern.frequencyAt(span.start))).filter { inside.firstOrNull()?.time != span.start } + inside
         // `.haptic` interpolates the normalised frequency, which is logarithmic in Hz: add points where that strays.
         val frequency = densify(withStart.map { it.time to it.hertz.coerceIn(mapping.minHz, mapping.maxHz) }, mapping::normalizedOf, mapping::hertzOf) { it * 0.004 }
-            .map { (t, x) -> JsonObject(linkedMapOf("time" to JsonNumber(t), "frequency" to JsonNumber(x))) }
+            .map { (t, x) -> JsonObject(linkedMapOf("time" to shortNumber(t), "frequency" to shortNumber(x))) }
         val outside = pattern.frequency.count { it.hertz !in mapping }
         if (outside > 0) notes += "$outside frequency keys outside ${hz(mapping.minHz)}..${hz(mapping.maxHz)} clamped to the range"
         val root = JsonObject(linkedMapOf(
-            "version" to JsonObject(linkedMapOf("major" to JsonNumber(MAJOR_VERSION), "minor" to JsonNumber(0), "patch" to JsonNumber(0))),
-            "metadata" to JsonObject(linkedMapOf("editor" to JsonString("Hapticon"), "description" to JsonString(pattern.name))),
+            "version" to JsonObject(linkedMapOf("major" to shortNumber(MAJOR_VERSION.toDouble()), "minor" to shortNumber(0.0), "patch" to shortNumber(0.0))),
+            "metadata" to JsonObject(linkedMapOf("editor" to JsonPrimitive("Hapticon"), "description" to JsonPrimitive(pattern.name))),
             "signals" to JsonObject(linkedMapOf("continuous" to JsonObject(linkedMapOf("envelopes" to JsonObject(linkedMapOf(
                 "amplitude" to JsonArray(amplitude),
                 "frequency" to JsonArray(frequency),
             )))))),
         ))
-        return PatternExport(Json.encode(root, "  ") + "\n", notes)
+        return PatternExport(SchemaJson.encodeElement(root, "  ") + "\n", notes)
     }
 }

@@ -1,46 +1,49 @@
 package org.hapticon.core.pattern
 
-import org.hapticon.core.io.JsonArray
-import org.hapticon.core.io.JsonNumber
-import org.hapticon.core.io.JsonObject
-import org.hapticon.core.io.JsonString
-import org.hapticon.core.io.JsonValue
+import kotlinx.serialization.json.JsonArray
+import kotlinx.serialization.json.JsonElement
+import kotlinx.serialization.json.JsonNull
+import kotlinx.serialization.json.JsonObject
+import kotlinx.serialization.json.JsonPrimitive
+import kotlinx.serialization.json.doubleOrNull
 import org.hapticon.core.io.snippet
 import java.util.Locale
 
-// Typed member access for the pattern formats, failing with a PatternException that names the member's path.
+// Typed member access for the loose foreign formats (AHAP, Meta .haptic) over kotlinx trees, failing with a
+// PatternException that names the member's path. Hapticon's own pattern document is a @Serializable type (PatternJson).
 
 internal fun fail(path: String, message: String): Nothing = throw PatternException(path, message)
 
-internal fun JsonValue?.asObject(path: String): JsonObject = this as? JsonObject
+internal fun JsonElement?.asObject(path: String): JsonObject = this as? JsonObject
     ?: fail(path, if (this == null) "missing" else "expected an object, got ${snippet(this)}")
 
-internal fun JsonValue?.asArray(path: String): JsonArray = this as? JsonArray
+internal fun JsonElement?.asArray(path: String): JsonArray = this as? JsonArray
     ?: fail(path, if (this == null) "missing" else "expected an array, got ${snippet(this)}")
 
-internal fun JsonValue?.asNumber(path: String): Double {
-    val number = this as? JsonNumber ?: fail(path, if (this == null) "missing" else "expected a number, got ${snippet(this)}")
-    if (!number.value.isFinite()) fail(path, "must be finite")
-    return number.value
+internal fun JsonElement?.asNumber(path: String): Double {
+    val number = (this as? JsonPrimitive)?.takeUnless { it.isString || it is JsonNull }?.doubleOrNull
+        ?: fail(path, if (this == null) "missing" else "expected a number, got ${snippet(this)}")
+    if (!number.isFinite()) fail(path, "must be finite")
+    return number
 }
 
-internal fun JsonValue?.asString(path: String): String = (this as? JsonString)?.value
+internal fun JsonElement?.asString(path: String): String = (this as? JsonPrimitive)?.takeIf { it.isString }?.content
     ?: fail(path, if (this == null) "missing" else "expected a string, got ${snippet(this)}")
 
-internal fun JsonValue?.asTime(path: String): Double {
+internal fun JsonElement?.asTime(path: String): Double {
     val t = asNumber(path)
     if (t < 0.0) fail(path, "must be >= 0 seconds, was $t")
     return t
 }
 
-internal fun JsonValue?.asUnit(path: String): Double {
+internal fun JsonElement?.asUnit(path: String): Double {
     val x = asNumber(path)
     if (x !in 0.0..1.0) fail(path, "must be in [0, 1], was $x")
     return x
 }
 
 internal fun JsonArray.objects(path: String): List<Pair<String, JsonObject>> =
-    elements.mapIndexed { i, e -> "$path[$i]".let { it to e.asObject(it) } }
+    mapIndexed { i, e -> "$path[$i]".let { it to e.asObject(it) } }
 
 internal fun seconds(t: Double): String = String.format(Locale.ROOT, "%.3f s", t)
 

@@ -1,6 +1,6 @@
 package org.hapticon.core.pattern
 
-import org.hapticon.core.io.Json
+import org.hapticon.core.io.SchemaJson
 
 /** The pattern file formats, chosen by file extension. */
 public enum class PatternFormat(public val extension: String) {
@@ -31,7 +31,7 @@ public object PatternFiles {
      */
     public fun read(bytes: ByteArray, format: PatternFormat, name: String, mapping: FrequencyMapping = FrequencyMapping.DEFAULT): PatternImport =
         when (format) {
-            PatternFormat.JSON -> PatternJson.read(Json.decodeUtf8(bytes))
+            PatternFormat.JSON -> PatternJson.read(SchemaJson.parseUtf8(bytes))
             PatternFormat.AHAP -> Ahap.read(bytes, name, mapping)
             PatternFormat.HAPTIC -> MetaHaptic.read(bytes, name, mapping)
         }
@@ -39,7 +39,7 @@ public object PatternFiles {
     /** [pattern] as the text of a [format] file, with notes on anything the format could not keep. */
     public fun write(pattern: HapticPattern, format: PatternFormat, mapping: FrequencyMapping = FrequencyMapping.DEFAULT): PatternExport =
         when (format) {
-            PatternFormat.JSON -> PatternExport(Json.encode(PatternJson.toJsonValue(pattern), "  ") + "\n", emptyList())
+            PatternFormat.JSON -> PatternExport(PatternJson.encode(pattern, "  ") + "\n", emptyList())
             PatternFormat.AHAP -> Ahap.write(pattern, mapping)
             PatternFormat.HAPTIC -> MetaHaptic.write(pattern, mapping)
         }

@@ -128,7 +128,7 @@ public class EndToEnd(
 
     public companion object {
         /** `schema` of a sealed payload. */
-        public const val SCHEMA: String = "hapticon.sealed"
+        public const val SCHEMA: String = org.hapticon.messaging.WireFormats.SEALED_SCHEMA
 
         // Exactly the form seal writes; base64 has nothing to escape. Linear to match, whatever the input.
         private val SEALED = Regex(
