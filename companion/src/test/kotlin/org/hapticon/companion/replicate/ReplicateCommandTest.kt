@@ -110,6 +110,7 @@ class ReplicateCommandTest {
         val text = bytes.toString("UTF-8")
         assertTrue(text, text.contains("combined (11 classes)          74.1 %"))
         assertTrue(text, text.contains("data: 2 simulated people"))
+        assertTrue(text, text.contains("the 31st feature per channel (number of peaks) is our reading"))
     }
 
     @Test
