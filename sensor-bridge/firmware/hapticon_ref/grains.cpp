@@ -4,12 +4,13 @@
 
 namespace hgr {
 
-GrainParams defaultParams() {
+GrainParams defaultParams(uint8_t adcBits) {
   GrainParams p;
   p.grains = 24;
   p.distribution = LINEAR;
   p.minForce = 0;
-  p.maxForce = 1023;
+  // The raw channel's full scale, as the device info announces it (adcBits 1..16).
+  p.maxForce = adcBits >= 16 ? 0xFFFF : (uint16_t)((1u << adcBits) - 1);
   p.electrodeBits = 0x1FF;
   for (uint8_t i = 0; i < ELECTRODES; i++) p.steps[i] = 0;
   p.cutoffDeciHz = 200;
@@ -52,7 +53,28 @@ bool parseParams(const uint8_t* b, size_t length, GrainParams& p) {
   return true;
 }
 
-GrainRenderer::GrainRenderer() : grainStart_(0), fired_(0) { configure(defaultParams(), 1000); }
+ParamError validate(const Stimulus& s) {
+  if (s.electrode >= ELECTRODES) return BAD_ELECTRODE;
+  if (s.step > AMPLITUDE_STEPS) return STEP_ABOVE_CAP;
+  if (s.millis == 0 || s.millis > MAX_STIMULUS_MILLIS) return BAD_DURATION;
+  return PARAMS_OK;
+}
+
+bool parseStimulus(const uint8_t* b, size_t length, Stimulus& s) {
+  if (length != STIMULUS_LENGTH) return false;
+  s.electrode = b[0];
+  s.step = b[1];
+  s.millis = (uint16_t)(b[2] | (b[3] << 8));
+  return true;
+}
+
+GrainRenderer::GrainRenderer()
+    : grainStart_(0), fired_(0), stimulus_(IDLE), stimStart_(0), stimPulses_(0), stimNext_(0) {
+  stim_.electrode = 0;
+  stim_.step = 0;
+  stim_.millis = 0;
+  configure(defaultParams(), 1000);
+}
 
 static float shape(uint8_t distribution, float x) {
   switch (distribution) {
@@ -105,6 +127,11 @@ bool GrainRenderer::offer(uint32_t nowMicros, uint16_t force) {
     filtered_ += alpha_ * ((float)force - filtered_);
   }
   int16_t bin = binOf(filtered_);
+  if (stimulus_ != IDLE) {
+    // A calibration stimulus has the array: follow the force without firing.
+    reference_ = bin;
+    return false;
+  }
   if (reference_ < 0) {
     reference_ = bin;
     return false;
@@ -122,8 +149,29 @@ bool GrainRenderer::offer(uint32_t nowMicros, uint16_t force) {
   return true;
 }
 
+void GrainRenderer::stimulate(const Stimulus& s) {
+  stim_ = s;
+  // One pulse per started 8 ms period: 200 ms is 25 pulses, the last at 192 ms.
+  stimPulses_ = (uint16_t)(((uint32_t)s.millis * 1000 + PULSE_PERIOD_MICROS - 1) / PULSE_PERIOD_MICROS);
+  stimNext_ = 0;
+  stimulus_ = PENDING;
+  playing_ = false;  // a grain in progress gives way
+}
+
 uint8_t GrainRenderer::service(uint32_t nowMicros, Stimulator& out) {
   uint8_t emitted = 0;
+  if (stimulus_ == PENDING) {
+    stimStart_ = nowMicros;
+    stimulus_ = PLAYING;
+  }
+  while (stimulus_ == PLAYING) {
+    uint32_t onset = stimStart_ + (uint32_t)stimNext_ * PULSE_PERIOD_MICROS;
+    if ((int32_t)(nowMicros - onset) < 0) return emitted;
+    uint8_t step = stim_.step > AMPLITUDE_STEPS ? AMPLITUDE_STEPS : stim_.step;
+    out.pulse(stim_.electrode, step, onset);
+    emitted++;
+    if (++stimNext_ >= stimPulses_) stimulus_ = IDLE;
+  }
   while (playing_) {
     uint8_t p = (uint8_t)(nextPulse_ / active_), j = (uint8_t)(nextPulse_ % active_);
     uint32_t onset = grainStart_ + p * PULSE_PERIOD_MICROS + (uint32_t)j * SLOT_MICROS;

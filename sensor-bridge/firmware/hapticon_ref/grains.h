@@ -35,6 +35,8 @@ enum ParamError {
   STEP_ABOVE_CAP = 5,
   BAD_CUTOFF = 6,
   BAD_GRAIN_LENGTH = 7,
+  BAD_ELECTRODE = 8,
+  BAD_DURATION = 9,
 };
 
 struct GrainParams {
@@ -52,15 +54,36 @@ struct GrainParams {
 // grain length u16 (little-endian).
 const size_t PARAMS_LENGTH = 21;
 
-// The study's defaults: 24 grains, linear, the whole 10-bit range, the large square at step 0 (nothing is
-// felt until the host sends a calibrated level), 20 Hz, 20 ms.
-GrainParams defaultParams();
+// The study's defaults: 24 grains, linear, the ADC's whole range (0..2^adcBits - 1, raw counts), the large
+// square at step 0 (nothing is felt until the host sends a calibrated level), 20 Hz, 20 ms.
+GrainParams defaultParams(uint8_t adcBits = 10);
 
 // Checks p against the hard limits for a sensor sampled at sampleRateHz.
 ParamError validate(const GrainParams& p, uint32_t sampleRateHz);
 
 // Parses a SET_GRAINS payload; false when its length is wrong.
 bool parseParams(const uint8_t* payload, size_t length, GrainParams& out);
+
+// One calibration stimulus (Shaping Compliance: each electrode alone, 200 ms, rising from 0.8 mA until clear
+// and pain-free): the grain's pulses (200 us, anodic) every 8 ms (125 Hz) for millis on one electrode. One
+// electrode is the point of it, so the 4-electrode minimum of grains does not apply; the 2.7 mA cap does.
+struct Stimulus {
+  uint8_t electrode;  // 0..ELECTRODES - 1
+  uint8_t step;       // 0..AMPLITUDE_STEPS
+  uint16_t millis;    // 1..MAX_STIMULUS_MILLIS
+};
+
+// The longest stimulus a command may ask for (the paper's is 200 ms): a stuck host cannot hold a current on.
+const uint16_t MAX_STIMULUS_MILLIS = 1000;
+
+// Bytes of a STIMULATE payload: electrode, step, duration u16 (little-endian, ms).
+const size_t STIMULUS_LENGTH = 4;
+
+// Checks s against the hard limits (electrode, 2.7 mA cap, duration).
+ParamError validate(const Stimulus& s);
+
+// Parses a STIMULATE payload; false when its length is wrong.
+bool parseStimulus(const uint8_t* payload, size_t length, Stimulus& out);
 
 // Where pulses go: the board's current source and electrode switches. step is 0..AMPLITUDE_STEPS.
 class Stimulator {
@@ -80,6 +103,11 @@ class GrainRenderer {
   void configure(const GrainParams& p, uint32_t sampleRateHz);
   // One force sample at nowMicros; true when a grain starts (its pulses begin at nowMicros).
   bool offer(uint32_t nowMicros, uint16_t force);
+  // Plays s (already validated) from the next service() on, in place of any grain: grains are held off
+  // (the reference bin follows the force silently) until it ends, so a press meanwhile fires nothing.
+  void stimulate(const Stimulus& s);
+  // True while a stimulus is pending or playing.
+  bool stimulating() const { return stimulus_ != IDLE; }
   // Emits every pulse due by nowMicros, in time order; returns how many.
   uint8_t service(uint32_t nowMicros, Stimulator& out);
   // The bin of filtered force f (0..grains).
@@ -101,6 +129,12 @@ class GrainRenderer {
   uint32_t grainStart_;
   uint8_t nextPulse_;  // index into the grain's PULSES_PER_GRAIN * active_ pulses
   uint32_t fired_;
+  enum StimulusState { IDLE, PENDING, PLAYING };
+  StimulusState stimulus_;
+  Stimulus stim_;
+  uint32_t stimStart_;
+  uint16_t stimPulses_;  // pulses of the stimulus: one per started 8 ms of its length
+  uint16_t stimNext_;
 };
 
 }  // namespace hgr

@@ -14,8 +14,8 @@
 // active electrode as anode against the common return) at the amplitude set on AMPLITUDE_PIN. The
 // decision and the first pulse happen in the same loop() pass as the sample, so force to pulse takes
 // one sample period plus the filter (well under 25 ms); the host sends calibrated levels and the
-// condition (grains, distribution, electrodes) with SET_GRAINS. Until it does, every step is 0 and no
-// current flows.
+// condition (grains, distribution, electrodes) with SET_GRAINS, and each calibration stimulus (one
+// electrode, 200 ms) with STIMULATE. Until it does, every step is 0 and no current flows.
 //
 // The protocol logic lives in hfp.*, hfp_device.* and grains.* (plain C++, tested on the host by
 // ../test/run.sh); this file only binds it to the board.
@@ -115,7 +115,7 @@ void setup() {
   Serial.begin(HFP_BAUD);
   outputs.attach();
   electrodes.attach();
-  grains.configure(hgr::defaultParams(), HFP_SAMPLE_RATE_HZ);
+  grains.configure(hgr::defaultParams(ADC_BITS), HFP_SAMPLE_RATE_HZ);
   device.begin();
 }
 

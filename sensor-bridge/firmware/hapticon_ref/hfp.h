@@ -20,6 +20,7 @@ const uint8_t TYPE_SET_OUTPUTS = 0x10;
 const uint8_t TYPE_REQUEST_INFO = 0x11;
 const uint8_t TYPE_SET_SAMPLE_RATE = 0x12;
 const uint8_t TYPE_SET_GRAINS = 0x13;  // compliance-grain parameters (grains.h), 21-byte payload
+const uint8_t TYPE_STIMULATE = 0x14;   // one calibration stimulus on one electrode (grains.h), 4-byte payload
 
 // Acknowledgement status: ACK_OK accepts a command, the others reject it (NACK) and say why.
 const uint8_t ACK_OK = 0;

@@ -35,6 +35,9 @@ void Device::handle(const Frame& frame) {
     case TYPE_SET_GRAINS:
       if (grains_ == 0) return ack(frame.sequence, NACK_UNKNOWN_COMMAND, frame.type);
       return setGrains(frame);
+    case TYPE_STIMULATE:
+      if (grains_ == 0) return ack(frame.sequence, NACK_UNKNOWN_COMMAND, frame.type);
+      return stimulate(frame);
     case TYPE_REQUEST_INFO:
       if (frame.payloadLength != 0) return ack(frame.sequence, NACK_MALFORMED, 0);
       return sendDeviceInfo();
@@ -84,6 +87,15 @@ void Device::setGrains(const Frame& frame) {
   hgr::ParamError error = hgr::validate(params, sampleRateHz_);
   if (error != hgr::PARAMS_OK) return ack(frame.sequence, NACK_OUT_OF_RANGE, (uint8_t)error);
   grains_->configure(params, sampleRateHz_);
+  ack(frame.sequence, ACK_OK, 0);
+}
+
+void Device::stimulate(const Frame& frame) {
+  hgr::Stimulus stimulus;
+  if (!hgr::parseStimulus(frame.payload, frame.payloadLength, stimulus)) return ack(frame.sequence, NACK_MALFORMED, 0);
+  hgr::ParamError error = hgr::validate(stimulus);
+  if (error != hgr::PARAMS_OK) return ack(frame.sequence, NACK_OUT_OF_RANGE, (uint8_t)error);
+  grains_->stimulate(stimulus);
   ack(frame.sequence, ACK_OK, 0);
 }
 

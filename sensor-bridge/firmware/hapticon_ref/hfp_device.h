@@ -42,8 +42,8 @@ struct DeviceConfig {
 
 class Device {
  public:
-  // grains, when given, renders compliance grains stand-alone and takes SET_GRAINS updates; without it
-  // SET_GRAINS is NACKed as unknown.
+  // grains, when given, renders compliance grains stand-alone and takes SET_GRAINS updates and STIMULATE
+  // calibration stimuli; without it both are NACKed as unknown.
   Device(const DeviceConfig& config, ByteSink& sink, OutputDriver& outputs, uint16_t firstSequence = 0,
          hgr::GrainRenderer* grains = 0);
 
@@ -67,6 +67,7 @@ class Device {
   void setOutputs(const Frame& frame);
   void setSampleRate(const Frame& frame);
   void setGrains(const Frame& frame);
+  void stimulate(const Frame& frame);
   void ack(uint16_t sequence, uint8_t status, uint8_t detail);
   void send();
 

@@ -142,9 +142,87 @@ void parseParams_readsTheLittleEndianPayload() {
   CHECK(!hgr::parseParams(payload, sizeof(payload) - 1, p));
 }
 
+// A 20 s linear press across a raw ADC's whole range (0..2^bits - 1) with the default range for those bits:
+// 9/19/39 grains each fire exactly, for a 10-bit and a 12-bit board alike.
+void defaultRange_followsTheAdcBits() {
+  CHECK(hgr::defaultParams(10).maxForce == 1023);
+  CHECK(hgr::defaultParams(12).maxForce == 4095);
+  CHECK(hgr::defaultParams(16).maxForce == 65535);
+  const uint8_t bits[] = {10, 12};
+  const uint8_t counts[] = {9, 19, 39};
+  for (size_t b = 0; b < sizeof(bits); b++) {
+    uint32_t full = (1u << bits[b]) - 1;
+    for (size_t i = 0; i < sizeof(counts); i++) {
+      hgr::GrainParams p = hgr::defaultParams(bits[b]);
+      p.grains = counts[i];
+      hgr::GrainRenderer renderer;
+      renderer.configure(p, 1000);
+      RecordingStimulator out;
+      uint32_t fired = 0;
+      for (uint32_t k = 0; k < 21000; k++) {
+        uint16_t force = (uint16_t)(k < 20000 ? k * full / 19999 : full);
+        if (renderer.offer(k * 1000, force)) fired++;
+        for (uint32_t t = k * 1000; t < (k + 1) * 1000; t += 250) renderer.service(t, out);
+      }
+      CHECK(fired == counts[i]);
+    }
+  }
+}
+
+void stimulus_isOneElectrodeEvery8msFor200ms_andHoldsGrainsOff() {
+  hgr::GrainRenderer renderer;
+  renderer.configure(params(39, hgr::LINEAR, 0x1FF), 1000);
+  RecordingStimulator out;
+  hgr::Stimulus s = {4, 200, 200};
+  CHECK(hgr::validate(s) == hgr::PARAMS_OK);
+  renderer.stimulate(s);
+  CHECK(renderer.stimulating());
+  uint32_t fired = 0;
+  // Starts at the first service() after the command; a full press meanwhile (0 to 1000 by 190 ms, then
+  // held) fires no grain, not even when the stimulus ends.
+  for (uint32_t t = 3000; t < 400000; t += 50) {
+    if (t % 1000 == 0 && renderer.offer(t, (uint16_t)(t < 190000 ? t / 190 : 1000))) fired++;
+    renderer.service(t, out);
+  }
+  CHECK(fired == 0);
+  CHECK(!renderer.stimulating());
+  CHECK(out.pulses.size() == 25);  // 200 ms at 125 Hz: pulses at 0, 8, ..., 192 ms
+  for (size_t i = 0; i < out.pulses.size(); i++) {
+    CHECK(out.pulses[i].electrode == 4);
+    CHECK(out.pulses[i].step == 200);
+    CHECK(out.pulses[i].onset == 3000 + i * 8000);
+  }
+  // After it, grains fire again: a release crosses bins.
+  for (uint32_t t = 400000; t < 500000 && fired == 0; t += 1000) fired += renderer.offer(t, 0) ? 1 : 0;
+  CHECK(fired == 1);
+}
+
+void stimulus_limits_atJustPast() {
+  hgr::Stimulus s = {8, 200, 1000};  // last electrode, 2.7 mA, the longest allowed
+  CHECK(hgr::validate(s) == hgr::PARAMS_OK);
+  s.electrode = 9;
+  CHECK(hgr::validate(s) == hgr::BAD_ELECTRODE);
+  s.electrode = 0;
+  s.step = 201;
+  CHECK(hgr::validate(s) == hgr::STEP_ABOVE_CAP);
+  s.step = 60;
+  s.millis = 1001;
+  CHECK(hgr::validate(s) == hgr::BAD_DURATION);
+  s.millis = 0;
+  CHECK(hgr::validate(s) == hgr::BAD_DURATION);
+  const uint8_t payload[hgr::STIMULUS_LENGTH] = {3, 60, 0xc8, 0x00};
+  hgr::Stimulus parsed;
+  CHECK(hgr::parseStimulus(payload, sizeof(payload), parsed));
+  CHECK(parsed.electrode == 3 && parsed.step == 60 && parsed.millis == 200);
+  CHECK(!hgr::parseStimulus(payload, sizeof(payload) - 1, parsed));
+}
+
 }  // namespace
 
 int main() {
+  defaultRange_followsTheAdcBits();
+  stimulus_isOneElectrodeEvery8msFor200ms_andHoldsGrainsOff();
+  stimulus_limits_atJustPast();
   slowFullPress_firesExactlyTheRequestedGrains();
   grain_scansEachElectrode250usApartTwiceAt125Hz();
   stepPress_firstPulseWithin25ms();

@@ -4,6 +4,7 @@
 #include <string.h>
 
 #include "Arduino.h"
+#include "grains.h"
 #include "hfp.h"
 
 void setup();
@@ -133,7 +134,35 @@ int main() {
   for (int e = 0; e < 9; e++) CHECK(electrodePulses[electrodePins[e]] == expected[e]);
   CHECK(maxAmplitude == 255);  // step 200 = full scale = 2.7 mA
   CHECK(lastAmplitude == 0);
-  printf("sketch_test: %d infos, %d samples, %d acks, %d grain pulses, %d failed\n", infos, samples, acks,
-         electrodePulses[7] + electrodePulses[8] + electrodePulses[10] + electrodePulses[11], failures);
+  int grainPulses = electrodePulses[7] + electrodePulses[8] + electrodePulses[10] + electrodePulses[11];
+
+  // STIMULATE, sequence 12: electrode 2 (pin 9) alone at step 60 (0.81 mA) for 200 ms, as one calibration
+  // stimulus; then sequence 13 asks for step 201, one past the 2.7 mA cap, and is refused with nothing driven.
+  const uint8_t stimuli[2][4] = {{2, 60, 0xc8, 0x00}, {2, 201, 0xc8, 0x00}};
+  Serial.tx.clear();
+  for (int c = 0; c < 2; c++) {
+    writer.begin(hfp::TYPE_STIMULATE);
+    for (int i = 0; i < 4; i++) writer.u8(stimuli[c][i]);
+    n = writer.end(encoded);
+    Serial.rx.insert(Serial.rx.end(), encoded, encoded + n);
+  }
+  maxAmplitude = 0;
+  for (uint32_t end = now + 300000; now < end; now += 50) loop();
+  CHECK(electrodePulses[9] == 25);  // 200 ms at 125 Hz
+  for (int e = 0; e < 9; e++) CHECK(e == 2 || electrodePulses[electrodePins[e]] == expected[e]);
+  CHECK(maxAmplitude == 60 * 255 / 200);
+  hfp::FrameDecoder stimulusReplies;
+  int stimulusAcks = 0;
+  for (size_t i = 0; i < Serial.tx.size(); i++) {
+    if (stimulusReplies.feed(Serial.tx[i]) == hfp::FrameDecoder::FRAME && stimulusReplies.frame().type == hfp::TYPE_ACK) {
+      const uint8_t* a = stimulusReplies.frame().payload;
+      if (hfp::readU16(a) == 12) CHECK(a[2] == hfp::ACK_OK);
+      if (hfp::readU16(a) == 13) CHECK(a[2] == hfp::NACK_OUT_OF_RANGE && a[3] == hgr::STEP_ABOVE_CAP);
+      stimulusAcks++;
+    }
+  }
+  CHECK(stimulusAcks == 2);
+  printf("sketch_test: %d infos, %d samples, %d acks, %d grain pulses, %d stimulus pulses, %d failed\n", infos, samples,
+         acks, grainPulses, electrodePulses[9], failures);
   return failures == 0 ? 0 : 1;
 }

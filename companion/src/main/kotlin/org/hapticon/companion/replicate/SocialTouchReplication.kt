@@ -25,7 +25,7 @@ class SocialTouchReplication(private val people: Int = 8, private val takesPerCl
         out.println("          LogitBoost over regression stumps, ${LogitBoost.DEFAULT_ITERATIONS} rounds (Weka's default)")
         out.println("classes:  emotions ${SocialTouchClasses.EMOTIONS.joinToString(" ")};")
         out.println("          social messages ${SocialTouchClasses.SOCIAL_MESSAGES.joinToString(" ")}; and ${SocialTouchClasses.NO_TOUCH}")
-        out.println("          (names as we recall the paper's lists; not re-checked against its text, see docs/replication.md)")
+        out.println("          (names as we recall the paper's lists: its text was searched for and not reached, so unverified; docs/replication.md)")
         out.println(
             "data:     $people simulated people x $takesPerClass messages per class, shuffled " +
                 "(gesture SocialTouchSyntheticPeople; the paper's participants gave each class ${SocialTouchClasses.TAKES_PER_CLASS_IN_PAPER} times; its recordings are not published)",
@@ -44,6 +44,6 @@ class SocialTouchReplication(private val people: Int = 8, private val takesPerCl
         }
         out.println()
         out.println("paper column: n/t = not transcribed. The paper reports LogitBoost accuracies 'comparable to those achieved by")
-        out.println("humans' (its abstract); its per-set figures were not available to check when this was written, so none are printed.")
+        out.println("humans' (its abstract); its per-set figures and Table 1 could not be reached, so none are printed.")
     }
 }

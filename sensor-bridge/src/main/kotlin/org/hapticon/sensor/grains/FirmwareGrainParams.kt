@@ -2,6 +2,7 @@ package org.hapticon.sensor.grains
 
 import org.hapticon.sensor.electrotactile.AmplitudeSteps
 import org.hapticon.sensor.electrotactile.ElectrodePattern
+import org.hapticon.sensor.electrotactile.ElectrotactileCalibration
 import org.hapticon.sensor.electrotactile.TimeDivisionScan
 import org.hapticon.sensor.electrotactile.PulseTrain
 import org.hapticon.sensor.protocol.framed.FramedEncoder
@@ -55,9 +56,35 @@ public data class FirmwareGrainParams(
         return out
     }
 
+    /** The range the board bins over. */
+    public val forceRange: FirmwareForceRange get() = FirmwareForceRange(minForce, maxForce)
+
+    /**
+     * The settings under which sensor-bridge's [GrainDecider] decides as the board does (grains.cpp is its twin): the
+     * same bins over the same range in the channel's units, filter and grain length. `replicate 001` runs a slow
+     * press through it to show what the board fires.
+     */
+    public fun deciderSettings(): GrainSettings =
+        GrainSettings(grainCount, distribution, minForce.toDouble(), maxForce.toDouble(), cutoffHz, grainMicros / 1e6)
+
     public companion object {
         /** Bytes of the payload. */
         public const val PAYLOAD_LENGTH: Int = 21
+
+        /**
+         * [grainCount] grains over the board's [range] ([FirmwareForceRange.fromStream]: what the sensor actually
+         * spans, not an assumed 10-bit 0..1023) on [pattern] at the calibrated [steps].
+         */
+        public fun of(grainCount: Int, distribution: BinDistribution, range: FirmwareForceRange, pattern: ElectrodePattern, steps: List<Int>): FirmwareGrainParams =
+            FirmwareGrainParams(grainCount, distribution, range.min, range.max, pattern, steps)
+
+        /**
+         * Shaping Compliance's whole-array check after the per-electrode calibration: [ElectrotactileCalibration.CHECK_GRAINS]
+         * (39) grains, linear, over [range], all nine electrodes at their [steps].
+         * @throws org.hapticon.sensor.safety.SafetyLimitException when a step is outside 0..200 (above 2.7 mA).
+         */
+        public fun wholeArrayCheck(steps: List<Int>, range: FirmwareForceRange): FirmwareGrainParams =
+            of(ElectrotactileCalibration.CHECK_GRAINS, BinDistribution.LINEAR, range, ElectrodePattern.ALL, steps)
     }
 }
 

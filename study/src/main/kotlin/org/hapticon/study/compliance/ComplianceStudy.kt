@@ -2,6 +2,8 @@ package org.hapticon.study.compliance
 
 import org.hapticon.sensor.electrotactile.ElectrodeMask
 import org.hapticon.sensor.grains.BinDistribution
+import org.hapticon.sensor.grains.FirmwareForceRange
+import org.hapticon.sensor.grains.FirmwareGrainParams
 import org.hapticon.sensor.grains.GrainSettings
 import org.hapticon.study.design.Counterbalancing
 import org.hapticon.study.design.OrderScheme
@@ -20,6 +22,16 @@ public data class ComplianceCondition(val grains: Int, val mask: ElectrodeMask) 
 
     /** The grain settings of this condition over [base]'s range, filter and grain length. */
     public fun grainSettings(base: GrainSettings = GrainSettings()): GrainSettings = base.copy(grainCount = grains)
+
+    /**
+     * This condition as the board's SET_GRAINS parameters, sent when its trial starts: [grains] over the board's
+     * force [range] (from its device info, [FirmwareForceRange.fromStream]) on [mask]'s electrodes, each at the
+     * person's calibrated step in [steps] (electrodes 0..8; the board drives only the mask's members).
+     * @throws org.hapticon.sensor.safety.SafetyLimitException for a step outside 0..200 (above 2.7 mA);
+     *   IllegalArgumentException for a mask of fewer than 4 electrodes (too weak in the paper's pilot).
+     */
+    public fun firmwareParams(steps: List<Int>, range: FirmwareForceRange, distribution: BinDistribution = BinDistribution.LINEAR): FirmwareGrainParams =
+        FirmwareGrainParams.of(grains, distribution, range, mask.pattern, steps)
 }
 
 /** One trial: the [index]-th (0-based) stimulus a participant feels, [condition] for the [repetition]-th time. */

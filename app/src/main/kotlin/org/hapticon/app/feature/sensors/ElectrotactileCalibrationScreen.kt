@@ -50,6 +50,7 @@ fun ElectrotactileCalibrationRoute(viewModel: ElectrotactileCalibrationViewModel
     val uiState by viewModel.uiState.collectAsStateWithLifecycle()
     val actions = remember(viewModel, onBack) {
         ElectrotactileActions(
+            onGiveStimulus = viewModel::giveStimulus,
             onNotYet = viewModel::notYet,
             onClearAndPainFree = viewModel::clearAndPainFree,
             onTooStrong = viewModel::tooStrong,
@@ -65,6 +66,7 @@ fun ElectrotactileCalibrationRoute(viewModel: ElectrotactileCalibrationViewModel
 /** What the electrotactile calibration screen can ask for. */
 @Immutable
 class ElectrotactileActions(
+    val onGiveStimulus: () -> Unit = {},
     val onNotYet: () -> Unit = {},
     val onClearAndPainFree: () -> Unit = {},
     val onTooStrong: () -> Unit = {},
@@ -167,10 +169,8 @@ private fun ElectrodeStep(state: ElectrotactileUiState.Electrode, actions: Elect
         String.format(Locale.ROOT, "Next stimulus: %s, step %d of %d, %d ms", mA(state.milliamps), state.step, AmplitudeSteps.STEPS, ElectrotactileCalibration.STIMULUS_MILLIS),
         style = MaterialTheme.typography.bodyLarge,
     )
-    Text(
-        "Give it with the stimulator's own control: the reference firmware takes grain parameters only, so the phone sends the whole-array check, not single stimuli.",
-        style = MaterialTheme.typography.bodySmall,
-    )
+    if (!state.boardReady) Text("No framed board is streaming: connect one on the Sensors screen to give the stimulus.", style = MaterialTheme.typography.bodySmall)
+    Button(onClick = actions.onGiveStimulus, enabled = state.boardReady) { Text("Give stimulus") }
     if (state.atCap) Text("At the 2.7 mA cap: it cannot go higher.", color = MaterialTheme.colorScheme.error, style = MaterialTheme.typography.bodyMedium)
     FlowRow(horizontalArrangement = Arrangement.spacedBy(12.dp), verticalArrangement = Arrangement.spacedBy(8.dp)) {
         OutlinedButton(onClick = actions.onNotYet, enabled = !state.atCap) { Text("Not yet: stronger") }

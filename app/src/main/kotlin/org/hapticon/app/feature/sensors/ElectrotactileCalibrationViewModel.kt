@@ -10,23 +10,44 @@ import kotlinx.coroutines.flow.combine
 import kotlinx.coroutines.flow.stateIn
 import kotlinx.coroutines.flow.update
 import org.hapticon.sensor.electrotactile.AmplitudeSteps
-import org.hapticon.sensor.electrotactile.ElectrodePattern
 import org.hapticon.sensor.electrotactile.ElectrotactileCalibration
-import org.hapticon.sensor.grains.BinDistribution
+import org.hapticon.sensor.grains.FirmwareForceRange
 import org.hapticon.sensor.grains.FirmwareGrainParams
+import org.hapticon.sensor.grains.FirmwareStimulus
 import org.hapticon.sensor.safety.SafetyLimitException
+import java.util.Locale
 
 /**
- * Where the whole-array check goes: the board's stimulator, which renders compliance grains stand-alone from a
- * SET_GRAINS command ([FirmwareGrainParams]). [ready] says whether a board that takes it (framed protocol) is
- * streaming; [send] queues the command and returns false when it could not.
+ * The board's stimulator, which renders compliance grains stand-alone from a SET_GRAINS command ([FirmwareGrainParams])
+ * and gives single calibration stimuli from a STIMULATE command ([FirmwareStimulus]). [ready] says whether a board that
+ * takes them (framed protocol) is streaming; [send] and [stimulate] queue a command and return false when they could not.
  */
 interface StimulatorLink {
     /** True while a framed board is streaming. */
     val ready: Flow<Boolean>
 
+    /** Whether a framed board is streaming now. */
+    fun isReady(): Boolean
+
+    /**
+     * The range the board bins its force channel over: its ADC's full scale from its device info
+     * ([FirmwareForceRange.fromStream]); null when no framed board streams or its force channel is not in raw counts.
+     */
+    fun forceRange(): FirmwareForceRange?
+
     /** Queues [params] for the board; false when no framed board is streaming. */
     fun send(params: FirmwareGrainParams): Boolean
+
+    /** Queues one calibration [stimulus] for the board; false when no framed board is streaming. */
+    fun stimulate(stimulus: FirmwareStimulus): Boolean
+
+    companion object {
+        /** Why nothing was sent: no framed board. */
+        const val NO_BOARD: String = "Connect a board with the Framed protocol first"
+
+        /** Why nothing was sent: the board's force channel has no announced range. */
+        const val NO_FORCE_RANGE: String = "The board's force channel (ch0) is not in raw ADC counts, so its range is unknown: nothing was sent"
+    }
 }
 
 /** What the electrotactile calibration screen shows: one electrode, the whole-array check, or the result. */
@@ -76,7 +97,8 @@ sealed interface ElectrotactileUiState {
  * each electrode from step 60 (0.81 mA) up one hardware step (13.5 µA) per "not yet" until clear and pain-free,
  * then the whole-array check with 39 grains on all nine electrodes. The 2.7 mA cap is enforced three times over:
  * the state machine never raises past step 200, [AmplitudeSteps.requireStep] refuses anything else, and
- * [FirmwareGrainParams] checks every step before a command exists. The check goes to the board through [link];
+ * [FirmwareGrainParams] and [FirmwareStimulus] check every step before a command exists. Each electrode's 200 ms
+ * stimulus ([giveStimulus]) and the check go to the board through [link];
  * [onCalibrated] gets the finished steps (kept for the compliance study).
  * Not thread-safe: call from the main thread.
  */
@@ -123,13 +145,37 @@ class ElectrotactileCalibrationViewModel(
     }
 
     /**
+     * Gives the current electrode's next stimulus on the board: STIMULATE with that electrode alone at its step for
+     * 200 ms ([FirmwareStimulus]); the person then answers with not yet, too strong, or clear and pain-free.
+     */
+    fun giveStimulus() {
+        if (calibration.currentElectrode == null) return
+        val stimulus = FirmwareStimulus.of(calibration.stimulus() ?: return)
+        val queued = link.stimulate(stimulus)
+        progress.update {
+            it.copy(
+                message = if (queued) {
+                    String.format(
+                        Locale.ROOT, "Gave %d ms at %.3f mA on electrode %d: how did it feel?",
+                        stimulus.durationMillis, AmplitudeSteps.milliampsOf(stimulus.step), stimulus.electrode + 1,
+                    )
+                } else {
+                    StimulatorLink.NO_BOARD
+                },
+            )
+        }
+    }
+
+    /**
      * Sends the whole-array check to the board: SET_GRAINS with [ElectrotactileCalibration.CHECK_GRAINS] grains,
-     * all nine electrodes at their steps, over the reference firmware's raw 10-bit force range.
+     * all nine electrodes at their steps, over the force range the board announced ([StimulatorLink.forceRange]).
      */
     fun sendWholeArrayCheck() {
         if (!calibration.isCheckingWholeArray) return
+        val range = link.forceRange()
+            ?: return progress.update { it.copy(sent = false, message = if (link.isReady()) StimulatorLink.NO_FORCE_RANGE else StimulatorLink.NO_BOARD) }
         val params = try {
-            wholeArrayParams(calibration.steps())
+            FirmwareGrainParams.wholeArrayCheck(calibration.steps(), range)
         } catch (e: SafetyLimitException) {
             // Unreachable while the state machine caps at step 200; kept so a future bug refuses instead of stimulating.
             progress.update { it.copy(message = e.message) }
@@ -137,7 +183,7 @@ class ElectrotactileCalibrationViewModel(
         }
         val queued = link.send(params)
         progress.update {
-            it.copy(sent = queued, message = if (queued) "Sent: press the sensor and feel the grains" else "Connect a board with the Framed protocol first")
+            it.copy(sent = queued, message = if (queued) "Sent: press the sensor and feel the grains" else StimulatorLink.NO_BOARD)
         }
     }
 
@@ -171,22 +217,4 @@ class ElectrotactileCalibrationViewModel(
     }
 
     private data class Progress(val revision: Int, val sent: Boolean, val message: String?)
-
-    companion object {
-        /** The reference firmware samples the FSR with a 10-bit ADC (raw counts 0..1023): the check spans it all. */
-        const val FORCE_RANGE_MAX: Int = 1023
-
-        /**
-         * The whole-array check as the firmware's SET_GRAINS parameters.
-         * @throws SafetyLimitException when a step is outside 0..200 (above 2.7 mA).
-         */
-        fun wholeArrayParams(steps: List<Int>): FirmwareGrainParams = FirmwareGrainParams(
-            grainCount = ElectrotactileCalibration.CHECK_GRAINS,
-            distribution = BinDistribution.LINEAR,
-            minForce = 0,
-            maxForce = FORCE_RANGE_MAX,
-            pattern = ElectrodePattern.ALL,
-            steps = steps,
-        )
-    }
 }

@@ -2,8 +2,11 @@ package org.hapticon.app.feature.sensors
 
 import kotlinx.coroutines.flow.Flow
 import kotlinx.coroutines.flow.map
+import org.hapticon.sensor.grains.FirmwareForceRange
 import org.hapticon.sensor.grains.FirmwareGrainParams
+import org.hapticon.sensor.grains.FirmwareStimulus
 import org.hapticon.sensor.grains.setGrains
+import org.hapticon.sensor.grains.stimulate
 import org.hapticon.sensor.live.ConnectionState
 import org.hapticon.sensor.live.SensorSession
 import org.hapticon.sensor.protocol.SensorProtocol
@@ -11,8 +14,9 @@ import org.hapticon.sensor.protocol.framed.FramedEncoder
 import org.hapticon.sensor.protocol.framed.FramedProtocol
 
 /**
- * [StimulatorLink] over the live serial session: SET_GRAINS frames ([FramedEncoder.setGrains]) written through
- * [SensorSession.send] while a board streams the framed protocol (the only one with that command).
+ * [StimulatorLink] over the live serial session: SET_GRAINS and STIMULATE frames ([FramedEncoder.setGrains],
+ * [FramedEncoder.stimulate]) written through [SensorSession.send] while a board streams the framed protocol (the
+ * only one with those commands); the force range is the one the board's device info announced.
  */
 class HubStimulatorLink(private val hub: SensorSession) : StimulatorLink {
     // One encoder for this link's commands, so its sequence numbers run on (FramedEncoder: one per direction).
@@ -20,10 +24,18 @@ class HubStimulatorLink(private val hub: SensorSession) : StimulatorLink {
 
     override val ready: Flow<Boolean> = hub.state.map(::isFramedStream)
 
-    override fun send(params: FirmwareGrainParams): Boolean {
-        if (!isFramedStream(hub.state.value)) return false
+    override fun isReady(): Boolean = isFramedStream(hub.state.value)
+
+    override fun forceRange(): FirmwareForceRange? = if (isReady()) FirmwareForceRange.fromStream(hub.currentInfo()) else null
+
+    override fun send(params: FirmwareGrainParams): Boolean = write { buffer -> encoder.setGrains(params, buffer) }
+
+    override fun stimulate(stimulus: FirmwareStimulus): Boolean = write { buffer -> encoder.stimulate(stimulus, buffer) }
+
+    private fun write(encode: (ByteArray) -> Int): Boolean {
+        if (!isReady()) return false
         val buffer = ByteArray(FramedProtocol.MAX_ENCODED_FRAME_LENGTH)
-        val length = synchronized(encoder) { encoder.setGrains(params, buffer) }
+        val length = synchronized(encoder) { encode(buffer) }
         return hub.send(buffer.copyOf(length))
     }
 

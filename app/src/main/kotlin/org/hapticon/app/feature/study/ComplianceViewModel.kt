@@ -8,9 +8,8 @@ import kotlinx.coroutines.flow.StateFlow
 import kotlinx.coroutines.flow.combine
 import kotlinx.coroutines.flow.stateIn
 import kotlinx.coroutines.flow.update
-import org.hapticon.app.feature.sensors.ElectrotactileCalibrationViewModel
 import org.hapticon.app.feature.sensors.StimulatorLink
-import org.hapticon.sensor.grains.FirmwareGrainParams
+import org.hapticon.study.compliance.ComplianceCondition
 import org.hapticon.study.compliance.ComplianceProtocol
 import org.hapticon.study.compliance.ComplianceStudy
 import org.hapticon.study.compliance.ComplianceTrial
@@ -63,9 +62,10 @@ sealed interface ComplianceUiState {
 
 /**
  * Runs Shaping Compliance's study ([ComplianceStudy.PROTOCOL]: 0/9/19/39 grains × five electrode shapes, magnitude
- * estimation) with a participant: each trial's condition goes to the board as SET_GRAINS (the reference firmware
- * renders the grains stand-alone while the participant presses) at the person's calibrated [levels] on the
- * condition's electrodes, and the participant's number is appended to `<participant>.csv` in [answersDir] (and
+ * estimation) with a participant: when a trial starts its condition goes to the board as SET_GRAINS
+ * ([ComplianceCondition.firmwareParams]: its grains over the board's announced force range, its electrode shape, each
+ * electrode at the person's calibrated step from [levels]; the reference firmware renders the grains stand-alone while
+ * the participant presses), and the participant's number is appended to `<participant>.csv` in [answersDir] (and
  * synced) before the next trial, so an answered trial is never lost. No calibration, no session.
  */
 class ComplianceViewModel(
@@ -113,8 +113,11 @@ class ComplianceViewModel(
 
     private fun sendCondition(steps: List<Int>) {
         val trial = local.value as? ComplianceUiState.Trial ?: return
-        val sent = link.send(conditionParams(trial.trial, steps, protocol.distribution))
-        local.value = trial.copy(sent = sent, message = if (sent) null else "Connect the board (Framed protocol) to render the condition")
+        // The board's own range (its device info), so a full press fires the condition's grains on any ADC.
+        val range = link.forceRange()
+            ?: return run { local.value = trial.copy(sent = false, message = if (link.isReady()) StimulatorLink.NO_FORCE_RANGE else NO_BOARD) }
+        val sent = link.send(trial.trial.condition.firmwareParams(steps, range, protocol.distribution))
+        local.value = trial.copy(sent = sent, message = if (sent) null else NO_BOARD)
     }
 
     /** The participant's answer for the current trial: a positive number, stored before the next trial starts. */
@@ -176,19 +179,6 @@ class ComplianceViewModel(
 
         private val NAME = Regex("[A-Za-z0-9_-]{1,40}")
 
-        /**
-         * The firmware parameters of [trial]: its grain count (0 renders none) on its electrode shape, each at the
-         * calibrated [steps], over the reference firmware's 10-bit force range.
-         * @throws org.hapticon.sensor.safety.SafetyLimitException for a step outside 0..200.
-         */
-        fun conditionParams(trial: ComplianceTrial, steps: List<Int>, distribution: org.hapticon.sensor.grains.BinDistribution): FirmwareGrainParams =
-            FirmwareGrainParams(
-                grainCount = trial.condition.grains,
-                distribution = distribution,
-                minForce = 0,
-                maxForce = ElectrotactileCalibrationViewModel.FORCE_RANGE_MAX,
-                pattern = trial.condition.mask.pattern,
-                steps = steps,
-            )
+        private const val NO_BOARD = "Connect the board (Framed protocol) to render the condition"
     }
 }

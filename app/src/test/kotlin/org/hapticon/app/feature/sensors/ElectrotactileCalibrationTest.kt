@@ -1,6 +1,10 @@
 package org.hapticon.app.feature.sensors
 
+import org.hapticon.sensor.grains.FirmwareForceRange
+import org.hapticon.sensor.grains.FirmwareGrainParams
+import org.hapticon.sensor.grains.FirmwareStimulus
 import org.hapticon.sensor.grains.setGrains
+import org.hapticon.sensor.grains.stimulate
 import org.hapticon.sensor.live.CommandWriter
 import org.hapticon.sensor.live.SensorSession
 import org.hapticon.sensor.protocol.SensorProtocol
@@ -81,7 +85,7 @@ class ElectrotactileCalibrationTest {
         assertFalse(check.boardReady)
 
         viewModel.sendWholeArrayCheck()
-        assertEquals("Connect a board with the Framed protocol first", viewModel.state().message)
+        assertEquals(StimulatorLink.NO_BOARD, viewModel.state().message)
         assertTrue(link.sent.isEmpty())
 
         link.ready.value = true
@@ -91,7 +95,7 @@ class ElectrotactileCalibrationTest {
         assertEquals(39, params.grainCount)
         assertEquals(ElectrodePattern.ALL, params.pattern)
         assertEquals((60..68).toList(), params.steps)
-        assertEquals(0 to 1023, params.minForce to params.maxForce)
+        assertEquals("the 10-bit board's announced range", 0 to 1023, params.minForce to params.maxForce)
         assertTrue((viewModel.state() as ElectrotactileUiState.WholeArrayCheck).sent)
 
         // Too strong lowers every electrode one step; what the board has is then stale.
@@ -121,18 +125,59 @@ class ElectrotactileCalibrationTest {
     }
 
     @Test
-    fun wholeArrayParams_atTheCapPassesAndOneStepPastIsRefused() {
-        assertEquals(List(9) { 200 }, ElectrotactileCalibrationViewModel.wholeArrayParams(List(9) { 200 }).steps)
+    fun wholeArrayCheck_atTheCapPassesAndOneStepPastIsRefused() {
+        val range = FirmwareForceRange.ofAdcBits(10)
+        assertEquals(List(9) { 200 }, FirmwareGrainParams.wholeArrayCheck(List(9) { 200 }, range).steps)
         val refused = assertThrows(SafetyLimitException::class.java) {
-            ElectrotactileCalibrationViewModel.wholeArrayParams(List(8) { 200 } + 201)
+            FirmwareGrainParams.wholeArrayCheck(List(8) { 200 } + 201, range)
         }
         assertEquals("amplitude step must be in 0..200, was 201", refused.message)
-        assertThrows(SafetyLimitException::class.java) { ElectrotactileCalibrationViewModel.wholeArrayParams(List(8) { 0 } + -1) }
+        assertThrows(SafetyLimitException::class.java) { FirmwareGrainParams.wholeArrayCheck(List(8) { 0 } + -1, range) }
+    }
+
+    @Test
+    fun wholeArrayCheck_takesTheBoardsRange_andAChannelWithoutOneSendsNothing() {
+        val link = TestStimulatorLink(ready = true, range = FirmwareForceRange.ofAdcBits(12))
+        val viewModel = ElectrotactileCalibrationViewModel(link)
+        repeat(9) { viewModel.clearAndPainFree() }
+        viewModel.sendWholeArrayCheck()
+        assertEquals(0 to 4095, link.sent.single().minForce to link.sent.single().maxForce)
+
+        link.range = null
+        viewModel.sendWholeArrayCheck()
+        assertEquals(1, link.sent.size)
+        assertEquals(StimulatorLink.NO_FORCE_RANGE, viewModel.state().message)
+        assertFalse((viewModel.state() as ElectrotactileUiState.WholeArrayCheck).sent)
+    }
+
+    @Test
+    fun giveStimulus_eachElectrodeAloneAtItsNextStep_200ms() {
+        val link = TestStimulatorLink(ready = false)
+        val viewModel = ElectrotactileCalibrationViewModel(link)
+        viewModel.giveStimulus()
+        assertEquals(StimulatorLink.NO_BOARD, viewModel.state().message)
+        assertTrue(link.stimuli.isEmpty())
+
+        link.ready.value = true
+        viewModel.giveStimulus()
+        viewModel.notYet()
+        viewModel.giveStimulus()
+        assertEquals("Gave 200 ms at 0.824 mA on electrode 1: how did it feel?", viewModel.state().message)
+        viewModel.clearAndPainFree()
+        repeat(140) { viewModel.notYet() }
+        viewModel.giveStimulus()
+        assertEquals(listOf(FirmwareStimulus(0, 60), FirmwareStimulus(0, 61), FirmwareStimulus(1, 200)), link.stimuli)
+
+        // The whole-array check is grains, not a single stimulus: nothing more is given.
+        repeat(8) { viewModel.clearAndPainFree() }
+        viewModel.giveStimulus()
+        assertEquals(3, link.stimuli.size)
     }
 
     @Test
     fun hubLink_framedStream_writesTheSetGrainsFrame_otherProtocolsWriteNothing() {
-        val params = ElectrotactileCalibrationViewModel.wholeArrayParams(List(9) { 120 })
+        val params = FirmwareGrainParams.wholeArrayCheck(List(9) { 120 }, FirmwareForceRange.ofAdcBits(10))
+        val stimulus = FirmwareStimulus(4, 200)
         // One hub per stream, writes on the calling thread: no reader of an earlier stream can race the next start.
         val csvHub = SensorSession(TestUsbDevices(), commands = CommandWriter { it.run() })
         val framedHub = SensorSession(TestUsbDevices(), commands = CommandWriter { it.run() })
@@ -145,10 +190,16 @@ class ElectrotactileCalibrationTest {
 
             val framedPort = FakeSerialPort()
             framedHub.start(framedPort, TEST_UNO, SensorProtocol.FRAMED, 115_200)
-            assertTrue(HubStimulatorLink(framedHub).send(params))
-            val expected = ByteArray(FramedProtocol.MAX_ENCODED_FRAME_LENGTH)
-            val length = FramedEncoder().setGrains(params, expected)
+            val link = HubStimulatorLink(framedHub)
+            assertTrue(link.send(params))
+            assertTrue(link.stimulate(stimulus))
+            // One encoder per link: the stimulus is the next sequence number.
+            val expected = ByteArray(2 * FramedProtocol.MAX_ENCODED_FRAME_LENGTH)
+            val encoder = FramedEncoder()
+            var length = encoder.setGrains(params, expected)
+            length += encoder.stimulate(stimulus, expected, length)
             assertArrayEquals(expected.copyOf(length), framedPort.writtenBytes())
+            assertFalse(HubStimulatorLink(csvHub).stimulate(stimulus))
         } finally {
             csvHub.disconnect()
             framedHub.disconnect()
@@ -161,6 +212,7 @@ class ElectrotactileCalibrationTest {
         compose.setContent { ElectrotactileCalibrationScreen(state, ElectrotactileActions()) }
 
         compose.onNodeWithText("Not yet: stronger").assertIsNotEnabled()
+        compose.onNodeWithText("Give stimulus").assertIsNotEnabled()
         compose.onNodeWithText("Too strong").assertIsEnabled()
         compose.onNodeWithText("At the 2.7 mA cap: it cannot go higher.").assertExists()
         compose.onNodeWithText("Next stimulus: 2.700 mA, step 200 of 200, 200 ms").assertExists()

@@ -4,12 +4,25 @@ import androidx.compose.ui.test.assertIsNotEnabled
 import androidx.compose.ui.test.junit4.createComposeRule
 import androidx.compose.ui.test.onNodeWithText
 import org.hapticon.app.feature.sensors.ElectrodeLevelsStore
+import org.hapticon.app.feature.sensors.HubStimulatorLink
+import org.hapticon.app.feature.sensors.StimulatorLink
 import org.hapticon.app.feature.sensors.TestStimulatorLink
+import org.hapticon.app.sensors.TEST_UNO
+import org.hapticon.app.sensors.TestUsbDevices
+import org.hapticon.sensor.grains.FirmwareForceRange
+import org.hapticon.sensor.live.CommandWriter
+import org.hapticon.sensor.live.SensorSession
+import org.hapticon.sensor.port.FakeSerialPort
+import org.hapticon.sensor.protocol.SensorProtocol
+import org.hapticon.sensor.protocol.framed.ChannelUnit
+import org.hapticon.sensor.protocol.framed.DeviceInfo
+import org.hapticon.sensor.protocol.framed.FramedEncoder
+import org.hapticon.sensor.protocol.framed.FramedProtocol
 import org.hapticon.app.gesture.MainDispatcherRule
-import org.hapticon.sensor.electrotactile.ElectrodeMask
 import org.hapticon.sensor.safety.SafetyLimitException
 import org.hapticon.study.compliance.ComplianceStudy
 import org.junit.Assert.assertEquals
+import org.junit.Assert.assertFalse
 import org.junit.Assert.assertNull
 import org.junit.Assert.assertThrows
 import org.junit.Assert.assertTrue
@@ -128,12 +141,95 @@ class ComplianceStudyRunTest {
     }
 
     @Test
-    fun conditionParams_baselineSendsZeroGrainsOnItsShape() {
-        val trial = ComplianceStudy.PROTOCOL.trials(0).first { it.condition.grains == 0 && it.condition.mask == ElectrodeMask.SMALL_SQUARE }
-        val params = ComplianceViewModel.conditionParams(trial, levels, ComplianceStudy.PROTOCOL.distribution)
-        assertEquals(0, params.grainCount)
-        assertEquals(4, params.pattern.activeCount)
-        assertEquals(0 to 1023, params.minForce to params.maxForce)
+    fun condition_usesTheBoardsAnnouncedRange_andNoRangeSendsNothing() {
+        val link = TestStimulatorLink(ready = true, range = FirmwareForceRange.ofAdcBits(12))
+        val viewModel = ComplianceViewModel(link, { levels }, File(folder.root, "compliance"))
+        viewModel.setParticipant("p3")
+        viewModel.start()
+        val first = link.sent.single()
+        assertEquals(0 to 4095, first.minForce to first.maxForce)
+
+        // A board whose force channel is in physical units announces no full scale: nothing is guessed or sent.
+        link.range = null
+        viewModel.sendCondition()
+        assertEquals(1, link.sent.size)
+        assertEquals(StimulatorLink.NO_FORCE_RANGE, viewModel.state().message)
+        assertFalse((viewModel.state() as ComplianceUiState.Trial).sent)
+    }
+
+    @Test
+    fun session_overTheSerialSession_writesEachConditionsSetGrains_decodedFromTheWire() {
+        // A 12-bit framed board announces itself; the view model goes through the real link, session and writer.
+        val hub = SensorSession(TestUsbDevices(), commands = CommandWriter { it.run() })
+        val port = FakeSerialPort()
+        val info = ByteArray(FramedProtocol.MAX_ENCODED_FRAME_LENGTH)
+        val infoLength = FramedEncoder().deviceInfo(DeviceInfo(1, 0, 0, 12, 1000, 0, listOf(ChannelUnit.RAW), "board12"), info)
+        port.enqueue(info.copyOf(infoLength))
+        try {
+            hub.start(port, TEST_UNO, SensorProtocol.FRAMED, 115_200)
+            val deadline = System.nanoTime() + 10_000_000_000
+            while (hub.currentInfo()?.adcBits != 12 && System.nanoTime() < deadline) Thread.sleep(5)
+            assertEquals(12, hub.currentInfo()?.adcBits)
+
+            val viewModel = ComplianceViewModel(HubStimulatorLink(hub), { levels }, File(folder.root, "compliance"))
+            viewModel.setParticipant("p4")
+            viewModel.setRepetitions(1)
+            viewModel.start()
+            val order = ComplianceStudy.PROTOCOL.copy(repetitions = 1).trials(0)
+            repeat(order.size - 1) { viewModel.answer("10") }
+
+            val frames = splitFrames(port.writtenBytes())
+            assertEquals(order.size, frames.size)
+            for ((i, trial) in order.withIndex()) {
+                val frame = unCobs(frames[i])
+                assertEquals("CRC-16/CCITT-FALSE, high byte first", crc16(frame.dropLast(2)), (frame[frame.size - 2] shl 8) or frame.last())
+                assertEquals(listOf(1, 0x13, i, 0), frame.take(4))
+                val payload = frame.subList(4, frame.size - 2)
+                assertEquals(trial.condition.id, trial.condition.grains, payload[0])
+                assertEquals(4095, payload[4] or (payload[5] shl 8))
+                val bits = payload[6] or (payload[7] shl 8)
+                assertEquals(trial.condition.id, trial.condition.mask.pattern.bits, bits)
+                assertEquals(levels, payload.subList(8, 17))
+            }
+        } finally {
+            hub.disconnect()
+        }
+    }
+
+    /** COBS undone (docs/protocols.md), written apart from sensor-bridge's decoder. */
+    private fun unCobs(encoded: ByteArray): List<Int> {
+        val out = ArrayList<Int>()
+        var i = 0
+        while (i < encoded.size) {
+            val code = encoded[i].toInt() and 0xFF
+            for (k in 1 until code) out += encoded[i + k].toInt() and 0xFF
+            i += code
+            if (code < 0xFF && i < encoded.size) out += 0
+        }
+        return out
+    }
+
+    private fun crc16(bytes: List<Int>): Int {
+        var crc = 0xFFFF
+        for (b in bytes) {
+            crc = crc xor (b shl 8)
+            repeat(8) { crc = if (crc and 0x8000 != 0) (crc shl 1) xor 0x1021 else crc shl 1 }
+            crc = crc and 0xFFFF
+        }
+        return crc
+    }
+
+    /** The COBS frames of [wire], each without its 0x00 delimiter. */
+    private fun splitFrames(wire: ByteArray): List<ByteArray> {
+        val frames = ArrayList<ByteArray>()
+        var start = 0
+        for (i in wire.indices) {
+            if (wire[i].toInt() == 0) {
+                frames += wire.copyOfRange(start, i)
+                start = i + 1
+            }
+        }
+        return frames
     }
 
     @Test

@@ -86,6 +86,17 @@ public class FramedEncoder(firstSequence: Int = 0) {
         return finish(destination, offset)
     }
 
+    /**
+     * A command giving one calibration stimulus: [payload] as `FirmwareStimulus.payload()` makes it (callers use the
+     * typed `FramedEncoder.stimulate(stimulus, …)` of sensor-bridge's grains package; the device checks the values
+     * again and NACKs with [AckStatus.OUT_OF_RANGE] and grains.h's reason as detail).
+     */
+    internal fun stimulatePayload(payload: ByteArray, destination: ByteArray, offset: Int): Int {
+        begin(FramedProtocol.TYPE_STIMULATE)
+        for (b in payload) u8(b.toInt() and 0xFF)
+        return finish(destination, offset)
+    }
+
     /** A device-info frame describing [info]. */
     public fun deviceInfo(info: DeviceInfo, destination: ByteArray, offset: Int = 0): Int {
         begin(FramedProtocol.TYPE_DEVICE_INFO)

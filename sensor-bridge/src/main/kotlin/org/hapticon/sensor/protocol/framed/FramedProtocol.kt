@@ -42,6 +42,7 @@ public object FramedProtocol {
     internal const val TYPE_REQUEST_INFO = 0x11
     internal const val TYPE_SET_SAMPLE_RATE = 0x12
     internal const val TYPE_SET_GRAINS = 0x13
+    internal const val TYPE_STIMULATE = 0x14
 
     internal const val DEVICE_INFO_FIXED_LENGTH = 10
     internal const val SAMPLE_TIMESTAMP_LENGTH = 4

@@ -22,7 +22,7 @@ class FirmwareHostTest {
         assertTrue(output, Regex("""host_test: \d+ checks, 0 failed""").containsMatchIn(output))
         assertTrue(output, output.contains("shared vectors: 13 frames, 11 exchanges"))
         assertTrue(output, Regex("""grains_test: \d+ checks, 0 failed""").containsMatchIn(output))
-        // 9 grains × 2 pulses × the small square's 4 electrodes after SET_GRAINS.
-        assertTrue(output, output.contains("sketch_test: 1 infos, 11 samples, 1 acks, 72 grain pulses, 0 failed"))
+        // 9 grains × 2 pulses × the small square's 4 electrodes after SET_GRAINS; then one 200 ms STIMULATE (25 pulses at 125 Hz).
+        assertTrue(output, output.contains("sketch_test: 1 infos, 11 samples, 1 acks, 72 grain pulses, 25 stimulus pulses, 0 failed"))
     }
 }
