@@ -66,7 +66,8 @@ class BrokerFixture : ExternalResource() {
 
 /**
  * One embedded broker for every test in this JVM, started on first use, enforcing the shipped ACL and a
- * password file that [register] fills; its store is deleted at exit.
+ * password file that [register] fills; its store is deleted at exit. Besides the plain listener it has two TLS
+ * listeners with [ca]'s broker certificate: [TLS_REQUIRED] (client certificate required) and [TLS_OPTIONAL].
  */
 object SharedBroker {
     private val root: File by lazy {
