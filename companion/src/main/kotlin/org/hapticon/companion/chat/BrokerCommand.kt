@@ -252,17 +252,17 @@ private fun askPassword(name: String, input: Reader): CharArray {
     return line.toCharArray()
 }
 
-/** The first line of [path], for `--password-file`: a password on the command line would show in `ps`. */
-internal fun readPasswordFile(path: String): CharArray {
+/** The first line of [path], for `--password-file` (or [option]): a password on the command line would show in `ps`. */
+internal fun readPasswordFile(path: String, option: String = "--password-file"): CharArray {
     val file = File(path)
-    if (!file.isFile) throw UsageException("--password-file $path: no such file")
+    if (!file.isFile) throw UsageException("$option $path: no such file")
     val text = try {
-        if (file.length() > 4096) throw UsageException("--password-file $path is larger than 4096 bytes")
+        if (file.length() > 4096) throw UsageException("$option $path is larger than 4096 bytes")
         file.readText()
     } catch (e: IOException) {
-        throw UsageException("cannot read --password-file $path: ${e.message}")
+        throw UsageException("cannot read $option $path: ${e.message}")
     }
-    return text.lineSequence().firstOrNull()?.takeIf { it.isNotEmpty() }?.toCharArray() ?: throw UsageException("--password-file $path is empty")
+    return text.lineSequence().firstOrNull()?.takeIf { it.isNotEmpty() }?.toCharArray() ?: throw UsageException("$option $path is empty")
 }
 
 /** The standard MQTT port, which `hapticon broker` uses unless told otherwise. */

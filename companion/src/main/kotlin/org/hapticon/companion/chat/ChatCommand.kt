@@ -115,7 +115,10 @@ private fun clientCertificate(path: String, passwordFile: String?): ClientCertif
     val file = File(path)
     if (!file.isFile) throw UsageException("--client-cert $path: no such file")
     if (file.length() > ClientCertificate.MAX_PKCS12_BYTES) throw UsageException("--client-cert $path is larger than ${ClientCertificate.MAX_PKCS12_BYTES / 1024} KiB: not a PKCS#12 file")
-    val password = readPasswordFile(passwordFile ?: throw UsageException("--client-cert needs --client-cert-password-file FILE (the PKCS#12 password's file)"))
+    val password = readPasswordFile(
+        passwordFile ?: throw UsageException("--client-cert needs --client-cert-password-file FILE (the PKCS#12 password's file)"),
+        "--client-cert-password-file",
+    )
     return try {
         ClientCertificate.fromPkcs12(file.readBytes(), password)
     } catch (e: IllegalArgumentException) {

@@ -127,6 +127,8 @@ class ClientCertificateCommandTest {
             listOf("--client-cert", expired.path, "--client-cert-password-file", pw.path) to
                 "hapticon: --client-cert $expired: the client certificate of alice expired on 2025-01-31T00:00:00Z; ask for a new one (hapticon broker cert issue alice)",
             listOf("--client-cert", alice.path) to "hapticon: --client-cert needs --client-cert-password-file FILE (the PKCS#12 password's file)",
+            listOf("--client-cert", alice.path, "--client-cert-password-file", File(temp.root, "none.pw").path) to
+                "hapticon: --client-cert-password-file ${File(temp.root, "none.pw")}: no such file",
             listOf("--client-cert", pw.path, "--client-cert-password-file", pw.path) to
                 "hapticon: --client-cert $pw: the client certificate cannot be opened: wrong password, or not a PKCS#12 (.p12) file",
             listOf("--client-cert", File(temp.root, "none.p12").path, "--client-cert-password-file", pw.path) to
