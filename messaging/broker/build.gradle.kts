@@ -13,6 +13,7 @@ kotlin {
 dependencies {
     implementation(libs.hivemq.community.edition.embedded)
     implementation(libs.logback.classic)
+    implementation(libs.bouncycastle.bcpkix)
 
     testImplementation(libs.junit4)
 }

@@ -46,13 +46,22 @@ val USAGE: String = """
     |      are rendered to WAV files in DIR. Delivered and read receipts both ways. Says why it cannot
     |      connect; exits 2 when the broker refuses the user or typed lines never reached it.
     |      --anonymous instead of --password-file for a broker run with --allow-anonymous.
+    |      --client-cert FILE.p12 --client-cert-password-file FILE instead: a client certificate (ssl:// only);
+    |      --ca FILE trusts that CA (ca.crt of `broker ca init`) for the broker's certificate.
     |      --e2e encrypts and signs every message end to end (keys in ~/.hapticon/keys/NAME, peers' keys
     |      pinned on first contact): /safety PEER shows the safety number, /trust PEER accepts a changed key.
     |  hapticon broker [--port N] [--host ADDR] [--data DIR] [--users FILE] [--acl FILE] [--allow-anonymous]
+    |                 [--tls-port N [--client-certs required|optional|none] [--ca-dir DIR]]
     |      Run the embedded MQTT broker until Ctrl-C (default 127.0.0.1:1883, files in ~/.hapticon/broker).
     |      Every client logs in with a user from the users file (Mosquitto's password-file format, created
     |      empty on first run) and is held to the ACL file (Mosquitto's format, the deployment's rules).
     |      --host binds a LAN address so phones can reach the laptop.
+    |      --tls-port adds a TLS listener on --host (plain stays on 127.0.0.1) with the certificate of
+    |      `broker ca init`; --client-certs: clients must (default), may or need not show a certificate.
+    |  hapticon broker ca init [--data DIR | --ca-dir DIR] [--host NAME,...]
+    |      Make the study's CA (ca.crt, ca.key mode 600) and the broker's certificate for those hosts.
+    |  hapticon broker cert issue USER [--data DIR | --ca-dir DIR] [--out FILE] [--password-file FILE] [--days N]
+    |      Write USER.p12 (mode 600): USER's client certificate (CN = USER, default 365 days) and key.
     |  hapticon broker adduser NAME [--data DIR | --users FILE] [--password-file FILE]
     |      Add a broker user or change its password (asked on the terminal, or the file's first line).
     |  hapticon schedule --participants N --design paper|williams|full|random|fixed [--seed S] [--protocol FILE]

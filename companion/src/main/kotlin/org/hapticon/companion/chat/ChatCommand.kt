@@ -12,6 +12,7 @@ import org.hapticon.messaging.MessagingException
 import org.hapticon.messaging.Topics
 import org.hapticon.messaging.VibrationRateLimiter
 import org.hapticon.messaging.BrokerAddress
+import org.hapticon.messaging.mqtt.ClientCertificate
 import org.hapticon.messaging.mqtt.MqttMessenger
 import org.hapticon.messaging.mqtt.MqttSettings
 import org.hapticon.messaging.e2e.EndToEnd
@@ -25,15 +26,22 @@ import java.io.InputStreamReader
 import java.io.Reader
 
 /**
- * `hapticon chat --broker URL --user NAME [--to PEER] [--password-file FILE | --anonymous] [--wav-dir DIR] [--e2e [--keys-dir DIR]]`:
+ * `hapticon chat --broker URL --user NAME [--to PEER] [--password-file FILE | --client-cert FILE.p12
+ * --client-cert-password-file FILE | --anonymous] [--ca FILE] [--wav-dir DIR] [--e2e [--keys-dir DIR]]`:
  * a terminal chat over MQTT with the phone app or another `hapticon chat`. Reads lines from [input]
  * (stdin by default) until `/quit` or its end; see [ChatSession]. Connection failures are printed as they
  * happen (refused, TLS trust, unknown host); a refusal by the broker (bad password) or lines that never
  * reached it end the command with one line and a non-zero exit. With `--e2e` every payload is sealed
  * end to end (org.hapticon.messaging.e2e.EndToEnd), so the broker's operator can neither read nor forge it.
+ * `--client-cert` logs in with a client certificate (mutual TLS, an `ssl://` broker) instead of a password;
+ * `--ca` trusts the study's own CA (`ca.crt` of `hapticon broker ca init`) instead of the system's.
  */
 fun runChat(args: List<String>, console: Console, input: Reader = InputStreamReader(System.`in`, Charsets.UTF_8)) {
-    val arguments = Arguments.parse("chat", args, valueOptions = setOf("broker", "user", "to", "password-file", "wav-dir", "keys-dir"), flagOptions = setOf("anonymous", "e2e"))
+    val arguments = Arguments.parse(
+        "chat", args,
+        valueOptions = setOf("broker", "user", "to", "password-file", "wav-dir", "keys-dir", "client-cert", "client-cert-password-file", "ca"),
+        flagOptions = setOf("anonymous", "e2e"),
+    )
     arguments.requireNoPositionals()
     val broker = try {
         BrokerAddress.parse(arguments.required("broker"))
@@ -43,16 +51,34 @@ fun runChat(args: List<String>, console: Console, input: Reader = InputStreamRea
     val user = userName(arguments.required("user"), "--user")
     val peer = arguments.value("to")?.let { userName(it, "--to") }
     val password = arguments.value("password-file")?.let { String(readPasswordFile(it)) }
-    if (password == null && !arguments.flag("anonymous")) {
-        throw UsageException("chat needs --password-file FILE (the broker authenticates every user), or --anonymous for a broker run with --allow-anonymous")
+    val certificate = arguments.value("client-cert")?.let { clientCertificate(it, arguments.value("client-cert-password-file")) }
+    if (certificate == null && arguments.value("client-cert-password-file") != null) throw UsageException("--client-cert-password-file needs --client-cert")
+    if (password == null && certificate == null && !arguments.flag("anonymous")) {
+        throw UsageException("chat needs --password-file FILE or --client-cert FILE.p12 (the broker authenticates every user), or --anonymous for a broker run with --allow-anonymous")
     }
-    if (password != null && arguments.flag("anonymous")) throw UsageException("--password-file and --anonymous exclude each other")
+    if ((password != null || certificate != null) && arguments.flag("anonymous")) throw UsageException("--anonymous excludes --password-file and --client-cert")
+    val trusted = arguments.value("ca")?.let { path ->
+        val file = File(path)
+        if (!file.isFile) throw UsageException("--ca $path: no such file")
+        if (file.length() > ClientCertificate.MAX_PKCS12_BYTES) throw UsageException("--ca $path is larger than ${ClientCertificate.MAX_PKCS12_BYTES / 1024} KiB: not a CA certificate")
+        try {
+            ClientCertificate.certificatesFromPem(file.readBytes())
+        } catch (e: IllegalArgumentException) {
+            throw UsageException("--ca $path: ${e.message}")
+        }
+    }.orEmpty()
+    val settings = try {
+        MqttSettings(broker, user, password, clientCertificate = certificate, trustedCertificates = trusted)
+    } catch (e: IllegalArgumentException) {
+        throw UsageException("${if (certificate != null && certificate.user != user) "--client-cert" else "--broker"}: ${e.message}")
+    }
+    certificate?.let { console.err.println("chat: client certificate of ${it.user}, valid until ${it.notAfter}") }
     val wavDir = arguments.value("wav-dir")?.let(::File)?.also(OutputFiles::ensureDirectory)
 
     if (arguments.value("keys-dir") != null && !arguments.flag("e2e")) throw UsageException("--keys-dir needs --e2e")
     val e2e = if (arguments.flag("e2e")) endToEnd(user, arguments.value("keys-dir"), console) else null
 
-    val messenger = MqttMessenger(MqttSettings(broker, user, password), e2e)
+    val messenger = MqttMessenger(settings, e2e)
     val gate = InboxGate(BoundedDeduplicator(), VibrationRateLimiter(Clock.MONOTONIC))
     console.err.println("chat: connecting to $broker as $user")
     val session = ChatSession(messenger, peer, console.out, console.err, wavDir, gate, e2e = e2e)
@@ -79,6 +105,29 @@ private fun endToEnd(user: String, keysDir: String?, console: Console): EndToEnd
     }
     console.err.println("chat: end-to-end encryption on; keys of $user in $dir")
     return EndToEnd(identity, FileKeyPins(File(dir, "pins")))
+}
+
+/**
+ * The PKCS#12 client certificate at [path], opened with the first line of [passwordFile] (never a password on the
+ * command line, where `ps` shows it). Every problem is one line: missing file, wrong password, expired, no user.
+ */
+private fun clientCertificate(path: String, passwordFile: String?): ClientCertificate {
+    val file = File(path)
+    if (!file.isFile) throw UsageException("--client-cert $path: no such file")
+    if (file.length() > ClientCertificate.MAX_PKCS12_BYTES) throw UsageException("--client-cert $path is larger than ${ClientCertificate.MAX_PKCS12_BYTES / 1024} KiB: not a PKCS#12 file")
+    val password = readPasswordFile(
+        passwordFile ?: throw UsageException("--client-cert needs --client-cert-password-file FILE (the PKCS#12 password's file)"),
+        "--client-cert-password-file",
+    )
+    return try {
+        ClientCertificate.fromPkcs12(file.readBytes(), password)
+    } catch (e: IllegalArgumentException) {
+        throw UsageException("--client-cert $path: ${e.message}")
+    } catch (e: IOException) {
+        throw UsageException("cannot read --client-cert $path: ${e.message}")
+    } finally {
+        password.fill('\u0000')
+    }
 }
 
 private fun userName(name: String, option: String): String {

@@ -210,7 +210,7 @@ class ChatCommandTest {
             listOf("chat", "--broker", fixture.url, "--user", "a", "--password-file", "/nonexistent/pw") to
                 "hapticon: --password-file /nonexistent/pw: no such file",
             listOf("chat", "--broker", fixture.url, "--user", "a") to
-                "hapticon: chat needs --password-file FILE (the broker authenticates every user), or --anonymous for a broker run with --allow-anonymous",
+                "hapticon: chat needs --password-file FILE or --client-cert FILE.p12 (the broker authenticates every user), or --anonymous for a broker run with --allow-anonymous",
         )
         for ((args, line) in cases) {
             val result = cli(*args.toTypedArray())

@@ -178,7 +178,19 @@ public class MqttMessenger(
             .serverPort(settings.broker.port)
             .addConnectedListener { context -> onConnected((context as Mqtt3ClientConnectedContext).connAck.isSessionPresent) }
             .addDisconnectedListener(::onDisconnected)
-        if (settings.broker.tls) builder = builder.sslWithDefaultConfig()
+        if (settings.broker.tls) {
+            val certificate = settings.clientCertificate
+            builder = if (certificate == null && settings.trustedCertificates.isEmpty()) {
+                builder.sslWithDefaultConfig()
+            } else {
+                // HiveMQ client's MqttClientSslConfigBuilder: a key manager presents the client certificate; a trust
+                // manager replaces the system's trust store with the study's CA.
+                var ssl = builder.sslConfig()
+                if (certificate != null) ssl = ssl.keyManagerFactory(certificate.keyManagerFactory())
+                if (settings.trustedCertificates.isNotEmpty()) ssl = ssl.trustManagerFactory(ClientCertificate.trustManagerFactory(settings.trustedCertificates))
+                ssl.applySslConfig()
+            }
+        }
         if (settings.password != null) {
             builder = builder.simpleAuth()
                 .username(settings.user)
@@ -303,10 +315,21 @@ public class MqttMessenger(
             }
         }
 
+        private val REFUSED_CLIENT_CERTIFICATE = Regex(
+            "Received fatal alert: (bad_certificate|certificate_unknown|unknown_ca|certificate_expired|certificate_required|certificate_revoked|unsupported_certificate|access_denied)",
+        )
+
         /** One line saying why a connection attempt failed or a connection ended, for people. */
         fun describeFailure(cause: Throwable): String {
             val chain = generateSequence(cause) { it.cause }.take(8).toList()
             chain.firstOrNull { it is javax.net.ssl.SSLException }?.let { tls ->
+                // An alert *received* from the broker about certificates means it refused ours (RFC 8446 §6.2): with
+                // mutual TLS that is a missing, expired or foreign client certificate. A broker certificate we do
+                // not trust fails here instead, with a CertificateException of our own.
+                val alert = tls.message?.let { REFUSED_CLIENT_CERTIFICATE.find(it) }?.groupValues?.get(1)
+                if (alert != null) {
+                    return "TLS: the broker refused this client's certificate (missing, expired, or not signed by the broker's CA) [$alert]"
+                }
                 val untrusted = chain.any { it is java.security.cert.CertificateException || it.javaClass.simpleName == "CertPathBuilderException" }
                 return if (untrusted) "TLS: the broker's certificate is not trusted (${tls.message})" else "TLS handshake failed: ${tls.message}"
             }

@@ -15,10 +15,14 @@ import org.hapticon.messaging.Topics
  *
  * @property broker where to connect.
  * @property user the user name (see [Topics.isValidUserName]); also the MQTT user name and client id.
- * @property password the MQTT password, or null for a broker started with `--allow-anonymous`. Sent in
- *   clear text unless [BrokerAddress.tls].
+ * @property password the MQTT password, or null for a broker started with `--allow-anonymous` or when
+ *   [clientCertificate] authenticates. Sent in clear text unless [BrokerAddress.tls].
  * @property keepAliveSeconds MQTT keep-alive: how soon a dead connection is noticed.
  * @property reconnectPolicy delays between reconnection attempts.
+ * @property clientCertificate the user's certificate for mutual TLS (docs/security.md, "Client certificates"):
+ *   needs an `ssl://` broker and must name [user] as its common name.
+ * @property trustedCertificates the certificates (a study's own CA) that the broker's certificate must chain
+ *   to; empty for the system's trust store. Needs an `ssl://` broker.
  */
 public data class MqttSettings(
     val broker: BrokerAddress,
@@ -26,10 +30,17 @@ public data class MqttSettings(
     val password: String?,
     val keepAliveSeconds: Int = 30,
     val reconnectPolicy: RetryPolicy = RetryPolicy(initialDelayMillis = 250, maxDelayMillis = 30_000),
+    val clientCertificate: ClientCertificate? = null,
+    val trustedCertificates: List<java.security.cert.X509Certificate> = emptyList(),
 ) {
     init {
         Topics.requireUserName(user)
         require(keepAliveSeconds in 1..65_535) { "keepAliveSeconds must be in 1..65535, was $keepAliveSeconds" }
+        require(clientCertificate == null || broker.tls) { "a client certificate needs a TLS broker address (ssl://…), not $broker" }
+        require(trustedCertificates.isEmpty() || broker.tls) { "trusted certificates need a TLS broker address (ssl://…), not $broker" }
+        require(clientCertificate == null || clientCertificate.user == user) {
+            "the client certificate is for ${clientCertificate?.user}, not $user: the broker takes the user name from the certificate"
+        }
     }
 
     /** The MQTT client id: the user name, as the broker requires. */
@@ -37,5 +48,7 @@ public data class MqttSettings(
 
     /** Omits the password. */
     override fun toString(): String =
-        "MqttSettings(broker=$broker, user=$user, password=${if (password == null) "none" else "***"}, keepAliveSeconds=$keepAliveSeconds)"
+        "MqttSettings(broker=$broker, user=$user, password=${if (password == null) "none" else "***"}, keepAliveSeconds=$keepAliveSeconds" +
+            (if (clientCertificate != null) ", clientCertificate=${clientCertificate.user}" else "") +
+            (if (trustedCertificates.isNotEmpty()) ", trustedCertificates=${trustedCertificates.size}" else "") + ")"
 }

@@ -9,6 +9,9 @@ import org.hapticon.messaging.InboxListener
 import org.hapticon.messaging.RetryPolicy
 import org.hapticon.messaging.broker.AclFile
 import org.hapticon.messaging.broker.BrokerSecurity
+import org.hapticon.messaging.broker.BrokerTls
+import org.hapticon.messaging.broker.CertificateAuthority
+import org.hapticon.messaging.broker.ClientCertificates
 import org.hapticon.messaging.broker.EmbeddedBroker
 import org.hapticon.messaging.broker.PasswordFile
 import org.junit.rules.ExternalResource
@@ -64,7 +67,8 @@ class BrokerFixture : ExternalResource() {
 
 /**
  * One embedded broker for every test in this JVM, started on first use, enforcing the shipped ACL and a
- * password file that [register] fills; its store is deleted at exit.
+ * password file that [register] fills; its store is deleted at exit. Besides the plain listener it has two TLS
+ * listeners with [ca]'s broker certificate: [TLS_REQUIRED] (client certificate required) and [TLS_OPTIONAL].
  */
 object SharedBroker {
     private val root: File by lazy {
@@ -72,9 +76,19 @@ object SharedBroker {
     }
     val passwords: PasswordFile by lazy { PasswordFile(File(root, "passwd")) }
 
+    /** The study CA whose users' certificates the TLS listeners accept; its server certificate names 127.0.0.1. */
+    val ca: CertificateAuthority by lazy { CertificateAuthority.init(File(root, "ca"), "Hapticon test CA", emptyList()) }
+
+    /** The index of the TLS listener that requires a client certificate, and of the one where it is optional. */
+    const val TLS_REQUIRED = 0
+    const val TLS_OPTIONAL = 1
+
     val instance: EmbeddedBroker by lazy {
         val acl = File(root, "aclfile").apply { writeText(AclFile.DEFAULT_TEXT) }
-        EmbeddedBroker(File(root, "store"), security = BrokerSecurity.Authenticated(passwords.file, acl)).also { it.start() }
+        val tls = listOf(ClientCertificates.REQUIRED, ClientCertificates.OPTIONAL).map { mode ->
+            BrokerTls(0, EmbeddedBroker.HOST, ca.serverCertificateFile, ca.serverKeyFile, ca.certificateFile, mode)
+        }
+        EmbeddedBroker(File(root, "store"), security = BrokerSecurity.Authenticated(passwords.file, acl), tls = tls).also { it.start() }
     }
 
     /** Adds [user] to the password file (once) and returns its password, `<user>-secret`. */

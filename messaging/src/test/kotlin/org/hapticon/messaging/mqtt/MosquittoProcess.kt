@@ -1,6 +1,7 @@
 package org.hapticon.messaging.mqtt
 
 import org.hapticon.messaging.BrokerAddress
+import org.hapticon.messaging.broker.CertificateAuthority
 import org.junit.Assert.fail
 import org.junit.Assume.assumeTrue
 import java.io.File
@@ -15,8 +16,11 @@ import java.util.concurrent.TimeUnit
  * rewritten into [dir] and its listener on a free loopback port. Missing Mosquitto skips the test, except
  * on CI (env CI=true), which installs it and must run these tests.
  */
-class MosquittoProcess(private val dir: File, users: Map<String, String>) {
+class MosquittoProcess(private val dir: File, users: Map<String, String>, certificates: CertificateAuthority? = null) {
     val port: Int = ServerSocket(0, 1, InetAddress.getByName(HOST)).use { it.localPort }
+
+    /** The client-certificate listener's port (the shipped file's commented `listener 8884` block, enabled when [certificates] are given). */
+    val tlsPort: Int = ServerSocket(0, 1, InetAddress.getByName(HOST)).use { it.localPort }
     private val config = File(dir, "mosquitto.conf")
     private val log = File(dir, "mosquitto.log")
     private var process: Process? = null
@@ -27,10 +31,13 @@ class MosquittoProcess(private val dir: File, users: Map<String, String>) {
             run(listOf(tool("mosquitto_passwd"), "-b") + (if (passwd.exists()) emptyList() else listOf("-c")) + listOf(passwd.path, user, password))
         }
         File(dir, "data").mkdirs()
-        config.writeText(deploymentConfig(port, File(dir, "data"), passwd))
+        config.writeText(deploymentConfig(port, File(dir, "data"), passwd) + (certificates?.let { certificateListener(tlsPort, it) } ?: ""))
     }
 
     val address: BrokerAddress get() = BrokerAddress(HOST, port)
+
+    /** The client-certificate listener. */
+    val tlsAddress: BrokerAddress get() = BrokerAddress(HOST, tlsPort, tls = true)
 
     /** Starts Mosquitto and waits until it accepts connections. */
     fun start() {
@@ -86,6 +93,28 @@ class MosquittoProcess(private val dir: File, users: Map<String, String>) {
 
     companion object {
         const val HOST = "127.0.0.1"
+
+        /**
+         * The shipped file's commented client-certificate listener (from `#listener 8884` to the next blank line),
+         * uncommented, on [port] with [ca]'s files. Fails when the block is no longer there or lost a line the
+         * test relies on, so the test keeps exercising the shipped text.
+         */
+        fun certificateListener(port: Int, ca: CertificateAuthority): String {
+            val lines = File(deploymentDir(), "mosquitto.conf").readLines()
+            val start = lines.indexOf("#listener 8884")
+            if (start < 0) fail("mosquitto.conf no longer has the commented line \"#listener 8884\"")
+            val block = lines.drop(start).takeWhile { it.isNotBlank() }.map { it.removePrefix("#") }
+            val replacements = mapOf(
+                "listener 8884" to "listener $port $HOST",
+                "cafile " to "cafile ${ca.certificateFile.absolutePath}",
+                "certfile " to "certfile ${ca.serverCertificateFile.absolutePath}",
+                "keyfile " to "keyfile ${ca.serverKeyFile.absolutePath}",
+            )
+            for (required in replacements.keys + listOf("require_certificate true", "use_identity_as_username true", "use_username_as_clientid true")) {
+                if (block.none { it.startsWith(required) }) fail("mosquitto.conf's certificate listener no longer has a line starting with \"$required\"")
+            }
+            return block.joinToString("\n", prefix = "\n", postfix = "\n") { line -> replacements.entries.firstOrNull { line.startsWith(it.key) }?.value ?: line }
+        }
 
         /** Skips the calling test when Mosquitto is not installed, or fails it on CI. */
         fun assumeInstalled() {

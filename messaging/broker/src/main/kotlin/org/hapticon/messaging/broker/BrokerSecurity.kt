@@ -23,7 +23,8 @@ import java.io.IOException
 public sealed interface BrokerSecurity {
     /**
      * Every client authenticates with a user name and password from [passwordFile] (Mosquitto's format, see
-     * [PasswordFile]); its client id must be its user name; it publishes and subscribes only as [aclFile]
+     * [PasswordFile]) or, on a TLS listener that asks for one ([BrokerTls]), with a client certificate of the
+     * study's CA whose common name is the user; its client id must be its user name; it publishes and subscribes only as [aclFile]
      * (Mosquitto's format, see [AclFile]) allows. The same rules as companion/mosquitto/mosquitto.conf.
      */
     public data class Authenticated(val passwordFile: File, val aclFile: File) : BrokerSecurity
@@ -69,10 +70,31 @@ internal class SecurityExtension(private val security: BrokerSecurity) : Extensi
     override fun extensionStop(input: ExtensionStopInput, output: ExtensionStopOutput) = Unit
 }
 
-/** Accepts a CONNECT only with a user name, its password from [passwords], and the user name as client id. */
+/**
+ * Accepts a CONNECT from a client that either showed a client certificate on a TLS listener or gave a user name
+ * and its password from [passwords]; either way its client id must be its user name.
+ *
+ * A certificate has been checked by the TLS handshake already (signed by the listener's trusted CA, within its
+ * validity: HiveMQ's trust store, `client-authentication-mode`); its user is its common name
+ * ([CertificateAuthority.userOf]), as Mosquitto's `use_identity_as_username`. The extension SDK hands the
+ * certificate over as `ConnectionInformation.getClientTlsInformation().getClientCertificate()`. A certificate
+ * user needs no password-file entry; a user name sent with a certificate must be the certificate's.
+ */
 internal class PasswordAuthenticator(private val passwords: PasswordFile) : SimpleAuthenticator {
     override fun onConnect(input: SimpleAuthInput, output: SimpleAuthOutput) {
         val connect = input.connectPacket
+        val certificate = input.connectionInformation.clientTlsInformation.flatMap { it.clientCertificate }.orElse(null)
+        if (certificate != null) {
+            val user = CertificateAuthority.userOf(certificate)
+            val claimed = connect.userName.orElse(null)
+            when {
+                user == null -> output.failAuthentication(ConnackReasonCode.NOT_AUTHORIZED, "the client certificate names no user (one CN that is a user name)")
+                claimed != null && claimed != user -> output.failAuthentication(ConnackReasonCode.BAD_USER_NAME_OR_PASSWORD, "the user name is not the certificate's")
+                connect.clientId != user -> output.failAuthentication(ConnackReasonCode.CLIENT_IDENTIFIER_NOT_VALID, "the client id must be the certificate's user name")
+                else -> output.authenticateSuccessfully()
+            }
+            return
+        }
         val user = connect.userName.orElse(null)
         val password = connect.password.orElse(null)?.let { buffer -> ByteArray(buffer.remaining()).also { buffer.duplicate().get(it) } }
         when {

@@ -37,18 +37,31 @@ import java.util.concurrent.ExecutionException
  * @property security authentication and authorization.
  * @property host the address to listen on: [HOST] (loopback) by default, a LAN address so that phones can
  *   reach a laptop, or `0.0.0.0` for every interface.
+ * @property tls TLS listeners next to the plain one (see [BrokerTls]), each with its own client-certificate
+ *   mode; none by default.
  */
 public class EmbeddedBroker(
     public val dataDirectory: File,
     private val requestedPort: Int = 0,
     public val security: BrokerSecurity,
     public val host: String = HOST,
+    public val tls: List<BrokerTls> = emptyList(),
 ) : AutoCloseable {
     private var broker: EmbeddedHiveMQ? = null
     private var boundPort: Int = requestedPort
+    private val boundTlsPorts: IntArray = tls.map { it.port }.toIntArray()
 
     init {
         require(requestedPort in 0..65_535) { "port must be in 0..65535, was $requestedPort" }
+    }
+
+    /**
+     * The port of the TLS listener `tls[index]`. Throws [IllegalStateException] when that listener was created
+     * with port 0 and the broker was never started.
+     */
+    public fun tlsPort(index: Int = 0): Int {
+        check(boundTlsPorts[index] != 0) { "the broker has not been started yet" }
+        return boundTlsPorts[index]
     }
 
     /** True between [start] and [stop]. */
@@ -79,6 +92,16 @@ public class EmbeddedBroker(
         } catch (e: IOException) {
             throw IOException("cannot listen on $host:$boundPort: ${e.message}", e)
         }
+        val tlsXml = tls.mapIndexed { i, listener ->
+            val tlsAddress = InetAddress.getByName(listener.host)
+            if (boundTlsPorts[i] == 0) boundTlsPorts[i] = ServerSocket(0, 1, tlsAddress).use { it.localPort }
+            try {
+                ServerSocket(boundTlsPorts[i], 1, tlsAddress).close()
+            } catch (e: IOException) {
+                throw IOException("cannot listen on ${listener.host}:${boundTlsPorts[i]}: ${e.message}", e)
+            }
+            listener.listenerXml(boundTlsPorts[i], File(dataDirectory, "conf"), i)
+        }.joinToString("\n")
         if (security is BrokerSecurity.Authenticated) {
             // Fail here with the reason rather than with an extension that refuses to start.
             AclFile.read(security.aclFile)
@@ -96,7 +119,8 @@ public class EmbeddedBroker(
                     "read every inbox and publish as anyone (--allow-anonymous)",
             )
         }
-        File(conf, "config.xml").writeText(configXml(host, boundPort))
+        // The config names the TLS key stores' password: readable by this user only.
+        CertificateAuthority.writeAtomically(File(conf, "config.xml"), configXml(host, boundPort, tlsXml).toByteArray())
         File(conf, "logback.xml").writeText(LOGBACK_XML)
         val started = EmbeddedHiveMQ.builder()
             .withConfigurationFolder(conf.toPath())
@@ -196,7 +220,7 @@ public class EmbeddedBroker(
         /** Largest MQTT packet accepted, in bytes: a 64 KiB payload plus topic and headers, with room to spare. */
         public const val MAX_PACKET_BYTES: Int = 131_072
 
-        private fun configXml(host: String, port: Int) = """
+        private fun configXml(host: String, port: Int, tlsListener: String) = """
             |<?xml version="1.0"?>
             |<hivemq>
             |    <listeners>
@@ -204,6 +228,7 @@ public class EmbeddedBroker(
             |            <port>$port</port>
             |            <bind-address>$host</bind-address>
             |        </tcp-listener>
+            |$tlsListener
             |    </listeners>
             |    <mqtt>
             |        <queued-messages>
