@@ -36,6 +36,24 @@ class PatternImporterTest {
     }
 
     @Test
+    fun read_hostileNestingDuplicatesAndInfinity_inEveryFormat_oneLineNamingFileAndPlace() {
+        // The strict reader stays in front of kotlinx-serialization for these (docs/json.md): depth 64, no duplicates.
+        val deep = """{"Pattern": """ + "[".repeat(70) + "]".repeat(70) + "}"
+        assertEquals("deep.ahap: nesting deeper than 64 levels at offset 75", error(deep, "deep.ahap"))
+        assertEquals("dup.ahap: duplicate member name \"Pattern\" at offset 16", error("""{"Pattern": [], "Pattern": []}""", "dup.ahap"))
+        assertEquals("inf.json: amplitude[0].amplitude: must be finite", error(patternJson("""[{"time":0,"amplitude":1e999}]"""), "inf.json"))
+        assertEquals(
+            "inf.ahap: Pattern[0].Event.Time: must be finite",
+            error("""{"Pattern": [{"Event": {"Time": 1e999, "EventType": "HapticTransient"}}]}""", "inf.ahap"),
+        )
+        assertEquals(
+            "inf.haptic: version.major: must be finite",
+            error("""{"version": {"major": 1e999, "minor": 0, "patch": 0}}""", "inf.haptic"),
+        )
+        assertEquals("deep.json: nesting deeper than 64 levels at offset 64", error("[".repeat(65) + "]".repeat(65), "deep.json"))
+    }
+
+    @Test
     fun read_hugeDurationInAnAhap_refusedByTheSafetyCap() {
         val ahap = """{"Pattern":[{"Event":{"Time":0,"EventType":"HapticContinuous","EventDuration":1e9,"EventParameters":[]}}]}"""
         val message = error(ahap, "long.ahap")
