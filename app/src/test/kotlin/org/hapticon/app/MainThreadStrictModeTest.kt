@@ -27,6 +27,7 @@ import kotlinx.coroutines.runBlocking
 import kotlinx.coroutines.withTimeoutOrNull
 import org.hapticon.app.playback.PROCESSING_KNOCK
 import org.hapticon.app.playback.RendererChoice
+import org.hapticon.app.playback.label
 import org.hapticon.app.playback.lastVibration
 import org.hapticon.app.sync.BrokerProcess
 import org.hapticon.core.HapticIcon
@@ -55,7 +56,8 @@ import org.robolectric.annotation.Config
  * Issue 13: the debug build's main-thread policy ([mainThreadPolicy]) with a penalty that fails the test. The
  * whole app (its real container: Room on a database file, SharedPreferences settings, the MQTT sync against a
  * real broker, the adaptive player) is driven as a user would: the chat list, a conversation with a received
- * icon, pressing that icon and previewing an icon of the composer. Every StrictMode violation on the main thread is recorded with its stack and fails the test.
+ * icon, pressing that icon, choosing an icon in the composer (its "how it will feel there" figure) and
+ * previewing it. Every StrictMode violation on the main thread is recorded with its stack and fails the test.
  *
  * How violations reach the listener under Robolectric (Android 15's `StrictMode.java`): on a thread with a
  * Looper, `AndroidBlockGuardPolicy.handleViolationWithTimingAttempt` does not call the listener at once; it
@@ -146,6 +148,8 @@ class MainThreadStrictModeTest {
             }
             awaitTrue("the knock stored") { chat.repository.messages("bob").first().any { it.text == "feel this" } }
             awaitTrue("bob's capabilities") { chat.sync.peerCapabilities.value["bob"] != null }
+            // Computed here, before the policy: the figure the composer must show once it has computed it off main.
+            val figure = RendererChoice.fidelityPercent(RendererKind.AMPLITUDE_WAVEFORM, HapticIcon.HIT)
             val vibrator = app.getSystemService(Vibrator::class.java)
             shadowOf(vibrator).setHasAmplitudeControl(true)
 
@@ -164,6 +168,11 @@ class MainThreadStrictModeTest {
                 assertEquals(PROCESSING_KNOCK, lastVibration(vibrator))
             }
             step(3) {
+                rule.onNodeWithContentDescription("Icon hit").performClick()
+                val line = "How hit will feel there: ${RendererKind.AMPLITUDE_WAVEFORM.label}, $figure% fidelity"
+                rule.waitUntil(10_000) { rule.onAllNodesWithText(line).fetchSemanticsNodes().isNotEmpty() }
+            }
+            step(4) {
                 rule.onNodeWithContentDescription("Icon hit").performTouchInput { longClick() }
                 rule.waitUntil(10_000) { lastVibration(vibrator) != PROCESSING_KNOCK }
             }
@@ -182,7 +191,8 @@ class MainThreadStrictModeTest {
 
     private companion object {
         val STEPS = listOf(
-            "opening the chat list", "opening the conversation", "pressing the received knock", "previewing hit",
+            "opening the chat list", "opening the conversation", "pressing the received knock",
+            "choosing hit in the composer (its figure)", "previewing hit",
         )
     }
 
