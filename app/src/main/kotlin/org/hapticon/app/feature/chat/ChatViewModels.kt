@@ -22,6 +22,7 @@ import org.hapticon.app.data.IconRepository
 import org.hapticon.app.data.database.ConversationSummary
 import org.hapticon.app.data.database.StoredMessage
 import org.hapticon.app.playback.HapticPlayer
+import org.hapticon.app.playback.playMessageOffMain
 import org.hapticon.app.playback.playOffMain
 import org.hapticon.app.playback.RendererChoice
 import org.hapticon.core.HapticIcon
@@ -287,18 +288,12 @@ class ConversationViewModel(
         viewModelScope.launch { player.playOffMain(pattern) }
     }
 
-    /** Feels a message's icon; for a received message the sender learns it was felt. */
+    /** Feels a message's icon or pattern; for a received message the sender learns it was felt. */
     fun feel(message: StoredMessage) {
-        val icon = message.icon
-        val pattern = message.pattern
-        when {
-            icon != null -> viewModelScope.launch { player.playOffMain(icon) }
-            pattern != null -> viewModelScope.launch { player.playOffMain(pattern) }
-            else -> return
-        }
+        if (message.icon == null && message.pattern == null) return
+        viewModelScope.launch { player.playMessageOffMain(message.icon, message.pattern) }
         if (!message.outgoing) onFelt(peer, message.id)
     }
-
 
     /** Sends a failed or waiting own message now. */
     fun retry(message: StoredMessage) {
