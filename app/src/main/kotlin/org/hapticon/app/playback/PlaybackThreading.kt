@@ -21,6 +21,18 @@ suspend fun HapticPlayer.playOffMain(icon: HapticIcon, model: EnvelopeModel): Pl
 suspend fun HapticPlayer.playOffMain(pattern: HapticPattern): Playback = withContext(renderContext) { play(pattern) }
 
 /**
+ * Plays what a message carries, off the caller's thread like [playOffMain]: its [icon], else its [pattern] (a
+ * message carries at most one, as `ChatMessage` requires); null, with nothing played, when it carries neither.
+ * The one place that choice is made for a press on a bubble (`ConversationViewModel.feel`) and for auto-play on
+ * arrival (`ChatSync`).
+ */
+suspend fun HapticPlayer.playMessageOffMain(icon: HapticIcon?, pattern: HapticPattern?): Playback? = when {
+    icon != null -> playOffMain(icon)
+    pattern != null -> playOffMain(pattern)
+    else -> null
+}
+
+/**
  * Marks rendering work for StrictMode (`StrictMode.noteSlowCall`): with `detectCustomSlowCalls()`, as the
  * debug build's policy ([org.hapticon.app.HapticonApplication]) and `MainThreadWorkTest` set it, rendering
  * on a thread with that policy (the main thread) is a violation. A no-op elsewhere and in release builds.

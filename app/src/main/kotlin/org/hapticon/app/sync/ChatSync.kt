@@ -17,7 +17,7 @@ import org.hapticon.app.data.ChatPreferences
 import org.hapticon.app.data.ChatRepository
 import org.hapticon.app.data.ChatSettingsRepository
 import org.hapticon.app.playback.HapticPlayer
-import org.hapticon.app.playback.playOffMain
+import org.hapticon.app.playback.playMessageOffMain
 import kotlinx.coroutines.flow.Flow
 import org.hapticon.app.sensors.HandshakeLink
 import org.hapticon.app.sensors.NetworkPartnerHand
@@ -308,7 +308,7 @@ class ChatSync(
             Log.i(TAG, "auto-play of ${message.id} skipped: $decision")
             return false
         }
-        if (icon != null) player.playOffMain(icon) else if (pattern != null) player.playOffMain(pattern)
+        player.playMessageOffMain(icon, pattern)
         sendFelt(messenger, message.sender, message.id)
         return true
     }

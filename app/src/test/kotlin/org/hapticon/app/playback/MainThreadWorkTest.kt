@@ -8,9 +8,12 @@ import kotlin.coroutines.CoroutineContext
 import kotlinx.coroutines.Dispatchers
 import kotlinx.coroutines.asCoroutineDispatcher
 import kotlinx.coroutines.flow.flowOf
+import kotlinx.coroutines.runBlocking
 import org.hapticon.app.data.IconRepository
 import org.hapticon.app.feature.icons.IconsViewModel
 import org.hapticon.core.HapticIcon
+import org.hapticon.core.pattern.AmplitudeKey
+import org.hapticon.core.pattern.FrequencyKey
 import org.hapticon.core.pattern.HapticPattern
 import org.hapticon.core.render.Fidelity
 import org.hapticon.messaging.RendererKind
@@ -49,7 +52,10 @@ class MainThreadWorkTest {
             return Playback.Playing(RendererKind.AMPLITUDE_WAVEFORM, 10, Fidelity(0.0, 0.0, "exact"))
         }
 
-        override fun play(pattern: HapticPattern): Playback = Playback.Unsupported
+        override fun play(pattern: HapticPattern): Playback {
+            renderedOn += "${Thread.currentThread().name}: pattern ${pattern.name}"
+            return Playback.Unsupported
+        }
 
         override fun stop() {}
     }
@@ -67,6 +73,18 @@ class MainThreadWorkTest {
         assertTrue("not played", player.played.await(5, TimeUnit.SECONDS))
         assertEquals(listOf("test-render"), player.renderedOn)
         assertEquals(listOf(false), player.onMainLooper)
+    }
+
+    private val pattern = HapticPattern("ramp", listOf(AmplitudeKey(0.0, 0.0), AmplitudeKey(0.02, 1.0)), listOf(FrequencyKey(0.0, 150.0)))
+
+    /** playMessageOffMain: a message's icon, else its pattern, rendered on the player's render thread; nothing for neither. */
+    @Test
+    fun playMessageOffMain_iconElsePatternOnTheRenderThread() = runBlocking {
+        val player = ThreadRecordingPlayer()
+        assertEquals(Playback.Playing(RendererKind.AMPLITUDE_WAVEFORM, 10, Fidelity(0.0, 0.0, "exact")), player.playMessageOffMain(HapticIcon.KNOCK, null))
+        assertEquals(Playback.Unsupported, player.playMessageOffMain(null, pattern))
+        assertEquals(null, player.playMessageOffMain(null, null))
+        assertEquals(listOf("test-render", "test-render: pattern ramp"), player.renderedOn)
     }
 
     @Test

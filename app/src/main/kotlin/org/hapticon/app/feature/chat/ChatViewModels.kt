@@ -7,6 +7,11 @@ import kotlinx.coroutines.flow.SharingStarted
 import kotlinx.coroutines.flow.StateFlow
 import kotlinx.coroutines.flow.Flow
 import kotlinx.coroutines.flow.combine
+import kotlinx.coroutines.flow.conflate
+import kotlinx.coroutines.flow.distinctUntilChanged
+import kotlinx.coroutines.flow.flowOn
+import kotlinx.coroutines.flow.map
+import kotlinx.coroutines.flow.onStart
 import kotlinx.coroutines.flow.flowOf
 import kotlinx.coroutines.flow.stateIn
 import kotlinx.coroutines.launch
@@ -17,6 +22,7 @@ import org.hapticon.app.data.IconRepository
 import org.hapticon.app.data.database.ConversationSummary
 import org.hapticon.app.data.database.StoredMessage
 import org.hapticon.app.playback.HapticPlayer
+import org.hapticon.app.playback.playMessageOffMain
 import org.hapticon.app.playback.playOffMain
 import org.hapticon.app.playback.RendererChoice
 import org.hapticon.core.HapticIcon
@@ -149,7 +155,9 @@ suspend fun applyInvite(text: String, repository: ChatRepository, settings: Chat
 }
 
 /**
- * What the peer's phone makes of the chosen icon or pattern ("how will this feel there"). [alternative] is
+ * What the peer's phone makes of the chosen icon or pattern ("how will this feel there"); [fidelityPercent] is
+ * null for a pattern, where nothing plays, and while the chosen icon's figure is still being computed off the
+ * main thread (`ConversationViewModel`). [alternative] is
  * set when the peer's capabilities leave two renderers possible (a pattern on an audio-coupled API 36 phone:
  * envelope if its vibrator offers envelope effects, else amplitude steps), shown as "X or Y".
  */
@@ -215,13 +223,40 @@ class ConversationViewModel(
 
     private val draft = MutableStateFlow(Draft())
 
-    val uiState: StateFlow<ConversationUiState> = combine(
-        repository.messages(peer), icons.icons(), patterns, draft, peerCapabilities,
-    ) { messages, iconList, patternList, draft, capabilities ->
+    /** Which figure a computed fidelity belongs to: the peer's renderer and the chosen icon. */
+    private data class FigureKey(val renderer: RendererKind, val icon: HapticIcon)
+
+    /**
+     * The chosen icon's fidelity on the peer's renderer ("how it will feel there"). Computing it renders the icon
+     * (its whole PCM signal for an audio-coupled peer), so it runs in the player's render context, as playback does
+     * ([playOffMain]), never on the main thread; a choice made while a figure is computed replaces the pending one.
+     */
+    private val figure: Flow<Pair<FigureKey, Int?>?> = combine(draft, peerCapabilities) { draft, capabilities ->
+        val renderer = capabilities[peer]?.renderer
+        val icon = draft.icon
+        if (renderer == null || icon == null || draft.pattern != null) null else FigureKey(renderer, icon)
+    }.distinctUntilChanged()
+        .conflate()
+        .map { key -> key?.let { it to RendererChoice.fidelityPercent(it.renderer, it.icon) } }
+        .flowOn(player.renderContext)
+        .onStart { emit(null) }
+
+    /** The draft with what the peer will feel of it; the figure only once computed for this very choice. */
+    private val composer: Flow<Pair<Draft, PeerFeel?>> = combine(draft, peerCapabilities, figure) { draft, capabilities, figure ->
         val feel = capabilities[peer]?.let { caps ->
-            if (draft.pattern != null) PeerFeel.ofPattern(caps)
-            else PeerFeel(caps.renderer, draft.icon?.let { RendererChoice.fidelityPercent(caps.renderer, it) })
+            if (draft.pattern != null) {
+                PeerFeel.ofPattern(caps)
+            } else {
+                val percent = draft.icon?.let { icon -> figure?.takeIf { it.first == FigureKey(caps.renderer, icon) }?.second }
+                PeerFeel(caps.renderer, percent)
+            }
         }
+        draft to feel
+    }
+
+    val uiState: StateFlow<ConversationUiState> = combine(
+        repository.messages(peer), icons.icons(), patterns, composer,
+    ) { messages, iconList, patternList, (draft, feel) ->
         ConversationUiState.Success(
             peer, messages, iconList, draft.icon, draft.sticker, feel, draft.error, patternList, draft.pattern,
         )
@@ -253,15 +288,10 @@ class ConversationViewModel(
         viewModelScope.launch { player.playOffMain(pattern) }
     }
 
-    /** Feels a message's icon; for a received message the sender learns it was felt. */
+    /** Feels a message's icon or pattern; for a received message the sender learns it was felt. */
     fun feel(message: StoredMessage) {
-        val icon = message.icon
-        val pattern = message.pattern
-        when {
-            icon != null -> viewModelScope.launch { player.playOffMain(icon) }
-            pattern != null -> viewModelScope.launch { player.playOffMain(pattern) }
-            else -> return
-        }
+        if (message.icon == null && message.pattern == null) return
+        viewModelScope.launch { player.playMessageOffMain(message.icon, message.pattern) }
         if (!message.outgoing) onFelt(peer, message.id)
     }
 

@@ -1,0 +1,120 @@
+package org.hapticon.app.feature.chat
+
+import android.content.Context
+import android.os.Looper
+import android.os.strictmode.Violation
+import androidx.room.Room
+import androidx.test.core.app.ApplicationProvider
+import java.util.concurrent.CopyOnWriteArrayList
+import java.util.concurrent.CountDownLatch
+import java.util.concurrent.Executors
+import kotlin.coroutines.CoroutineContext
+import kotlinx.coroutines.CoroutineScope
+import kotlinx.coroutines.Dispatchers
+import kotlinx.coroutines.Job
+import kotlinx.coroutines.asCoroutineDispatcher
+import kotlinx.coroutines.flow.MutableStateFlow
+import kotlinx.coroutines.launch
+import org.hapticon.app.data.OfflineFirstChatRepository
+import org.hapticon.app.data.RoomIconRepository
+import org.hapticon.app.data.database.HapticonDatabase
+import org.hapticon.app.recordMainThreadViolations
+import org.hapticon.app.stopRecordingMainThreadViolations
+import org.hapticon.app.playback.HapticPlayer
+import org.hapticon.app.playback.Playback
+import org.hapticon.app.playback.PlaybackCapabilities
+import org.hapticon.app.playback.RendererChoice
+import org.hapticon.core.HapticIcon
+import org.hapticon.core.pattern.HapticPattern
+import org.hapticon.messaging.Capabilities
+import org.hapticon.messaging.RendererKind
+import org.junit.After
+import org.junit.Assert.assertEquals
+import org.junit.Assert.assertTrue
+import org.junit.Test
+import org.junit.runner.RunWith
+import org.robolectric.RobolectricTestRunner
+import org.robolectric.Shadows.shadowOf
+
+/**
+ * The composer's "how it will feel there" figure renders the chosen icon, so the ViewModel computes it in the
+ * player's render context, never on the main thread (issue 13); while it is being computed the line shows the
+ * peer's renderer without a figure, and a figure is only ever shown beside the icon it was computed for.
+ */
+@RunWith(RobolectricTestRunner::class)
+class ComposerFigureTest {
+    private val context = ApplicationProvider.getApplicationContext<Context>()
+    private val db = Room.inMemoryDatabaseBuilder(context, HapticonDatabase::class.java).build()
+    private val renderThread = Executors.newSingleThreadExecutor { Thread(it, "test-render") }
+    private val collector = Job()
+    private val violations = CopyOnWriteArrayList<Violation>()
+
+    // Holds the render thread busy while the test chooses icons.
+    private val busy = CountDownLatch(1)
+
+    /** Plays nothing; renders (here: the figure) on [renderThread]. */
+    private val player = object : HapticPlayer {
+        override val capabilities = PlaybackCapabilities(hasVibrator = true, hasAmplitudeControl = true, apiLevel = 35)
+        override val renderContext: CoroutineContext = renderThread.asCoroutineDispatcher()
+        override fun play(icon: HapticIcon): Playback = Playback.Unsupported
+        override fun play(pattern: HapticPattern): Playback = Playback.Unsupported
+        override fun stop() {}
+    }
+
+    @After
+    fun tearDown() {
+        stopRecordingMainThreadViolations()
+        busy.countDown()
+        collector.cancel()
+        renderThread.shutdownNow()
+        db.close()
+    }
+
+    private fun idleUntil(what: String, condition: () -> Boolean) {
+        val deadline = System.nanoTime() + 10_000_000_000L
+        while (true) {
+            shadowOf(Looper.getMainLooper()).idle()
+            if (condition()) return
+            check(System.nanoTime() < deadline) { "timed out waiting for $what" }
+            Thread.sleep(5)
+        }
+    }
+
+    @Test
+    fun chosenIcon_figureComputedOffMain_neverShownBesideAnotherIcon() {
+        val knockFigure = RendererChoice.fidelityPercent(RendererKind.AMPLITUDE_WAVEFORM, HapticIcon.KNOCK)
+        val hitFigure = RendererChoice.fidelityPercent(RendererKind.AMPLITUDE_WAVEFORM, HapticIcon.HIT)
+        val bob = Capabilities("bob", RendererKind.AMPLITUDE_WAVEFORM, amplitudeControl = true, apiLevel = 35)
+        val viewModel = ConversationViewModel(
+            "bob", { "alice" }, OfflineFirstChatRepository(db), RoomIconRepository(db.iconDao()), player,
+            MutableStateFlow(mapOf("bob" to bob)), onSent = {},
+        )
+        val states = CopyOnWriteArrayList<ConversationUiState.Success>()
+        CoroutineScope(Dispatchers.Main + collector).launch {
+            viewModel.uiState.collect { if (it is ConversationUiState.Success) states += it }
+        }
+        idleUntil("the conversation") { states.isNotEmpty() }
+        recordMainThreadViolations(violations)
+
+        // The render thread is busy: both choices show the renderer at once, without a figure.
+        renderThread.execute { busy.await() }
+        viewModel.selectIcon(HapticIcon.KNOCK)
+        idleUntil("knock chosen") { states.last().selectedIcon == HapticIcon.KNOCK }
+        assertEquals(PeerFeel(RendererKind.AMPLITUDE_WAVEFORM, null), states.last().peerFeel)
+        viewModel.selectIcon(HapticIcon.HIT)
+        idleUntil("hit chosen") { states.last().selectedIcon == HapticIcon.HIT }
+        assertEquals(PeerFeel(RendererKind.AMPLITUDE_WAVEFORM, null), states.last().peerFeel)
+
+        busy.countDown()
+        idleUntil("hit's figure") { states.last().peerFeel?.fidelityPercent != null }
+        assertEquals(ConversationUiState.Success::class, states.last()::class)
+        assertEquals(HapticIcon.HIT to PeerFeel(RendererKind.AMPLITUDE_WAVEFORM, hitFigure), states.last().selectedIcon to states.last().peerFeel)
+        // No state ever paired an icon with a figure computed for another one.
+        for (state in states) {
+            val percent = state.peerFeel?.fidelityPercent ?: continue
+            assertEquals("figure beside ${state.selectedIcon?.name}", if (state.selectedIcon == HapticIcon.HIT) hitFigure else knockFigure, percent)
+        }
+        shadowOf(Looper.getMainLooper()).idle()
+        assertTrue("rendered on the main thread: ${violations.map { it.message }}", violations.isEmpty())
+    }
+}
