@@ -22,7 +22,8 @@ import org.junit.Test
 
 /**
  * The researcher's screen behind the PIN: the originating study's protocol with pink masking noise on, the
- * sessions run so far, an export with its log checks and a failed upload. The screen takes its state as given; its ViewModel only receives presses.
+ * sessions run so far, the warning before a masked session without headphones, an export with its log checks
+ * and a failed upload. The screen takes its state as given; its ViewModel only receives presses.
  */
 class ResearcherScreenshotTest : ScreenshotTest() {
     private val context = ApplicationProvider.getApplicationContext<Context>()
@@ -48,11 +49,17 @@ class ResearcherScreenshotTest : ScreenshotTest() {
         ResearcherScreen(unlocked, ResearcherActions())
     }
 
+    /** Masking noise is on and no headphones are connected: the start waits for the researcher's answer. */
+    @Test
+    fun researcher_maskingWithoutHeadphones_warns() = screen("study-researcher-headphones", dialog = true) {
+        ResearcherScreen(unlocked.copy(headphoneWarning = true), ResearcherActions())
+    }
+
     @Test
     fun researcher_exportedThenUploadFailed() = screen(
         "study-researcher-export",
-        // Scrolled to the export section (on a phone-sized screen it is already in view).
-        prepare = { compose.onNode(hasScrollToNodeAction()).performScrollToNode(hasText("Export CSV + JSON")) },
+        // Scrolled to the end, where the failed upload's reason and Retry upload are, with the export above them.
+        prepare = { compose.onNode(hasScrollToNodeAction()).performScrollToNode(hasText("Nothing is lost", substring = true)) },
     ) {
         val export = ExportResult(
             File(exports, "hapticon-2026-11-25.csv"), File(exports, "hapticon-2026-11-25.json"), csv = "", rows = 57,

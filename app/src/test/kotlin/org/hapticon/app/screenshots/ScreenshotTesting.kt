@@ -12,13 +12,18 @@ import androidx.compose.ui.Modifier
 import androidx.compose.ui.graphics.asAndroidBitmap
 import androidx.compose.ui.platform.LocalDensity
 import androidx.compose.ui.test.captureToImage
+import androidx.compose.ui.test.hasAnyDescendant
+import androidx.compose.ui.test.isDialog
+import androidx.compose.ui.test.isRoot
 import androidx.compose.ui.test.junit4.ComposeContentTestRule
 import androidx.compose.ui.test.junit4.createComposeRule
 import androidx.compose.ui.test.onRoot
 import androidx.compose.ui.unit.Density
 import com.github.takahirom.roborazzi.RoborazziOptions
 import com.github.takahirom.roborazzi.RoborazziTaskType
+import com.github.takahirom.roborazzi.ExperimentalRoborazziApi
 import com.github.takahirom.roborazzi.captureRoboImage
+import com.github.takahirom.roborazzi.captureScreenRoboImage
 import com.github.takahirom.roborazzi.roborazziSystemPropertyTaskType
 import java.io.File
 import org.hapticon.app.designsystem.HapticonTheme
@@ -60,6 +65,7 @@ enum class Variant(val suffix: String, val dark: Boolean, val fontScale: Float) 
  *   comparator; the diff lands in `out/app/roborazzi/`). Recorded images change only by `./build screenshots`.
  * - runs the Accessibility Test Framework's checks ([AccessibilityChecks]) on what was drawn.
  */
+@OptIn(ExperimentalRoborazziApi::class)
 @RunWith(RobolectricTestRunner::class)
 @GraphicsMode(GraphicsMode.Mode.NATIVE)
 @Config(sdk = [35], qualifiers = "w411dp-h891dp-xxhdpi")
@@ -71,11 +77,17 @@ abstract class ScreenshotTest {
      * Renders [content] once per variant and records/compares `NAME[suffix].png`; [prepare] runs once after
      * the content is set (to drive a route with its ViewModel); [accessibility] runs the ATF checks on every
      * variant (turn off only for a picture that is not a screen, with a reason).
+     *
+     * [dialog]: the content shows a dialog, which Compose puts in a window of its own (a second root that
+     * `onRoot()` does not reach); the picture is then the whole screen with every window, as a phone shows it
+     * (the screen behind under the dialog's scrim, Roborazzi's `captureScreenRoboImage`), and the checks run
+     * on the dialog's window, the one that has TalkBack's focus.
      */
     fun screen(
         name: String,
         variants: List<Variant> = Variant.THEMES,
         accessibility: Boolean = true,
+        dialog: Boolean = false,
         prepare: () -> Unit = {},
         content: @Composable () -> Unit,
     ) {
@@ -90,11 +102,12 @@ abstract class ScreenshotTest {
             variant = v
             compose.waitForIdle()
             val file = File(screensDirectory(), "$name${v.suffix}.png")
-            compose.onRoot().captureRoboImage(file, roborazziOptions())
+            if (dialog) captureScreenRoboImage(file, roborazziOptions()) else compose.onRoot().captureRoboImage(file, roborazziOptions())
             if (accessibility) {
-                val bitmap = compose.onRoot().captureToImage().asAndroidBitmap()
-                val root = compose.onRoot(useUnmergedTree = true).fetchSemanticsNode()
-                failures += AccessibilityChecks.run(root, bitmap).map { "${file.name}: $it" }
+                // A dialog's root is the one isDialog() finds inside; the screen's own root has none.
+                val root = if (dialog) compose.onNode(isRoot() and hasAnyDescendant(isDialog()), useUnmergedTree = true) else compose.onRoot(useUnmergedTree = true)
+                val bitmap = root.captureToImage().asAndroidBitmap()
+                failures += AccessibilityChecks.run(root.fetchSemanticsNode(), bitmap).map { "${file.name}: $it" }
             }
         }
         if (failures.isNotEmpty()) {

@@ -62,6 +62,7 @@ import androidx.compose.ui.graphics.CompositingStrategy
 import androidx.compose.ui.graphics.graphicsLayer
 import androidx.compose.ui.graphics.vector.ImageVector
 import androidx.compose.ui.res.painterResource
+import androidx.compose.ui.semantics.Role
 import androidx.compose.ui.semantics.contentDescription
 import androidx.compose.ui.semantics.semantics
 import androidx.compose.ui.semantics.stateDescription
@@ -436,7 +437,10 @@ private fun ComposerChip(
         modifier = Modifier
             .border(1.dp, if (selected) colors.secondaryContainer else colors.outlineVariant, RoundedCornerShape(8.dp))
             .clip(RoundedCornerShape(8.dp))
+            // A button to TalkBack ("Icon knock, not selected, button, double-tap to add to message"): without the
+            // role it announced no control type at all.
             .combinedClickable(
+                role = Role.Button,
                 onClickLabel = if (selected) "Remove from message" else "Add to message",
                 onLongClickLabel = "Feel $name here",
                 onLongClick = onPreview,

@@ -2,6 +2,8 @@ package org.hapticon.app.feature.gesture
 
 import org.hapticon.sensor.live.PlotSource
 import androidx.compose.foundation.layout.Arrangement
+import androidx.compose.foundation.layout.ExperimentalLayoutApi
+import androidx.compose.foundation.layout.FlowRow
 import androidx.compose.foundation.layout.Column
 import androidx.compose.foundation.layout.Row
 import androidx.compose.foundation.layout.fillMaxSize
@@ -101,6 +103,7 @@ fun RecorderScreen(uiState: RecorderUiState, plot: PlotSource, touch: TouchGestu
     }
 }
 
+@OptIn(ExperimentalLayoutApi::class)
 @Composable
 private fun RecorderContent(state: RecorderUiState.Ready, plot: PlotSource, touch: TouchGestureSource?, actions: RecorderActions) {
     Column(Modifier.fillMaxSize().verticalScroll(rememberScrollState()).padding(16.dp), verticalArrangement = Arrangement.spacedBy(8.dp)) {
@@ -109,7 +112,8 @@ private fun RecorderContent(state: RecorderUiState.Ready, plot: PlotSource, touc
             SourcePicker(state.sourceKind, !state.recording) { actions.onSelectSource(it) }
         }
         if (state.sourceKind == GestureSourceKind.TOUCH && touch != null) TouchPad(touch)
-        Row(horizontalArrangement = Arrangement.spacedBy(12.dp)) {
+        // A flow row: at the largest font sizes the second button goes under the first instead of wrapping its words.
+        FlowRow(horizontalArrangement = Arrangement.spacedBy(12.dp), verticalArrangement = Arrangement.spacedBy(8.dp)) {
             if (state.recording) {
                 Button(onClick = { actions.onStopRecording() }) { Text("Stop") }
             } else {
@@ -138,6 +142,7 @@ private fun RecorderContent(state: RecorderUiState.Ready, plot: PlotSource, touc
     }
 }
 
+@OptIn(ExperimentalLayoutApi::class)
 @Composable
 private fun TrimAndFit(state: RecorderUiState.Ready, take: Recording, actions: RecorderActions) {
     val source = remember(take) { RecordingPlotSource(take) }
@@ -159,7 +164,7 @@ private fun TrimAndFit(state: RecorderUiState.Ready, take: Recording, actions: R
     var labelIndex by rememberSaveable { mutableIntStateOf(-1) }
     val labelOptions = listOf(-1) + GestureLabel.ALL.indices
     OutlinedTextField(recordingName, { recordingName = it }, label = { Text("Recording name") }, singleLine = true, modifier = Modifier.fillMaxWidth())
-    Row(horizontalArrangement = Arrangement.spacedBy(12.dp)) {
+    FlowRow(horizontalArrangement = Arrangement.spacedBy(12.dp), verticalArrangement = Arrangement.spacedBy(8.dp)) {
         DropdownField("Label", labelOptions, labelIndex, { if (it < 0) "no label" else GestureLabel.ALL[it].id }, { labelIndex = it })
         OutlinedButton(
             onClick = { actions.onSaveRecording(recordingName, GestureLabel.ALL.getOrNull(labelIndex)) },

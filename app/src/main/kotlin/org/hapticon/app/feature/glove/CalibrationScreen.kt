@@ -1,6 +1,7 @@
 package org.hapticon.app.feature.glove
 
 import androidx.compose.foundation.layout.Arrangement
+import org.hapticon.app.ui.SegmentedChoice
 import androidx.compose.foundation.layout.Box
 import androidx.compose.foundation.layout.Column
 import androidx.compose.foundation.layout.Row
@@ -22,9 +23,6 @@ import androidx.compose.material3.MaterialTheme
 import androidx.compose.material3.OutlinedButton
 import androidx.compose.material3.OutlinedTextField
 import androidx.compose.material3.Scaffold
-import androidx.compose.material3.SegmentedButton
-import androidx.compose.material3.SegmentedButtonDefaults
-import androidx.compose.material3.SingleChoiceSegmentedButtonRow
 import androidx.compose.material3.Text
 import androidx.compose.material3.TopAppBar
 import androidx.compose.runtime.Composable
@@ -116,17 +114,7 @@ fun CalibrationScreen(uiState: CalibrationUiState, actions: CalibrationActions) 
                     supportingText = { Text("Calibrations are saved per participant") },
                     modifier = Modifier.fillMaxWidth(),
                 )
-                val fingers = GloveFinger.entries
-                SingleChoiceSegmentedButtonRow(Modifier.fillMaxWidth()) {
-                    fingers.forEachIndexed { i, finger ->
-                        SegmentedButton(
-                            selected = finger == uiState.finger,
-                            onClick = { actions.onSelectFinger(finger) },
-                            shape = SegmentedButtonDefaults.itemShape(i, fingers.size),
-                            label = { Text(fingerName(finger)) },
-                        )
-                    }
-                }
+                SegmentedChoice(GloveFinger.entries, uiState.finger, ::fingerName, actions.onSelectFinger)
                 if (!uiState.connected) {
                     Card(colors = CardDefaults.cardColors(containerColor = MaterialTheme.colorScheme.surfaceVariant)) {
                         Text(

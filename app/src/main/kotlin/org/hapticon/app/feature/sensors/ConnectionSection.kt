@@ -1,6 +1,7 @@
 package org.hapticon.app.feature.sensors
 
 import org.hapticon.sensor.live.ConnectionState
+import org.hapticon.app.ui.SegmentedChoice
 import org.hapticon.sensor.live.StopCause
 import org.hapticon.sensor.protocol.BAUD_RATES
 import org.hapticon.sensor.protocol.SensorProtocol
@@ -17,9 +18,6 @@ import androidx.compose.material3.CardDefaults
 import androidx.compose.material3.Icon
 import androidx.compose.material3.MaterialTheme
 import androidx.compose.material3.OutlinedButton
-import androidx.compose.material3.SegmentedButton
-import androidx.compose.material3.SegmentedButtonDefaults
-import androidx.compose.material3.SingleChoiceSegmentedButtonRow
 import androidx.compose.material3.Text
 import androidx.compose.runtime.Composable
 import androidx.compose.ui.Alignment
@@ -40,18 +38,7 @@ internal fun ConnectionSection(state: SensorsUiState.Ready, actions: SensorsActi
     Column(verticalArrangement = Arrangement.spacedBy(8.dp)) {
         SectionTitle("Connection")
         Text("Protocol", style = MaterialTheme.typography.labelMedium)
-        val protocols = SensorProtocol.entries
-        SingleChoiceSegmentedButtonRow(Modifier.fillMaxWidth()) {
-            protocols.forEachIndexed { i, protocol ->
-                SegmentedButton(
-                    selected = protocol == state.protocol,
-                    onClick = { actions.onSelectProtocol(protocol) },
-                    enabled = !locked,
-                    shape = SegmentedButtonDefaults.itemShape(i, protocols.size),
-                    label = { Text(protocol.label) },
-                )
-            }
-        }
+        SegmentedChoice(SensorProtocol.entries, state.protocol, { it.label }, actions.onSelectProtocol, enabled = !locked)
         FlowRow(horizontalArrangement = Arrangement.spacedBy(12.dp), verticalArrangement = Arrangement.spacedBy(8.dp)) {
             DropdownField(
                 label = "Baud rate",

@@ -1,6 +1,7 @@
 package org.hapticon.app.feature.sensors
 
 import org.hapticon.sensor.grains.ForceInput
+import org.hapticon.app.ui.SegmentedChoice
 import androidx.compose.foundation.layout.Arrangement
 import androidx.compose.foundation.layout.Column
 import androidx.compose.foundation.layout.ExperimentalLayoutApi
@@ -9,9 +10,6 @@ import androidx.compose.foundation.layout.fillMaxWidth
 import androidx.compose.foundation.layout.padding
 import androidx.compose.material3.Card
 import androidx.compose.material3.MaterialTheme
-import androidx.compose.material3.SegmentedButton
-import androidx.compose.material3.SegmentedButtonDefaults
-import androidx.compose.material3.SingleChoiceSegmentedButtonRow
 import androidx.compose.material3.Slider
 import androidx.compose.material3.Text
 import androidx.compose.runtime.Composable
@@ -78,17 +76,10 @@ internal fun GrainsSection(grains: GrainUi, actions: SensorsActions) {
                 },
             )
             Text("Distribution", style = MaterialTheme.typography.labelMedium)
-            val distributions = BinDistribution.entries
-            SingleChoiceSegmentedButtonRow(Modifier.fillMaxWidth()) {
-                distributions.forEachIndexed { i, distribution ->
-                    SegmentedButton(
-                        selected = distribution == grains.distribution,
-                        onClick = { actions.onDistribution(distribution) },
-                        shape = SegmentedButtonDefaults.itemShape(i, distributions.size),
-                        label = { Text(distribution.name.lowercase().replaceFirstChar { it.titlecase(Locale.ROOT) }) },
-                    )
-                }
-            }
+            SegmentedChoice(
+                BinDistribution.entries, grains.distribution,
+                { d -> d.name.lowercase().replaceFirstChar { it.titlecase(Locale.ROOT) } }, actions.onDistribution,
+            )
             Text("Burst strength: ${(grains.amplitude * 100 / 255)} %", style = MaterialTheme.typography.labelMedium)
             Slider(
                 value = grains.amplitude.toFloat(),

@@ -1,0 +1,150 @@
+package org.hapticon.app.feature.chat
+
+import android.content.Context
+import android.os.Vibrator
+import androidx.compose.runtime.collectAsState
+import androidx.compose.runtime.getValue
+import androidx.compose.ui.semantics.Role
+import androidx.compose.ui.semantics.SemanticsActions
+import androidx.compose.ui.semantics.SemanticsProperties
+import androidx.compose.ui.semantics.getOrNull
+import androidx.compose.ui.test.SemanticsMatcher
+import androidx.compose.ui.test.SemanticsNodeInteraction
+import androidx.compose.ui.test.hasContentDescription
+import androidx.compose.ui.test.hasSetTextAction
+import androidx.compose.ui.test.junit4.createComposeRule
+import androidx.compose.ui.test.performSemanticsAction
+import androidx.compose.ui.text.AnnotatedString
+import androidx.room.Room
+import androidx.test.core.app.ApplicationProvider
+import kotlinx.coroutines.flow.MutableStateFlow
+import kotlinx.coroutines.flow.first
+import kotlinx.coroutines.runBlocking
+import org.hapticon.app.data.OfflineFirstChatRepository
+import org.hapticon.app.data.RoomIconRepository
+import org.hapticon.app.data.database.HapticonDatabase
+import org.hapticon.app.data.database.MessageState
+import org.hapticon.app.playback.AdaptiveHapticPlayer
+import org.hapticon.app.playback.DeviceCapabilities
+import org.hapticon.app.playback.lastVibration
+import org.hapticon.core.HapticIcon
+import org.hapticon.core.render.VibrationWaveform
+import org.hapticon.messaging.Capabilities
+import org.hapticon.messaging.ChatMessage
+import org.junit.After
+import org.junit.Assert.assertEquals
+import org.junit.Assert.assertNull
+import org.junit.Before
+import org.junit.Rule
+import org.junit.Test
+import org.junit.runner.RunWith
+import org.robolectric.RobolectricTestRunner
+import org.robolectric.Shadows.shadowOf
+import org.robolectric.annotation.Config
+
+/**
+ * Sending and feeling an icon as TalkBack does it: every control is found only by what TalkBack speaks (its
+ * content description and role, in the merged tree TalkBack focuses) and driven only by its accessibility
+ * actions ([SemanticsActions.OnClick], [SemanticsActions.SetText]) — no touch, no test tag — through the
+ * ViewModel into Room and the outbox, and back out to the vibrator.
+ */
+@RunWith(RobolectricTestRunner::class)
+@Config(qualifiers = "w400dp-h1600dp")
+class TalkBackSendTest {
+    @get:Rule
+    val compose = createComposeRule()
+
+    private val context = ApplicationProvider.getApplicationContext<Context>()
+    private val vibrator = context.getSystemService(Vibrator::class.java)
+    private lateinit var db: HapticonDatabase
+    private lateinit var repository: OfflineFirstChatRepository
+    private val felt = java.util.concurrent.CopyOnWriteArrayList<Pair<String, String>>()
+
+    @Before
+    fun setUp() {
+        shadowOf(vibrator).setHasAmplitudeControl(true)
+        db = Room.inMemoryDatabaseBuilder(context, HapticonDatabase::class.java).allowMainThreadQueries().build()
+        repository = OfflineFirstChatRepository(db, clock = { 1_767_225_600_000 })
+        val viewModel = ConversationViewModel(
+            "bob", { "alice" }, repository, RoomIconRepository(db.iconDao()),
+            AdaptiveHapticPlayer(vibrator, { DeviceCapabilities(true, true, 35) }, { null }),
+            MutableStateFlow<Map<String, Capabilities>>(emptyMap()), {},
+            onFelt = { peer, id -> felt += peer to id },
+        )
+        compose.setContent {
+            val state by viewModel.uiState.collectAsState()
+            ConversationScreen(
+                state,
+                ConversationActions(
+                    onSend = { viewModel.send(it) }, onSelectIcon = viewModel::selectIcon, onSelectSticker = viewModel::selectSticker,
+                    onPreview = viewModel::play, onFeel = viewModel::feel,
+                ),
+            )
+        }
+        compose.waitUntil(5_000) { compose.onAllNodes(hasSetTextAction()).fetchSemanticsNodes().isNotEmpty() }
+    }
+
+    @After
+    fun tearDown() = db.close()
+
+    private fun stored() = runBlocking { repository.messages("bob").first() }
+
+    /** The one control TalkBack reads as [description] with [role]: it must be a focusable merged node. */
+    private fun control(description: String, role: Role) =
+        compose.onNode(hasContentDescription(description) and SemanticsMatcher.expectValue(SemanticsProperties.Role, role))
+
+    private fun SemanticsNodeInteraction.clickLabel(): String? =
+        fetchSemanticsNode().config.getOrNull(SemanticsActions.OnClick)?.label
+
+    private fun SemanticsNodeInteraction.longClickLabel(): String? =
+        fetchSemanticsNode().config.getOrNull(SemanticsActions.OnLongClick)?.label
+
+    private fun SemanticsNodeInteraction.state(): String? =
+        fetchSemanticsNode().config.getOrNull(SemanticsProperties.StateDescription)
+
+    @Test
+    fun iconChoiceAndSend_throughAccessibilityActions_storeAndQueueTheMessage() {
+        val knock = control("Icon knock", Role.Button)
+        // What TalkBack announces: "Icon knock, not selected, button, double-tap to add to message, double-tap and hold to feel knock here".
+        assertEquals("Add to message", knock.clickLabel())
+        assertEquals("Feel knock here", knock.longClickLabel())
+        assertEquals("not selected", knock.state())
+
+        knock.performSemanticsAction(SemanticsActions.OnClick)
+        compose.waitForIdle()
+        assertEquals("selected", control("Icon knock", Role.Button).state())
+        assertEquals("Remove from message", control("Icon knock", Role.Button).clickLabel())
+
+        compose.onNode(hasContentDescription("Message") and hasSetTextAction())
+            .performSemanticsAction(SemanticsActions.SetText) { it(AnnotatedString("feel this")) }
+        control("Send", Role.Button).performSemanticsAction(SemanticsActions.OnClick)
+        compose.waitUntil(5_000) { stored().isNotEmpty() }
+
+        val message = stored().single()
+        assertEquals("feel this", message.text)
+        assertEquals(HapticIcon.KNOCK, message.icon)
+        assertEquals(MessageState.SENDING, message.state)
+        assertEquals(listOf(message.id), runBlocking { db.outboxDao().pending() }.map { it.messageId })
+        // The composer is cleared for the next message: nothing chosen any more.
+        compose.waitUntil(5_000) { control("Icon knock", Role.Button).state() == "not selected" }
+        // Choosing and sending played nothing on this phone.
+        assertNull(lastVibration(vibrator))
+    }
+
+    @Test
+    fun receivedIconChip_throughItsAccessibilityAction_isFelt() {
+        val hug = ChatMessage("0b7e7c1e-3f7b-4a57-9d3e-2f1c5a6b7c8d", "bob", 1_767_225_500_000, "hug", icon = HapticIcon.HUG)
+        runBlocking { repository.receive(hug) }
+        compose.waitUntil(5_000) {
+            compose.onAllNodes(hasContentDescription("Play haptic icon hug")).fetchSemanticsNodes().isNotEmpty()
+        }
+        assertNull(lastVibration(vibrator))
+
+        control("Play haptic icon hug", Role.Button).performSemanticsAction(SemanticsActions.OnClick)
+        compose.waitUntil(5_000) { lastVibration(vibrator) != null }
+        // The hug's own step waveform, as the player renders it for an amplitude-controlled vibrator.
+        assertEquals(VibrationWaveform.render(HapticIcon.HUG).timings().toList(), lastVibration(vibrator)!!.timings)
+        // And bob is told it was felt (the felt receipt the sync sends).
+        assertEquals(listOf("bob" to hug.id), felt.toList())
+    }
+}
