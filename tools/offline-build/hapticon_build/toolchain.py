@@ -15,6 +15,8 @@ from .resolver import Resolver
 from .ui import Stage
 
 HERE = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+# Catalog aliases of the instrumented SDK jars Robolectric runs tests on (see Toolchain.robolectric_sdk_dir).
+ROBOLECTRIC_SDK_PREFIX = "tool-android-all-instrumented"
 
 
 def java_home() -> str:
@@ -108,8 +110,29 @@ class Toolchain:
 
     @cached_property
     def robolectric_sdk_dir(self) -> str:
-        """Directory holding the instrumented SDK jar Robolectric loads (run offline, no fetching of its own)."""
-        return os.path.dirname(self._jar("tool-android-all-instrumented"))
+        """One directory holding every instrumented SDK jar Robolectric may load (it runs offline and fetches
+        nothing itself): each catalog alias `tool-android-all-instrumented*` (targetSdk's, and 36 for the tests
+        that ask `@Config(sdk = [36])`). Robolectric's `LocalDependencyResolver` looks for
+        `<artifactId>-<version>.jar` in the one `robolectric.dependency.dir`, while the local Maven repository
+        keeps each version in its own directory, so the jars are linked side by side here."""
+        aliases = self.catalog.tool_aliases(ROBOLECTRIC_SDK_PREFIX)
+        if not aliases:
+            raise BuildError(f"gradle/libs.versions.toml declares no {ROBOLECTRIC_SDK_PREFIX}* library: Robolectric needs an SDK jar")
+        jars = {}
+        for alias in aliases:
+            c = self.catalog.tool(alias)
+            jars[f"{c.name}-{c.version}.jar"] = self._jar(alias)
+        key = hashlib.sha1("\n".join(f"{n}={p}" for n, p in sorted(jars.items())).encode()).hexdigest()[:16]
+        out = os.path.join(self.cache, "robolectric-sdks", key)
+        if not os.path.exists(os.path.join(out, ".done")):
+            os.makedirs(out, exist_ok=True)
+            for name, path in jars.items():
+                link = os.path.join(out, name)
+                if os.path.lexists(link):
+                    os.remove(link)
+                os.symlink(path, link)
+            open(os.path.join(out, ".done"), "w").close()
+        return out
 
     @cached_property
     def aapt2(self) -> str:
