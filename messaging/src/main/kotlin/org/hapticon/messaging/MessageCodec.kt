@@ -12,6 +12,7 @@ import org.hapticon.core.io.JsonString
 import org.hapticon.core.io.JsonValue
 import org.hapticon.core.pattern.PatternException
 import org.hapticon.core.pattern.PatternJson
+import org.hapticon.core.pattern.PitchFit
 
 /**
  * The wire format: UTF-8 JSON, versioned by `schema` and `version` members.
@@ -23,7 +24,8 @@ import org.hapticon.core.pattern.PatternJson
  * {"schema":"hapticon.receipt","version":1,"messageId":"<uuid>","from":"bob","state":"delivered"|"read","at":<epoch ms>}
  * {"schema":"hapticon.hand","version":1,"from":"bob","thumb":12.5,"middle":48.0,"at":<epoch ms>}
  * {"schema":"hapticon.capabilities","version":1,"user":"bob","renderer":"amplitude-waveform","amplitudeControl":true,
- *  "apiLevel":34|null,"resonantFrequencyHz":170.0|null}
+ *  "apiLevel":34|null,"resonantFrequencyHz":170.0|null,
+ *  "envelopeEffects":true,"frequencyMinHz":120,"frequencyMaxHz":240,"pitchFit":"octaves"|"clamp"}   (each optional)
  * ```
  *
  * Decoding is for untrusted input and never throws: the size is checked before parsing, the parser is
@@ -100,6 +102,14 @@ public object MessageCodec {
         "amplitudeControl" to JsonBoolean(capabilities.amplitudeControl),
         "apiLevel" to (capabilities.apiLevel?.let { JsonNumber(it) } ?: JsonNull),
         "resonantFrequencyHz" to (capabilities.resonantFrequencyHz?.let { JsonNumber(it) } ?: JsonNull),
+        // Added with the API 36 pitch (optional members within version 1): written only when known, so a document
+        // without them stays byte for byte what older builds wrote.
+        *listOfNotNull(
+            capabilities.envelopeEffects?.let { "envelopeEffects" to JsonBoolean(it) },
+            capabilities.frequencyRangeHz?.let { "frequencyMinHz" to JsonNumber(it.start) },
+            capabilities.frequencyRangeHz?.let { "frequencyMaxHz" to JsonNumber(it.endInclusive) },
+            capabilities.pitchFit?.let { "pitchFit" to JsonString(it.wireName) },
+        ).toTypedArray(),
     )
 
     /** Decodes what arrives in an inbox: a [ChatMessage], a [Receipt] or a [HandPose]. Never throws. */
@@ -129,6 +139,18 @@ public object MessageCodec {
             amplitudeControl = fields.requiredBoolean("amplitudeControl"),
             apiLevel = fields.optionalWhole("apiLevel")?.let { if (it in 1..Capabilities.MAX_API_LEVEL) it.toInt() else invalid("apiLevel", "expected 1..${Capabilities.MAX_API_LEVEL}, got $it") },
             resonantFrequencyHz = fields.optionalNumber("resonantFrequencyHz"),
+            envelopeEffects = fields.optionalBoolean("envelopeEffects"),
+            frequencyRangeHz = fields.optionalNumber("frequencyMinHz").let { min ->
+                val max = fields.optionalNumber("frequencyMaxHz")
+                when {
+                    min == null && max == null -> null
+                    min == null -> fields.missing("frequencyMinHz")
+                    max == null -> fields.missing("frequencyMaxHz")
+                    else -> min..max
+                }
+            },
+            // A fit a newer build names is unknown here, like a renderer: the sender then sees no pitch promise.
+            pitchFit = fields.optionalString("pitchFit")?.let { name -> PitchFit.entries.firstOrNull { it.wireName == name } },
         )
     }
 
@@ -248,6 +270,11 @@ public object MessageCodec {
             return (value as? JsonString)?.value ?: wrongType(field, "a string", value)
         }
 
+        fun optionalBoolean(field: String): Boolean? {
+            val value = optional(field) ?: return null
+            return (value as? JsonBoolean)?.value ?: wrongType(field, "true or false", value)
+        }
+
         fun requiredBoolean(field: String): Boolean {
             val value = optional(field) ?: missing(field)
             return (value as? JsonBoolean)?.value ?: wrongType(field, "true or false", value)
@@ -271,7 +298,7 @@ public object MessageCodec {
             return number.toLong()
         }
 
-        private fun missing(field: String): Nothing = throw InvalidMessageException(RejectionReason.MISSING_FIELD, field, "missing")
+        fun missing(field: String): Nothing = throw InvalidMessageException(RejectionReason.MISSING_FIELD, field, "missing")
 
         private fun wrongType(field: String, expected: String, value: JsonValue): Nothing =
             throw InvalidMessageException(RejectionReason.WRONG_TYPE, field, "expected $expected, got ${snippet(value)}")
@@ -299,3 +326,10 @@ private fun snippet(value: JsonValue): String = when (value) {
     JsonNull -> "null"
     else -> kind(value)
 }
+
+/** The value of the capabilities' `pitchFit` member. */
+public val PitchFit.wireName: String
+    get() = when (this) {
+        PitchFit.OCTAVES -> "octaves"
+        PitchFit.CLAMP -> "clamp"
+    }
