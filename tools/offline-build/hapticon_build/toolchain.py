@@ -3,6 +3,7 @@ from __future__ import annotations
 
 import hashlib
 import os
+import re
 import shutil
 import subprocess
 import zipfile
@@ -29,6 +30,39 @@ def java_home() -> str:
     if not os.path.exists(os.path.join(home, "bin", "javac")):
         raise BuildError(f"{home} is not a JDK (no bin/javac): set JAVA_HOME to a JDK 17+")
     return home
+
+
+def java_release(home: str) -> int | None:
+    """The feature release of the JDK at `home` (its `release` file's JAVA_VERSION), or None if it is not a JDK."""
+    try:
+        with open(os.path.join(home, "release")) as f:
+            text = f.read()
+    except OSError:
+        return None
+    m = re.search(r'^JAVA_VERSION="(\d+)', text, re.M)
+    return int(m.group(1)) if m and os.path.exists(os.path.join(home, "bin", "java")) else None
+
+
+def java_for_sdk36(build_home: str, candidates: list[str] | None = None) -> str:
+    """A `java` that can run Robolectric on SDK 36, whose framework jar is Java 21 bytecode (Robolectric 4.17's
+    DefaultSdkProvider: "Android SDK 36 requires Java 21"): HAPTICON_TEST_JAVA_HOME, else the build's own JDK when it is
+    21+, else the newest 21+ JDK under /usr/lib/jvm. Raises BuildError naming what to install when there is none."""
+    explicit = os.environ.get("HAPTICON_TEST_JAVA_HOME")
+    if explicit:
+        if (java_release(explicit) or 0) < 21:
+            raise BuildError(f"HAPTICON_TEST_JAVA_HOME={explicit} is not a JDK 21+")
+        return os.path.join(explicit, "bin", "java")
+    if (java_release(build_home) or 0) >= 21:
+        return os.path.join(build_home, "bin", "java")
+    if candidates is None:
+        root = "/usr/lib/jvm"
+        candidates = [os.path.join(root, d) for d in sorted(os.listdir(root))] if os.path.isdir(root) else []
+    found = sorted(((java_release(h) or 0), h) for h in candidates)
+    found = [h for release, h in found if release >= 21]
+    if not found:
+        raise BuildError("tests with @Config(sdk = [36]) need a JDK 21+ (Debian: apt-get install openjdk-21-jdk-headless), "
+                         "or set HAPTICON_TEST_JAVA_HOME")
+    return os.path.join(found[-1], "bin", "java")
 
 
 def run(cmd: list[str], what: str, log: str | None = None, env=None, cwd=None) -> str:

@@ -361,3 +361,32 @@ class RobolectricSdkTest(unittest.TestCase):
         with self.assertRaises(BuildError) as e:
             tools.robolectric_sdk_dir
         self.assertIn("tool-android-all-instrumented", str(e.exception))
+
+
+class Sdk36JavaTest(unittest.TestCase):
+    """Tests on SDK 36 need a JDK 21+ (its framework jar is Java 21 bytecode); the build finds one or says what to install."""
+
+    def jdk(self, release):
+        home = tempfile.mkdtemp()
+        os.makedirs(os.path.join(home, "bin"))
+        open(os.path.join(home, "bin", "java"), "w").close()
+        with open(os.path.join(home, "release"), "w") as f:
+            f.write(f'IMPLEMENTOR="x"\nJAVA_VERSION="{release}"\n')
+        return home
+
+    def test_javaForSdk36_buildJdk17_picksTheNewest21PlusBesideIt(self):
+        from hapticon_build.toolchain import java_for_sdk36
+        old, jdk21, jdk25 = self.jdk("17.0.15"), self.jdk("21.0.4"), self.jdk("25.0.3")
+        self.assertEqual(os.path.join(jdk25, "bin", "java"), java_for_sdk36(old, [old, jdk21, jdk25, "/nonexistent"]))
+
+    def test_javaForSdk36_buildJdkIs21_usesIt(self):
+        from hapticon_build.toolchain import java_for_sdk36
+        jdk21 = self.jdk("21.0.4")
+        self.assertEqual(os.path.join(jdk21, "bin", "java"), java_for_sdk36(jdk21, []))
+
+    def test_javaForSdk36_none_failsNamingThePackage(self):
+        from hapticon_build.toolchain import java_for_sdk36
+        old = self.jdk("17.0.15")
+        with self.assertRaises(BuildError) as e:
+            java_for_sdk36(old, [old])
+        self.assertIn("openjdk-21-jdk-headless", str(e.exception))
