@@ -241,7 +241,13 @@ private fun SettingsRoute(component: ChatComponent, onBack: () -> Unit, onOpenSt
         state,
         SettingsActions(
             onBack = onBack,
-            update = component.settings::update,
+            update = { transform ->
+                val before = component.settings.preferences.value
+                component.settings.update(transform)
+                val after = component.settings.preferences.value
+                // Both are in the published capabilities: peers see the change at once.
+                if (before.pitchFit != after.pitchFit || before.rendererOverride != after.rendererOverride) component.sync.republishCapabilities()
+            },
             onBroker = { url ->
                 // Like first launch: the new broker is saved only once it answered.
                 runCatching { BrokerAddress.parse(url) }.fold(
