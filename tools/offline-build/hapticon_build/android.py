@@ -19,7 +19,7 @@ from .builder import Build, Outputs, TestResult
 from .errors import BuildError
 from .kotlin import fingerprint
 from .project import Module
-from .toolchain import run
+from .toolchain import java_for_sdk36, run
 from .ui import Stage, info
 
 # AGP's default packaging excludes for Java resources taken from jars.
@@ -518,12 +518,34 @@ class AndroidApp:
         runtime.append(self.tools.android_runtime_jar)
         roborazzi = os.path.join(self.out, "roborazzi")  # diffs and reports: build output, never committed
         mode = "record" if record_screenshots else "verify"
-        return self.b.run_junit(self.m, test_classes, runtime, name_filter, jvm_args=[
+        jvm_args = [
             "-Drobolectric.offline=true", f"-Drobolectric.dependency.dir={self.tools.robolectric_sdk_dir}",
             "-Drobolectric.logging.enabled=false",
             f"-Droborazzi.test.{mode}=true", f"-Droborazzi.output.dir={roborazzi}",
             f"-Droborazzi.compare.output.dir={roborazzi}", f"-Droborazzi.result.dir={roborazzi}/results",
-            f"-Dhapticon.screens.dir={os.path.join(self.b.root, 'docs', 'images', 'screens')}"])
+            f"-Dhapticon.screens.dir={os.path.join(self.b.root, 'docs', 'images', 'screens')}"]
+        # SDK 36's framework jar is Java 21 bytecode: the classes that ask @Config(sdk = [36]) run in a second JVM on a
+        # JDK 21+, everything else (screenshots included) in the build's JDK as before.
+        rest = self.b.run_junit(self.m, test_classes, runtime, name_filter, jvm_args=[*jvm_args, "-Dhapticon.test.sdk36=without"])
+        if not self._asks_for_sdk36():
+            return rest
+        # Robolectric's SDK 36 setup (ApplicationSharedMemory) sets a FileDescriptor's fd through
+        # jdk.internal.access.SharedSecrets (sandbox AndroidInterceptors.FileDescriptorInterceptor), which the JDK
+        # keeps closed unless opened; its native runtime loads with native access.
+        opens = [f"--add-opens=java.base/{p}=ALL-UNNAMED" for p in ("jdk.internal.access", "java.io", "java.lang", "java.util")]
+        newer = self.b.run_junit(self.m, test_classes, runtime, name_filter,
+                                 jvm_args=[*opens, "--enable-native-access=ALL-UNNAMED", *jvm_args, "-Dhapticon.test.sdk36=only"],
+                                 java=java_for_sdk36(self.tools.java_home), label=" sdk36")
+        return TestResult(self.m.path, rest.passed + newer.passed, rest.failed + newer.failed, rest.skipped + newer.skipped,
+                          rest.crashed or newer.crashed)
+
+    def _asks_for_sdk36(self) -> bool:
+        """Whether a test source names `sdk = [36]` (or later) in a Robolectric @Config."""
+        for path in self.b.sources(self.m, "test"):
+            with open(path, encoding="utf-8") as f:
+                if re.search(r"sdk\s*=\s*\[[^\]]*\b(3[6-9]|[4-9]\d)\b", f.read()):
+                    return True
+        return False
 
 
 def _each(option: str, values: list[str]) -> list[str]:

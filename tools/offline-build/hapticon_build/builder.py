@@ -265,18 +265,18 @@ class Build:
         return self.run_junit(module, classes, self.runtime_classpath(module, "test"), name_filter)
 
     def run_junit(self, module: Module, test_classes: str, classpath: list[str], name_filter: str | None,
-                  jvm_args: list[str] = ()) -> TestResult:
+                  jvm_args: list[str] = (), java: str | None = None, label: str = "") -> TestResult:
         junit = [p for p in classpath if re.search(r"/junit-4[^/]*\.jar$", p)]
         if not junit:
             raise BuildError(f"{module.path} has tests but no junit4 in testImplementation")
         helper = self.tools.helper_classes("TestMain", junit)
-        cmd = [self.tools.java, "-Xmx3g", "-XX:+UseParallelGC", "-Djava.awt.headless=true", *jvm_args,
+        cmd = [java or self.tools.java, "-Xmx3g", "-XX:+UseParallelGC", "-Djava.awt.headless=true", *jvm_args,
                "-cp", os.pathsep.join([helper] + classpath), "TestMain", test_classes]
         if name_filter:
             cmd.append(name_filter)
         result = TestResult(module.path)
-        with Stage(f"test {module.path}"):
-            log_path = os.path.join(self.out, module.name, "test.log")
+        with Stage(f"test {module.path}{label}"):
+            log_path = os.path.join(self.out, module.name, f"test{label.replace(' ', '-')}.log")
             with open(log_path, "w") as log:
                 p = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, cwd=module.directory)
                 for line in p.stdout:

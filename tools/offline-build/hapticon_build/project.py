@@ -143,6 +143,10 @@ class Catalog:
     def tool(self, alias: str) -> Coordinate:
         return self.library(alias)
 
+    def tool_aliases(self, prefix: str) -> list[str]:
+        """Every [libraries] alias that starts with `prefix` (as written in the catalog), in catalog order."""
+        return [alias for alias, _spec in self._libraries.values() if alias.startswith(prefix)]
+
 
 CONFIGURATIONS = {
     "implementation", "api", "compileOnly", "runtimeOnly",

@@ -3,6 +3,7 @@ from __future__ import annotations
 
 import hashlib
 import os
+import re
 import shutil
 import subprocess
 import zipfile
@@ -15,6 +16,8 @@ from .resolver import Resolver
 from .ui import Stage
 
 HERE = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+# Catalog aliases of the instrumented SDK jars Robolectric runs tests on (see Toolchain.robolectric_sdk_dir).
+ROBOLECTRIC_SDK_PREFIX = "tool-android-all-instrumented"
 
 
 def java_home() -> str:
@@ -27,6 +30,39 @@ def java_home() -> str:
     if not os.path.exists(os.path.join(home, "bin", "javac")):
         raise BuildError(f"{home} is not a JDK (no bin/javac): set JAVA_HOME to a JDK 17+")
     return home
+
+
+def java_release(home: str) -> int | None:
+    """The feature release of the JDK at `home` (its `release` file's JAVA_VERSION), or None if it is not a JDK."""
+    try:
+        with open(os.path.join(home, "release")) as f:
+            text = f.read()
+    except OSError:
+        return None
+    m = re.search(r'^JAVA_VERSION="(\d+)', text, re.M)
+    return int(m.group(1)) if m and os.path.exists(os.path.join(home, "bin", "java")) else None
+
+
+def java_for_sdk36(build_home: str, candidates: list[str] | None = None) -> str:
+    """A `java` that can run Robolectric on SDK 36, whose framework jar is Java 21 bytecode (Robolectric 4.17's
+    DefaultSdkProvider: "Android SDK 36 requires Java 21"): HAPTICON_TEST_JAVA_HOME, else the build's own JDK when it is
+    21+, else the newest 21+ JDK under /usr/lib/jvm. Raises BuildError naming what to install when there is none."""
+    explicit = os.environ.get("HAPTICON_TEST_JAVA_HOME")
+    if explicit:
+        if (java_release(explicit) or 0) < 21:
+            raise BuildError(f"HAPTICON_TEST_JAVA_HOME={explicit} is not a JDK 21+")
+        return os.path.join(explicit, "bin", "java")
+    if (java_release(build_home) or 0) >= 21:
+        return os.path.join(build_home, "bin", "java")
+    if candidates is None:
+        root = "/usr/lib/jvm"
+        candidates = [os.path.join(root, d) for d in sorted(os.listdir(root))] if os.path.isdir(root) else []
+    found = sorted(((java_release(h) or 0), h) for h in candidates)
+    found = [h for release, h in found if release >= 21]
+    if not found:
+        raise BuildError("tests with @Config(sdk = [36]) need a JDK 21+ (Debian: apt-get install openjdk-21-jdk-headless), "
+                         "or set HAPTICON_TEST_JAVA_HOME")
+    return os.path.join(found[-1], "bin", "java")
 
 
 def run(cmd: list[str], what: str, log: str | None = None, env=None, cwd=None) -> str:
@@ -108,8 +144,29 @@ class Toolchain:
 
     @cached_property
     def robolectric_sdk_dir(self) -> str:
-        """Directory holding the instrumented SDK jar Robolectric loads (run offline, no fetching of its own)."""
-        return os.path.dirname(self._jar("tool-android-all-instrumented"))
+        """One directory holding every instrumented SDK jar Robolectric may load (it runs offline and fetches
+        nothing itself): each catalog alias `tool-android-all-instrumented*` (targetSdk's, and 36 for the tests
+        that ask `@Config(sdk = [36])`). Robolectric's `LocalDependencyResolver` looks for
+        `<artifactId>-<version>.jar` in the one `robolectric.dependency.dir`, while the local Maven repository
+        keeps each version in its own directory, so the jars are linked side by side here."""
+        aliases = self.catalog.tool_aliases(ROBOLECTRIC_SDK_PREFIX)
+        if not aliases:
+            raise BuildError(f"gradle/libs.versions.toml declares no {ROBOLECTRIC_SDK_PREFIX}* library: Robolectric needs an SDK jar")
+        jars = {}
+        for alias in aliases:
+            c = self.catalog.tool(alias)
+            jars[f"{c.name}-{c.version}.jar"] = self._jar(alias)
+        key = hashlib.sha1("\n".join(f"{n}={p}" for n, p in sorted(jars.items())).encode()).hexdigest()[:16]
+        out = os.path.join(self.cache, "robolectric-sdks", key)
+        if not os.path.exists(os.path.join(out, ".done")):
+            os.makedirs(out, exist_ok=True)
+            for name, path in jars.items():
+                link = os.path.join(out, name)
+                if os.path.lexists(link):
+                    os.remove(link)
+                os.symlink(path, link)
+            open(os.path.join(out, ".done"), "w").close()
+        return out
 
     @cached_property
     def aapt2(self) -> str:

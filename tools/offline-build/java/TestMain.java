@@ -24,6 +24,10 @@ public final class TestMain {
         Pattern only = args.length > 1 ? Pattern.compile(args[1]) : null;
         List<Class<?>> classes = new ArrayList<>();
         collect(root, root, classes);
+        // hapticon.test.sdk36 = "only" | "without": the classes whose Robolectric @Config asks for SDK 36 or later run in
+        // a JVM of their own (SDK 36's framework is Java 21 bytecode), the rest in the build's JDK.
+        String sdk36 = System.getProperty("hapticon.test.sdk36");
+        if (sdk36 != null) classes.removeIf(c -> asksForSdk36(c) != sdk36.equals("only"));
         classes.sort((a, b) -> a.getName().compareTo(b.getName()));
         JUnitCore core = new JUnitCore();
         core.addListener(new RunListener() {
@@ -65,6 +69,19 @@ public final class TestMain {
         System.out.println("TESTS passed=" + passed + " failed=" + failed + " skipped=" + skipped
                 + " classes=" + classes.size() + " seconds=" + r.getRunTime() / 1000.0);
         System.exit(failed == 0 ? 0 : 1);
+    }
+
+    /** Whether [c]'s Robolectric @Config (read by name: no Robolectric on this class's classpath) names an SDK ≥ 36. */
+    static boolean asksForSdk36(Class<?> c) {
+        for (java.lang.annotation.Annotation a : c.getAnnotations()) {
+            if (!a.annotationType().getName().equals("org.robolectric.annotation.Config")) continue;
+            try {
+                for (int sdk : (int[]) a.annotationType().getMethod("sdk").invoke(a)) if (sdk >= 36) return true;
+            } catch (ReflectiveOperationException e) {
+                throw new IllegalStateException(e);
+            }
+        }
+        return false;
     }
 
     private static void collect(File root, File dir, List<Class<?>> out) throws Exception {

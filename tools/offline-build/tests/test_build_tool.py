@@ -309,3 +309,84 @@ class ReleaseTest(unittest.TestCase):
             self.assertIn(name, got)
         self.assertNotIn("org.x.Other", got)
         self.assertFalse(any("$" in n for n in got))
+
+
+class RobolectricSdkTest(unittest.TestCase):
+    """The instrumented SDK jars Robolectric runs on (targetSdk's and 36's) land in the one directory it reads."""
+
+    def setUp(self):
+        self.root = tempfile.mkdtemp()
+        write(self.root, "gradle/libs.versions.toml", """
+            [versions]
+            android-all-instrumented = "15-robolectric-13954326-i7"
+            android-all-instrumented-36 = "16-robolectric-13921718-i7"
+            [libraries]
+            tool-android-all-instrumented = { module = "org.robolectric:android-all-instrumented", version.ref = "android-all-instrumented" }
+            tool-android-all-instrumented-36 = { module = "org.robolectric:android-all-instrumented", version.ref = "android-all-instrumented-36" }
+            tool-android-all-runtime = { module = "org.robolectric:android-all", version = "15-robolectric-13954326" }
+        """)
+        write(self.root, "settings.gradle.kts", 'rootProject.name = "demo"\ninclude(":core")\n')
+        write(self.root, "core/build.gradle.kts", "plugins {\n}\n")
+        self.repo = Repository(tempfile.mkdtemp(), offline=True)
+        self.jars = {}
+        for version in ("15-robolectric-13954326-i7", "16-robolectric-13921718-i7"):
+            rel = Repository.relative("org.robolectric", "android-all-instrumented", version,
+                                      f"android-all-instrumented-{version}.jar")
+            path = self.repo.path(rel)
+            os.makedirs(os.path.dirname(path), exist_ok=True)
+            with open(path, "w") as f:
+                f.write(version)
+            self.jars[version] = path
+
+    def test_catalog_toolAliases_listsEveryInstrumentedSdkAndNothingElse(self):
+        catalog = Catalog(os.path.join(self.root, "gradle/libs.versions.toml"))
+        self.assertEqual(["tool-android-all-instrumented", "tool-android-all-instrumented-36"],
+                         catalog.tool_aliases("tool-android-all-instrumented"))
+
+    def test_robolectricSdkDir_linksBothJarsUnderTheNamesLocalDependencyResolverLooksFor(self):
+        from hapticon_build.toolchain import Toolchain
+        tools = Toolchain(load_project(self.root), self.repo, tempfile.mkdtemp())
+        sdk_dir = tools.robolectric_sdk_dir
+        self.assertEqual(["android-all-instrumented-15-robolectric-13954326-i7.jar",
+                          "android-all-instrumented-16-robolectric-13921718-i7.jar"],
+                         sorted(n for n in os.listdir(sdk_dir) if n.endswith(".jar")))
+        for version, path in self.jars.items():
+            with open(os.path.join(sdk_dir, f"android-all-instrumented-{version}.jar")) as f:
+                self.assertEqual(version, f.read())
+
+    def test_robolectricSdkDir_noInstrumentedJarDeclared_failsNamingTheAlias(self):
+        from hapticon_build.toolchain import Toolchain
+        write(self.root, "gradle/libs.versions.toml", "[versions]\n[libraries]\n")
+        tools = Toolchain(load_project(self.root), self.repo, tempfile.mkdtemp())
+        with self.assertRaises(BuildError) as e:
+            tools.robolectric_sdk_dir
+        self.assertIn("tool-android-all-instrumented", str(e.exception))
+
+
+class Sdk36JavaTest(unittest.TestCase):
+    """Tests on SDK 36 need a JDK 21+ (its framework jar is Java 21 bytecode); the build finds one or says what to install."""
+
+    def jdk(self, release):
+        home = tempfile.mkdtemp()
+        os.makedirs(os.path.join(home, "bin"))
+        open(os.path.join(home, "bin", "java"), "w").close()
+        with open(os.path.join(home, "release"), "w") as f:
+            f.write(f'IMPLEMENTOR="x"\nJAVA_VERSION="{release}"\n')
+        return home
+
+    def test_javaForSdk36_buildJdk17_picksTheNewest21PlusBesideIt(self):
+        from hapticon_build.toolchain import java_for_sdk36
+        old, jdk21, jdk25 = self.jdk("17.0.15"), self.jdk("21.0.4"), self.jdk("25.0.3")
+        self.assertEqual(os.path.join(jdk25, "bin", "java"), java_for_sdk36(old, [old, jdk21, jdk25, "/nonexistent"]))
+
+    def test_javaForSdk36_buildJdkIs21_usesIt(self):
+        from hapticon_build.toolchain import java_for_sdk36
+        jdk21 = self.jdk("21.0.4")
+        self.assertEqual(os.path.join(jdk21, "bin", "java"), java_for_sdk36(jdk21, []))
+
+    def test_javaForSdk36_none_failsNamingThePackage(self):
+        from hapticon_build.toolchain import java_for_sdk36
+        old = self.jdk("17.0.15")
+        with self.assertRaises(BuildError) as e:
+            java_for_sdk36(old, [old])
+        self.assertIn("openjdk-21-jdk-headless", str(e.exception))

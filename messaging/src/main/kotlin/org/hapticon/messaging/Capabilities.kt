@@ -1,5 +1,7 @@
 package org.hapticon.messaging
 
+import org.hapticon.core.pattern.PitchFit
+
 /**
  * What a user's device can do with a haptic icon, published as a retained message at
  * [Topics.capabilities] so that a sender can see how its icons will be felt. A value is always valid: the
@@ -10,6 +12,12 @@ package org.hapticon.messaging
  * @property amplitudeControl whether its vibrator can vary strength (Android `Vibrator.hasAmplitudeControl()`).
  * @property apiLevel the Android API level, or null when the device is not an Android phone.
  * @property resonantFrequencyHz the actuator's resonant frequency when known (Android 12+), else null.
+ * @property envelopeEffects whether the vibrator plays Android 16 envelope effects (`Vibrator.areEnvelopeEffectsSupported()`);
+ *   null when the sender did not say (older builds, non-Android peers).
+ * @property frequencyRangeHz the frequencies its envelope effects can play (API 36 `Vibrator.getFrequencyProfile()`
+ *   min..max Hz), null without a frequency profile or when not said.
+ * @property pitchFit what it does with frequencies outside [frequencyRangeHz] (its user's setting), null when not said
+ *   (older builds play [PitchFit.OCTAVES]).
  */
 public data class Capabilities(
     val user: String,
@@ -17,6 +25,9 @@ public data class Capabilities(
     val amplitudeControl: Boolean,
     val apiLevel: Int? = null,
     val resonantFrequencyHz: Double? = null,
+    val envelopeEffects: Boolean? = null,
+    val frequencyRangeHz: ClosedFloatingPointRange<Double>? = null,
+    val pitchFit: PitchFit? = null,
 ) {
     init {
         check(Topics.isValidUserName(user), RejectionReason.INVALID_VALUE, "user") { "not a valid user name: ${quote(user)}" }
@@ -28,6 +39,13 @@ public data class Capabilities(
                 resonantFrequencyHz.isFinite() && resonantFrequencyHz in 1.0..MAX_RESONANT_FREQUENCY_HZ,
                 RejectionReason.INVALID_VALUE, "resonantFrequencyHz",
             ) { "expected a frequency in 1..$MAX_RESONANT_FREQUENCY_HZ Hz, got $resonantFrequencyHz" }
+        }
+        if (frequencyRangeHz != null) {
+            val (min, max) = frequencyRangeHz.start to frequencyRangeHz.endInclusive
+            check(
+                min.isFinite() && max.isFinite() && min >= 1.0 && max <= MAX_RESONANT_FREQUENCY_HZ && min < max,
+                RejectionReason.INVALID_VALUE, "frequencyMinHz",
+            ) { "expected 1 ≤ frequencyMinHz < frequencyMaxHz ≤ $MAX_RESONANT_FREQUENCY_HZ Hz, got $min..$max" }
         }
     }
 

@@ -20,6 +20,7 @@ import org.hapticon.core.io.ShortDouble
 import org.hapticon.core.pattern.HapticPattern
 import org.hapticon.core.pattern.PatternException
 import org.hapticon.core.pattern.PatternJson
+import org.hapticon.core.pattern.PitchFit
 
 /**
  * The wire format: UTF-8 JSON, versioned by `schema` and `version` members.
@@ -31,7 +32,8 @@ import org.hapticon.core.pattern.PatternJson
  * {"schema":"hapticon.receipt","version":1,"messageId":"<uuid>","from":"bob","state":"delivered"|"read","at":<epoch ms>}
  * {"schema":"hapticon.hand","version":1,"from":"bob","thumb":12.5,"middle":48.0,"at":<epoch ms>}
  * {"schema":"hapticon.capabilities","version":1,"user":"bob","renderer":"amplitude-waveform","amplitudeControl":true,
- *  "apiLevel":34|null,"resonantFrequencyHz":170.0|null}
+ *  "apiLevel":34|null,"resonantFrequencyHz":170.0|null,
+ *  "envelopeEffects":true,"frequencyMinHz":120,"frequencyMaxHz":240,"pitchFit":"octaves"|"clamp"}   (each optional)
  * ```
  *
  * Each document is a `@Serializable` type (`MessageDocument` …, this file), encoded by kotlinx-serialization;
@@ -94,6 +96,12 @@ public object MessageCodec {
         CapabilitiesDocument(
             CAPABILITIES_SCHEMA, VERSION, capabilities.user, capabilities.renderer.wireName, capabilities.amplitudeControl,
             capabilities.apiLevel?.toLong(), capabilities.resonantFrequencyHz,
+            // Added with the API 36 pitch (optional members within version 1): written only when known, so a document
+            // without them stays byte for byte what older builds wrote.
+            envelopeEffects = capabilities.envelopeEffects,
+            frequencyMinHz = capabilities.frequencyRangeHz?.start,
+            frequencyMaxHz = capabilities.frequencyRangeHz?.endInclusive,
+            pitchFit = capabilities.pitchFit?.wireName,
         ),
     )
 
@@ -119,6 +127,15 @@ public object MessageCodec {
             amplitudeControl = doc.amplitudeControl,
             apiLevel = doc.apiLevel?.let { if (it in 1..Capabilities.MAX_API_LEVEL) it.toInt() else invalid("apiLevel", "expected 1..${Capabilities.MAX_API_LEVEL}, got $it") },
             resonantFrequencyHz = doc.resonantFrequencyHz,
+            envelopeEffects = doc.envelopeEffects,
+            frequencyRangeHz = when {
+                doc.frequencyMinHz == null && doc.frequencyMaxHz == null -> null
+                doc.frequencyMinHz == null -> throw InvalidMessageException(RejectionReason.MISSING_FIELD, "frequencyMinHz", "missing")
+                doc.frequencyMaxHz == null -> throw InvalidMessageException(RejectionReason.MISSING_FIELD, "frequencyMaxHz", "missing")
+                else -> doc.frequencyMinHz..doc.frequencyMaxHz
+            },
+            // A fit a newer build names is unknown here, like a renderer: the sender then sees no pitch promise.
+            pitchFit = doc.pitchFit?.let { name -> PitchFit.entries.firstOrNull { it.wireName == name } },
         )
     }
 
@@ -252,6 +269,7 @@ internal class HandDocument(
 )
 
 /** A capabilities document on the wire (`hapticon.capabilities`, version 1). */
+@OptIn(ExperimentalSerializationApi::class)
 @Serializable
 internal class CapabilitiesDocument(
     val schema: String,
@@ -261,6 +279,10 @@ internal class CapabilitiesDocument(
     val amplitudeControl: Boolean,
     val apiLevel: Long? = null,
     @Serializable(with = ShortDouble::class) val resonantFrequencyHz: Double? = null,
+    @EncodeDefault(EncodeDefault.Mode.NEVER) val envelopeEffects: Boolean? = null,
+    @EncodeDefault(EncodeDefault.Mode.NEVER) @Serializable(with = ShortDouble::class) val frequencyMinHz: Double? = null,
+    @EncodeDefault(EncodeDefault.Mode.NEVER) @Serializable(with = ShortDouble::class) val frequencyMaxHz: Double? = null,
+    @EncodeDefault(EncodeDefault.Mode.NEVER) val pitchFit: String? = null,
 )
 
 /** The wire format's wording of schema problems: an [InvalidMessageException] with the [RejectionReason] and a one-line detail. */
@@ -318,3 +340,10 @@ private fun snippet(value: JsonElement): String = when {
     value is JsonPrimitive -> value.content
     else -> kind(value)
 }
+
+/** The value of the capabilities' `pitchFit` member. */
+public val PitchFit.wireName: String
+    get() = when (this) {
+        PitchFit.OCTAVES -> "octaves"
+        PitchFit.CLAMP -> "clamp"
+    }

@@ -1,6 +1,7 @@
 package org.hapticon.messaging
 
 import org.hapticon.core.HapticIcon
+import org.hapticon.core.pattern.PitchFit
 import org.junit.Assert.assertArrayEquals
 import org.junit.Assert.assertEquals
 import org.junit.Test
@@ -99,6 +100,32 @@ class MessageCodecTest {
                 """"apiLevel":34,"resonantFrequencyHz":170.5}""",
             String(MessageCodec.encode(all[0]), Charsets.UTF_8),
         )
+    }
+
+    @Test
+    fun decodeCapabilities_frequencyProfileAndPitchFit_roundTripExactly() {
+        val bob = Capabilities(
+            "bob", RendererKind.ENVELOPE, amplitudeControl = true, apiLevel = 36, resonantFrequencyHz = 170.0,
+            envelopeEffects = true, frequencyRangeHz = 120.0..240.0, pitchFit = PitchFit.CLAMP,
+        )
+        assertEquals(Decoded.Accepted(bob), MessageCodec.decodeCapabilities(MessageCodec.encode(bob)))
+        assertEquals(
+            """{"schema":"hapticon.capabilities","version":1,"user":"bob","renderer":"envelope","amplitudeControl":true,""" +
+                """"apiLevel":36,"resonantFrequencyHz":170,"envelopeEffects":true,"frequencyMinHz":120,"frequencyMaxHz":240,"pitchFit":"clamp"}""",
+            String(MessageCodec.encode(bob), Charsets.UTF_8),
+        )
+        // An older build's document has none of them; a newer build's fit this one does not know reads as unknown.
+        val newer = """{"schema":"hapticon.capabilities","version":1,"user":"bob","renderer":"envelope","amplitudeControl":true,"pitchFit":"stretch"}"""
+        assertEquals(Decoded.Accepted(Capabilities("bob", RendererKind.ENVELOPE, true)), MessageCodec.decodeCapabilities(newer.toByteArray()))
+    }
+
+    @Test
+    fun decodeCapabilities_badFrequencyRange_rejectedByField() {
+        fun caps(members: String) = """{"schema":"hapticon.capabilities","version":1,"user":"bob","renderer":"envelope","amplitudeControl":true,$members}"""
+        assertCapabilitiesRejected(RejectionReason.MISSING_FIELD, "frequencyMaxHz", caps(""""frequencyMinHz":120"""))
+        assertCapabilitiesRejected(RejectionReason.INVALID_VALUE, "frequencyMinHz", caps(""""frequencyMinHz":240,"frequencyMaxHz":120"""))
+        assertCapabilitiesRejected(RejectionReason.INVALID_VALUE, "frequencyMinHz", caps(""""frequencyMinHz":0,"frequencyMaxHz":120"""))
+        assertCapabilitiesRejected(RejectionReason.WRONG_TYPE, "envelopeEffects", caps(""""envelopeEffects":"yes""""))
     }
 
     @Test

@@ -1,6 +1,7 @@
 package org.hapticon.app.data
 
 import android.content.Context
+import org.hapticon.core.pattern.PitchFit
 import kotlinx.coroutines.flow.MutableStateFlow
 import kotlinx.coroutines.flow.StateFlow
 import kotlinx.coroutines.flow.asStateFlow
@@ -41,12 +42,18 @@ data class ChatPreferences(
      * while peers may run without it: a sealed chat refuses plaintext and cannot write to a peer without keys.
      */
     val endToEnd: Boolean = false,
+    /**
+     * What this phone does with a pattern's or icon's frequencies its actuator cannot give (API 36 frequency
+     * profile): move the whole thing by octaves (the default, docs/patterns.md) or clamp each frequency. Published
+     * with the capabilities, so a sender sees the pitch this phone will play.
+     */
+    val pitchFit: PitchFit = PitchFit.OCTAVES,
 ) {
     /** Omits the password, so that it never reaches a log. */
     override fun toString(): String =
         "ChatPreferences(userName=$userName, brokerUrl=$brokerUrl, autoPlay=$autoPlay, rendererOverride=$rendererOverride, " +
             "dynamicColor=$dynamicColor, sendFeltReceipts=$sendFeltReceipts, stayReachable=$stayReachable, " +
-            "reachableAfterBoot=$reachableAfterBoot, archived=$archived, enterSends=$enterSends, endToEnd=$endToEnd, brokerPassword=${if (brokerPassword == null) "none" else "***"})"
+            "reachableAfterBoot=$reachableAfterBoot, archived=$archived, enterSends=$enterSends, endToEnd=$endToEnd, pitchFit=$pitchFit, brokerPassword=${if (brokerPassword == null) "none" else "***"})"
 }
 
 /** Reads and writes [ChatPreferences]. */
@@ -87,6 +94,7 @@ class SharedPreferencesChatSettings(
             .putStringSet(ARCHIVED, next.archived)
             .putBoolean(ENTER_SENDS, next.enterSends)
             .putBoolean(END_TO_END, next.endToEnd)
+            .putString(PITCH_FIT, next.pitchFit.name)
             .apply()
         writePassword(next.brokerPassword)
         state.value = next
@@ -125,6 +133,8 @@ class SharedPreferencesChatSettings(
         archived = prefs.getStringSet(ARCHIVED, null)?.toSet() ?: emptySet(),
         enterSends = prefs.getBoolean(ENTER_SENDS, false),
         endToEnd = prefs.getBoolean(END_TO_END, false),
+        // A name a later version wrote and this one does not know falls back to the default.
+        pitchFit = PitchFit.entries.firstOrNull { it.name == prefs.getString(PITCH_FIT, null) } ?: PitchFit.OCTAVES,
     )
 
     private companion object {
@@ -142,6 +152,7 @@ class SharedPreferencesChatSettings(
         const val ARCHIVED = "archived"
         const val ENTER_SENDS = "enter_sends"
         const val END_TO_END = "end_to_end"
+        const val PITCH_FIT = "pitch_fit"
     }
 }
 

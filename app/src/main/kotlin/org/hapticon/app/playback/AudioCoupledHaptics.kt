@@ -16,7 +16,14 @@ import java.io.IOException
 import java.security.MessageDigest
 import org.hapticon.core.HapticIcon
 import org.hapticon.core.io.IconJson
+import org.hapticon.core.io.Json
+import org.hapticon.core.io.WavEncoding
+import org.hapticon.core.io.WavReader
 import org.hapticon.core.io.WavWriter
+import org.hapticon.core.pattern.HapticPattern
+import org.hapticon.core.pattern.PatternJson
+import org.hapticon.core.pattern.signal
+import org.hapticon.core.render.stream
 import org.hapticon.core.render.EnvelopeModel
 import org.hapticon.core.render.Fidelity
 import org.hapticon.core.render.PcmRenderer
@@ -38,7 +45,7 @@ interface AudioCoupledOutput {
 }
 
 /**
- * Renders icons into PCM16 WAV files in [directory], once per distinct icon, rate and envelope model ([model],
+ * Renders icons (and patterns, [fileFor]) into PCM16 WAV files in [directory], once per distinct icon, rate and envelope model ([model],
  * the study's `processing` envelope, unless a call names another): the name is a hash of those and the icon's
  * JSON, so a repeat plays from disk at once and a file rendered with another model is never reused. At most [maxFiles] are kept (oldest first out),
  * because an icon is at most 30 s × 48 kHz × 2 bytes ≈ 2.9 MB.
@@ -71,6 +78,58 @@ class IconAudioCache(
     @Synchronized
     fun fidelityOf(icon: HapticIcon, envelopeModel: EnvelopeModel = model): Fidelity =
         fidelities.getOrPut(keyOf(icon, envelopeModel)) { PcmRenderer(icon, sampleRate, envelopeModel).fidelity() }
+
+    /**
+     * The WAV file of [pattern]: its signal ([org.hapticon.core.pattern.signal], every frequency key as it is, the
+     * transients as bursts) in PCM16 at [sampleRate], rendered now if it is not cached.
+     *
+     * @throws IllegalArgumentException when the pattern reaches the Nyquist frequency (it cannot be audio here).
+     */
+    @Throws(IOException::class)
+    fun fileFor(pattern: HapticPattern): File {
+        require(pattern.frequency.all { it.hertz < sampleRate / 2.0 }) { "${pattern.name} reaches ${sampleRate / 2} Hz, the Nyquist frequency at $sampleRate Hz" }
+        val file = File(directory, "${keyOf(pattern)}.wav")
+        if (file.isFile) {
+            file.setLastModified(System.currentTimeMillis())
+            return file
+        }
+        writeWholeFile(file) { WavWriter.write(pattern.signal().stream(sampleRate), it, WavEncoding.PCM16) }
+        evict()
+        return file
+    }
+
+    /**
+     * How faithfully the PCM16 file of [pattern] carries its exact signal: the file read back against
+     * `signal().sample(i / sampleRate)`, sample by sample; measured on first use and remembered.
+     */
+    @Synchronized
+    @Throws(IOException::class)
+    fun fidelityOf(pattern: HapticPattern): Fidelity = fidelities.getOrPut(keyOf(pattern)) {
+        val signal = pattern.signal()
+        val block = FloatArray(4096)
+        var index = 0L
+        var sumOfSquares = 0.0
+        var maxError = 0.0
+        fileFor(pattern).inputStream().buffered().use { input ->
+            val stream = WavReader.stream(input)
+            while (true) {
+                val n = stream.read(block)
+                if (n < 0) break
+                for (j in 0 until n) {
+                    val error = kotlin.math.abs(block[j] - signal.sample((index + j).toDouble() / sampleRate))
+                    sumOfSquares += error * error
+                    maxError = maxOf(maxError, error)
+                }
+                index += n
+            }
+        }
+        Fidelity(if (index == 0L) 0.0 else kotlin.math.sqrt(sumOfSquares / index), maxError, "PCM16 at $sampleRate Hz, $index samples")
+    }
+
+    private fun keyOf(pattern: HapticPattern): String {
+        val digest = MessageDigest.getInstance("SHA-256").digest("pattern:$sampleRate:${Json.encode(PatternJson.toJsonValue(pattern))}".toByteArray())
+        return digest.take(12).joinToString("") { "%02x".format(it) }
+    }
 
     private fun keyOf(icon: HapticIcon, envelopeModel: EnvelopeModel): String {
         val digest = MessageDigest.getInstance("SHA-256").digest("$sampleRate:${envelopeModel.name}:${IconJson.encode(icon)}".toByteArray())

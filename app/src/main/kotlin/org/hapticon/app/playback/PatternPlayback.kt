@@ -20,7 +20,8 @@ import org.hapticon.messaging.RendererKind
  * - otherwise, or when the envelope cannot follow the pattern (pulses shorter than a control point): [Steps],
  *   amplitude steps (`createWaveform`) where the vibrator has amplitude control, on/off steps otherwise.
  *   These lose the frequency curve: the vibrator plays at its own resonance.
- * Audio-coupled haptics are not used for patterns yet (the audio cache renders icons only); see docs/patterns.md.
+ * - audio-coupled haptics first where the phone has them ([AudioCoupled]): the pattern rendered as audio
+ *   (`pattern.signal()`, its own frequencies sample by sample) with the haptic channel on, as icons are.
  */
 sealed interface PatternPlan {
     /** The renderer this plan uses, as the wire and the settings name it. */
@@ -44,6 +45,16 @@ sealed interface PatternPlan {
         override val summary: String get() = "${renderer.label}, ${waveform.size} steps; the vibrator plays at its own pitch"
     }
 
+    /**
+     * Audio with the haptic channel on: the pattern's own signal at 48 kHz (`IconAudioCache.fileFor(pattern)`), so
+     * its frequencies reach the actuator unchanged. The player falls back to [fallback] when the audio cannot be
+     * rendered or the output is unavailable.
+     */
+    data class AudioCoupled(val fallback: PatternPlan) : PatternPlan {
+        override val renderer: RendererKind get() = RendererKind.AUDIO_COUPLED
+        override val summary: String get() = "audio-coupled haptics: the pattern as audio on the haptic channel, at its own pitch"
+    }
+
     /** Nothing plays: no vibrator. */
     data object Silent : PatternPlan {
         override val renderer: RendererKind get() = RendererKind.NONE
@@ -53,10 +64,19 @@ sealed interface PatternPlan {
     companion object {
         /**
          * The plan for [pattern] on [device]; a user [override] of the renderer is honoured when the phone can do
-         * it (audio-coupled counts as automatic: patterns have no audio path).
+         * it. Audio-coupled haptics come first where the phone has them (as for icons, [RendererChoice.possible]).
          */
         fun of(device: DeviceCapabilities, pattern: HapticPattern, override: RendererKind? = null, fit: PitchFit = PitchFit.OCTAVES): PatternPlan {
             if (!device.hasVibrator) return Silent
+            val audio = device.apiLevel >= 31 && device.hapticPlaybackSupported && device.hapticGeneratorAvailable
+            if (audio && (override == null || override == RendererKind.AUDIO_COUPLED)) {
+                return AudioCoupled(vibrating(device, pattern, null, fit))
+            }
+            return vibrating(device, pattern, override, fit)
+        }
+
+        // The plan without audio: the envelope effect, else steps.
+        private fun vibrating(device: DeviceCapabilities, pattern: HapticPattern, override: RendererKind?, fit: PitchFit): PatternPlan {
             val envelopeAllowed = override == null || override == RendererKind.ENVELOPE || override == RendererKind.AUDIO_COUPLED
             val info = device.envelopeInfo
             if (envelopeAllowed && device.apiLevel >= 36 && device.envelopeEffectsSupported && info != null) {

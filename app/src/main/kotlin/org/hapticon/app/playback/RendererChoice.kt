@@ -3,7 +3,6 @@ package org.hapticon.app.playback
 import android.content.Context
 import android.media.AudioManager
 import android.os.Build
-import android.os.VibrationEffect
 import android.os.Vibrator
 import android.util.Log
 import java.io.IOException
@@ -12,7 +11,9 @@ import kotlin.math.roundToInt
 import org.hapticon.core.HapticIcon
 import org.hapticon.core.pattern.EnvelopeEffectInfo
 import org.hapticon.core.pattern.HapticPattern
+import org.hapticon.core.pattern.PatternEnvelope
 import org.hapticon.core.pattern.PitchFit
+import org.hapticon.core.pattern.toPattern
 import org.hapticon.core.render.EnvelopeControlPoints
 import org.hapticon.core.render.EnvelopeModel
 import org.hapticon.core.render.PcmRenderer
@@ -142,13 +143,20 @@ object RendererChoice {
         return ((1.0 - rms).coerceIn(0.0, 1.0) * 100).roundToInt()
     }
 
-    /** This device's capabilities message for [user]. */
-    fun capabilitiesOf(user: String, device: DeviceCapabilities, override: RendererKind?): Capabilities = Capabilities(
+    /**
+     * This device's capabilities message for [user]: with the envelope support, frequency profile and [pitchFit]
+     * a sender needs to tell which pitch this phone will play ([org.hapticon.app.feature.chat.PeerFeel]). A profile
+     * outside what the wire accepts (1..2000 Hz) is left out rather than refused, so the rest is still published.
+     */
+    fun capabilitiesOf(user: String, device: DeviceCapabilities, override: RendererKind?, pitchFit: PitchFit = PitchFit.OCTAVES): Capabilities = Capabilities(
         user = user,
         renderer = choose(device, null, override),
         amplitudeControl = device.hasAmplitudeControl,
         apiLevel = device.apiLevel,
-        resonantFrequencyHz = device.resonantFrequencyHz,
+        resonantFrequencyHz = device.resonantFrequencyHz?.takeIf { it in 1.0..Capabilities.MAX_RESONANT_FREQUENCY_HZ },
+        envelopeEffects = device.apiLevel >= 36 && device.envelopeEffectsSupported && device.envelopeInfo != null,
+        frequencyRangeHz = device.frequencyRangeHz?.takeIf { it.start >= 1.0 && it.endInclusive <= Capabilities.MAX_RESONANT_FREQUENCY_HZ },
+        pitchFit = pitchFit,
     )
 }
 
@@ -187,9 +195,18 @@ class AdaptiveHapticPlayer(
             RendererKind.NONE, RendererKind.AUDIO, RendererKind.UNKNOWN -> return Playback.Unsupported
             RendererKind.AUDIO_COUPLED -> playAudioCoupled(icon, model)?.let { return it } ?: VibrationWaveform.render(icon, model)
             RendererKind.ENVELOPE -> if (Build.VERSION.SDK_INT >= 36) {
-                val points = EnvelopeControlPoints.render(icon, model)
-                vibrator.vibrate(points.toEnvelopeEffect())
-                return Playback.Playing(RendererKind.ENVELOPE, points.totalMillis, points.fidelity)
+                // The icon's note reaches the actuator as a pattern's does: Hz within the frequency profile (moved
+                // by the user's pitch fit), else sharpness from the note; steps where the envelope cannot follow.
+                val capabilities = device()
+                val envelope = PatternEnvelope.of(
+                    icon.toPattern(model), capabilities.envelopeInfo ?: EnvelopeEffectInfo.GUARANTEED,
+                    capabilities.frequencyRangeHz, pitchFit(),
+                )
+                if (envelope != null) {
+                    vibrator.vibrate(envelope.toVibrationEffect())
+                    return Playback.Playing(RendererKind.ENVELOPE, envelope.totalMillis, envelope.fidelity)
+                }
+                VibrationWaveform.render(icon, model)
             } else {
                 VibrationWaveform.render(icon, model)
             }
@@ -201,15 +218,30 @@ class AdaptiveHapticPlayer(
         return Playback.Playing(renderer, waveform.totalMillis, waveform.fidelity)
     }
 
-    /** How [pattern] would play now: [PatternPlan.of] for this phone, the override and the pitch choice. */
-    fun planFor(pattern: HapticPattern): PatternPlan = PatternPlan.of(device(), pattern, override(), pitchFit())
+    /**
+     * How [pattern] would play now: [PatternPlan.of] for this phone, the override and the pitch choice; audio-coupled
+     * only with an [audio] output that is available, as for icons.
+     */
+    fun planFor(pattern: HapticPattern): PatternPlan {
+        val capabilities = device()
+        val audioUsable = audio != null && audioCache != null && audio.isAvailable
+        return PatternPlan.of(if (audioUsable) capabilities else capabilities.copy(hapticGeneratorAvailable = false), pattern, override(), pitchFit())
+    }
 
     override fun play(pattern: HapticPattern): Playback {
+        val planned = planFor(pattern)
+        val vibrating = if (planned is PatternPlan.AudioCoupled) {
+            playAudioCoupled(pattern)?.let { return it }
+            planned.fallback
+        } else {
+            planned
+        }
         // The platform's own level decides, not the reported one: only a test's made-up capabilities differ.
-        val plan = planFor(pattern).let { if (it is PatternPlan.Envelope && Build.VERSION.SDK_INT < 36) stepsFor(pattern) else it }
+        val plan = if (vibrating is PatternPlan.Envelope && Build.VERSION.SDK_INT < 36) stepsFor(pattern) else vibrating
         audio?.stop()
         return when (plan) {
-            PatternPlan.Silent -> Playback.Unsupported
+            // A fallback is never audio-coupled again (PatternPlan.of plans it without audio).
+            PatternPlan.Silent, is PatternPlan.AudioCoupled -> Playback.Unsupported
             is PatternPlan.Envelope -> {
                 vibrator.vibrate(plan.envelope.toVibrationEffect())
                 Playback.Playing(RendererKind.ENVELOPE, plan.envelope.totalMillis, plan.envelope.fidelity)
@@ -222,7 +254,25 @@ class AdaptiveHapticPlayer(
     }
 
     private fun stepsFor(pattern: HapticPattern): PatternPlan =
-        PatternPlan.of(device().copy(envelopeEffectsSupported = false), pattern, override(), pitchFit())
+        PatternPlan.of(device().copy(envelopeEffectsSupported = false, hapticGeneratorAvailable = false), pattern, override(), pitchFit())
+
+    private fun playAudioCoupled(pattern: HapticPattern): Playback? {
+        val output = audio ?: return null
+        val cache = audioCache ?: return null
+        noteRendering("render ${pattern.name}")
+        val (file, fidelity) = try {
+            cache.fileFor(pattern) to cache.fidelityOf(pattern)
+        } catch (e: IOException) {
+            Log.w("AdaptiveHapticPlayer", "audio-coupled ${pattern.name} not rendered, vibrating instead: ${e.message}")
+            return null
+        } catch (e: IllegalArgumentException) {
+            Log.w("AdaptiveHapticPlayer", "audio-coupled ${pattern.name} not renderable, vibrating instead: ${e.message}")
+            return null
+        }
+        vibrator.cancel()
+        output.play(file)
+        return Playback.Playing(RendererKind.AUDIO_COUPLED, Math.round(pattern.duration * 1000), fidelity)
+    }
 
     override fun stop() {
         audio?.stop()
@@ -244,17 +294,3 @@ class AdaptiveHapticPlayer(
         return Playback.Playing(RendererKind.AUDIO_COUPLED, Math.round(samples * 1000.0 / cache.sampleRate), cache.fidelityOf(icon, model))
     }
 }
-
-/**
- * The API 36 envelope effect of these control points. The basic builder (intensity and sharpness) is used
- * rather than the waveform builder (absolute Hz) because a point outside the actuator's frequency range
- * makes the waveform builder's effect fail on the device; the icon's carrier is mapped to a mid sharpness.
- */
-@androidx.annotation.RequiresApi(36)
-fun EnvelopeControlPoints.toEnvelopeEffect(): VibrationEffect {
-    val builder = VibrationEffect.BasicEnvelopeBuilder().setInitialSharpness(ENVELOPE_SHARPNESS)
-    for (point in points) builder.addControlPoint(point.amplitude.toFloat().coerceIn(0f, 1f), ENVELOPE_SHARPNESS, point.durationMillis)
-    return builder.build()
-}
-
-private const val ENVELOPE_SHARPNESS = 0.5f

@@ -71,9 +71,9 @@ class ChatComponent(
             val device = {
                 DeviceCapabilities.detect(context, vibrator, audio.hapticPlaybackSupported, audio.hapticGeneratorAvailable)
             }
-            val override = { settings.preferences.value.rendererOverride?.let { name -> RendererKind.entries.firstOrNull { it.name == name } } }
-            val player = AdaptiveHapticPlayer(
-                vibrator, device, override,
+            val override = { rendererOverride(settings) }
+            val player = chatPlayer(
+                vibrator, device, settings,
                 audio = Media3AudioCoupledOutput(context),
                 audioCache = IconAudioCache(java.io.File(context.cacheDir, "icon-audio")),
             )
@@ -86,7 +86,7 @@ class ChatComponent(
                 },
                 player = player,
                 rateLimiter = VibrationRateLimiter(Clock.MONOTONIC),
-                localCapabilities = { user -> RendererChoice.capabilitiesOf(user, device(), override()) },
+                localCapabilities = { user -> RendererChoice.capabilitiesOf(user, device(), override(), settings.preferences.value.pitchFit) },
                 scope = scope,
                 quietNow = { doNotDisturb(context) },
             )
@@ -102,6 +102,27 @@ class ChatComponent(
             val patterns = org.hapticon.app.data.RoomPatternRepository(db.patternDao())
             return ChatComponent(repository, RoomIconRepository(db.iconDao()), settings, sync, player, device, probe, notifier, trustKey, patterns)
         }
+
+        /** The renderer the user forces in [settings], or null for the automatic choice. */
+        internal fun rendererOverride(settings: ChatSettingsRepository): RendererKind? =
+            settings.preferences.value.rendererOverride?.let { name -> RendererKind.entries.firstOrNull { it.name == name } }
+
+        /**
+         * The app's player: plays on [vibrator] as [device] allows, with the renderer override and the pitch fit
+         * ([org.hapticon.app.data.ChatPreferences.pitchFit]) read from [settings] at every play, so a change in
+         * Settings applies to the next icon or pattern.
+         */
+        internal fun chatPlayer(
+            vibrator: android.os.Vibrator,
+            device: () -> DeviceCapabilities,
+            settings: ChatSettingsRepository,
+            audio: org.hapticon.app.playback.AudioCoupledOutput? = null,
+            audioCache: IconAudioCache? = null,
+        ): AdaptiveHapticPlayer = AdaptiveHapticPlayer(
+            vibrator, device, { rendererOverride(settings) },
+            audio = audio, audioCache = audioCache,
+            pitchFit = { settings.preferences.value.pitchFit },
+        )
 
         /**
          * The messenger of [user] at [broker]; with [keys], sealed end to end. The client id is the user name (the

@@ -203,6 +203,19 @@ class ChatSync(
         scope.launch { markReadAndReceipt(peer) }
     }
 
+    /**
+     * Publishes this phone's capabilities again while connected: the renderer override or the pitch fit changed in
+     * Settings, and senders should see the change now, not after the next reconnection.
+     */
+    fun republishCapabilities() {
+        val current = session ?: return
+        if (connectionState.value != ConnectionState.Connected) return
+        scope.launch {
+            runCatching { current.messenger.publishCapabilities(localCapabilities(current.messenger.user)) }
+                .onFailure { if (it is kotlinx.coroutines.CancellationException) throw it else Log.w(TAG, "publishing capabilities failed: ${it.message}") }
+        }
+    }
+
     fun closeConversation(peer: String) {
         openConversations.update { it - peer }
     }

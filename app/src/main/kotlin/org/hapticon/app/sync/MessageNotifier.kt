@@ -83,13 +83,13 @@ class MessageNotifier(private val context: Context, private val selfName: () -> 
             .setContentIntent(openIntent(peer))
             .addAction(replyAction(peer))
             .addAction(markReadAction(peer))
-        latest.icon?.let { builder.addAction(feelAction(peer, latest.id, it.name)) }
+        (latest.icon?.name ?: latest.pattern?.name)?.let { builder.addAction(feelAction(peer, latest.id, it)) }
         manager.notify(peer, NOTIFICATION_ID, builder.build())
     }
 
-    /** A notification line: the icon's glyph and name, then the text (or "Sticker"). */
+    /** A notification line: the icon's or pattern's glyph and name, then the text (or "Sticker"). */
     internal fun lineOf(m: ChatMessage): String = listOfNotNull(
-        m.icon?.let { "〰 ${it.name}" },
+        (m.icon?.name ?: m.pattern?.name)?.let { "〰 $it" },
         m.text.takeIf { it.isNotEmpty() } ?: m.sticker?.let { "Sticker: $it" },
     ).joinToString(" · ")
 
@@ -174,7 +174,7 @@ class MessageNotifier(private val context: Context, private val selfName: () -> 
 /**
  * The notification's actions: "Mark as read" marks the conversation read and sends the read receipts
  * (kept for later while offline); "Reply" stores the typed text as an own message (the outbox sends it,
- * so a reply typed offline is not lost) and "Feel again" plays the message's icon through the normal
+ * so a reply typed offline is not lost) and "Feel again" plays the message's icon or pattern through the normal
  * player and sends the felt receipt. Both run in the background without opening the app.
  */
 class NotificationActionReceiver : BroadcastReceiver() {
@@ -201,8 +201,13 @@ class NotificationActionReceiver : BroadcastReceiver() {
                     MessageNotifier.ACTION_FEEL -> {
                         val id = intent.getStringExtra(MessageNotifier.EXTRA_MESSAGE) ?: return@launch
                         val message = chat.repository.message(id) ?: return@launch
-                        val icon = message.icon ?: return@launch
-                        chat.player.playOffMain(icon)
+                        val icon = message.icon
+                        val pattern = message.pattern
+                        when {
+                            icon != null -> chat.player.playOffMain(icon)
+                            pattern != null -> chat.player.playOffMain(pattern)
+                            else -> return@launch
+                        }
                         if (!message.outgoing) chat.sync.felt(peer, id)
                     }
                 }

@@ -8,6 +8,12 @@ import androidx.test.core.app.ApplicationProvider
 import java.io.File
 import org.hapticon.core.HapticIcon
 import org.hapticon.core.io.WavReader
+import org.hapticon.core.pattern.AmplitudeKey
+import org.hapticon.core.pattern.FrequencyKey
+import org.hapticon.core.pattern.HapticPattern
+import org.hapticon.core.pattern.Transient
+import org.hapticon.core.pattern.signal
+import org.hapticon.core.pattern.vibrationWaveform
 import org.hapticon.core.render.EnvelopeModel
 import org.hapticon.core.render.PcmRenderer
 import org.hapticon.core.render.VibrationWaveform
@@ -126,6 +132,45 @@ class AudioCoupledHapticsTest {
         val paper = VibrationWaveform.render(HapticIcon.KNOCK, EnvelopeModel.PAPER)
         assertEquals(RecordedVibration(paper.timings().toList(), paper.amplitudes().toList()), lastVibration(vibrator))
         assertEquals(PAPER_KNOCK, lastVibration(vibrator))
+    }
+
+    // Up to full in 20 ms, held 20 ms; the carrier sweeps 100 → 200 Hz, with a tap at 10 ms.
+    private val chirp = HapticPattern(
+        "chirp",
+        listOf(AmplitudeKey(0.0, 0.0), AmplitudeKey(0.02, 1.0), AmplitudeKey(0.04, 1.0)),
+        listOf(FrequencyKey(0.0, 100.0), FrequencyKey(0.04, 200.0)),
+        listOf(Transient(0.01, 0.8, 0.5)),
+    )
+
+    @Test
+    fun pattern_playsItsOwnSignalAsPcm16At48kHzThroughTheAudioPath() {
+        val playback = player().play(chirp) as Playback.Playing
+
+        assertEquals(RendererKind.AUDIO_COUPLED, playback.renderer)
+        assertEquals(40L, playback.durationMillis)
+        val samples = audio.played.single().inputStream().use { WavReader.read(it) }.samples()
+        assertEquals(48_000 * 40 / 1000, samples.size)
+        // Every sample is the pattern's exact signal at i / 48000 s within PCM16's rounding (the signal passes through a
+        // float on its way to the writer), clipped to ±1 where the tap adds to full drive: the sweep and the tap reach
+        // the actuator as they are.
+        val signal = chirp.signal()
+        val exact = DoubleArray(samples.size) { signal.sample(it / 48_000.0) }
+        for (i in samples.indices) assertEquals("sample $i", exact[i].coerceIn(-1.0, 1.0), samples[i].toDouble(), 1.0 / 32767)
+        // The fidelity measured from the file: its largest error is that clipping (0.0029 at sample 1324).
+        val overshoot = exact.maxOf { Math.abs(it) - 1.0 }
+        assertTrue(overshoot > 0.0)
+        assertEquals(overshoot, playback.fidelity.maxError, 1.0 / 32767)
+        assertNull(lastVibration(vibrator))
+        // The plan the Icons tab shows says so too.
+        assertEquals(RendererKind.AUDIO_COUPLED, player().planFor(chirp).renderer)
+    }
+
+    @Test
+    fun pattern_audioUnavailable_vibratesItsSteps() {
+        val playback = player(RecordingAudioOutput(isAvailable = false)).play(chirp) as Playback.Playing
+        assertEquals(RendererKind.AMPLITUDE_WAVEFORM, playback.renderer)
+        val steps = chirp.vibrationWaveform()
+        assertEquals(RecordedVibration(steps.timings().toList(), steps.amplitudes().toList()), lastVibration(vibrator))
     }
 
     @Test

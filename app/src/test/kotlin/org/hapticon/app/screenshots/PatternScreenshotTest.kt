@@ -12,6 +12,7 @@ import org.hapticon.app.feature.chat.ConversationScreen
 import org.hapticon.app.feature.chat.ConversationUiState
 import org.hapticon.app.feature.chat.COMPOSER_ICONS_TAG
 import org.hapticon.app.feature.chat.PeerFeel
+import org.hapticon.core.pattern.PitchFit
 import androidx.compose.ui.test.onNodeWithTag
 import org.hapticon.messaging.Capabilities
 import org.hapticon.app.feature.icons.IconsActions
@@ -113,7 +114,15 @@ class PatternScreenshotTest : ScreenshotTest() {
                     message(3, false, MessageState.RECEIVED, "Slow and rising, nice"),
                 ),
                 HapticIcon.PRESETS, null, null,
-                PeerFeel.ofPattern(Capabilities("bob", RendererKind.AUDIO_COUPLED, amplitudeControl = true, apiLevel = 36)), null,
+                // bob's Android 16 phone publishes a narrow frequency profile: the line under the composer names the pitch.
+                PeerFeel.ofPattern(
+                    Capabilities(
+                        "bob", RendererKind.ENVELOPE, amplitudeControl = true, apiLevel = 36, resonantFrequencyHz = 170.0,
+                        envelopeEffects = true, frequencyRangeHz = 120.0..240.0, pitchFit = PitchFit.OCTAVES,
+                    ),
+                    boing,
+                ),
+                null,
                 patterns = listOf(boing, swell), selectedPattern = boing,
             ),
             ConversationActions(), ChatClock(ZoneOffset.UTC, Locale.UK), now,

@@ -79,7 +79,7 @@ class ChatSyncTest {
         repository, repository, settings, factory,
         // Rendered on the test's own thread: this test is about the sync (threading: MainThreadWorkTest).
         AdaptiveHapticPlayer(vibrator, { device }, { null }, renderContext = EmptyCoroutineContext), limiter,
-        { user -> RendererChoice.capabilitiesOf(user, device, null) }, scope, clock = { now },
+        { user -> RendererChoice.capabilitiesOf(user, device, null, settings.preferences.value.pitchFit) }, scope, clock = { now },
         retryPolicy = RetryPolicy(initialDelayMillis = 10, maxDelayMillis = 10, jitter = 0.0), quietNow = quietNow,
     )
 
@@ -91,6 +91,16 @@ class ChatSyncTest {
     }
 
     private fun <T> await(flow: Flow<T>, predicate: (T) -> Boolean): T = runBlocking { withTimeout(5_000) { flow.first(predicate) } }
+
+    @Test
+    fun republishCapabilities_pitchFitChanged_peersGetTheNewFit() = runBlocking {
+        await(messenger.published) { it.isNotEmpty() }
+        assertEquals(org.hapticon.core.pattern.PitchFit.OCTAVES, messenger.published.value.last().pitchFit)
+        settings.update { it.copy(pitchFit = org.hapticon.core.pattern.PitchFit.CLAMP) }
+        sync.republishCapabilities()
+        val published = await(messenger.published) { it.size >= 2 }
+        assertEquals(org.hapticon.core.pattern.PitchFit.CLAMP, published.last().pitchFit)
+    }
 
     @Test
     fun send_textWithIcon_outboxDrainedAndJsonHandedToMessenger() = runBlocking {

@@ -15,6 +15,9 @@ import org.hapticon.app.data.database.MessageState
 import org.hapticon.app.playback.RecordedVibration
 import org.hapticon.app.playback.lastVibration
 import org.hapticon.core.HapticIcon
+import org.hapticon.core.pattern.AmplitudeKey
+import org.hapticon.core.pattern.FrequencyKey
+import org.hapticon.core.pattern.HapticPattern
 import org.hapticon.messaging.ChatMessage
 import org.junit.Assert.assertEquals
 import org.junit.Test
@@ -83,5 +86,25 @@ class NotificationActionTest {
 
         awaitTrue("the vibration") { lastVibration(vibrator) != null }
         assertEquals(RecordedVibration(listOf(10L, 10L, 250L, 10L, 10L, 250L, 10L, 10L), listOf(175, 111, 0, 175, 111, 0, 175, 111)), lastVibration(vibrator))
+    }
+
+    @Test
+    fun feelAgain_patternMessage_playsThePatternThroughThePlayer() {
+        val vibrator = app.getSystemService(Vibrator::class.java)
+        shadowOf(vibrator).setHasAmplitudeControl(true)
+        val ramp = HapticPattern(
+            "ramp",
+            listOf(AmplitudeKey(0.0, 0.0), AmplitudeKey(0.02, 1.0), AmplitudeKey(0.04, 1.0)),
+            listOf(FrequencyKey(0.0, 100.0), FrequencyKey(0.04, 200.0)),
+        )
+        val message = ChatMessage("0b7e7c1e-3f7b-4a57-9d3e-2f1c5a6b7c8f", "bob", 1_767_225_600_000, "", pattern = ramp)
+        runBlocking { chat.repository.receive(message) }
+        assertEquals("〰 ramp", chat.notifier!!.lineOf(message))
+
+        broadcast(Intent(MessageNotifier.ACTION_FEEL).putExtra(MessageNotifier.EXTRA_PEER, "bob").putExtra(MessageNotifier.EXTRA_MESSAGE, message.id))
+
+        awaitTrue("the vibration") { lastVibration(vibrator) != null }
+        // The pattern's drive envelope in 10 ms steps (0.25 and 0.75 of the rise, then full), as PatternPlaybackTest plays it.
+        assertEquals(RecordedVibration(listOf(10L, 10L, 20L), listOf(64, 191, 255)), lastVibration(vibrator))
     }
 }

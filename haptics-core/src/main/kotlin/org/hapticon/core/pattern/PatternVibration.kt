@@ -170,7 +170,10 @@ public sealed interface PatternEnvelope {
                     for (k in 1..parts) {
                         // Cut on the same straight line; integer millis that add up to the whole.
                         val millis = point.durationMillis * k / parts - point.durationMillis * (k - 1) / parts
-                        ramps += (previous + (point.amplitude - previous) * k / parts) to millis
+                        // The last part takes the point's own amplitude: p + (0 − p)·3/3 is 1.1e-16 for p = 0.7, and
+                        // BasicEnvelopeBuilder refuses an effect that does not end on exactly zero intensity.
+                        val amplitude = if (k == parts) point.amplitude else previous + (point.amplitude - previous) * k / parts
+                        ramps += amplitude to millis
                     }
                     previous = point.amplitude
                 }

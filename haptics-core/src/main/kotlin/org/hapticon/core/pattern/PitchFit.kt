@@ -1,9 +1,11 @@
 package org.hapticon.core.pattern
 
 import java.util.Locale
+import kotlin.math.abs
+import kotlin.math.ceil
+import kotlin.math.floor
 import kotlin.math.ln
 import kotlin.math.pow
-import kotlin.math.roundToInt
 
 /**
  * What to do with carrier frequencies an actuator cannot give (outside the range its
@@ -11,8 +13,9 @@ import kotlin.math.roundToInt
  */
 public enum class PitchFit {
     /**
-     * Move the whole pattern by whole octaves so that its frequencies sit inside the range as far as they can,
-     * keeping its contour (a note stays the same note name); then clamp whatever still lies outside.
+     * Move the whole pattern by the fewest whole octaves that bring its frequencies inside the range (as far as
+     * they can go), keeping its contour and intervals (a note stays the same note name); then clamp whatever still
+     * lies outside. The default: see docs/patterns.md, "Notes outside the actuator's range".
      */
     OCTAVES,
 
@@ -32,8 +35,10 @@ public data class FittedPitch(val pattern: HapticPattern, val octaves: Int, val 
 
 /**
  * This pattern with its frequency curve moved into [minHz]..[maxHz] by [fit]. The octave shift is the one that
- * brings the geometric centre of the pattern's frequencies closest to the range's geometric centre, so a
- * pattern that fits is never moved.
+ * leaves the least of the pattern's span outside the range (in octaves, below plus above), and among equally good
+ * shifts the smallest, then the lower one: a pattern that fits is never moved, a single note moves by the fewest
+ * octaves that bring it inside (349.2 Hz into 50–300 Hz: one octave down to 174.6 Hz, not two), and a note that no
+ * shift brings inside a range narrower than an octave lands as close to it as it can before it is clamped.
  *
  * @throws IllegalArgumentException if the range is not finite, positive and increasing.
  */
@@ -43,13 +48,7 @@ public fun HapticPattern.fitPitchInto(minHz: Double, maxHz: Double, fit: PitchFi
     val highest = frequency.maxOf { it.hertz }
     val range = String.format(Locale.ROOT, "%.0f–%.0f Hz", minHz, maxHz)
     if (lowest >= minHz && highest <= maxHz) return FittedPitch(this, 0, 0, "plays at its own pitch; $range covers it")
-    val octaves = if (fit == PitchFit.OCTAVES) {
-        val centre = ln(lowest * highest) / 2
-        val target = ln(minHz * maxHz) / 2
-        ((target - centre) / ln(2.0)).roundToInt()
-    } else {
-        0
-    }
+    val octaves = if (fit == PitchFit.OCTAVES) fewestOctaves(lowest, highest, minHz, maxHz) else 0
     val factor = 2.0.pow(octaves)
     var clamped = 0
     val moved = frequency.map { key ->
@@ -60,9 +59,23 @@ public fun HapticPattern.fitPitchInto(minHz: Double, maxHz: Double, fit: PitchFi
     }
     val what = when {
         octaves == 0 -> "clamped to $range"
-        else -> String.format(Locale.ROOT, "plays %d octave%s %s (%.1f → %.1f Hz) to fit %s", kotlin.math.abs(octaves),
-            if (kotlin.math.abs(octaves) == 1) "" else "s", if (octaves < 0) "lower" else "higher", frequency.first().hertz, moved.first().hertz, range)
+        else -> String.format(Locale.ROOT, "plays %d octave%s %s (%.1f → %.1f Hz) to fit %s", abs(octaves),
+            if (abs(octaves) == 1) "" else "s", if (octaves < 0) "lower" else "higher", frequency.first().hertz, moved.first().hertz, range)
     }
     val rest = if (octaves != 0 && clamped > 0) "; $clamped frequency key${if (clamped == 1) "" else "s"} still clamped" else ""
     return FittedPitch(HapticPattern(name, amplitude, moved, transients), octaves, clamped, what + rest)
+}
+
+// The shift k (octaves) minimising how far [lowest·2^k, highest·2^k] sticks out of [minHz, maxHz], in octaves; ties go
+// to the smaller |k|, then to the lower k. The overhang is convex in k, so scanning the shifts that can matter is exact.
+private fun fewestOctaves(lowest: Double, highest: Double, minHz: Double, maxHz: Double): Int {
+    fun log2(x: Double) = ln(x) / ln(2.0)
+    fun overhang(k: Int): Double {
+        val low = log2(lowest) + k
+        val high = log2(highest) + k
+        return maxOf(0.0, log2(minHz) - low) + maxOf(0.0, high - log2(maxHz))
+    }
+    val from = floor(log2(minHz / highest)).toInt() - 1
+    val to = ceil(log2(maxHz / lowest)).toInt() + 1
+    return (from..to).minWith(compareBy<Int>({ overhang(it) }, { abs(it) }, { it }))
 }

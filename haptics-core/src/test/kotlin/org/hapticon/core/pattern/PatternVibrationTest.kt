@@ -73,6 +73,20 @@ class PatternVibrationTest {
     }
 
     @Test
+    fun of_fadeCutIntoThirds_lastPointIsExactlyZero() {
+        // 0.7 + (0 − 0.7)·3/3 is 1.1e-16 in doubles; Android's BasicEnvelopeBuilder throws unless the last intensity is 0.
+        val fade = HapticPattern(
+            "fade",
+            listOf(AmplitudeKey(0.0, 0.0), AmplitudeKey(0.1, 0.7), AmplitudeKey(0.4, 0.7), AmplitudeKey(0.7, 0.0)),
+            listOf(FrequencyKey(0.0, 150.0)),
+        )
+        val envelope = PatternEnvelope.of(fade, EnvelopeEffectInfo(16, 20, 100, 1600), null) as PatternEnvelope.Basic
+        assertEquals(List(7) { 100L }, envelope.points.map { it.millis })
+        assertEquals(0.0, envelope.points.last().intensity, 0.0)
+        assertEquals(0.7, envelope.points[3].intensity, 0.0)
+    }
+
+    @Test
     fun of_tooFewPointsAfterCutting_refitsWithinTheBudgetOrGivesUp() {
         val long = HapticPattern(
             "long",

@@ -199,6 +199,7 @@ private fun SettingsRoute(component: ChatComponent, onBack: () -> Unit, onOpenSt
                     probe = component.probe,
                     trustKey = component.trustKey,
                     exportJson = { ChatExport.toJson(component.repository.allMessages()) },
+                    republishCapabilities = component.sync::republishCapabilities,
                 )
             }
         },

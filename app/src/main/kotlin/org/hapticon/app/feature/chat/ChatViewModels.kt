@@ -24,9 +24,11 @@ import org.hapticon.app.data.database.StoredMessage
 import org.hapticon.app.playback.HapticPlayer
 import org.hapticon.app.playback.playMessageOffMain
 import org.hapticon.app.playback.playOffMain
+import org.hapticon.app.playback.PeerPitch
 import org.hapticon.app.playback.RendererChoice
 import org.hapticon.core.HapticIcon
 import org.hapticon.core.pattern.HapticPattern
+import org.hapticon.core.pattern.toPattern
 import org.hapticon.messaging.Capabilities
 import org.hapticon.messaging.InvalidMessageException
 import org.hapticon.messaging.InviteLink
@@ -161,22 +163,52 @@ suspend fun applyInvite(text: String, repository: ChatRepository, settings: Chat
  * set when the peer's capabilities leave two renderers possible (a pattern on an audio-coupled API 36 phone:
  * envelope if its vibrator offers envelope effects, else amplitude steps), shown as "X or Y".
  */
-data class PeerFeel(val renderer: RendererKind, val fidelityPercent: Int?, val alternative: RendererKind? = null) {
+data class PeerFeel(
+    val renderer: RendererKind,
+    val fidelityPercent: Int?,
+    val alternative: RendererKind? = null,
+    /** The pitch the peer's phone will play, one line ([org.hapticon.app.playback.PeerPitch]); null when it plays none. */
+    val pitch: String? = null,
+) {
     companion object {
         /**
-         * How [caps]'s phone plays a pattern, following [org.hapticon.app.playback.PatternPlan.of]: patterns have
-         * no audio path; an envelope effect needs API 36; otherwise amplitude steps, or on/off without amplitude
-         * control. The peer publishes its icon renderer, not whether its vibrator has envelope effects, so an
-         * audio-coupled API 36 peer is "envelope or amplitude waveform".
+         * How [caps]'s phone plays [icon]: its renderer, that renderer's fidelity and the pitch it will give the note.
+         * The fidelity renders the icon, so the composer passes the figure it computed off the main thread (null until then).
          */
-        fun ofPattern(caps: Capabilities): PeerFeel {
+        fun ofIcon(
+            caps: Capabilities,
+            icon: HapticIcon,
+            fidelityPercent: Int? = RendererChoice.fidelityPercent(caps.renderer, icon),
+        ): PeerFeel = PeerFeel(
+            caps.renderer, fidelityPercent,
+            pitch = PeerPitch.describe(caps, icon.toPattern(), audioCoupled = caps.renderer == RendererKind.AUDIO_COUPLED, icon = true),
+        )
+
+        /**
+         * How [caps]'s phone plays a pattern, following [org.hapticon.app.playback.PatternPlan.of]: audio-coupled where
+         * the peer plays icons so (builds that publish `envelopeEffects`); an envelope effect needs API 36; otherwise
+         * amplitude steps, or on/off without amplitude control. An older audio-coupled API 36 peer does not say
+         * whether its vibrator has envelope effects, so it is "envelope or amplitude waveform".
+         */
+        fun ofPattern(caps: Capabilities, pattern: HapticPattern? = null): PeerFeel {
             val steps = if (caps.amplitudeControl) RendererKind.AMPLITUDE_WAVEFORM else RendererKind.ON_OFF
+            val pitch = pattern?.let { PeerPitch.describe(caps, it) }
+            // A peer that publishes envelopeEffects (this build) is planned exactly: an envelope phone plays a pattern
+            // its envelope cannot follow (a sharp pulse) as steps, and the line must say so.
+            if (pattern != null && caps.envelopeEffects != null && caps.renderer != RendererKind.AUDIO_COUPLED) {
+                return PeerFeel(PeerPitch.planOf(caps, pattern).renderer, null, pitch = pitch)
+            }
             return when (caps.renderer) {
-                RendererKind.AUDIO_COUPLED ->
-                    if ((caps.apiLevel ?: 0) >= 36) PeerFeel(RendererKind.ENVELOPE, null, steps) else PeerFeel(steps, null)
-                RendererKind.AMPLITUDE_WAVEFORM -> PeerFeel(steps, null)
+                RendererKind.AUDIO_COUPLED -> when {
+                    // Builds that publish envelopeEffects play patterns as audio too; older ones plan them without audio,
+                    // and do not say whether their vibrator has envelope effects.
+                    caps.envelopeEffects != null -> PeerFeel(RendererKind.AUDIO_COUPLED, null, pitch = pitch)
+                    (caps.apiLevel ?: 0) >= 36 -> PeerFeel(RendererKind.ENVELOPE, null, steps, pitch = pitch)
+                    else -> PeerFeel(steps, null, pitch = pitch)
+                }
+                RendererKind.AMPLITUDE_WAVEFORM -> PeerFeel(steps, null, pitch = pitch)
                 // Envelope, on/off, no actuator, the CLI's audio and unknown stay what the peer said.
-                else -> PeerFeel(caps.renderer, null)
+                else -> PeerFeel(caps.renderer, null, pitch = pitch)
             }
         }
     }
@@ -244,11 +276,13 @@ class ConversationViewModel(
     /** The draft with what the peer will feel of it; the figure only once computed for this very choice. */
     private val composer: Flow<Pair<Draft, PeerFeel?>> = combine(draft, peerCapabilities, figure) { draft, capabilities, figure ->
         val feel = capabilities[peer]?.let { caps ->
-            if (draft.pattern != null) {
-                PeerFeel.ofPattern(caps)
-            } else {
-                val percent = draft.icon?.let { icon -> figure?.takeIf { it.first == FigureKey(caps.renderer, icon) }?.second }
-                PeerFeel(caps.renderer, percent)
+            when {
+                draft.pattern != null -> PeerFeel.ofPattern(caps, draft.pattern)
+                draft.icon != null -> {
+                    val percent = figure?.takeIf { it.first == FigureKey(caps.renderer, draft.icon) }?.second
+                    PeerFeel.ofIcon(caps, draft.icon, percent)
+                }
+                else -> PeerFeel(caps.renderer, null)
             }
         }
         draft to feel

@@ -367,6 +367,12 @@ private fun Composer(uiState: ConversationUiState.Success, actions: Conversation
                     style = MaterialTheme.typography.bodySmall, color = MaterialTheme.colorScheme.onSurfaceVariant,
                     modifier = Modifier.padding(horizontal = 4.dp),
                 )
+                feel?.pitch?.let { pitch ->
+                    Text(
+                        pitch, style = MaterialTheme.typography.bodySmall, color = MaterialTheme.colorScheme.onSurfaceVariant,
+                        modifier = Modifier.padding(horizontal = 4.dp),
+                    )
+                }
             }
             uiState.error?.let { Text(it, color = MaterialTheme.colorScheme.error, modifier = Modifier.padding(horizontal = 4.dp)) }
             Row(verticalAlignment = Alignment.CenterVertically) {

@@ -32,6 +32,7 @@ import org.hapticon.app.designsystem.HapticonIcons
 import org.hapticon.app.playback.label
 import org.hapticon.app.ui.DropdownField
 import org.hapticon.app.ui.SwitchRow
+import org.hapticon.core.pattern.PitchFit
 import org.hapticon.messaging.RendererKind
 
 /** What the settings screen can change. */
@@ -102,6 +103,17 @@ fun SettingsScreen(
                 optionLabel = { it?.label ?: "Automatic (best for this phone)" },
                 onSelect = { r -> actions.update { it.copy(rendererOverride = r?.name) } },
             )
+            DropdownField(
+                label = "Notes this phone cannot play",
+                options = PitchFit.entries,
+                selected = prefs.pitchFit,
+                optionLabel = { it.label },
+                onSelect = { fit -> actions.update { it.copy(pitchFit = fit) } },
+            )
+            Text(
+                "On Android 16 phones that report their actuator's frequency range. Senders see which pitch your phone plays.",
+                style = MaterialTheme.typography.bodyMedium, color = MaterialTheme.colorScheme.onSurfaceVariant,
+            )
             Text(
                 "Masking noise is part of a study protocol; researchers set it in the Study tab.",
                 style = MaterialTheme.typography.bodyMedium, color = MaterialTheme.colorScheme.onSurfaceVariant,
@@ -161,6 +173,13 @@ fun SettingsScreen(
         }
     }
 }
+
+/** What the settings call a [PitchFit]. */
+val PitchFit.label: String
+    get() = when (this) {
+        PitchFit.OCTAVES -> "Shift by octaves into range"
+        PitchFit.CLAMP -> "Clamp to the nearest edge"
+    }
 
 @Composable
 private fun Section(title: String, first: Boolean = false) {

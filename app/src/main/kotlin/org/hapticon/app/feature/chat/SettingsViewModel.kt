@@ -38,6 +38,8 @@ class SettingsViewModel(
     private val trustKey: (peer: String) -> Boolean,
     /** Every stored message as the export's JSON ([org.hapticon.app.data.ChatExport]). */
     private val exportJson: suspend () -> String,
+    /** Publishes this phone's capabilities again: the pitch setting and the renderer choice are part of them. */
+    private val republishCapabilities: () -> Unit,
     private val io: CoroutineDispatcher = Dispatchers.IO,
 ) : ViewModel() {
     private val notice = MutableStateFlow<String?>(null)
@@ -72,8 +74,13 @@ class SettingsViewModel(
         notice.value = text
     }
 
-    /** Applies [transform] to the stored settings. */
-    fun update(transform: (ChatPreferences) -> ChatPreferences) = settings.update(transform)
+    /** Applies [transform] to the stored settings; a changed pitch setting or renderer is published to peers at once. */
+    fun update(transform: (ChatPreferences) -> ChatPreferences) {
+        val before = settings.preferences.value
+        settings.update(transform)
+        val after = settings.preferences.value
+        if (before.pitchFit != after.pitchFit || before.rendererOverride != after.rendererOverride) republishCapabilities()
+    }
 
     /**
      * Tests [url] as the new broker and saves it once it answered, as first launch does. Returns why not at once

@@ -21,6 +21,8 @@ import org.hapticon.app.playback.DeviceCapabilities
 import org.hapticon.app.playback.RecordedVibration
 import org.hapticon.app.playback.lastVibration
 import org.hapticon.core.HapticIcon
+import org.hapticon.core.pattern.PitchFit
+import org.hapticon.messaging.Capabilities
 import org.junit.Assert.assertEquals
 import org.junit.Rule
 import org.junit.Test
@@ -139,6 +141,28 @@ class ConversationScreenTest {
             ConversationScreen(state(emptyList(), HapticIcon.HUG, PeerFeel(RendererKind.ON_OFF, 61)), ConversationActions())
         }
         compose.onNodeWithText("How hug will feel there: on/off pattern, 61% fidelity").assertExists()
+    }
+
+    @Test
+    fun composer_peerPublishedANarrowProfile_saysThePitchItsPhoneWillPlay() {
+        val bob = Capabilities(
+            "bob", RendererKind.ENVELOPE, amplitudeControl = true, apiLevel = 36, resonantFrequencyHz = 170.0,
+            envelopeEffects = true, frequencyRangeHz = 120.0..240.0, pitchFit = PitchFit.OCTAVES,
+        )
+        val feel = MutableStateFlow(PeerFeel.ofIcon(bob, HapticIcon.STROKE))
+        val selected = MutableStateFlow(HapticIcon.STROKE)
+        compose.setContent {
+            val f by feel.collectAsState()
+            val icon by selected.collectAsState()
+            ConversationScreen(state(emptyList(), icon, f), ConversationActions())
+        }
+        compose.onNodeWithText("bob's phone (120–240 Hz): 349 Hz → plays 175 Hz, shifted down one octave").assertExists()
+        // The peer switched to clamping: its next capabilities change the line.
+        feel.value = PeerFeel.ofIcon(bob.copy(pitchFit = PitchFit.CLAMP), HapticIcon.STROKE)
+        compose.onNodeWithText("bob's phone (120–240 Hz): 349 Hz → plays 240 Hz, clamped").assertExists()
+        // A phone without a frequency profile: the note becomes sharpness.
+        feel.value = PeerFeel.ofIcon(bob.copy(frequencyRangeHz = null), HapticIcon.STROKE)
+        compose.onNodeWithText("bob's phone has no frequency profile: 349 Hz → sharpness 0.81").assertExists()
     }
 
     @Test

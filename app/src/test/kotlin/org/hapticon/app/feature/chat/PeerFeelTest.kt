@@ -1,5 +1,6 @@
 package org.hapticon.app.feature.chat
 
+import org.hapticon.core.pattern.toPattern
 import org.hapticon.messaging.Capabilities
 import org.hapticon.messaging.RendererKind
 import org.junit.Assert.assertEquals
@@ -27,5 +28,15 @@ class PeerFeelTest {
         for (kind in listOf(RendererKind.ENVELOPE, RendererKind.ON_OFF, RendererKind.NONE, RendererKind.AMPLITUDE_WAVEFORM)) {
             assertEquals(PeerFeel(kind, null), feel(kind, api = 36))
         }
+    }
+
+    @Test
+    fun ofPattern_audioCoupledPeerOfThisBuild_playsThePatternAsAudioAtItsOwnPitch() {
+        val caps = Capabilities("bob", RendererKind.AUDIO_COUPLED, true, 36, envelopeEffects = false)
+        val pattern = org.hapticon.core.HapticIcon.STROKE.toPattern()
+        assertEquals(
+            PeerFeel(RendererKind.AUDIO_COUPLED, null, pitch = "bob's phone: 349 Hz → plays 349 Hz (audio haptic channel)"),
+            PeerFeel.ofPattern(caps, pattern),
+        )
     }
 }

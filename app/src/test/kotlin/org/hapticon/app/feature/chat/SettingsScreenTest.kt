@@ -10,6 +10,7 @@ import androidx.compose.ui.test.performClick
 import androidx.compose.ui.test.performScrollTo
 import org.hapticon.app.data.ChatPreferences
 import org.hapticon.app.data.InMemoryChatSettings
+import org.hapticon.core.pattern.PitchFit
 import org.hapticon.messaging.RendererKind
 import org.junit.Assert.assertEquals
 import org.junit.Rule
@@ -52,6 +53,20 @@ class SettingsScreenTest {
         assertEquals(listOf(true), reachable)
         compose.onNodeWithText("tcp://10.0.0.2:1883").assertExists()
         compose.onNodeWithText("Connection: connected").assertExists()
+    }
+
+    @Test
+    fun pitchFit_octavesByDefault_clampChosenAndStored() {
+        val settings = InMemoryChatSettings(ChatPreferences(userName = "alice", brokerUrl = "tcp://10.0.0.2:1883"))
+        compose.setContent {
+            val prefs by settings.preferences.collectAsState()
+            SettingsScreen(SettingsUiState(prefs, listOf(RendererKind.ON_OFF), "connected"), SettingsActions(update = settings::update))
+        }
+        compose.onNodeWithText("Notes this phone cannot play").performScrollTo().assertExists()
+        compose.onNodeWithText("Shift by octaves into range").performScrollTo().performClick()
+        compose.onNodeWithText("Clamp to the nearest edge").performClick()
+        assertEquals(PitchFit.CLAMP, settings.preferences.value.pitchFit)
+        compose.onNodeWithText("Clamp to the nearest edge").assertExists()
     }
 
     @Test

@@ -13,6 +13,7 @@ import org.hapticon.app.gesture.MainDispatcherRule
 import org.hapticon.messaging.ConnectionState
 import org.hapticon.messaging.RendererKind
 import org.hapticon.messaging.BrokerAddress
+import org.hapticon.core.pattern.PitchFit
 import org.junit.Assert.assertEquals
 import org.junit.Assert.assertNull
 import org.junit.Rule
@@ -33,6 +34,7 @@ class SettingsViewModelTest {
     private val probed = mutableListOf<Triple<String, BrokerAddress, String?>>()
     private var probeAnswer: String? = null
     private var allowed: Boolean? = true
+    private var republished = 0
 
     private fun viewModel() = SettingsViewModel(
         settings, connection, MutableStateFlow(listOf("bob's key changed")), MutableStateFlow(setOf("bob")),
@@ -41,6 +43,7 @@ class SettingsViewModelTest {
         probe = { user, broker, password -> probed += Triple(user, broker, password); probeAnswer },
         trustKey = { true },
         exportJson = { "{\"messages\":[]}" },
+        republishCapabilities = { republished++ },
         io = main.dispatcher,
     )
 
@@ -78,6 +81,20 @@ class SettingsViewModelTest {
         connection.value = ConnectionState.Failed("not authorised")
         advanceUntilIdle()
         assertEquals("refused: not authorised", vm.uiState.value.connection)
+    }
+
+    @Test
+    fun pitchSettingOrRendererChange_isPublishedToPeers_otherChangesAreNot() {
+        val vm = viewModel()
+        vm.update { it.copy(autoPlay = !it.autoPlay) }
+        assertEquals(0, republished)
+        vm.update { it.copy(pitchFit = PitchFit.CLAMP) }
+        assertEquals(PitchFit.CLAMP, settings.preferences.value.pitchFit)
+        assertEquals(1, republished)
+        vm.update { it.copy(pitchFit = PitchFit.CLAMP) }
+        assertEquals(1, republished)
+        vm.update { it.copy(rendererOverride = RendererKind.ON_OFF.wireName) }
+        assertEquals(2, republished)
     }
 
     @Test

@@ -1,0 +1,108 @@
+package org.hapticon.app.playback
+
+import java.util.Locale
+import kotlin.math.abs
+import org.hapticon.core.pattern.EnvelopeEffectInfo
+import org.hapticon.core.pattern.HapticPattern
+import org.hapticon.core.pattern.PatternEnvelope
+import org.hapticon.core.pattern.PitchFit
+import org.hapticon.messaging.Capabilities
+import org.hapticon.messaging.RendererKind
+
+/**
+ * The pitch a peer's phone will give an icon or pattern, from the capabilities it publishes (frequency profile,
+ * envelope support, resonant frequency, pitch fit) and the same rules this phone plays by ([PatternPlan.of]), as
+ * one line for the sender: "bob's phone (120–240 Hz): 349 Hz → plays 175 Hz, shifted down one octave".
+ */
+object PeerPitch {
+    /**
+     * The peer's phone as [PatternPlan.of] needs it. Envelope limits are not published: the guaranteed ones
+     * (16 points, 20 ms..1 s) stand in. A peer that does not say whether it has envelope effects (an older build)
+     * is taken to have them when its renderer is the envelope.
+     */
+    fun deviceOf(caps: Capabilities): DeviceCapabilities {
+        val envelope = caps.envelopeEffects ?: (caps.renderer == RendererKind.ENVELOPE)
+        // Builds that publish envelopeEffects also play patterns as audio where they play icons so; older ones do not.
+        val audio = caps.renderer == RendererKind.AUDIO_COUPLED && caps.envelopeEffects != null
+        return DeviceCapabilities(
+            hasVibrator = caps.renderer != RendererKind.NONE && caps.renderer != RendererKind.AUDIO,
+            hasAmplitudeControl = caps.amplitudeControl,
+            apiLevel = caps.apiLevel ?: 0,
+            resonantFrequencyHz = caps.resonantFrequencyHz,
+            envelopeEffectsSupported = envelope,
+            frequencyRangeHz = caps.frequencyRangeHz,
+            envelopeInfo = if (envelope) EnvelopeEffectInfo.GUARANTEED else null,
+            hapticPlaybackSupported = audio,
+            hapticGeneratorAvailable = audio,
+        )
+    }
+
+    /** How the peer plays [pattern]: its published renderer stands for a renderer it forces (steps or on/off). */
+    fun planOf(caps: Capabilities, pattern: HapticPattern): PatternPlan {
+        val override = caps.renderer.takeIf { it == RendererKind.AMPLITUDE_WAVEFORM || it == RendererKind.ON_OFF }
+        return PatternPlan.of(deviceOf(caps), pattern, override, caps.pitchFit ?: PitchFit.OCTAVES)
+    }
+
+    /**
+     * The line for [pattern] (an [icon]'s as [org.hapticon.core.pattern.toPattern]) on [caps]'s phone; [audioCoupled]
+     * when the peer plays it as audio with the haptic channel (icons on such phones), which carries the sine at the
+     * pattern's own frequency. Null when the peer plays nothing or is not a phone (the CLI's audio, unknown).
+     */
+    fun describe(caps: Capabilities, pattern: HapticPattern, audioCoupled: Boolean = false, icon: Boolean = false): String? {
+        val phone = "${caps.user}'s phone"
+        val own = hzRange(pattern)
+        if (audioCoupled) return "$phone: $own → plays $own (audio haptic channel)"
+        if (caps.renderer == RendererKind.AUDIO || caps.renderer == RendererKind.UNKNOWN) return null
+        val plan = planOf(caps, pattern)
+        // Builds older than the published envelopeEffects play an icon's envelope with a fixed sharpness of 0.5.
+        if (icon && caps.envelopeEffects == null && plan is PatternPlan.Envelope) return "$phone (an older Hapticon): $own → sharpness 0.50, the note is not played"
+        return when (plan) {
+            PatternPlan.Silent -> null
+            // The peer's published renderer is its choice for icons; audio-coupled is handled above for them.
+            is PatternPlan.AudioCoupled -> "$phone: $own → plays $own (audio haptic channel)"
+            is PatternPlan.Steps -> {
+                val resonance = caps.resonantFrequencyHz?.let { " (${hz(it)})" } ?: ""
+                if (deviceOf(caps).envelopeEffectsSupported && caps.renderer == RendererKind.ENVELOPE) {
+                    "$phone: too quick for its envelope effect, amplitude steps at its resonance$resonance"
+                } else {
+                    "$phone has no pitch control: plays at its resonance$resonance"
+                }
+            }
+            is PatternPlan.Envelope -> when (val envelope = plan.envelope) {
+                is PatternEnvelope.Basic -> {
+                    val sharpness = pattern.frequency.map { envelope.mapping.normalizedOf(it.hertz) }
+                    val shown = if (sharpness.max() - sharpness.min() < 0.005) fixed(sharpness.first()) else "${fixed(sharpness.min())}–${fixed(sharpness.max())}"
+                    "$phone has no frequency profile: $own → sharpness $shown"
+                }
+                is PatternEnvelope.Waveform -> {
+                    val range = caps.frequencyRangeHz!!
+                    val fitted = envelope.pitch
+                    val how = when {
+                        fitted.octaves != 0 -> ", shifted ${if (fitted.octaves > 0) "up" else "down"} ${octaves(abs(fitted.octaves))}" +
+                            (if (fitted.clampedKeys > 0) " and clamped" else "")
+                        fitted.clampedKeys > 0 -> ", clamped"
+                        else -> ""
+                    }
+                    "$phone (${String.format(Locale.ROOT, "%.0f–%.0f Hz", range.start, range.endInclusive)}): $own → plays ${hzRange(fitted.pattern)}$how"
+                }
+            }
+        }
+    }
+
+    private fun hzRange(pattern: HapticPattern): String {
+        val low = hz(pattern.frequency.minOf { it.hertz })
+        val high = hz(pattern.frequency.maxOf { it.hertz })
+        return if (low == high) low else "${low.removeSuffix(" Hz")}–$high"
+    }
+
+    private fun hz(value: Double) = String.format(Locale.ROOT, "%.0f Hz", value)
+
+    private fun fixed(value: Double) = String.format(Locale.ROOT, "%.2f", value)
+
+    private fun octaves(n: Int) = when (n) {
+        1 -> "one octave"
+        2 -> "two octaves"
+        3 -> "three octaves"
+        else -> "$n octaves"
+    }
+}
