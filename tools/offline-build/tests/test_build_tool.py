@@ -366,6 +366,12 @@ class RobolectricSdkTest(unittest.TestCase):
 class Sdk36JavaTest(unittest.TestCase):
     """Tests on SDK 36 need a JDK 21+ (its framework jar is Java 21 bytecode); the build finds one or says what to install."""
 
+    def setUp(self):
+        # The choice reads HAPTICON_TEST_JAVA_HOME first; a developer's setting must not decide these tests.
+        saved = os.environ.pop("HAPTICON_TEST_JAVA_HOME", None)
+        if saved is not None:
+            self.addCleanup(os.environ.__setitem__, "HAPTICON_TEST_JAVA_HOME", saved)
+
     def jdk(self, release):
         home = tempfile.mkdtemp()
         os.makedirs(os.path.join(home, "bin"))
