@@ -16,7 +16,6 @@ import java.io.IOException
 import java.security.MessageDigest
 import org.hapticon.core.HapticIcon
 import org.hapticon.core.io.IconJson
-import org.hapticon.core.io.Json
 import org.hapticon.core.io.WavEncoding
 import org.hapticon.core.io.WavReader
 import org.hapticon.core.io.WavWriter
@@ -127,7 +126,7 @@ class IconAudioCache(
     }
 
     private fun keyOf(pattern: HapticPattern): String {
-        val digest = MessageDigest.getInstance("SHA-256").digest("pattern:$sampleRate:${Json.encode(PatternJson.toJsonValue(pattern))}".toByteArray())
+        val digest = MessageDigest.getInstance("SHA-256").digest("pattern:$sampleRate:${PatternJson.toJsonElement(pattern)}".toByteArray())
         return digest.take(12).joinToString("") { "%02x".format(it) }
     }
 
