@@ -24,8 +24,7 @@ import java.util.concurrent.atomic.AtomicInteger
  * it). A start costs a second or more (five in a cold JVM) and a stop 4.5 s, so the tests of this module
  * share one broker ([SharedBroker]) and keep apart by using their own user names ([uniqueUser]). A test
  * may restart it: the others reconnect. A test that retains a message deletes it before it ends (an empty
- * retained publish): a retained payload left across a restart of this broker was once delivered in place of
- * a later test's publish (docs/security.md, "Known weaknesses").
+ * retained publish), so later tests do not receive it. Every start goes through [OneBrokerAtATime].
  */
 class BrokerFixture : ExternalResource() {
     val broker: EmbeddedBroker get() = SharedBroker.instance
@@ -35,7 +34,8 @@ class BrokerFixture : ExternalResource() {
     val address: BrokerAddress get() = BrokerAddress(EmbeddedBroker.HOST, broker.port)
 
     override fun before() {
-        broker.start() // a test that stopped it may have failed before starting it again
+        // A test that stopped it may have failed before starting it again; another test class may have run its own.
+        OneBrokerAtATime.start(broker)
     }
 
     override fun after() {
@@ -88,7 +88,8 @@ object SharedBroker {
         val tls = listOf(ClientCertificates.REQUIRED, ClientCertificates.OPTIONAL).map { mode ->
             BrokerTls(0, EmbeddedBroker.HOST, ca.serverCertificateFile, ca.serverKeyFile, ca.certificateFile, mode)
         }
-        EmbeddedBroker(File(root, "store"), security = BrokerSecurity.Authenticated(passwords.file, acl), tls = tls).also { it.start() }
+        EmbeddedBroker(File(root, "store"), security = BrokerSecurity.Authenticated(passwords.file, acl), tls = tls)
+            .also { OneBrokerAtATime.start(it) }
     }
 
     /** Adds [user] to the password file (once) and returns its password, `<user>-secret`. */
@@ -102,6 +103,28 @@ object SharedBroker {
     }
 
     private val registered = mutableSetOf<String>()
+}
+
+/**
+ * Starts a test's embedded broker after stopping whichever other one runs in this JVM. Two HiveMQ CE brokers
+ * must not run at once in one process: each start sets the process-wide publish counter (the static
+ * `PUBLISH.PUBLISH_COUNTER`) to one past the highest payload id in its own store
+ * (`PublishPayloadRocksDBLocalPersistence.init`), so a second broker started on a fresh store sends the first
+ * one's counter back to 1. The first then hands out payload ids it still holds (a retained message, a queued
+ * one), and `PublishPayloadPersistenceImpl.add` keeps the stored payload for a known id: subscribers get an
+ * older message in place of the new one (docs/security.md, "Known weaknesses"). One broker stopped and started
+ * again is safe: its start counts past everything its store holds.
+ */
+object OneBrokerAtATime {
+    private var current: EmbeddedBroker? = null
+
+    /** Stops the broker started before (if another and still running), then starts [broker]. */
+    @Synchronized
+    fun start(broker: EmbeddedBroker) {
+        current?.takeIf { it !== broker }?.stop()
+        broker.start()
+        current = broker
+    }
 }
 
 private val users = AtomicInteger()

@@ -175,7 +175,8 @@ class EndToEndBrokerTest {
         private val broker: EmbeddedBroker by lazy {
             // The operator's own rule: whoever runs the broker reads and writes everything.
             val acl = File(root, "aclfile").apply { writeText(AclFile.DEFAULT_TEXT + "user operator\ntopic readwrite #\n") }
-            EmbeddedBroker(File(root, "store"), security = BrokerSecurity.Authenticated(passwords.file, acl)).also { it.start() }
+            // Not alongside the shared broker: see OneBrokerAtATime.
+            EmbeddedBroker(File(root, "store"), security = BrokerSecurity.Authenticated(passwords.file, acl)).also { OneBrokerAtATime.start(it) }
         }
 
         @Synchronized

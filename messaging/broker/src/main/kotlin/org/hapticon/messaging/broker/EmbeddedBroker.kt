@@ -30,6 +30,12 @@ import java.util.concurrent.ExecutionException
  * [requestedPort] 0 picks a free port on the first [start]; later starts reuse the port it got, so clients
  * can reconnect to the same address after a restart. Not thread-safe: start and stop from one thread.
  *
+ * Run at most one at a time in a process: HiveMQ CE keeps its publish counter in a static field that every
+ * start resets from its own store (`PublishPayloadRocksDBLocalPersistence.init` sets `PUBLISH.PUBLISH_COUNTER`),
+ * so a second broker started beside a running one makes the first reuse payload ids and deliver stored
+ * payloads in place of new ones (docs/security.md, "Known weaknesses"). Stopping and starting one broker
+ * ([restart]) is safe.
+ *
  * The first start sets this process's logback logging to warnings on stderr: HiveMQ would otherwise log
  * at INFO to stdout, which belongs to the command that embeds the broker.
  *
