@@ -136,7 +136,6 @@ class ChatsScreenshotTest : ScreenshotTest() {
             SettingsUiState(
                 ChatPreferences(userName = "p01", brokerUrl = "ssl://192.168.1.20:8883"),
                 listOf(RendererKind.AMPLITUDE_WAVEFORM, RendererKind.ON_OFF), "connected",
-                notice = "Client certificate of p01 in use until 2027-11-26",
                 clientCertificate = ClientCertificateStatus.InUse("p01", java.time.Instant.parse("2027-11-26T10:00:00Z"), "Hapticon study 7"),
             ),
             SettingsActions(), version = "0.1",

@@ -212,24 +212,27 @@ private fun EditableField(label: String, value: String, onSave: (String) -> Stri
  */
 @Composable
 private fun ClientCertificateField(status: ClientCertificateStatus, import: CertificateImport?, actions: SettingsActions) {
-    Text("Client certificate", style = MaterialTheme.typography.labelMedium, color = MaterialTheme.colorScheme.onSurfaceVariant)
-    when (status) {
-        ClientCertificateStatus.None -> {
-            Text("none", style = MaterialTheme.typography.bodyLarge)
-            Text(
-                "A study may give you a .p12 file instead of a password; it logs in on ssl:// brokers.",
-                style = MaterialTheme.typography.bodySmall, color = MaterialTheme.colorScheme.onSurfaceVariant,
-            )
+    // One block like the fields above (label, value, explanation without the screen's 8 dp gaps).
+    Column {
+        Text("Client certificate", style = MaterialTheme.typography.labelMedium, color = MaterialTheme.colorScheme.onSurfaceVariant)
+        when (status) {
+            ClientCertificateStatus.None -> {
+                Text("none", style = MaterialTheme.typography.bodyLarge)
+                Text(
+                    "A study may give you a .p12 file instead of a password; it logs in on ssl:// brokers.",
+                    style = MaterialTheme.typography.bodySmall, color = MaterialTheme.colorScheme.onSurfaceVariant,
+                )
+            }
+            is ClientCertificateStatus.InUse -> {
+                Text("${status.user}, valid until ${certificateDate(status.notAfter)}", style = MaterialTheme.typography.bodyLarge)
+                Text(
+                    "Logs in on ssl:// brokers. " +
+                        (status.studyCa?.let { "The broker must hold a certificate of $it." } ?: "The broker is trusted by Android's certificates."),
+                    style = MaterialTheme.typography.bodySmall, color = MaterialTheme.colorScheme.onSurfaceVariant,
+                )
+            }
+            is ClientCertificateStatus.Unusable -> Text("⚠ ${status.reason}", style = MaterialTheme.typography.bodyMedium, color = MaterialTheme.colorScheme.error)
         }
-        is ClientCertificateStatus.InUse -> {
-            Text("${status.user}, valid until ${certificateDate(status.notAfter)}", style = MaterialTheme.typography.bodyLarge)
-            Text(
-                "Logs in on ssl:// brokers. " +
-                    (status.studyCa?.let { "The broker must hold a certificate of $it." } ?: "The broker is trusted by Android's certificates."),
-                style = MaterialTheme.typography.bodySmall, color = MaterialTheme.colorScheme.onSurfaceVariant,
-            )
-        }
-        is ClientCertificateStatus.Unusable -> Text("⚠ ${status.reason}", style = MaterialTheme.typography.bodyMedium, color = MaterialTheme.colorScheme.error)
     }
     if (import != null) {
         var password by rememberSaveable(import.fileName) { mutableStateOf("") }
