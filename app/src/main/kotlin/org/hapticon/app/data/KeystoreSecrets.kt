@@ -26,6 +26,17 @@ class KeystoreSecrets(private val aead: () -> Aead = { keystoreAead(KEY_ALIAS) }
     fun seal(plaintext: String, purpose: String): String =
         Base64.encodeToString(key.encrypt(plaintext.toByteArray(Charsets.UTF_8), purpose.toByteArray(Charsets.UTF_8)), Base64.NO_WRAP)
 
+    /** [plaintext] bytes (a client certificate's PKCS#12 file) sealed for [purpose]. Throws [GeneralSecurityException]. */
+    fun sealBytes(plaintext: ByteArray, purpose: String): ByteArray = key.encrypt(plaintext, purpose.toByteArray(Charsets.UTF_8))
+
+    /** What [sealBytes] made of [sealed] for [purpose], or null when it does not open (logged, as [open]). */
+    fun openBytes(sealed: ByteArray, purpose: String): ByteArray? = try {
+        key.decrypt(sealed, purpose.toByteArray(Charsets.UTF_8))
+    } catch (e: GeneralSecurityException) {
+        Log.w(TAG, "stored $purpose does not decrypt with the Keystore key; it must be imported again", e)
+        null
+    }
+
     /**
      * What [seal] made of [sealed] for [purpose], or null when it does not open (the Keystore key is gone, as
      * after restoring another phone's backup: the user enters the secret again) — logged, never thrown.

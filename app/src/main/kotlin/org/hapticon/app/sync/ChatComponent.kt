@@ -8,6 +8,7 @@ import kotlinx.coroutines.flow.MutableStateFlow
 import org.hapticon.app.data.AppKeys
 import org.hapticon.app.data.ChatRepository
 import org.hapticon.app.data.ChatSettingsRepository
+import org.hapticon.app.data.ClientCredentials
 import org.hapticon.app.data.OfflineFirstChatRepository
 import org.hapticon.app.data.RoomIconRepository
 import org.hapticon.app.data.SharedPreferencesChatSettings
@@ -43,6 +44,8 @@ class ChatComponent(
     val trustKey: (peer: String) -> Boolean = { false },
     /** The user's haptic patterns, offered in the composer after the icons; null in containers built without them. */
     val patterns: org.hapticon.app.data.RoomPatternRepository? = null,
+    /** The user's client certificate for mutual TLS; null in containers built without one. */
+    val certificates: org.hapticon.app.data.ClientCertificateRepository? = null,
 ) {
     /** An invite link opened from outside, waiting for the Chats screen to apply it. */
     val pendingInvite: MutableStateFlow<String?> = MutableStateFlow(null)
@@ -65,6 +68,7 @@ class ChatComponent(
             val repository = OfflineFirstChatRepository(db)
             val settings = SharedPreferencesChatSettings(context)
             val keys = AppKeys(java.io.File(context.filesDir, "e2e"))
+            val certificates = org.hapticon.app.data.ClientCertificateStore(java.io.File(context.filesDir, "client-certificate"))
             val vibrator = defaultVibrator(context)
             // Audio support does not change while the app runs; asking for it costs an effect-library query.
             val audio = DeviceCapabilities.detect(context, vibrator)
@@ -82,7 +86,7 @@ class ChatComponent(
                 outbox = repository,
                 settings = settings,
                 messengerFactory = { user, broker, password ->
-                    mqttMessenger(user, broker, password, keys.takeIf { settings.preferences.value.endToEnd })
+                    mqttMessenger(user, broker, password, keys.takeIf { settings.preferences.value.endToEnd }, certificates.credentials())
                 },
                 player = player,
                 rateLimiter = VibrationRateLimiter(Clock.MONOTONIC),
@@ -100,7 +104,7 @@ class ChatComponent(
                 (user != null && keys.trust(user, peer)).also { trusted -> if (trusted) sync.keyTrusted(peer) }
             }
             val patterns = org.hapticon.app.data.RoomPatternRepository(db.patternDao())
-            return ChatComponent(repository, RoomIconRepository(db.iconDao()), settings, sync, player, device, probe, notifier, trustKey, patterns)
+            return ChatComponent(repository, RoomIconRepository(db.iconDao()), settings, sync, player, device, probe, notifier, trustKey, patterns, certificates)
         }
 
         /** The renderer the user forces in [settings], or null for the automatic choice. */
@@ -125,12 +129,25 @@ class ChatComponent(
         )
 
         /**
-         * The messenger of [user] at [broker]; with [keys], sealed end to end. The client id is the user name (the
-         * broker binds it to the login), so no per-device id any more. Null, logged, when the address is not
-         * valid or the end-to-end keys do not open (the Keystore key is gone): rather no chat than a plaintext one.
+         * How the messenger of [user] connects to [broker]: with [credentials] on an `ssl://` broker, the client
+         * certificate logs in and the study CA in its chain is what the broker's certificate must chain to
+         * (docs/security.md, "Client certificates"); a `tcp://` broker cannot carry one, so there the password
+         * alone logs in. Throws [IllegalArgumentException] for an invalid address, or a certificate of another user.
          */
-        internal fun mqttMessenger(user: String, broker: String, password: String?, keys: AppKeys?): Messenger? = try {
-            MqttMessenger(MqttSettings(BrokerAddress.parse(broker), user, password), keys?.endToEnd(user))
+        internal fun mqttSettings(user: String, broker: String, password: String?, credentials: ClientCredentials?): MqttSettings {
+            val address = BrokerAddress.parse(broker)
+            val tls = credentials?.takeIf { address.tls }
+            return MqttSettings(address, user, password, clientCertificate = tls?.certificate, trustedCertificates = tls?.trusted.orEmpty())
+        }
+
+        /**
+         * The messenger of [user] at [broker]; with [keys], sealed end to end; with [credentials], logged in by
+         * client certificate ([mqttSettings]). The client id is the user name (the broker binds it to the login),
+         * so no per-device id any more. Null, logged, when the address is not valid or the end-to-end keys do not
+         * open (the Keystore key is gone): rather no chat than a plaintext one.
+         */
+        internal fun mqttMessenger(user: String, broker: String, password: String?, keys: AppKeys?, credentials: ClientCredentials? = null): Messenger? = try {
+            MqttMessenger(mqttSettings(user, broker, password, credentials), keys?.endToEnd(user))
         } catch (e: IllegalArgumentException) {
             android.util.Log.w("ChatComponent", "no messenger for $user at $broker: ${e.message}")
             null

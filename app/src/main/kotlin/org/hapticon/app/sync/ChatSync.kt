@@ -187,6 +187,11 @@ class ChatSync(
         }
     }
 
+    /** Starts a fresh session with the same account (the client certificate changed: a new TLS handshake). */
+    fun restartSession() {
+        restarts.update { it + 1 }
+    }
+
     /** Makes the outbox sender look now, after something was composed. */
     fun wake() {
         session?.sender?.wake()

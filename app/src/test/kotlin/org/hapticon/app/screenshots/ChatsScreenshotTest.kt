@@ -23,6 +23,7 @@ import org.hapticon.app.feature.chat.ConversationUiState
 import org.hapticon.app.feature.chat.FirstLaunchScreen
 import org.hapticon.app.feature.chat.InviteScreen
 import org.hapticon.app.feature.chat.PeerFeel
+import org.hapticon.app.data.ClientCertificateStatus
 import org.hapticon.app.feature.chat.SettingsActions
 import org.hapticon.app.feature.chat.SettingsScreen
 import org.hapticon.app.feature.chat.SettingsUiState
@@ -124,6 +125,32 @@ class ChatsScreenshotTest : ScreenshotTest() {
             SettingsUiState(
                 ChatPreferences(userName = "alice", brokerUrl = "tcp://192.168.1.20:1883", autoPlay = true, stayReachable = true),
                 listOf(RendererKind.AMPLITUDE_WAVEFORM, RendererKind.ON_OFF), "connected", notificationsAllowed = false,
+            ),
+            SettingsActions(), version = "0.1",
+        )
+    }
+
+    @Test
+    fun settings_clientCertificateInUse() = screen("chats-settings-certificate") {
+        SettingsScreen(
+            SettingsUiState(
+                ChatPreferences(userName = "p01", brokerUrl = "ssl://192.168.1.20:8883"),
+                listOf(RendererKind.AMPLITUDE_WAVEFORM, RendererKind.ON_OFF), "connected",
+                clientCertificate = ClientCertificateStatus.InUse("p01", java.time.Instant.parse("2027-11-26T10:00:00Z"), "Hapticon study 7"),
+            ),
+            SettingsActions(), version = "0.1",
+        )
+    }
+
+    @Test
+    fun settings_clientCertificatePassword_wrongOneSaysSo() = screen("chats-settings-certificate-password") {
+        SettingsScreen(
+            SettingsUiState(
+                ChatPreferences(userName = "p01", brokerUrl = "ssl://192.168.1.20:8883"),
+                listOf(RendererKind.AMPLITUDE_WAVEFORM, RendererKind.ON_OFF), "connecting",
+                certificateImport = org.hapticon.app.feature.chat.CertificateImport(
+                    "p01.p12", "the client certificate cannot be opened: wrong password, or not a PKCS#12 (.p12) file",
+                ),
             ),
             SettingsActions(), version = "0.1",
         )

@@ -200,6 +200,8 @@ private fun SettingsRoute(component: ChatComponent, onBack: () -> Unit, onOpenSt
                     trustKey = component.trustKey,
                     exportJson = { ChatExport.toJson(component.repository.allMessages()) },
                     republishCapabilities = component.sync::republishCapabilities,
+                    certificates = component.certificates,
+                    onCertificateChanged = component.sync::restartSession,
                 )
             }
         },
@@ -225,6 +227,23 @@ private fun SettingsRoute(component: ChatComponent, onBack: () -> Unit, onOpenSt
         if (uri == null) return@rememberLauncherForActivityResult
         viewModel.export(uri.lastPathSegment.orEmpty()) { checkNotNull(context.contentResolver.openOutputStream(uri)) { "cannot write $uri" } }
     }
+    // The same system file picker as the Icons import (OpenDocument, read through PatternFileAccess).
+    val scope = androidx.compose.runtime.rememberCoroutineScope()
+    val certificatePicker = rememberLauncherForActivityResult(ActivityResultContracts.OpenDocument()) { uri ->
+        if (uri == null) return@rememberLauncherForActivityResult
+        scope.launch {
+            try {
+                val (bytes, name) = kotlinx.coroutines.withContext(kotlinx.coroutines.Dispatchers.IO) {
+                    org.hapticon.app.feature.icons.PatternFileAccess.read(
+                        context, uri, org.hapticon.messaging.mqtt.ClientCertificate.MAX_PKCS12_BYTES, "a client certificate (.p12)",
+                    )
+                }
+                viewModel.certificatePicked(bytes, name)
+            } catch (e: java.io.IOException) {
+                viewModel.certificateUnreadable(e.message ?: "the file could not be read")
+            }
+        }
+    }
     SettingsScreen(
         state,
         SettingsActions(
@@ -246,6 +265,11 @@ private fun SettingsRoute(component: ChatComponent, onBack: () -> Unit, onOpenSt
             onExport = { export.launch("hapticon-chats.json") },
             onOpenStudy = onOpenStudy,
             onTrustKey = viewModel::trust,
+            // PKCS#12 files come as application/x-pkcs12 from some providers and octet-stream from others.
+            onImportCertificate = { certificatePicker.launch(arrayOf("application/x-pkcs12", "application/octet-stream", "*/*")) },
+            onCertificatePassword = { viewModel.unlockCertificate(it) },
+            onCancelCertificate = viewModel::cancelCertificateImport,
+            onRemoveCertificate = viewModel::removeCertificate,
         ),
         version = runCatching { context.packageManager.getPackageInfo(context.packageName, 0).versionName }.getOrNull() ?: "",
     )

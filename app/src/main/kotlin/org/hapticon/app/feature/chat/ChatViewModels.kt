@@ -368,4 +368,11 @@ data class SettingsUiState(
     val changedKeys: Set<String> = emptySet(),
     /** The outcome of the last action that takes a moment (broker test, export, permission), one line. */
     val notice: String? = null,
+    /** The client certificate for mutual TLS, if one is stored. */
+    val clientCertificate: org.hapticon.app.data.ClientCertificateStatus = org.hapticon.app.data.ClientCertificateStatus.None,
+    /** A picked certificate file waiting for its password, null when none is. */
+    val certificateImport: CertificateImport? = null,
 )
+
+/** A picked client certificate file ([fileName]) waiting for its password; [error] says why the last one did not open it. */
+data class CertificateImport(val fileName: String, val error: String? = null)

@@ -28,6 +28,7 @@ import androidx.compose.ui.semantics.contentDescription
 import androidx.compose.ui.semantics.semantics
 import androidx.compose.ui.unit.dp
 import org.hapticon.app.data.ChatPreferences
+import org.hapticon.app.data.ClientCertificateStatus
 import org.hapticon.app.designsystem.HapticonIcons
 import org.hapticon.app.playback.label
 import org.hapticon.app.ui.DropdownField
@@ -53,6 +54,12 @@ data class SettingsActions(
     val onOpenStudy: () -> Unit = {},
     /** Accepts a peer's changed end-to-end key after the user compared safety numbers. */
     val onTrustKey: (peer: String) -> Unit = {},
+    /** Opens the system file picker for a client certificate (.p12). */
+    val onImportCertificate: () -> Unit = {},
+    /** Opens the picked certificate with this password and stores it. */
+    val onCertificatePassword: (String) -> Unit = {},
+    val onCancelCertificate: () -> Unit = {},
+    val onRemoveCertificate: () -> Unit = {},
 )
 
 /**
@@ -91,6 +98,7 @@ fun SettingsScreen(
                 "Broker password", if (prefs.brokerPassword == null) "" else "••••••••", actions.onPassword,
                 "The password `hapticon broker adduser` set for you.", secret = true,
             )
+            ClientCertificateField(uiState.clientCertificate, uiState.certificateImport, actions)
 
             Section("Haptic icons")
             SwitchRow("Play icons when messages arrive", prefs.autoPlay, onCheckedChange = { on -> actions.update { it.copy(autoPlay = on) } })
@@ -213,6 +221,56 @@ private fun EditableField(label: String, value: String, onSave: (String) -> Stri
                 Text(supporting, style = MaterialTheme.typography.bodySmall, color = MaterialTheme.colorScheme.onSurfaceVariant)
             }
             TextButton(onClick = { editing = true }) { Text("Change") }
+        }
+    }
+}
+
+/**
+ * The client certificate: which one logs in (its user and expiry) and the study CA trusted for the broker, or an
+ * import button; a picked file asks for its password here, once, and shows why it did not open.
+ */
+@Composable
+private fun ClientCertificateField(status: ClientCertificateStatus, import: CertificateImport?, actions: SettingsActions) {
+    // One block like the fields above (label, value, explanation without the screen's 8 dp gaps).
+    Column {
+        Text("Client certificate", style = MaterialTheme.typography.labelMedium, color = MaterialTheme.colorScheme.onSurfaceVariant)
+        when (status) {
+            ClientCertificateStatus.None -> {
+                Text("none", style = MaterialTheme.typography.bodyLarge)
+                Text(
+                    "A study may give you a .p12 file instead of a password; it logs in on ssl:// brokers.",
+                    style = MaterialTheme.typography.bodySmall, color = MaterialTheme.colorScheme.onSurfaceVariant,
+                )
+            }
+            is ClientCertificateStatus.InUse -> {
+                Text("${status.user}, valid until ${certificateDate(status.notAfter)}", style = MaterialTheme.typography.bodyLarge)
+                Text(
+                    "Logs in on ssl:// brokers. " +
+                        (status.studyCa?.let { "The broker must hold a certificate of $it." } ?: "The broker is trusted by Android's certificates."),
+                    style = MaterialTheme.typography.bodySmall, color = MaterialTheme.colorScheme.onSurfaceVariant,
+                )
+            }
+            is ClientCertificateStatus.Unusable -> Text("⚠ ${status.reason}", style = MaterialTheme.typography.bodyMedium, color = MaterialTheme.colorScheme.error)
+        }
+    }
+    if (import != null) {
+        var password by rememberSaveable(import.fileName) { mutableStateOf("") }
+        OutlinedTextField(
+            password, { password = it }, label = { Text("Password of ${import.fileName}") }, singleLine = true, isError = import.error != null,
+            visualTransformation = androidx.compose.ui.text.input.PasswordVisualTransformation(),
+            supportingText = { Text(import.error ?: "Asked once: the certificate is kept encrypted on this phone.") },
+            modifier = Modifier.fillMaxWidth().semantics { contentDescription = "Certificate password" },
+        )
+        androidx.compose.foundation.layout.Row {
+            TextButton(onClick = { actions.onCertificatePassword(password) }) { Text("Import") }
+            TextButton(onClick = actions.onCancelCertificate) { Text("Cancel") }
+        }
+    } else {
+        androidx.compose.foundation.layout.Row {
+            TextButton(onClick = actions.onImportCertificate) {
+                Text(if (status is ClientCertificateStatus.InUse) "Replace…" else "Import .p12…")
+            }
+            if (status != ClientCertificateStatus.None) TextButton(onClick = actions.onRemoveCertificate) { Text("Remove") }
         }
     }
 }

@@ -15,6 +15,8 @@ import kotlinx.coroutines.launch
 import kotlinx.coroutines.withContext
 import org.hapticon.app.data.ChatPreferences
 import org.hapticon.app.data.ChatSettingsRepository
+import org.hapticon.app.data.ClientCertificateRepository
+import org.hapticon.app.data.ClientCertificateStatus
 import org.hapticon.messaging.ConnectionState
 import org.hapticon.messaging.RendererKind
 import org.hapticon.messaging.Topics
@@ -41,22 +43,79 @@ class SettingsViewModel(
     /** Publishes this phone's capabilities again: the pitch setting and the renderer choice are part of them. */
     private val republishCapabilities: () -> Unit,
     private val io: CoroutineDispatcher = Dispatchers.IO,
+    /** The user's client certificate; null where the container has none (its section then offers only import errors). */
+    private val certificates: ClientCertificateRepository? = null,
+    /** Called after a certificate was imported or removed, so the session reconnects with it. */
+    private val onCertificateChanged: () -> Unit = {},
 ) : ViewModel() {
     private val notice = MutableStateFlow<String?>(null)
     private val notificationsAllowed = MutableStateFlow(canNotify() ?: true)
+    private val certificateStatus: StateFlow<ClientCertificateStatus> = certificates?.status ?: MutableStateFlow(ClientCertificateStatus.None)
+    private val certificateImport = MutableStateFlow<CertificateImport?>(null)
+
+    // The picked file's bytes stay here, never in the UI state, until the password opens them.
+    private var pickedCertificate: ByteArray? = null
+
+    private data class Local(val notice: String?, val allowed: Boolean, val certificate: ClientCertificateStatus, val import: CertificateImport?)
 
     /** What the settings screen shows; it starts from the sources' current values, so the first frame is complete. */
     val uiState: StateFlow<SettingsUiState> = combine(
-        settings.preferences, connection, securityWarnings, changedKeys, combine(notice, notificationsAllowed, ::Pair),
-    ) { prefs, c, warnings, keys, (notice, allowed) ->
-        SettingsUiState(prefs, renderers(), connectionLabel(c), allowed, warnings, keys, notice)
+        settings.preferences, connection, securityWarnings, changedKeys,
+        combine(notice, notificationsAllowed, certificateStatus, certificateImport, ::Local),
+    ) { prefs, c, warnings, keys, local ->
+        SettingsUiState(prefs, renderers(), connectionLabel(c), local.allowed, warnings, keys, local.notice, local.certificate, local.import)
     }.stateIn(
         viewModelScope, SharingStarted.WhileSubscribed(5_000),
         SettingsUiState(
             settings.preferences.value, renderers(), connectionLabel(connection.value), notificationsAllowed.value,
-            securityWarnings.value, changedKeys.value,
+            securityWarnings.value, changedKeys.value, clientCertificate = certificateStatus.value,
         ),
     )
+
+    /** The system file picker handed over [bytes] of [fileName]: its password is asked next. */
+    fun certificatePicked(bytes: ByteArray, fileName: String) {
+        pickedCertificate = bytes
+        certificateImport.value = CertificateImport(fileName)
+    }
+
+    /** The picked file could not be read ([reason], one line). */
+    fun certificateUnreadable(reason: String) {
+        notice.value = "Certificate not imported: $reason"
+    }
+
+    /**
+     * Opens the picked file with [password] and stores it ([ClientCertificateRepository.import]); a wrong password,
+     * an expired certificate or one for another user keeps the password prompt open with the reason.
+     */
+    fun unlockCertificate(password: String): Job = viewModelScope.launch {
+        val bytes = pickedCertificate ?: return@launch
+        val pending = certificateImport.value ?: return@launch
+        val store = certificates ?: run { certificateImport.value = pending.copy(error = "this app build keeps no certificates"); return@launch }
+        val user = settings.preferences.value.userName
+        val outcome = withContext(io) { runCatching { store.import(bytes, password.toCharArray(), user) } }
+        outcome.onSuccess { inUse ->
+            pickedCertificate = null
+            certificateImport.value = null
+            notice.value = "Client certificate of ${inUse.user} in use until ${certificateDate(inUse.notAfter)}"
+            onCertificateChanged()
+        }.onFailure { e ->
+            if (e !is IllegalArgumentException) throw e
+            certificateImport.value = pending.copy(error = e.message ?: "the certificate cannot be used")
+        }
+    }
+
+    /** Drops the picked file without importing it. */
+    fun cancelCertificateImport() {
+        pickedCertificate = null
+        certificateImport.value = null
+    }
+
+    /** Forgets the stored certificate; the password (if any) logs in again. */
+    fun removeCertificate() {
+        certificates?.remove() ?: return
+        notice.value = "Client certificate removed"
+        onCertificateChanged()
+    }
 
     /** Asks Android again whether notifications are shown (the user may have changed it in Android's settings). */
     fun refreshNotifications() {
@@ -149,3 +208,7 @@ class SettingsViewModel(
         }
     }
 }
+
+/** A certificate's expiry as Settings shows it: the UTC date (ISO 8601), the same on every phone. */
+internal fun certificateDate(instant: java.time.Instant): String =
+    java.time.format.DateTimeFormatter.ISO_LOCAL_DATE.format(instant.atZone(java.time.ZoneOffset.UTC))

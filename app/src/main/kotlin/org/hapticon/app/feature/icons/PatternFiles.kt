@@ -14,10 +14,11 @@ import org.hapticon.core.pattern.PatternImporter
 /** Pattern files through Android: reading what the picker or share sheet hands over, and sharing an export. */
 object PatternFileAccess {
     /**
-     * The bytes and display name of [uri], reading at most [PatternImporter.MAX_FILE_BYTES] (a larger file is not
-     * read to its end). Throws [IOException] with a one-line message when it cannot be read or is too large.
+     * The bytes and display name of [uri], reading at most [limit] bytes (a larger file is not read to its end;
+     * [what] names the kind of file in that error). Throws [IOException] with a one-line message when it cannot be
+     * read or is too large. Settings reads client certificates through it too.
      */
-    fun read(context: Context, uri: Uri): Pair<ByteArray, String> {
+    fun read(context: Context, uri: Uri, limit: Int = PatternImporter.MAX_FILE_BYTES, what: String = "a pattern file"): Pair<ByteArray, String> {
         val name = displayName(context, uri)
         val input = try {
             context.contentResolver.openInputStream(uri)
@@ -25,7 +26,6 @@ object PatternFileAccess {
             throw IOException("$name: Hapticon may not read this file (${e.message})")
         } ?: throw IOException("$name: the file could not be opened")
         val bytes = input.use { stream ->
-            val limit = PatternImporter.MAX_FILE_BYTES
             val buffer = ByteArray(limit + 1)
             var filled = 0
             while (filled < buffer.size) {
@@ -33,7 +33,7 @@ object PatternFileAccess {
                 if (n < 0) break
                 filled += n
             }
-            if (filled > limit) throw IOException("$name: larger than a pattern file may be ($limit bytes)")
+            if (filled > limit) throw IOException("$name: larger than $what may be ($limit bytes)")
             buffer.copyOf(filled)
         }
         return bytes to name
