@@ -5,6 +5,7 @@ import subprocess
 import tempfile
 import textwrap
 import unittest
+from unittest import mock
 
 from hapticon_build.android import (REFLECTIVE_CLASSES, REFLECTIVE_MEMBERS, DexClass, Signing, dex_classes, excluded,
                                     field_lookups, required_classes, required_members, smoke_check)
@@ -345,12 +346,15 @@ class DexParserTest(unittest.TestCase):
         with self.assertRaises(BuildError):
             dex_classes(b"PK\x03\x04" + bytes(200))
 
+    @mock.patch("hapticon_build.android.FIELD_LOOKUP_PACKAGES", ("fixture.",))
     def test_fieldLookups_javacOutput_updaterAndGetDeclaredFieldTargets(self):
         out = os.path.join(tempfile.mkdtemp(), "classes")
         javac(out, {"fixture/Fields.java": read(os.path.join(FIXTURES, "Fields.java"))})
         self.assertEqual({("fixture.Fields", "count"), ("fixture.Fields", "name")},
                          field_lookups(read(os.path.join(out, "fixture", "Fields.class"), "rb")))
         self.assertEqual(set(), field_lookups(read(os.path.join(out, "fixture", "Fields$Child.class"), "rb")))
+        with mock.patch("hapticon_build.android.FIELD_LOOKUP_PACKAGES", ("io.netty.",)):  # outside the checked packages
+            self.assertEqual(set(), field_lookups(read(os.path.join(out, "fixture", "Fields.class"), "rb")))
 
 
 class SmokeCheckTest(unittest.TestCase):
@@ -380,6 +384,7 @@ class SmokeCheckTest(unittest.TestCase):
         self.assertIn("lacks classes reached by name", str(e.exception))
         self.assertIn("org.x.Gone", str(e.exception))
 
+    @mock.patch("hapticon_build.android.FIELD_LOOKUP_PACKAGES", ("fixture.",))
     def test_requiredMembers_roomDatabaseImplConstructorLibraryFieldsAndReflectiveMembers(self):
         import zipfile
         tmp = tempfile.mkdtemp()
