@@ -7,6 +7,7 @@ from __future__ import annotations
 
 import fnmatch
 import hashlib
+import json
 import os
 import re
 import shutil
@@ -243,7 +244,7 @@ class AndroidApp:
     def assemble_release(self, signing: "Signing") -> str:
         """The release APK: resources linked for release, the whole program (app + libraries) shrunk and
         optimised by R8 with app/proguard-rules.pro, the libraries' own consumer rules and aapt2's rules,
-        signed with `signing` and verified. The R8 output then goes through [smoke_check]."""
+        signed with `signing` and verified. The R8 output then goes through [smoke_check]: classes and members reached by name."""
         self.b.compile_module(self.m, "main")
         if not hasattr(self, "r_jar"):
             self.compile_main()
@@ -285,8 +286,10 @@ class AndroidApp:
         # R8 also writes the Java resources it kept (kotlin/*.kotlin_builtins, …) next to the dex files.
         dex_files = sorted((os.path.join(dex_out, f) for f in os.listdir(dex_out) if f.endswith(".dex")), key=_dex_order)
         with Stage("smoke check of the R8 output"):
-            checked = smoke_check(dex_files, required_classes(program, os.path.join(work, "AndroidManifest.xml")))
-            info(f"{checked} classes found under their own names in the R8 output")
+            classes, members = smoke_check(dex_files, required_classes(program, os.path.join(work, "AndroidManifest.xml")),
+                                           required_members(program, library_jars, os.path.join(self.b.cache, "field-lookups")),
+                                           read_mapping(os.path.join(work, "mapping.txt")))
+            info(f"{classes} classes and {members} members reached by name found under their own names in the R8 output")
         apk = os.path.join(self.out, f"{self.b.project.name}-release.apk")
         with Stage("package and sign (release)"):
             unsigned = os.path.join(work, "unsigned.apk")
@@ -398,8 +401,9 @@ class AndroidApp:
         if clash:
             raise BuildError(f"classes defined by both the app and its libraries: {sorted(clash)[:5]}")
         manifest = os.path.join(os.path.dirname(self.res_apk), "AndroidManifest.xml")
-        checked = smoke_check(library_dex + program_dex, required_classes(program, manifest))
-        info(f"{checked} classes reached by name found in the dex")
+        classes, members = smoke_check(library_dex + program_dex, required_classes(program, manifest),
+                                       required_members(program, library_jars, os.path.join(self.b.cache, "field-lookups")))
+        info(f"{classes} classes and {members} members reached by name found in the dex")
         return library_dex + program_dex
 
     def _trace_references(self, args: list[str], what: str) -> str:
@@ -596,23 +600,83 @@ def _uleb128(data: bytes, pos: int) -> tuple[int, int]:
 
 def dex_type_names(dex: bytes) -> set[str]:
     """Type descriptors (e.g. `Lorg/x/MainActivity;`) of the classes a dex file defines."""
-    if dex[:4] != b"dex\n":
+    return set(dex_classes(dex))
+
+
+@dataclass(frozen=True)
+class DexClass:
+    """A class a dex file defines: its superclass descriptor (None for java.lang.Object) and the members its
+    class_data_item declares — methods as name + descriptor (`<init>()V`), fields as name + type
+    (`producerIndex:J`)."""
+    superclass: str | None
+    methods: frozenset[str]
+    fields: frozenset[str]
+
+
+def dex_classes(dex: bytes) -> dict[str, DexClass]:
+    """Every class a dex file defines, by descriptor, with its declared methods and fields. Reads the header's
+    string_ids, type_ids, proto_ids, field_ids, method_ids and class_defs, and each class_data_item (four
+    uleb128 counts, then field_idx_diff/access_flags and method_idx_diff/access_flags/code_off per member,
+    the index a running sum within each list), as the DEX format defines them:
+    https://source.android.com/docs/core/runtime/dex-format"""
+    if dex[:4] != b"dex\n" or len(dex) < 0x70:
         raise BuildError("not a dex file")
-    string_ids_size, string_ids_off, type_ids_size, type_ids_off = struct.unpack_from("<IIII", dex, 0x38)
-    class_defs_size, class_defs_off = struct.unpack_from("<II", dex, 0x60)
+    (string_ids_size, string_ids_off, type_ids_size, type_ids_off, _proto_ids_size, proto_ids_off,
+     _field_ids_size, field_ids_off, _method_ids_size, method_ids_off, class_defs_size,
+     class_defs_off) = struct.unpack_from("<12I", dex, 0x38)
+    strings: dict[int, str] = {}
 
     def string(i: int) -> str:
-        off = struct.unpack_from("<I", dex, string_ids_off + 4 * i)[0]
-        _length, start = _uleb128(dex, off)
-        end = dex.index(b"\0", start)
-        return dex[start:end].decode("utf-8", "replace")
+        if i not in strings:
+            off = struct.unpack_from("<I", dex, string_ids_off + 4 * i)[0]
+            _length, start = _uleb128(dex, off)
+            strings[i] = dex[start:dex.index(b"\0", start)].decode("utf-8", "replace")  # MUTF-8; names are ASCII
+        return strings[i]
 
-    names = set()
+    def type_name(i: int) -> str:
+        return string(struct.unpack_from("<I", dex, type_ids_off + 4 * i)[0])
+
+    def proto(i: int) -> str:
+        _shorty, return_idx, parameters_off = struct.unpack_from("<III", dex, proto_ids_off + 12 * i)
+        params = []
+        if parameters_off:
+            size = struct.unpack_from("<I", dex, parameters_off)[0]
+            params = [type_name(t) for t in struct.unpack_from(f"<{size}H", dex, parameters_off + 4)]
+        return "(" + "".join(params) + ")" + type_name(return_idx)
+
+    def field(i: int) -> str:
+        _class_idx, type_idx, name_idx = struct.unpack_from("<HHI", dex, field_ids_off + 8 * i)
+        return f"{string(name_idx)}:{type_name(type_idx)}"
+
+    def method(i: int) -> str:
+        _class_idx, proto_idx, name_idx = struct.unpack_from("<HHI", dex, method_ids_off + 8 * i)
+        return string(name_idx) + proto(proto_idx)
+
+    classes = {}
     for c in range(class_defs_size):
-        type_idx = struct.unpack_from("<I", dex, class_defs_off + 32 * c)[0]
-        string_idx = struct.unpack_from("<I", dex, type_ids_off + 4 * type_idx)[0]
-        names.add(string(string_idx))
-    return names
+        class_idx, _flags, superclass_idx, _interfaces, _source, _annotations, class_data_off, _static = \
+            struct.unpack_from("<8I", dex, class_defs_off + 32 * c)
+        fields, methods = set(), set()
+        if class_data_off:
+            pos = class_data_off
+            counts = []
+            for _ in range(4):
+                n, pos = _uleb128(dex, pos)
+                counts.append(n)
+            for k, count in enumerate(counts):
+                index = 0
+                for _ in range(count):
+                    diff, pos = _uleb128(dex, pos)
+                    index += diff
+                    _access, pos = _uleb128(dex, pos)
+                    if k < 2:  # static_fields, instance_fields
+                        fields.add(field(index))
+                    else:  # direct_methods, virtual_methods (then code_off)
+                        _code, pos = _uleb128(dex, pos)
+                        methods.add(method(index))
+        classes[type_name(class_idx)] = DexClass(None if superclass_idx == 0xFFFFFFFF else type_name(superclass_idx),
+                                                 frozenset(methods), frozenset(fields))
+    return classes
 
 
 @dataclass(frozen=True)
@@ -647,8 +711,8 @@ class Signing:
 
 
 # Classes the app reaches by name at run time, which R8 must keep under their own names (app/proguard-rules.pro):
-# the MQTT client's implementation and netty's reflectively created channel, the player, Room's runtime
-# lookup. (MqttClient, an interface whose static builder() R8 moves, is rightly gone from the output.)
+# the MQTT client's implementation and netty's channel, the player, Room's runtime lookup. (MqttClient, an
+# interface whose static builder() R8 moves, is rightly gone from the output.)
 REFLECTIVE_CLASSES = [
     "com.hivemq.client.internal.mqtt.MqttRxClient",
     "io.netty.channel.socket.nio.NioSocketChannel",
@@ -656,6 +720,98 @@ REFLECTIVE_CLASSES = [
     "androidx.media3.exoplayer.ExoPlayerImpl",
     "androidx.room.RoomDatabase",
 ]
+
+# Members reached without a direct call that R8 could see, as (class, method name + descriptor). netty's
+# NioSocketChannel is made through a ChannelFactory (HiveMQ 1.4.2's NettyEventLoopProvider passes
+# `NioSocketChannel::new`; `Bootstrap.channel(NioSocketChannel.class)` would use ReflectiveChannelFactory's
+# getConstructor()), kept by `-keep class io.netty.channel.socket.nio.NioSocketChannel { <init>(); }`.
+# Room's `<init>()` on each database `_Impl` is added by [required_members] from the program itself.
+REFLECTIVE_MEMBERS = [
+    ("io.netty.channel.socket.nio.NioSocketChannel", "<init>()V"),
+]
+
+# Calls that find a field by its name in a string constant: `AtomicXFieldUpdater.newUpdater(X.class, "f")`
+# (netty, RxJava, coroutines' atomicfu), JCTools' `UnsafeAccess.fieldOffset(X.class, "f")` (also shaded into
+# netty) and netty's `ReferenceCountUpdater.getUnsafeOffset(X.class, "f")`, `X.class.getDeclaredField("f")`.
+# HiveMQ's Android guide names these as what R8 must not rename or remove; app/proguard-rules.pro and the
+# libraries' own rules (coroutines: `volatile <fields>`) keep them.
+# The packages whose by-name fields keep rules cover today (app/proguard-rules.pro, coroutines' own rules).
+# Others found by the scan are not required yet: androidx.concurrent's AbstractResolvableFuture (value, listeners,
+# waiters; it falls back to a synchronized helper) and kotlin.SafePublicationLazyImpl._value are renamed by R8
+# today, open in docs/release.md until a keep rule or R8's own handling of newUpdater is confirmed for them.
+FIELD_LOOKUP_PACKAGES = ("io.netty.", "org.jctools.", "kotlinx.coroutines.", "io.reactivex.")
+FIELD_LOOKUPS = {"newUpdater", "fieldOffset", "getUnsafeOffset", "getDeclaredField",
+                 "newAtomicIntegerFieldUpdater", "newAtomicLongFieldUpdater", "newAtomicReferenceFieldUpdater"}
+
+
+def _class_file(data: bytes) -> tuple[str, str | None, dict[int, tuple]]:
+    """A class file's name, superclass (internal names, `a/b/C`) and constant pool (JVMS §4.1, §4.4)."""
+    if data[:4] != b"\xca\xfe\xba\xbe":
+        raise BuildError("not a class file")
+    count = struct.unpack_from(">H", data, 8)[0]
+    pool: dict[int, tuple] = {}
+    pos, i = 10, 1
+    while i < count:
+        tag = data[pos]
+        if tag == 1:
+            length = struct.unpack_from(">H", data, pos + 1)[0]
+            pool[i] = (1, data[pos + 3:pos + 3 + length].decode("utf-8", "replace"))
+            pos += 3 + length
+        elif tag in (7, 8, 16, 19, 20):
+            pool[i] = (tag, struct.unpack_from(">H", data, pos + 1)[0])
+            pos += 3
+        elif tag in (9, 10, 11, 12, 17, 18):
+            pool[i] = (tag, *struct.unpack_from(">HH", data, pos + 1))
+            pos += 5
+        elif tag == 15:
+            pos += 4
+        elif tag in (3, 4):
+            pos += 5
+        elif tag in (5, 6):
+            pos += 9
+            i += 1  # longs and doubles take two slots
+        else:
+            raise BuildError(f"unknown constant pool tag {tag}")
+        i += 1
+    this_class, super_class = struct.unpack_from(">HH", data, pos + 2)
+    utf = lambda k: pool[k][1]
+    return utf(pool[this_class][1]), utf(pool[super_class][1]) if super_class else None, pool
+
+
+def field_lookups(data: bytes) -> set[tuple[str, str]]:
+    """(class, field) pairs a class file looks up by name: a [FIELD_LOOKUPS] call whose arguments are pushed by
+    `ldc X.class`, … `ldc "field"` right before it (what javac and kotlinc emit for constant arguments)."""
+    _name, _super, pool = _class_file(data)
+
+    def constant(pos: int) -> tuple[int, tuple] | None:  # the ldc/ldc_w ending right before `pos`, if any
+        if pos >= 2 and data[pos - 2] == 0x12 and pool.get(data[pos - 1], (0,))[0] in (7, 8):
+            return pos - 2, pool[data[pos - 1]]
+        if pos >= 3 and data[pos - 3] == 0x13:
+            k = struct.unpack_from(">H", data, pos - 2)[0]
+            if pool.get(k, (0,))[0] in (7, 8):
+                return pos - 3, pool[k]
+        return None
+
+    found = set()
+    for m in re.finditer(rb"[\xb6\xb8]", data):  # invokevirtual, invokestatic
+        p = m.start()
+        if p + 3 > len(data):
+            continue
+        ref = pool.get(struct.unpack_from(">H", data, p + 1)[0])
+        if not ref or ref[0] not in (10, 11):
+            continue
+        name_and_type = pool.get(ref[2])
+        if not name_and_type or name_and_type[0] != 12 or pool[name_and_type[1]][1] not in FIELD_LOOKUPS:
+            continue
+        pushed, pos = [], p
+        while (c := constant(pos)) is not None:
+            pos, entry = c
+            pushed.insert(0, entry)
+        strings = [pool[e[1]][1] for e in pushed if e[0] == 8]
+        classes = [pool[e[1]][1] for e in pushed if e[0] == 7]
+        if strings and classes and classes[0].replace("/", ".").startswith(FIELD_LOOKUP_PACKAGES):
+            found.add((classes[0].replace("/", "."), strings[-1]))
+    return found
 
 
 def required_classes(program_jar: str, manifest: str) -> list[str]:
@@ -677,12 +833,96 @@ def required_classes(program_jar: str, manifest: str) -> list[str]:
     return sorted(names)
 
 
-def smoke_check(dex_files: list[str], required: list[str]) -> int:
-    """Fails unless every class in `required` is defined, under its own name, in `dex_files`: what a
-    missing keep rule would break (R8 removes or renames a class only reached by reflection)."""
-    defined = set().union(*(dex_type_names(open(d, "rb").read()) for d in dex_files))
-    missing = [n for n in required if "L" + n.replace(".", "/") + ";" not in defined]
+def required_members(program_jar: str, library_jars: list[str], cache: str | None = None) -> list[tuple[str, str]]:
+    """Members the minified app must still define under their own names, as (class, member): `<init>()V` of
+    each Room database `_Impl` (room-runtime 2.8's `androidx.room.util.KClassUtil.findAndInstantiateDatabaseImpl`
+    does `Class.forName(<Database> + "_Impl").getDeclaredConstructor().newInstance()`; room-runtime's own rule `-keep class * extends androidx.room.RoomDatabase { void <init>(); }`;
+    the DAO and auto-migration `_Impl`s are constructed directly by the database's generated code, so only
+    their names are checked), [REFLECTIVE_MEMBERS], and every field found by name ([field_lookups]) in the
+    program and its libraries, as its bare name (any type). A library jar's lookups are kept in `cache`
+    (a directory), by the jar's path and size, as Maven artifacts do not change under one name."""
+    members = set(REFLECTIVE_MEMBERS)
+    supers: dict[str, str | None] = {}
+    with zipfile.ZipFile(program_jar) as z:
+        for n in z.namelist():
+            if n.endswith(".class") and not n.startswith("META-INF/"):
+                data = z.read(n)
+                name, superclass, _pool = _class_file(data)
+                supers[name] = superclass
+                if any(f.encode() in data for f in FIELD_LOOKUPS):
+                    members.update(field_lookups(data))
+    for jar in library_jars:
+        members.update(_jar_field_lookups(jar, cache))
+    for name in supers:
+        s = supers[name]
+        while s in supers:
+            s = supers[s]
+        if name.endswith("_Impl") and s == "androidx/room/RoomDatabase":
+            members.add((name.replace("/", "."), "<init>()V"))
+    return sorted(members)
+
+
+def _jar_field_lookups(jar: str, cache: str | None) -> set[tuple[str, str]]:
+    scope = ",".join(FIELD_LOOKUP_PACKAGES)
+    key = hashlib.sha1(f"{os.path.abspath(jar)}:{os.path.getsize(jar)}:{scope}".encode()).hexdigest()[:16]
+    cached = os.path.join(cache, key + ".json") if cache else None
+    if cached and os.path.exists(cached):
+        with open(cached) as f:
+            return {tuple(pair) for pair in json.load(f)}
+    found = set()
+    with zipfile.ZipFile(jar) as z:
+        for n in z.namelist():
+            if n.endswith(".class") and not n.startswith("META-INF/"):
+                data = z.read(n)
+                if any(f.encode() in data for f in FIELD_LOOKUPS):
+                    found.update(field_lookups(data))
+    if cached:
+        os.makedirs(cache, exist_ok=True)
+        with open(cached, "w") as f:
+            json.dump(sorted(found), f)
+    return found
+
+
+def read_mapping(path: str | None) -> dict[str, str]:
+    """R8's class renames from its mapping file (`original.Name -> new.Name:` lines); {} without one."""
+    if not path or not os.path.exists(path):
+        return {}
+    with open(path, encoding="utf-8") as f:
+        return dict(re.findall(r"(?m)^(\S+) -> (\S+):$", f.read()))
+
+
+def smoke_check(dex_files: list[str], required: list[str], members: list[tuple[str, str]] = (),
+                mapping: dict[str, str] | None = None) -> tuple[int, int]:
+    """Fails unless every class in `required` is defined, under its own name, in `dex_files`, and every member
+    in `members` ((class, `name(params)return`) for a method, (class, `name`) for a field) is declared under
+    its own name by that class — under the name R8 gave the class in `mapping`, for a class it renamed.
+    That is what a missing keep rule breaks: R8 removes or renames a class or member reached only by
+    reflection. A member whose class R8 removed is not required (its lookups went with it), unless the class
+    itself is in `required`. Returns the numbers of classes and members checked."""
+    mapping = mapping or {}
+    defined: dict[str, DexClass] = {}
+    for d in dex_files:
+        with open(d, "rb") as f:
+            defined.update(dex_classes(f.read()))
+    descriptor = lambda n: "L" + n.replace(".", "/") + ";"
+    missing = [n for n in required if descriptor(n) not in defined]
     if missing:
         raise BuildError("the R8 output lacks classes reached by name (a missing keep rule in "
                          f"app/proguard-rules.pro?): {', '.join(missing)}")
-    return len(required)
+    lost, checked = [], 0
+    for cls, member in members:
+        found = defined.get(descriptor(mapping.get(cls, cls)))
+        if found is None:
+            continue
+        checked += 1
+        if "(" in member:
+            ok = member in found.methods
+        else:
+            ok = any(f.split(":", 1)[0] == member for f in found.fields)
+        if not ok:
+            renamed = f" (renamed {mapping[cls]})" if mapping.get(cls, cls) != cls else ""
+            lost.append(f"{cls}{renamed}.{member}")
+    if lost:
+        raise BuildError(f"the R8 output lacks {len(lost)} members reached by name (a missing keep rule in "
+                         f"app/proguard-rules.pro?): {', '.join(lost[:8])}{' …' if len(lost) > 8 else ''}")
+    return len(required), checked

@@ -1,11 +1,14 @@
 """Tests of the offline build's own logic: the Gradle-file reader and Gradle-semantics resolution."""
 import json
 import os
+import subprocess
 import tempfile
 import textwrap
 import unittest
+from unittest import mock
 
-from hapticon_build.android import REFLECTIVE_CLASSES, Signing, excluded, required_classes
+from hapticon_build.android import (REFLECTIVE_CLASSES, REFLECTIVE_MEMBERS, DexClass, Signing, dex_classes, excluded,
+                                    field_lookups, required_classes, required_members, smoke_check)
 from hapticon_build.errors import BuildError
 from hapticon_build.kotlin import compiler_arguments
 from hapticon_build.maven import Repository
@@ -404,3 +407,98 @@ class Sdk36JavaTest(unittest.TestCase):
         with self.assertRaises(BuildError) as e:
             java_for_sdk36(old, [old])
         self.assertIn("openjdk-21-jdk-headless", str(e.exception))
+
+
+FIXTURES = os.path.join(os.path.dirname(__file__), "fixtures", "dex")
+FIELDS_DEX = os.path.join(FIXTURES, "fields.dex")  # D8 output of fixtures/dex/Fields.java (how: its header)
+
+
+def read(path: str, mode: str = "r"):
+    with open(path, mode) as f:
+        return f.read()
+
+
+def javac(out: str, sources: dict[str, str]) -> None:
+    """Compiles `sources` (path → text) into `out` with the JDK the build runs on."""
+    for path, text in sources.items():
+        write(out + "-src", path, text)
+    files = [os.path.join(out + "-src", p) for p in sources]
+    subprocess.run(["javac", "--release", "8", "-d", out, *files], check=True, capture_output=True)
+
+
+class DexParserTest(unittest.TestCase):
+    def test_dexClasses_fieldsFixture_classesSuperclassesMethodsAndFields(self):
+        classes = dex_classes(read(FIELDS_DEX, "rb"))
+        self.assertEqual({
+            "Lfixture/Fields;": DexClass("Ljava/lang/Object;", frozenset({
+                "<clinit>()V", "<init>()V", "<init>(ILjava/lang/String;)V", "declared()I"}), frozenset({
+                "COUNT:Ljava/util/concurrent/atomic/AtomicIntegerFieldUpdater;",
+                "NAME:Ljava/util/concurrent/atomic/AtomicReferenceFieldUpdater;", "count:I", "name:Ljava/lang/String;"})),
+            "Lfixture/Fields$Child;": DexClass("Lfixture/Fields;", frozenset({"<init>()V", "touch()V"}), frozenset()),
+        }, classes)
+
+    def test_dexClasses_notDex_fails(self):
+        with self.assertRaises(BuildError):
+            dex_classes(b"PK\x03\x04" + bytes(200))
+
+    @mock.patch("hapticon_build.android.FIELD_LOOKUP_PACKAGES", ("fixture.",))
+    def test_fieldLookups_javacOutput_updaterAndGetDeclaredFieldTargets(self):
+        out = os.path.join(tempfile.mkdtemp(), "classes")
+        javac(out, {"fixture/Fields.java": read(os.path.join(FIXTURES, "Fields.java"))})
+        self.assertEqual({("fixture.Fields", "count"), ("fixture.Fields", "name")},
+                         field_lookups(read(os.path.join(out, "fixture", "Fields.class"), "rb")))
+        self.assertEqual(set(), field_lookups(read(os.path.join(out, "fixture", "Fields$Child.class"), "rb")))
+        with mock.patch("hapticon_build.android.FIELD_LOOKUP_PACKAGES", ("io.netty.",)):  # outside the checked packages
+            self.assertEqual(set(), field_lookups(read(os.path.join(out, "fixture", "Fields.class"), "rb")))
+
+
+class SmokeCheckTest(unittest.TestCase):
+    def test_smokeCheck_presentClassesAndMembers_countsThem(self):
+        self.assertEqual((2, 3), smoke_check([FIELDS_DEX], ["fixture.Fields", "fixture.Fields$Child"], [
+            ("fixture.Fields", "<init>()V"), ("fixture.Fields", "count"), ("fixture.Fields$Child", "touch()V")]))
+
+    def test_smokeCheck_missingConstructor_failsNamingIt(self):
+        with self.assertRaises(BuildError) as e:
+            smoke_check([FIELDS_DEX], [], [("fixture.Fields$Child", "<init>(I)V"), ("fixture.Fields", "<init>()V")])
+        self.assertIn("lacks 1 members reached by name", str(e.exception))
+        self.assertIn("fixture.Fields$Child.<init>(I)V", str(e.exception))
+
+    def test_smokeCheck_fieldOfRenamedClassMissing_failsNamingBothNames(self):
+        mapping = {"org.jctools.queues.Queue": "fixture.Fields"}
+        self.assertEqual((0, 1), smoke_check([FIELDS_DEX], [], [("org.jctools.queues.Queue", "count")], mapping))
+        with self.assertRaises(BuildError) as e:
+            smoke_check([FIELDS_DEX], [], [("org.jctools.queues.Queue", "producerIndex")], mapping)
+        self.assertIn("org.jctools.queues.Queue (renamed fixture.Fields).producerIndex", str(e.exception))
+
+    def test_smokeCheck_memberOfRemovedClass_notRequired(self):
+        self.assertEqual((0, 0), smoke_check([FIELDS_DEX], [], [("org.gone.Queue", "producerIndex")]))
+
+    def test_smokeCheck_missingClass_failsNamingIt(self):
+        with self.assertRaises(BuildError) as e:
+            smoke_check([FIELDS_DEX], ["fixture.Fields", "org.x.Gone"])
+        self.assertIn("lacks classes reached by name", str(e.exception))
+        self.assertIn("org.x.Gone", str(e.exception))
+
+    @mock.patch("hapticon_build.android.FIELD_LOOKUP_PACKAGES", ("fixture.",))
+    def test_requiredMembers_roomDatabaseImplConstructorLibraryFieldsAndReflectiveMembers(self):
+        import zipfile
+        tmp = tempfile.mkdtemp()
+        classes = os.path.join(tmp, "classes")
+        javac(classes, {
+            "androidx/room/RoomDatabase.java": "package androidx.room; public abstract class RoomDatabase {}",
+            "org/x/AppDatabase.java": "package org.x; public abstract class AppDatabase extends androidx.room.RoomDatabase {}",
+            "org/x/AppDatabase_Impl.java": "package org.x; public final class AppDatabase_Impl extends AppDatabase {}",
+            "org/x/MessageDao_Impl.java": "package org.x; public final class MessageDao_Impl { MessageDao_Impl(AppDatabase d) {} }",
+            "fixture/Fields.java": read(os.path.join(FIXTURES, "Fields.java")),
+        })
+        program, library = os.path.join(tmp, "program.jar"), os.path.join(tmp, "library.jar")
+        for jar, folder in ((program, "org/x"), (library, "fixture")):
+            with zipfile.ZipFile(jar, "w") as z:
+                for f in sorted(os.listdir(os.path.join(classes, folder))):
+                    z.write(os.path.join(classes, folder, f), f"{folder}/{f}")
+        expected = sorted({("org.x.AppDatabase_Impl", "<init>()V"), ("fixture.Fields", "count"),
+                           ("fixture.Fields", "name"), *REFLECTIVE_MEMBERS})
+        cache = os.path.join(tmp, "cache")
+        self.assertEqual(expected, required_members(program, [library], cache))
+        self.assertEqual(1, len(os.listdir(cache)))  # the library's lookups, read from here the next time
+        self.assertEqual(expected, required_members(program, [library], cache))
