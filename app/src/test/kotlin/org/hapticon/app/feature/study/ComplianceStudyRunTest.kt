@@ -7,8 +7,8 @@ import org.hapticon.app.feature.sensors.ElectrodeLevelsStore
 import org.hapticon.app.feature.sensors.HubStimulatorLink
 import org.hapticon.app.feature.sensors.StimulatorLink
 import org.hapticon.app.feature.sensors.TestStimulatorLink
-import org.hapticon.app.sensors.TEST_UNO
-import org.hapticon.app.sensors.TestUsbDevices
+import org.hapticon.testing.TEST_UNO
+import org.hapticon.testing.TestUsbDevices
 import org.hapticon.sensor.grains.FirmwareForceRange
 import org.hapticon.sensor.live.CommandWriter
 import org.hapticon.sensor.live.SensorSession
