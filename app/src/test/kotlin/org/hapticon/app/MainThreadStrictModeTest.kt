@@ -38,7 +38,7 @@ import org.hapticon.messaging.ConnectionState
 import org.hapticon.messaging.InboxListener
 import org.hapticon.messaging.RendererKind
 import org.hapticon.messaging.broker.EmbeddedBroker
-import org.hapticon.messaging.mqtt.BrokerAddress
+import org.hapticon.messaging.BrokerAddress
 import org.hapticon.messaging.mqtt.MqttMessenger
 import org.hapticon.messaging.mqtt.MqttSettings
 import org.junit.After

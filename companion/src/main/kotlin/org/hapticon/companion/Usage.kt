@@ -22,7 +22,8 @@ val USAGE: String = """
     |      Draw ICON's envelope over its carrier waveform.
     |  hapticon bench [--json] [--quick] [--messaging | --analysis]
     |      Measure render speed, FAST-mode error, first-block latency and allocation, and the sensor
-    |      path: decoding speed, grain and handshake cost per sample, fake-port sample-to-grain latency;
+    |      path: decoding speed, grain and handshake cost per sample, fake-port sample-to-grain latency
+    |      through GrainEngine (p50/p99/max beside the re-created arithmetic, same run);
     |      --json prints one JSON object, --quick does fewer runs (a smoke test, not a measurement);
     |      --messaging measures message encode + decode and send-to-receive latency instead;
     |      --analysis times `analyze` on synthetic results of 10k, 100k and 1M rows (growth ratio, heap).

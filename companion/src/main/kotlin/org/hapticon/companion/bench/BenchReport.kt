@@ -85,8 +85,15 @@ object BenchReport {
             "  bytes allocated per sample: %s from decoded frame to command encoded; %s on the whole reader thread (with the fake port's own)",
             allocation(latency.handlerBytesPerSample), allocation(latency.readerBytesPerSample),
         )
-        line("  framed sample written to a FakeSerialPort -> SensorReader thread -> FramedDecoder -> FSR force -> GrainDecider")
-        line("  -> set-outputs command written back; one sample in flight at a time")
+        val baseline = sensors.latencyBaseline
+        line(
+            "  baseline, same run (the engine's arithmetic re-created, no GrainEngine): p50 %.1f, p99 %.1f, max %.1f µs (%d grains);" +
+                " without run-queue wait %.1f µs; %s bytes per sample",
+            baseline.p50Micros, baseline.p99Micros, baseline.maxMicros, baseline.grains, baseline.maxWithoutRunQueueMicros,
+            allocation(baseline.handlerBytesPerSample),
+        )
+        line("  framed sample written to a FakeSerialPort -> SensorReader thread -> FramedDecoder -> LiveFrame -> GrainEngine")
+        line("  (FSR force, GrainDecider) -> its GrainSink encodes the set-outputs command, written back; one sample in flight at a time")
     }
 
     /** One JSON object with every figure; rates in samples per second, times in µs. */
@@ -187,6 +194,15 @@ object BenchReport {
             "over1msWithGc" to shortNumber(sensors.latency.over1msWithGc),
             "handlerAllocatedBytesPerSample" to measured(sensors.latency.handlerBytesPerSample, 3),
             "readerAllocatedBytesPerSample" to measured(sensors.latency.readerBytesPerSample, 3),
+        ),
+        "grainLatencyBaseline" to obj(
+            "samples" to shortNumber(sensors.latencyBaseline.samples),
+            "grains" to shortNumber(sensors.latencyBaseline.grains),
+            "p50Micros" to rounded(sensors.latencyBaseline.p50Micros, 2),
+            "p99Micros" to rounded(sensors.latencyBaseline.p99Micros, 2),
+            "maxMicros" to rounded(sensors.latencyBaseline.maxMicros, 2),
+            "maxWithoutRunQueueMicros" to measured(sensors.latencyBaseline.maxWithoutRunQueueMicros, 2),
+            "handlerAllocatedBytesPerSample" to measured(sensors.latencyBaseline.handlerBytesPerSample, 3),
         ),
     )
 

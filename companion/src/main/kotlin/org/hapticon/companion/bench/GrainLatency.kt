@@ -3,8 +3,15 @@ package org.hapticon.companion.bench
 import org.hapticon.companion.sensors.SensorDemo
 import org.hapticon.companion.sensors.SyntheticPress
 import org.hapticon.sensor.grains.FsrForceConverter
+import org.hapticon.sensor.grains.GrainConfig
+import org.hapticon.sensor.grains.GrainEngine
 import org.hapticon.sensor.grains.GrainDecider
 import org.hapticon.sensor.grains.GrainSettings
+import org.hapticon.sensor.grains.GrainSink
+import org.hapticon.sensor.live.FrameListener
+import org.hapticon.sensor.live.LiveFrame
+import org.hapticon.sensor.live.StreamInfo
+import org.hapticon.sensor.live.liveDecoderFor
 import org.hapticon.sensor.port.FakeSerialPort
 import org.hapticon.sensor.port.SensorReader
 import org.hapticon.sensor.protocol.ProtocolListener
@@ -57,17 +64,29 @@ data class GrainLatencyResult(
 
 /**
  * Measures the app's grain path end to end on a [FakeSerialPort]: the bench thread writes one framed FSR
- * sample ([SyntheticPress], 1 kHz, 12 bit) into the port; a [SensorReader] thread reads it, a [FramedDecoder]
- * decodes it, counts become volts and an [FsrForceConverter] force, a [GrainDecider] (default settings)
- * decides, and when a grain starts a set-outputs command (output 0 at full scale) is encoded and written back
- * to the port. Each latency runs from just before the sample's write to just after the command's write
- * (System.nanoTime on both threads).
+ * sample ([SyntheticPress], 1 kHz, 12 bit) into the port; a [SensorReader] thread reads and decodes it, and
+ * [route] turns it into a grain decision; when a grain starts a set-outputs command (output 0 at full scale) is
+ * encoded and written back to the port. Each latency runs from just before the sample's write to just after
+ * the command's write (System.nanoTime on both threads).
  *
  * One sample is in flight at a time: the next is written only once the reader has handled the previous one,
  * so a latency never includes queueing behind earlier samples, only the wake-up and the work. The first
  * [warmupSamples] are not counted, so the JIT has compiled the path.
  */
-class GrainLatency(private val samples: Int, private val warmupSamples: Int) {
+class GrainLatency(private val samples: Int, private val warmupSamples: Int, private val route: Route = Route.ENGINE) {
+    /** What runs between the decoded frame and the command. */
+    enum class Route(val label: String) {
+        /**
+         * The shipped path: sensor-bridge's live decoding into a [LiveFrame], then the app's [GrainEngine]
+         * itself (FSR counts from the channel's unit, 12-bit from the device info, default [GrainSettings],
+         * burst at 255), whose [GrainSink] encodes the command.
+         */
+        ENGINE("GrainEngine"),
+
+        /** The baseline: the engine's arithmetic re-created by hand (force, [GrainDecider], encoding) on the decoded [SampleFrame]. */
+        ARITHMETIC("re-created arithmetic"),
+    }
+
     init {
         require(samples >= 1 && warmupSamples >= 0) { "need samples >= 1 and warmupSamples >= 0, were $samples and $warmupSamples" }
     }
@@ -87,9 +106,16 @@ class GrainLatency(private val samples: Int, private val warmupSamples: Int) {
         var schedstat: FileChannel? = null
         val handled = AtomicInteger(0)
         val port = FakeSerialPort()
-        val path = GrainPath(port, writtenAt, latencies, handled, warmupSamples, total)
+        val side = when (route) {
+            Route.ENGINE -> EnginePath(port, writtenAt, latencies, handled, warmupSamples, total)
+            Route.ARITHMETIC -> ArithmeticPath(port, writtenAt, latencies, handled, warmupSamples, total)
+        }
         var failure: Throwable? = null
-        val reader = SensorReader(port, decoderFor(SensorProtocol.FRAMED, path), { _, cause -> failure = cause }, bufferSize = READ_BYTES)
+        val decoder = when (side) {
+            is EnginePath -> liveDecoderFor(SensorProtocol.FRAMED, side)
+            is ArithmeticPath -> decoderFor(SensorProtocol.FRAMED, side)
+        }
+        val reader = SensorReader(port, decoder, { _, cause -> failure = cause }, bufferSize = READ_BYTES)
         reader.start("hapticon-bench-grain-latency")
         try {
             port.enqueue(frames.deviceInfo)
@@ -97,7 +123,7 @@ class GrainLatency(private val samples: Int, private val warmupSamples: Int) {
                 writtenAt[i] = System.nanoTime()
                 port.enqueue(frames.samples[i])
                 awaitHandled(handled, i + 1, reader) { failure }
-                if (schedstat == null) schedstat = path.schedstat?.let { openOrNull(it) }
+                if (schedstat == null) schedstat = side.schedstat?.let { openOrNull(it) }
                 waitedAfter[i] = schedstat?.let { runQueueNanos(it, runQueue) } ?: -1L
                 collectionsAfter[i] = collectors.sumOf { it.collectionCount }
             }
@@ -119,8 +145,8 @@ class GrainLatency(private val samples: Int, private val warmupSamples: Int) {
         val over = grainIndices.filter { latencies[it] > ONE_MS_NANOS }
         return GrainLatencyResult(
             samples, measured.size, rank(measured, 0.50) / 1e3, rank(measured, 0.99) / 1e3, measured.last() / 1e3,
-            handlerBytesPerSample = path.handlerBytes() / samples,
-            readerBytesPerSample = path.allocatedBytes() / samples,
+            handlerBytesPerSample = side.handlerBytes() / samples,
+            readerBytesPerSample = side.allocatedBytes() / samples,
             runQueueMicrosAtMax = waited.getValue(worst) / 1e3,
             gcAtMax = collected.getValue(worst),
             maxWithoutRunQueueMicros = grainIndices.maxOf { latencies[it] - waited.getValue(it) } / 1e3,
@@ -130,53 +156,51 @@ class GrainLatency(private val samples: Int, private val warmupSamples: Int) {
         )
     }
 
-    /** The reader side: decodes a sample into a force, decides, and writes a command for each grain. */
-    private class GrainPath(
-        private val port: FakeSerialPort,
-        private val writtenAt: LongArray,
-        private val latencies: LongArray,
-        private val handled: AtomicInteger,
-        private val warmupSamples: Int,
-        private val total: Int,
-    ) : ProtocolListener {
+    /**
+     * The reader side's bookkeeping, shared by both paths: per sample, the bytes allocated from the decoded
+     * frame to the command encoded ([measure]), then the command's write and its latency.
+     */
+    private sealed class GrainPath(
+        val port: FakeSerialPort,
+        val writtenAt: LongArray,
+        val latencies: LongArray,
+        val handled: AtomicInteger,
+        val warmupSamples: Int,
+        val total: Int,
+    ) {
         private val threads = ManagementFactory.getThreadMXBean() as com.sun.management.ThreadMXBean
         private val counting = threads.isThreadAllocatedMemorySupported && threads.isThreadAllocatedMemoryEnabled
 
         // Read only by the bench thread after handled reaches total (published by that volatile write).
-        private var bytesAtWarmupEnd = 0L
-        private var bytesAtEnd = 0L
-        private var handlerBytes = 0L
+        var bytesAtWarmupEnd = 0L
+        var bytesAtEnd = 0L
+        var handlerBytesSum = 0L
 
-        /** Bytes allocated inside [onSample] over the measured samples; NaN if not counted. */
-        fun handlerBytes(): Double = if (counting) handlerBytes.toDouble() else Double.NaN
+        /** Bytes allocated from decoded frame to command encoded over the measured samples; NaN if not counted. */
+        fun handlerBytes(): Double = if (counting) handlerBytesSum.toDouble() else Double.NaN
 
         /** Bytes this reader thread allocated from the first measured sample to the end; NaN if not counted. */
         fun allocatedBytes(): Double = if (counting) (bytesAtEnd - bytesAtWarmupEnd).toDouble() else Double.NaN
 
-        private fun threadBytes(): Long = if (counting) threads.getThreadAllocatedBytes(Thread.currentThread().id) else 0L
+        fun threadBytes(): Long = if (counting) threads.getThreadAllocatedBytes(Thread.currentThread().id) else 0L
 
-        private val converter = FsrForceConverter()
-        private val decider = GrainDecider(GrainSettings(), SyntheticPress.SAMPLE_RATE_HZ.toDouble())
-        private val encoder = FramedEncoder()
-        private val command = ByteArray(FramedProtocol.MAX_ENCODED_FRAME_LENGTH)
-        private val fullScale = intArrayOf(SafetyLimits.SERVO_MAX)
-        private var index = 0
+        val encoder = FramedEncoder()
+        val command = ByteArray(FramedProtocol.MAX_ENCODED_FRAME_LENGTH)
+        val fullScale = intArrayOf(SafetyLimits.SERVO_MAX)
+        var index = 0
 
         /** This reader thread's schedstat file (Linux), found on the first sample, a warm-up one; null elsewhere. */
         @Volatile var schedstat: String? = null
 
-        override fun onSample(frame: SampleFrame) {
+        /** Called once per decoded sample on the reader thread: [decide] returns the command's length, 0 for no grain. */
+        inline fun measure(decide: () -> Int) {
             val i = index++
             if (i == 0) schedstat = runCatching { File("/proc/thread-self").canonicalPath + "/schedstat" }.getOrNull()
             val entered = threadBytes()
             if (i == warmupSamples) bytesAtWarmupEnd = entered
-            // The allocation-free conversion, as the app's GrainEngine uses (NaN, a fault, never fires).
-            var length = 0
-            if (decider.offer(converter.newtonsOrNaN(SyntheticPress.voltsOfCounts(frame.values[0])))) {
-                length = encoder.setOutputs(0, fullScale, command)
-            }
+            val length = decide()
             // Counted up to the command encoded: the port write is the FakeSerialPort's (it records a copy).
-            if (i >= warmupSamples) handlerBytes += threadBytes() - entered
+            if (i >= warmupSamples) handlerBytesSum += threadBytes() - entered
             if (length > 0) {
                 port.write(command, 0, length, WRITE_TIMEOUT_MILLIS)
                 latencies[i] = System.nanoTime() - writtenAt[i]
@@ -185,6 +209,48 @@ class GrainLatency(private val samples: Int, private val warmupSamples: Int) {
             if (i == total - 1) bytesAtEnd = left
             // The volatile write publishes latencies[i] (and the byte counts) to the bench thread.
             handled.set(i + 1)
+        }
+    }
+
+    /** The shipped path: the decoded [LiveFrame] goes to a real [GrainEngine], whose sink encodes the command. */
+    private class EnginePath(
+        port: FakeSerialPort,
+        writtenAt: LongArray,
+        latencies: LongArray,
+        handled: AtomicInteger,
+        warmupSamples: Int,
+        total: Int,
+    ) : GrainPath(port, writtenAt, latencies, handled, warmupSamples, total), FrameListener {
+        private var length = 0
+
+        // The engine calls the sink on this (the reader) thread, at most once per frame.
+        private val engine = GrainEngine { length = encoder.setOutputs(0, fullScale, command) }.apply {
+            // The board's rate as the fallback: configured before the stream, as when a user enables the mode first.
+            configure(GrainConfig(channel = 0, settings = GrainSettings(), amplitude = 255, fallbackSampleRateHz = SyntheticPress.SAMPLE_RATE_HZ.toDouble()))
+        }
+
+        override fun onFrame(frame: LiveFrame, info: StreamInfo) = measure {
+            length = 0
+            engine.onFrame(frame, info)
+            length
+        }
+    }
+
+    /** The baseline: the engine's arithmetic re-created on the decoded [SampleFrame] (the bench's figure before issue 13's work). */
+    private class ArithmeticPath(
+        port: FakeSerialPort,
+        writtenAt: LongArray,
+        latencies: LongArray,
+        handled: AtomicInteger,
+        warmupSamples: Int,
+        total: Int,
+    ) : GrainPath(port, writtenAt, latencies, handled, warmupSamples, total), ProtocolListener {
+        private val converter = FsrForceConverter()
+        private val decider = GrainDecider(GrainSettings(), SyntheticPress.SAMPLE_RATE_HZ.toDouble())
+
+        override fun onSample(frame: SampleFrame) = measure {
+            // The allocation-free conversion, as GrainEngine uses (NaN, a fault, never fires).
+            if (decider.offer(converter.newtonsOrNaN(SyntheticPress.voltsOfCounts(frame.values[0])))) encoder.setOutputs(0, fullScale, command) else 0
         }
     }
 

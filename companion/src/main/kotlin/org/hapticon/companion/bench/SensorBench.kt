@@ -6,12 +6,14 @@ import org.hapticon.sensor.grains.SensorModelBenchmark
 /**
  * The sensor figures of one bench run: decoding speed and allocation per protocol ([decode], from
  * [ProtocolBenchmark]), cost per sample of the grain decision and the handshake model ([models], from
- * [SensorModelBenchmark]), and the fake-port sample-to-grain-command [latency].
+ * [SensorModelBenchmark]), and the fake-port sample-to-grain-command [latency] through the real `GrainEngine`,
+ * with [latencyBaseline], the engine's arithmetic re-created by hand, measured in the same run.
  */
 data class SensorFigures(
     val decode: List<ProtocolBenchmark.Result>,
     val models: List<SensorBenchmarkResult>,
     val latency: GrainLatencyResult,
+    val latencyBaseline: GrainLatencyResult,
 ) {
     /** The decoding result of [protocol] (`csv`, `framed` or `lucidgloves`). */
     fun decode(protocol: String): ProtocolBenchmark.Result = decode.first { it.name == protocol }
@@ -29,7 +31,8 @@ class SensorBench(private val config: BenchConfig, private val progress: (String
         progress("sensor models (grain decision, handshake pressure)")
         val models = SensorModelBenchmark.run(warmupMillis = config.modelWarmupMillis, measureMillis = config.modelMeasureMillis)
         progress("fake-port sample to grain command")
-        val latency = GrainLatency(config.latencySamples, config.latencyWarmupSamples).run()
-        return SensorFigures(decode, models, latency)
+        val latency = GrainLatency(config.latencySamples, config.latencyWarmupSamples, GrainLatency.Route.ENGINE).run()
+        val baseline = GrainLatency(config.latencySamples, config.latencyWarmupSamples, GrainLatency.Route.ARITHMETIC).run()
+        return SensorFigures(decode, models, latency, baseline)
     }
 }

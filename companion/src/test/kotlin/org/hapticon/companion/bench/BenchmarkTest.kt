@@ -142,6 +142,11 @@ class BenchmarkTest {
         assertTrue(table, "  grainDecision    <= 1000 ns/sample    measured       8.50 ns/sample    met" in lines)
         assertTrue(table, "  grainLatencyP99  <= 1000 µs           measured       1200 µs           NOT MET" in lines)
         assertTrue(table, "  grainLatencyMax  <= 1000 µs (quiet)   measured       5000 µs           NOT MET" in lines)
+        assertTrue(
+            table,
+            "  baseline, same run (the engine's arithmetic re-created, no GrainEngine): p50 3.1, p99 12.4, max 3956.0 µs (2200 grains);" +
+                " without run-queue wait 120.5 µs; 0 bytes per sample" in lines,
+        )
     }
 
     @Test
@@ -169,6 +174,9 @@ class BenchmarkTest {
         val latency = sensors["grainLatency"] as JsonObject
         assertEquals(JsonNumber(1200.0), latency["p99Micros"])
         assertEquals(JsonNumber(2200), latency["grains"])
+        val baseline = sensors["grainLatencyBaseline"] as JsonObject
+        assertEquals(JsonNumber(3956.0), baseline["maxMicros"])
+        assertEquals(JsonNumber(12.4), baseline["p99Micros"])
         val p99 = (json["targets"] as JsonObject)["grainLatencyP99"] as JsonObject
         assertEquals(JsonBoolean(false), p99["met"])
     }
@@ -185,6 +193,7 @@ class BenchmarkTest {
         assertEquals(targets, (json["targets"] as JsonObject).members.keys)
         val latency = (json["sensors"] as JsonObject)["grainLatency"] as JsonObject
         assertEquals(JsonNumber(2_000), latency["samples"])
+        assertEquals(JsonNumber(2_000), ((json["sensors"] as JsonObject)["grainLatencyBaseline"] as JsonObject)["samples"])
         assertTrue(result.stderr, result.stderr.startsWith("bench: throughput over longest"))
     }
 
@@ -233,6 +242,10 @@ class BenchmarkTest {
                     SensorBenchmarkResult("handshakePressure", 70.0, 66.0, -1.0, 65_536, 200),
                 ),
                 latency = GrainLatencyResult(samples = 100_000, grains = 2_200, p50Micros = 3.5, p99Micros = 1200.0, maxMicros = 5000.0),
+                latencyBaseline = GrainLatencyResult(
+                    samples = 100_000, grains = 2_200, p50Micros = 3.1, p99Micros = 12.4, maxMicros = 3956.0,
+                    handlerBytesPerSample = 0.0, maxWithoutRunQueueMicros = 120.5,
+                ),
             ),
             elapsedSeconds = 12.5,
         )

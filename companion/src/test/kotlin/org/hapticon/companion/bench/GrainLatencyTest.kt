@@ -24,6 +24,7 @@ class GrainLatencyTest {
 
     @Test
     fun run_afterWarmup_frameToCommandAllocatesNothingPerSample() {
+        // The default route is the real GrainEngine: LiveFrame decoding, the engine, its sink encoding the command.
         val result = GrainLatency(samples = 2_000, warmupSamples = 20_000).run()
         assertTrue(result.toString(), !result.handlerBytesPerSample.isNaN() && result.readerBytesPerSample >= result.handlerBytesPerSample)
         // Nothing per sample: one object per sample would cost at least 16 bytes per sample. Below one byte allows
@@ -39,6 +40,22 @@ class GrainLatencyTest {
         assertTrue(result.toString(), result.runQueueMicrosAtMax >= 0.0)
         assertTrue(result.toString(), result.maxWithoutRunQueueMicros <= result.maxMicros)
         assertTrue(result.toString(), result.over1msByRunQueue <= result.over1ms && result.over1msWithGc <= result.over1ms)
+    }
+
+    @Test
+    fun run_bothRoutes_seeTheSameGrainsOfOnePressCycle() {
+        // GrainEngine (counts -> FSR force from the channel's RAW unit and the 12-bit device info) decides as the
+        // re-created arithmetic does: the same 46 grains.
+        val engine = GrainLatency(samples = 2_000, warmupSamples = 0, route = GrainLatency.Route.ENGINE).run()
+        val baseline = GrainLatency(samples = 2_000, warmupSamples = 0, route = GrainLatency.Route.ARITHMETIC).run()
+        assertEquals(46, engine.grains)
+        assertEquals(46, baseline.grains)
+    }
+
+    @Test
+    fun run_arithmeticBaseline_afterWarmup_allocatesNothingPerSample() {
+        val result = GrainLatency(samples = 2_000, warmupSamples = 20_000, route = GrainLatency.Route.ARITHMETIC).run()
+        assertTrue(result.toString(), result.handlerBytesPerSample < 1.0)
     }
 
     @Test(expected = IllegalArgumentException::class)

@@ -8,6 +8,7 @@ import org.hapticon.sensor.live.FrameListener
 import org.hapticon.sensor.live.LiveFrame
 import org.hapticon.sensor.live.StreamInfo
 import org.hapticon.sensor.protocol.framed.ChannelUnit
+import java.util.concurrent.atomic.AtomicReference
 
 /**
  * Where the grain engine's bursts go: the phone's vibrator in the app, a recorder in tests. Called on
@@ -75,11 +76,13 @@ public data class GrainConfig(
     public val grain: LraGrain get() = LraGrain(settings.grainSeconds, amplitude)
 }
 
-/** What the grain mode is doing, for the UI. */
+/** What the grain mode is doing, for the UI; changes only when the mode is configured, stops or changes rate. */
 public data class GrainStatus(
     val enabled: Boolean = false,
-    val grainsPlayed: Long = 0,
-    /** The sample rate the decider runs at, once a frame arrived. */
+    /**
+     * The sample rate the decider runs at: the stream's announced rate if one was seen when the mode was
+     * configured, else the fallback; updated if a frame later announces another.
+     */
     val sampleRateHz: Double? = null,
     /** Why it stopped, if a safety limit or bad setting stopped it. */
     val error: String? = null,
@@ -89,77 +92,105 @@ public data class GrainStatus(
  * Compliance grains from a force channel ([GrainConfig]): each frame's force goes through
  * sensor-bridge's [GrainDecider] (low-pass, bins, at most one grain at a time: a grain lasts
  * round(grainSeconds·fs) samples and no other starts meanwhile), and each grain is played once as an
- * [LraGrain] burst on [output] (the app's vibrator). Runs on the sensor's reading thread and allocates nothing per sample
- * (the burst's waveform is rendered once per configuration).
+ * [LraGrain] burst on [output] (the app's vibrator).
+ *
+ * Runs on the sensor's reading thread with no lock and no allocation per frame or per grain: [configure]
+ * (any thread) builds the whole run — decider, rendered burst — and publishes it through one atomic
+ * reference; the reading thread is the only writer of the decider and of the grain count, which the UI
+ * samples ([grainsPlayed], a volatile read) instead of being woken per grain. [status] changes only on a
+ * configuration, a stop or a rate change (issue 13: the worst case of the grain path).
  */
 public class GrainEngine(private val output: GrainSink) : FrameListener {
-    private val lock = Any()
+    /** One configuration's state. Only the reading thread offers to [decider] and writes [played]. */
+    private class Run(
+        val config: GrainConfig?,
+        val waveform: VibrationWaveform?,
+        val decider: GrainDecider?,
+        val rateHz: Double,
+        played: Long = 0,
+    ) {
+        @Volatile var played: Long = played
+    }
+
     private val fsr = FsrForceConverter()
+    private val run = AtomicReference(Run(null, null, null, 0.0))
     private val mutableStatus = MutableStateFlow(GrainStatus())
 
-    private var config: GrainConfig? = null
-    private var decider: GrainDecider? = null
-    private var waveform: VibrationWaveform? = null
-    private var deciderRate = 0.0
-    private var played = 0L
+    // Serialises status publication between configure and the reading thread's rare stops and rate changes.
+    private val statusLock = Any()
 
-    /** What the grain mode is doing. [GrainStatus.grainsPlayed] is updated at most per grain. */
+    /** The rate the stream last announced (0 when none), written by the reading thread only when it changes. */
+    @Volatile private var announcedRateHz = 0.0
+
+    /** What the grain mode is doing; the grain count is [grainsPlayed], sampled rather than pushed. */
     public val status: StateFlow<GrainStatus> = mutableStatus.asStateFlow()
 
     /** The configuration in force, or null while the mode is off (the recorder reads its calibrated force range). */
-    public val currentConfig: GrainConfig? get() = synchronized(lock) { config }
+    public val currentConfig: GrainConfig? get() = run.get().config
 
-    /** Grains played since the mode was last configured; cheap to poll. */
-    public val grainsPlayed: Long get() = synchronized(lock) { played }
+    /** Grains played since the mode was last configured (kept after a stop); a volatile read, cheap to poll. */
+    public val grainsPlayed: Long get() = run.get().played
 
     /** Turns the mode on with [newConfig], or off with null. A new configuration starts afresh. */
     public fun configure(newConfig: GrainConfig?) {
-        synchronized(lock) {
-            if (newConfig == config) return
-            config = newConfig
-            decider = null
-            played = 0
-            waveform = try {
-                newConfig?.grain?.waveform()
+        synchronized(statusLock) {
+            if (newConfig == run.get().config) return
+            if (newConfig == null) {
+                run.set(Run(null, null, null, 0.0))
+                mutableStatus.value = GrainStatus(enabled = false)
+                return
+            }
+            val waveform = try {
+                newConfig.grain.waveform()
             } catch (e: IllegalArgumentException) {
-                config = null
+                run.set(Run(null, null, null, 0.0))
                 mutableStatus.value = GrainStatus(enabled = false, error = e.message)
                 return
             }
-            mutableStatus.value = GrainStatus(enabled = newConfig != null)
+            // The decider is built here, off the reading thread, at the rate the stream announced if any.
+            val rate = announcedRateHz.takeIf { it > 0 } ?: newConfig.fallbackSampleRateHz
+            run.set(Run(newConfig, waveform, GrainDecider(newConfig.settings, rate), rate))
+            mutableStatus.value = GrainStatus(enabled = true, sampleRateHz = rate)
         }
     }
 
     override fun onFrame(frame: LiveFrame, info: StreamInfo) {
-        synchronized(lock) {
-            val cfg = config ?: return
-            if (cfg.channel >= frame.channelCount) return
-            val rate = info.sampleRateHz?.toDouble() ?: cfg.fallbackSampleRateHz
-            var current = decider
-            if (current == null || rate != deciderRate) {
-                current = GrainDecider(cfg.settings, rate)
-                decider = current
-                deciderRate = rate
-                mutableStatus.value = mutableStatus.value.copy(sampleRateHz = rate)
+        val announced = info.sampleRateHz?.toDouble() ?: 0.0
+        if (announced != announcedRateHz) announcedRateHz = announced
+        var current = run.get()
+        val cfg = current.config ?: return
+        if (cfg.channel >= frame.channelCount) return
+        val rate = if (announced > 0) announced else cfg.fallbackSampleRateHz
+        // Cold, once per stream at most: the board announced another rate than the decider was built for.
+        if (rate != current.rateHz) current = replace(current, Run(cfg, current.waveform, GrainDecider(cfg.settings, rate), rate, current.played)) ?: return
+        val bits = info.adcBits ?: cfg.adcBits
+        val unit = info.channelUnits?.getOrNull(cfg.channel)
+        val input = cfg.input ?: if (unit == null) ForceInput.FSR_ADC else ForceInput.forUnit(unit)
+        val newtons = if (input == null) Double.NaN else newtonsOf(frame[cfg.channel], input, bits)
+        if (current.decider!!.offer(newtons)) {
+            try {
+                output.play(current.waveform!!)
+            } catch (e: RuntimeException) {
+                // A refused effect (safety limit) turns the mode off; the stream goes on.
+                replace(current, Run(null, null, null, 0.0, current.played), e.message ?: e.javaClass.simpleName)
+                return
             }
-            val bits = info.adcBits ?: cfg.adcBits
-            val unit = info.channelUnits?.getOrNull(cfg.channel)
-            val input = cfg.input ?: if (unit == null) ForceInput.FSR_ADC else ForceInput.forUnit(unit)
-            val newtons = if (input == null) Double.NaN else newtonsOf(frame[cfg.channel], input, bits)
-            if (current.offer(newtons)) {
-                try {
-                    output.play(waveform ?: return)
-                } catch (e: RuntimeException) {
-                    // A refused effect (safety limit) turns the mode off; the stream goes on.
-                    config = null
-                    decider = null
-                    mutableStatus.value = GrainStatus(enabled = false, grainsPlayed = played, error = e.message ?: e.javaClass.simpleName)
-                    return
-                }
-                played++
-                mutableStatus.value = mutableStatus.value.copy(grainsPlayed = played)
+            current.played = current.played + 1
+        }
+    }
+
+    /**
+     * Publishes [next] in place of [current] unless [configure] replaced it meanwhile (then null: the new
+     * configuration wins), with its status ([error] set: stopped).
+     */
+    private fun replace(current: Run, next: Run, error: String? = null): Run? {
+        if (!run.compareAndSet(current, next)) return null
+        synchronized(statusLock) {
+            if (run.get() === next) {
+                mutableStatus.value = if (error != null) GrainStatus(enabled = false, error = error) else GrainStatus(enabled = true, sampleRateHz = next.rateHz)
             }
         }
+        return next
     }
 
     private fun newtonsOf(value: Double, input: ForceInput, adcBits: Int): Double = when (input) {

@@ -62,6 +62,14 @@ public fun interface FrameListener {
 }
 
 /**
+ * A decoder for [protocol] that hands each decoded frame, with what is known of the stream, to [listener]:
+ * the decoding a [SensorSession] runs on its reading thread (without its counters and plot history), for
+ * benches that drive a real [FrameListener] such as the grain engine. Frames carry no arrival time.
+ */
+public fun liveDecoderFor(protocol: SensorProtocol, listener: FrameListener): StreamDecoder =
+    LiveDecoder(protocol) { frame, info -> listener.onFrame(frame, info) }.decoder
+
+/**
  * Turns one protocol's decoder callbacks ([decoderFor]) into [LiveFrame]s for [sink], keeping [info]
  * up to date. Used only on the reading thread.
  */

@@ -9,6 +9,8 @@ import org.junit.Assert.assertArrayEquals
 import org.junit.Assert.assertEquals
 import org.junit.Assert.assertFalse
 import org.junit.Assert.assertNull
+import org.junit.Assert.assertTrue
+import org.junit.Assume.assumeTrue
 import org.junit.Test
 
 /** The grain engine on the plain JVM: force frames in, the bursts its [GrainSink] was handed out. */
@@ -46,7 +48,7 @@ class GrainEngineTest {
             assertArrayEquals(intArrayOf(200), burst.amplitudes())
         }
         assertEquals(4L, engine.grainsPlayed)
-        assertEquals(GrainStatus(enabled = true, grainsPlayed = 4, sampleRateHz = 100.0), engine.status.value)
+        assertEquals(GrainStatus(enabled = true, sampleRateHz = 100.0), engine.status.value)
     }
 
     @Test
@@ -89,7 +91,9 @@ class GrainEngineTest {
             refusing.onFrame(frame, StreamInfo(SensorProtocol.CSV, listOf("force")))
         }
 
-        assertEquals(GrainStatus(enabled = false, grainsPlayed = 0, error = "amplitude above the safety limit"), refusing.status.value)
+        assertEquals(GrainStatus(enabled = false, error = "amplitude above the safety limit"), refusing.status.value)
+        assertEquals(0L, refusing.grainsPlayed)
+        assertNull(refusing.currentConfig)
     }
 
     @Test
@@ -98,6 +102,73 @@ class GrainEngineTest {
         feed(List(50) { 9.5 })
 
         assertEquals(0, played.size)
-        assertNull(engine.status.value.sampleRateHz)
+        assertEquals(0L, engine.grainsPlayed)
+    }
+
+    @Test
+    fun configure_buildsTheDeciderAtTheRateTheStreamAnnounced() {
+        val info = StreamInfo(SensorProtocol.FRAMED, listOf("ch0 (g)"), listOf(ChannelUnit.GRAM), adcBits = 12, sampleRateHz = 1000)
+        feed(List(5) { 0.0 }, info) // the mode is off, but the engine notes the announced 1 kHz
+
+        engine.configure(config.copy(input = null))
+
+        // Before any further frame: the decider runs at 1 kHz, not the 100 Hz fallback.
+        assertEquals(GrainStatus(enabled = true, sampleRateHz = 1000.0), engine.status.value)
+        assertEquals(config.copy(input = null), engine.currentConfig)
+    }
+
+    @Test
+    fun laterAnnouncedRate_rebuildsTheDeciderOnceAndKeepsTheCount() {
+        engine.configure(config) // no stream yet: the 100 Hz fallback
+        assertEquals(100.0, engine.status.value.sampleRateHz!!, 0.0)
+        feed(listOf(0.0) + List(30) { 9.5 }) // CSV at the fallback: 2 grains
+        val framed = StreamInfo(SensorProtocol.FRAMED, listOf("ch0 (N)"), adcBits = 12, sampleRateHz = 1000)
+
+        feed(List(200) { 0.0 }, framed)
+
+        assertEquals(GrainStatus(enabled = true, sampleRateHz = 1000.0), engine.status.value)
+        assertEquals(2L, engine.grainsPlayed)
+    }
+
+    @Test
+    fun reconfigure_startsTheCountAfresh_andOffKeepsNothing() {
+        engine.configure(config)
+        feed(listOf(0.0) + List(30) { 9.5 })
+        assertEquals(2L, engine.grainsPlayed)
+
+        engine.configure(config.copy(amplitude = 100))
+        assertEquals(0L, engine.grainsPlayed)
+        engine.configure(null)
+        assertEquals(GrainStatus(enabled = false), engine.status.value)
+        assertNull(engine.currentConfig)
+    }
+
+    @Test
+    fun onFrame_afterWarmup_allocatesNothingPerFrameOrPerGrain() {
+        val threads = java.lang.management.ManagementFactory.getThreadMXBean() as com.sun.management.ThreadMXBean
+        assumeTrue(threads.isThreadAllocatedMemorySupported && threads.isThreadAllocatedMemoryEnabled)
+        var grains = 0
+        val counting = GrainEngine { grains++ }
+        counting.configure(config)
+        val info = StreamInfo(SensorProtocol.CSV, listOf("force"))
+        frame.channelCount = 1
+        // A 0 -> 9.9 -> 0 N press every 200 frames: 18 grains per press.
+        fun press(frames: Int) {
+            for (k in 0 until frames) {
+                val phase = k % 200
+                frame.values[0] = if (phase < 100) phase * 0.099 else (200 - phase) * 0.099
+                counting.onFrame(frame, info)
+            }
+        }
+        press(40_000) // JIT warm-up
+        val before = grains
+        val thread = Thread.currentThread().id
+        val start = threads.getThreadAllocatedBytes(thread)
+        press(20_000)
+        val bytes = threads.getThreadAllocatedBytes(thread) - start
+
+        assertTrue("grains ${grains - before}", grains - before >= 100)
+        // One object per frame would be >= 16 bytes per frame; below 1 allows a one-off (a JIT tier change).
+        assertTrue("$bytes bytes over 20000 frames", bytes / 20_000.0 < 1.0)
     }
 }

@@ -181,7 +181,8 @@ class SensorsViewModel(
         amplitude = g.amplitude,
         fallbackSampleRateHz = g.fallbackSampleRateHz,
         deviceSampleRateHz = info?.sampleRateHz,
-        grainsPlayed = status.grainsPlayed,
+        // Sampled on each refresh (a volatile read): the engine no longer pushes a status per grain.
+        grainsPlayed = grains.grainsPlayed,
         error = status.error,
     )
 
