@@ -100,15 +100,15 @@ class ComposerFigureTest {
         renderThread.execute { busy.await() }
         viewModel.selectIcon(HapticIcon.KNOCK)
         idleUntil("knock chosen") { states.last().selectedIcon == HapticIcon.KNOCK }
-        assertEquals(PeerFeel(RendererKind.AMPLITUDE_WAVEFORM, null), states.last().peerFeel)
+        assertEquals(PeerFeel(RendererKind.AMPLITUDE_WAVEFORM, null, pitch = NO_PITCH), states.last().peerFeel)
         viewModel.selectIcon(HapticIcon.HIT)
         idleUntil("hit chosen") { states.last().selectedIcon == HapticIcon.HIT }
-        assertEquals(PeerFeel(RendererKind.AMPLITUDE_WAVEFORM, null), states.last().peerFeel)
+        assertEquals(PeerFeel(RendererKind.AMPLITUDE_WAVEFORM, null, pitch = NO_PITCH), states.last().peerFeel)
 
         busy.countDown()
         idleUntil("hit's figure") { states.last().peerFeel?.fidelityPercent != null }
         assertEquals(ConversationUiState.Success::class, states.last()::class)
-        assertEquals(HapticIcon.HIT to PeerFeel(RendererKind.AMPLITUDE_WAVEFORM, hitFigure), states.last().selectedIcon to states.last().peerFeel)
+        assertEquals(HapticIcon.HIT to PeerFeel(RendererKind.AMPLITUDE_WAVEFORM, hitFigure, pitch = NO_PITCH), states.last().selectedIcon to states.last().peerFeel)
         // No state ever paired an icon with a figure computed for another one.
         for (state in states) {
             val percent = state.peerFeel?.fidelityPercent ?: continue
@@ -116,5 +116,10 @@ class ComposerFigureTest {
         }
         shadowOf(Looper.getMainLooper()).idle()
         assertTrue("rendered on the main thread: ${violations.map { it.message }}", violations.isEmpty())
+    }
+
+    private companion object {
+        /** The pitch line for a peer that publishes no frequency range (an amplitude-waveform phone): shown from the first state, it needs no render. */
+        const val NO_PITCH = "bob's phone has no pitch control: plays at its resonance"
     }
 }
