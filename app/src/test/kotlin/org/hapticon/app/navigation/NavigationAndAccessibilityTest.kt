@@ -62,7 +62,9 @@ class NavigationAndAccessibilityTest {
     @Test
     fun studyTab_pinThenResearcherThenParticipantScreensWithoutTheBar() {
         rule.onNode(hasText("Study") and hasClickAction()).performClick()
-        rule.waitForIdle()
+        // The researcher screen shows a spinner until Room (on its own thread, which waitForIdle does not wait
+        // for) has said whether a session is running; then the PIN gate.
+        rule.waitUntil(5_000) { rule.onAllNodesWithText("Set a researcher PIN").fetchSemanticsNodes().isNotEmpty() }
         rule.onNodeWithText("Set a researcher PIN").assertExists()
         assertEveryControlIsNamed("Study PIN")
         rule.onNodeWithContentDescription("PIN").performTextInput("2580")
