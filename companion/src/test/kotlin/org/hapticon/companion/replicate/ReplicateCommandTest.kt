@@ -101,6 +101,20 @@ class ReplicateCommandTest {
     }
 
     @Test
+    fun handshake_namesThePaperAndSaysItsMethodsWereNotChecked() {
+        val bytes = ByteArrayOutputStream()
+        HandshakeCalibrationReplication.run(PrintStream(bytes, true, "UTF-8"))
+        val lines = bytes.toString("UTF-8").lines()
+        assertEquals(
+            "source: \"Tele Haptic Handshake Using Distributed Pressure Presentation Device and Mutual Interaction " +
+                "Pressure Model\", Electronics 14(3):537, 2025, doi:10.3390/electronics14030537",
+            lines[1],
+        )
+        assertTrue(lines.joinToString("\n"), lines[3].startsWith("         its Methods were not reached"))
+        assertTrue(lines.joinToString("\n"), lines.any { it.startsWith("  divider fixed resistor   not reached (see docs)   33") })
+    }
+
+    @Test
     fun nao_onTwoTinySessions_printsTheTable() {
         val still = { person: String ->
             NaoRecording(person, List(4) { c -> DoubleArray(400) { k -> if (k in 100..299) 5.0 + c + (k % 7) else 10.0 } }, listOf(NaoSpan(100, 300, "squeeze-gentle")))

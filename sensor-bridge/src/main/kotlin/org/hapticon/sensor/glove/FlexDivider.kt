@@ -60,12 +60,16 @@ public data class FlexDivider(
     }
 
     public companion object {
-        /** The study's supply voltage. */
+        /**
+         * The study's supply voltage, 5 V, as the project summarised the tele-handshake paper (Electronics
+         * 14(3):537, 2025); its circuit section could not be reached to re-check it (docs/replication.md, 004).
+         */
         public const val DEFAULT_SUPPLY_VOLTS: Double = 5.0
 
         /**
          * 33 kΩ: close to √(16 kΩ · 68 kΩ), the geometric mean of the study's flex resistances at 0° and 90°,
-         * which maximises the output swing over that range (a default, not from the study).
+         * which maximises the output swing over that range (a default, not from the study: the paper's own Rfix
+         * was searched for in issue 15 and not reached).
          */
         public const val DEFAULT_FIXED_KILOOHMS: Double = 33.0
 

@@ -8,7 +8,8 @@ public fun interface HandPoseSink {
 
 /**
  * The tele-handshake loop of one glove, sample by sample, as the flex-sensor glove tele-handshake paper runs it
- * (docs/sensor-models.md, "Glove model"): each divider reading becomes an angle through the wearer's
+ * ("Tele Haptic Handshake Using Distributed Pressure Presentation Device and Mutual Interaction Pressure Model",
+ * Electronics 14(3):537, 2025, doi:10.3390/electronics14030537; docs/sensor-models.md, "Glove model"): each divider reading becomes an angle through the wearer's
  * [FlexCalibration] (a faulty finger counts as open, 0°, which releases the partner's actuators rather than
  * squeezing them); the [partner]'s angles are read at the same instant; [HandshakeSession] starts the handshake
  * when either middle finger exceeds the paper's 30.9° and mixes both hands into each region's interaction
