@@ -1,9 +1,5 @@
 package org.hapticon.app.feature.chat
 
-import android.content.Context
-import android.os.Vibrator
-import androidx.compose.runtime.collectAsState
-import androidx.compose.runtime.getValue
 import androidx.compose.ui.semantics.Role
 import androidx.compose.ui.semantics.SemanticsActions
 import androidx.compose.ui.semantics.SemanticsProperties
@@ -16,20 +12,11 @@ import androidx.compose.ui.test.junit4.createComposeRule
 import androidx.compose.ui.test.performSemanticsAction
 import androidx.compose.ui.text.AnnotatedString
 import androidx.room.Room
-import androidx.test.core.app.ApplicationProvider
-import kotlinx.coroutines.flow.MutableStateFlow
-import kotlinx.coroutines.flow.first
 import kotlinx.coroutines.runBlocking
-import org.hapticon.app.data.OfflineFirstChatRepository
-import org.hapticon.app.data.RoomIconRepository
-import org.hapticon.app.data.database.HapticonDatabase
 import org.hapticon.app.data.database.MessageState
-import org.hapticon.app.playback.AdaptiveHapticPlayer
-import org.hapticon.app.playback.DeviceCapabilities
 import org.hapticon.app.playback.lastVibration
 import org.hapticon.core.HapticIcon
 import org.hapticon.core.render.VibrationWaveform
-import org.hapticon.messaging.Capabilities
 import org.hapticon.messaging.ChatMessage
 import org.junit.After
 import org.junit.Assert.assertEquals
@@ -39,7 +26,6 @@ import org.junit.Rule
 import org.junit.Test
 import org.junit.runner.RunWith
 import org.robolectric.RobolectricTestRunner
-import org.robolectric.Shadows.shadowOf
 import org.robolectric.annotation.Config
 
 /**
@@ -54,40 +40,19 @@ class TalkBackSendTest {
     @get:Rule
     val compose = createComposeRule()
 
-    private val context = ApplicationProvider.getApplicationContext<Context>()
-    private val vibrator = context.getSystemService(Vibrator::class.java)
-    private lateinit var db: HapticonDatabase
-    private lateinit var repository: OfflineFirstChatRepository
+    private val fixture = ComposerFixture(compose)
+    private val vibrator = fixture.vibrator
+    private val db = fixture.db
+    private val repository = fixture.repository
     private val felt = java.util.concurrent.CopyOnWriteArrayList<Pair<String, String>>()
 
     @Before
-    fun setUp() {
-        shadowOf(vibrator).setHasAmplitudeControl(true)
-        db = Room.inMemoryDatabaseBuilder(context, HapticonDatabase::class.java).allowMainThreadQueries().build()
-        repository = OfflineFirstChatRepository(db, clock = { 1_767_225_600_000 })
-        val viewModel = ConversationViewModel(
-            "bob", { "alice" }, repository, RoomIconRepository(db.iconDao()),
-            AdaptiveHapticPlayer(vibrator, { DeviceCapabilities(true, true, 35) }, { null }),
-            MutableStateFlow<Map<String, Capabilities>>(emptyMap()), {},
-            onFelt = { peer, id -> felt += peer to id },
-        )
-        compose.setContent {
-            val state by viewModel.uiState.collectAsState()
-            ConversationScreen(
-                state,
-                ConversationActions(
-                    onSend = { viewModel.send(it) }, onSelectIcon = viewModel::selectIcon, onSelectSticker = viewModel::selectSticker,
-                    onPreview = viewModel::play, onFeel = viewModel::feel,
-                ),
-            )
-        }
-        compose.waitUntil(5_000) { compose.onAllNodes(hasSetTextAction()).fetchSemanticsNodes().isNotEmpty() }
-    }
+    fun setUp() = fixture.show(onFelt = { peer, id -> felt += peer to id })
 
     @After
-    fun tearDown() = db.close()
+    fun tearDown() = fixture.close()
 
-    private fun stored() = runBlocking { repository.messages("bob").first() }
+    private fun stored() = fixture.stored()
 
     /** The one control TalkBack reads as [description] with [role]: it must be a focusable merged node. */
     private fun control(description: String, role: Role) =
