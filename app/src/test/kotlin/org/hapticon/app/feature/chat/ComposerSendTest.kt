@@ -38,8 +38,6 @@ class ComposerSendTest {
     val compose = createComposeRule()
 
     private val fixture = ComposerFixture(compose)
-    private val vibrator = fixture.vibrator
-    private val db = fixture.db
     @Volatile private var wakes = 0
 
     @Before
@@ -53,10 +51,10 @@ class ComposerSendTest {
     @Test
     fun textWithIcon_longPressPreviewsTapChoosesAndSendStoresBothAndQueuesIt() {
         compose.onNodeWithContentDescription("Icon knock").performTouchInput { longClick() }
-        compose.waitUntil(5_000) { lastVibration(vibrator) != null } // rendered off the main thread, then played
+        compose.waitUntil(5_000) { lastVibration(fixture.vibrator) != null } // rendered off the main thread, then played
         // A long press previews: the knock went to the vibrator, and nothing was chosen.
         // The processing knock (the default model): 10 ms at 175, 10 ms at 111, then 250 ms off, three times.
-        assertEquals(RecordedVibration(listOf(10L, 10L, 250L, 10L, 10L, 250L, 10L, 10L), listOf(175, 111, 0, 175, 111, 0, 175, 111)), lastVibration(vibrator))
+        assertEquals(RecordedVibration(listOf(10L, 10L, 250L, 10L, 10L, 250L, 10L, 10L), listOf(175, 111, 0, 175, 111, 0, 175, 111)), lastVibration(fixture.vibrator))
         compose.onNodeWithContentDescription("Icon knock").assertStateDescription("not selected")
         compose.onNodeWithContentDescription("Icon knock").performClick()
         compose.onNodeWithContentDescription("Icon knock").assertStateDescription("selected")
@@ -69,7 +67,7 @@ class ComposerSendTest {
         assertEquals(HapticIcon.KNOCK, message.icon)
         assertEquals(null, message.sticker)
         assertEquals(MessageState.SENDING, message.state)
-        assertEquals(listOf(message.id), runBlocking { db.outboxDao().pending() }.map { it.messageId })
+        assertEquals(listOf(message.id), runBlocking { fixture.db.outboxDao().pending() }.map { it.messageId })
         // The outbox sender is woken once the message is stored.
         compose.waitUntil(5_000) {
             // The ViewModel resumes on the main looper once Room's transaction is done.

@@ -41,9 +41,6 @@ class TalkBackSendTest {
     val compose = createComposeRule()
 
     private val fixture = ComposerFixture(compose)
-    private val vibrator = fixture.vibrator
-    private val db = fixture.db
-    private val repository = fixture.repository
     private val felt = java.util.concurrent.CopyOnWriteArrayList<Pair<String, String>>()
 
     @Before
@@ -89,26 +86,26 @@ class TalkBackSendTest {
         assertEquals("feel this", message.text)
         assertEquals(HapticIcon.KNOCK, message.icon)
         assertEquals(MessageState.SENDING, message.state)
-        assertEquals(listOf(message.id), runBlocking { db.outboxDao().pending() }.map { it.messageId })
+        assertEquals(listOf(message.id), runBlocking { fixture.db.outboxDao().pending() }.map { it.messageId })
         // The composer is cleared for the next message: nothing chosen any more.
         compose.waitUntil(5_000) { control("Icon knock", Role.Button).state() == "not selected" }
         // Choosing and sending played nothing on this phone.
-        assertNull(lastVibration(vibrator))
+        assertNull(lastVibration(fixture.vibrator))
     }
 
     @Test
     fun receivedIconChip_throughItsAccessibilityAction_isFelt() {
         val hug = ChatMessage("0b7e7c1e-3f7b-4a57-9d3e-2f1c5a6b7c8d", "bob", 1_767_225_500_000, "hug", icon = HapticIcon.HUG)
-        runBlocking { repository.receive(hug) }
+        runBlocking { fixture.repository.receive(hug) }
         compose.waitUntil(5_000) {
             compose.onAllNodes(hasContentDescription("Play haptic icon hug")).fetchSemanticsNodes().isNotEmpty()
         }
-        assertNull(lastVibration(vibrator))
+        assertNull(lastVibration(fixture.vibrator))
 
         control("Play haptic icon hug", Role.Button).performSemanticsAction(SemanticsActions.OnClick)
-        compose.waitUntil(5_000) { lastVibration(vibrator) != null }
+        compose.waitUntil(5_000) { lastVibration(fixture.vibrator) != null }
         // The hug's own step waveform, as the player renders it for an amplitude-controlled vibrator.
-        assertEquals(VibrationWaveform.render(HapticIcon.HUG).timings().toList(), lastVibration(vibrator)!!.timings)
+        assertEquals(VibrationWaveform.render(HapticIcon.HUG).timings().toList(), lastVibration(fixture.vibrator)!!.timings)
         // And bob is told it was felt (the felt receipt the sync sends).
         assertEquals(listOf("bob" to hug.id), felt.toList())
     }
