@@ -1,30 +1,24 @@
 package org.hapticon.app
 
+import android.app.Activity
 import android.app.Application
-import android.content.Context
 import android.content.pm.ApplicationInfo
 import android.os.StrictMode
-import org.hapticon.app.data.IconRepository
-import org.hapticon.app.data.database.HapticonDatabase
-import org.hapticon.app.gesture.GestureComponent
-import org.hapticon.app.playback.HapticPlayer
-import org.hapticon.app.playback.VibrationOutput
-import org.hapticon.app.playback.VibratorVibrationOutput
-import org.hapticon.app.sensors.AndroidUsbDevices
-import org.hapticon.app.sensors.CalibrationStore
-import org.hapticon.app.sensors.SharedPreferencesCalibrationStore
-import org.hapticon.app.study.StudyComponent
+import org.hapticon.app.di.AppContainer
 import org.hapticon.app.sync.ChatComponent
-import org.hapticon.sensor.glove.HubGloveSource
-import org.hapticon.sensor.glove.PartnerHand
-import org.hapticon.sensor.glove.SimulatedPartner
-import org.hapticon.sensor.grains.GrainEngine
-import org.hapticon.sensor.live.SensorSession
-import org.hapticon.sensor.live.UsbDevices
+import org.hapticon.app.sync.ChatHost
+import org.hapticon.app.sync.ReachableService
 
-/** Holds the app's long-lived objects; tests replace them through [container]. */
-class HapticonApplication : Application() {
+/**
+ * Holds the app's long-lived objects; tests replace them through [container]. As the [ChatHost] it hands the
+ * chat's notification actions and services the chat component and the activity to open, so they need not
+ * import this package.
+ */
+class HapticonApplication : Application(), ChatHost {
     lateinit var container: AppContainer
+
+    override val chat: ChatComponent? get() = container.chat
+    override val launchActivity: Class<out Activity> get() = MainActivity::class.java
 
     override fun onCreate() {
         super.onCreate()
@@ -37,71 +31,8 @@ class HapticonApplication : Application() {
         container.chat?.sync?.start()
         // "Stay reachable" was on when the app last ran: keep the promise from the first start.
         if (container.chat?.settings?.preferences?.value?.stayReachable == true) {
-            runCatching { org.hapticon.app.sync.ReachableService.start(this) }
+            runCatching { ReachableService.start(this) }
                 .onFailure { android.util.Log.w("HapticonApplication", "cannot start Stay reachable now: ${it.message}") }
-        }
-    }
-}
-
-/**
- * The app's dependencies, built once per process (manual injection: small app, no framework).
- *
- * The sensor side is one live connection ([sensorHub]) shared by the Sensors screen, the FSR grain
- * mode ([grainEngine]) and the glove screens ([glove]), which all listen to the same stream.
- */
-class AppContainer(
-    val iconRepository: IconRepository,
-    val player: HapticPlayer,
-    val vibration: VibrationOutput,
-    val usbDevices: UsbDevices,
-    val sensorHub: SensorSession,
-    val grainEngine: GrainEngine,
-    val glove: HubGloveSource,
-    val calibrations: CalibrationStore,
-    /** Makes the simulated partner of the handshake screen's toggle. */
-    val simulatedPartner: () -> PartnerHand = { SimulatedPartner() },
-    /** Chat: Room storage, settings, the background sync and adaptive playback; null in containers built without it. */
-    val chat: ChatComponent? = null,
-    /** The user-study mode: protocols, sessions, masking noise, export; null in containers built without it. */
-    val study: StudyComponent? = null,
-    /** Gesture recording, recognition and their files; null in containers built without it. */
-    val gestures: GestureComponent? = null,
-    /** The user's haptic patterns (imported AHAP / `.haptic` / pattern JSON); null in containers built without it. */
-    val patterns: org.hapticon.app.data.RoomPatternRepository? = null,
-) {
-    /** A pattern file shared to or opened with Hapticon, waiting for the Icons screen to import it. */
-    val pendingPatternFile: kotlinx.coroutines.flow.MutableStateFlow<android.net.Uri?> = kotlinx.coroutines.flow.MutableStateFlow(null)
-
-    companion object {
-        /** The production graph, with [usbDevices] and [vibration] replaceable for tests. */
-        fun create(
-            context: Context,
-            usbDevices: UsbDevices = AndroidUsbDevices(context),
-            vibration: VibrationOutput = VibratorVibrationOutput.create(context),
-            calibrations: CalibrationStore = SharedPreferencesCalibrationStore(context),
-        ): AppContainer {
-            val hub = SensorSession(usbDevices)
-            val grains = GrainEngine(vibration).also { hub.addFrameListener(it) }
-            // One database for chat and study: two Room instances on one file would not see each other's writes.
-            val db = HapticonDatabase.create(context)
-            val chat = ChatComponent.create(context, db = db)
-            return AppContainer(
-                // One icon list and one player for every screen: the presets plus the user's own icons,
-                // played with the best renderer this phone has.
-                iconRepository = chat.icons,
-                player = chat.player,
-                vibration = vibration,
-                usbDevices = usbDevices,
-                sensorHub = hub,
-                grainEngine = grains,
-                glove = HubGloveSource(hub),
-                calibrations = calibrations,
-                chat = chat,
-                study = StudyComponent.create(context, db),
-                gestures = GestureComponent.create(context, hub) { grains.currentConfig },
-                // The chat's pattern store: the Icons tab and the composer see the same patterns.
-                patterns = chat.patterns,
-            )
         }
     }
 }

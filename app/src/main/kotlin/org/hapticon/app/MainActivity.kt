@@ -10,6 +10,7 @@ import androidx.compose.runtime.getValue
 import androidx.compose.runtime.mutableStateOf
 import androidx.compose.runtime.setValue
 import org.hapticon.app.designsystem.HapticonTheme
+import org.hapticon.app.di.AppContainer
 import org.hapticon.app.navigation.HapticonApp
 import org.hapticon.app.navigation.TopLevelDestination
 import org.hapticon.app.sync.MessageNotifier

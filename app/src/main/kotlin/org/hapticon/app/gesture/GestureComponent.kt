@@ -14,7 +14,7 @@ enum class GestureSourceKind(val label: String) {
 }
 
 /**
- * Everything the Gestures destination needs, built once in the [org.hapticon.app.AppContainer]: one
+ * Everything the Gestures destination needs, built once in the [org.hapticon.app.di.AppContainer]: one
  * instance of each [GestureSource] (the touch pad and the recorder share the touch source), the
  * recording files and the personal model file.
  */

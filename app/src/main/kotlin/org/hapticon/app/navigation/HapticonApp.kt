@@ -12,7 +12,7 @@ import androidx.compose.material3.Text
 import androidx.compose.runtime.Composable
 import androidx.compose.runtime.saveable.rememberSaveableStateHolder
 import androidx.compose.ui.Modifier
-import org.hapticon.app.AppContainer
+import org.hapticon.app.di.AppContainer
 import org.hapticon.app.feature.chat.ChatsRoute
 import org.hapticon.app.feature.gesture.GesturesRoute
 import org.hapticon.app.feature.icons.IconsRoute

@@ -3,7 +3,7 @@ package org.hapticon.app.study
 import android.content.Context
 import java.io.File
 
-/** Everything the user-study feature needs, built once in the [org.hapticon.app.AppContainer]. */
+/** Everything the user-study feature needs, built once in the [org.hapticon.app.di.AppContainer]. */
 class StudyComponent(
     val repository: StudyRepository,
     val settings: StudySettingsRepository,

@@ -28,7 +28,13 @@ import org.hapticon.messaging.BrokerAddress
 import org.hapticon.messaging.mqtt.MqttMessenger
 import org.hapticon.messaging.mqtt.MqttSettings
 
-/** Everything the chat feature needs, built once in the [org.hapticon.app.AppContainer]. */
+/**
+ * Asks a broker whether [user] can connect; null when it can, else a one-line reason. The chat screens' view
+ * models take it; [ChatComponent] makes it from the sync's settings.
+ */
+typealias BrokerProbe = suspend (user: String, broker: BrokerAddress, password: String?) -> String?
+
+/** Everything the chat feature needs, built once in the [org.hapticon.app.di.AppContainer]. */
 class ChatComponent(
     val repository: ChatRepository,
     val icons: RoomIconRepository,
@@ -37,7 +43,7 @@ class ChatComponent(
     val player: AdaptiveHapticPlayer,
     private val detectDevice: () -> DeviceCapabilities,
     /** Tests a broker before first launch saves it; null when it answered, else the reason. */
-    val probe: org.hapticon.app.feature.chat.BrokerProbe = { _, _, _ -> null },
+    val probe: BrokerProbe = { _, _, _ -> null },
     /** Posts arriving messages as notifications; null where there is none (some tests). */
     val notifier: MessageNotifier? = null,
     /** Accepts a peer's changed end-to-end key for the current user; false when none is waiting. */
@@ -98,7 +104,7 @@ class ChatComponent(
             sync.onIncoming = { message, _ -> notifier.show(message) }
             // Lives as long as the process, like the sync it nudges.
             NetworkWatcher(context, sync).start()
-            val probe: org.hapticon.app.feature.chat.BrokerProbe = { user, broker, password -> probeBroker(settings, sync, user, broker, password) }
+            val probe: BrokerProbe = { user, broker, password -> probeBroker(settings, sync, user, broker, password) }
             val trustKey = { peer: String ->
                 val user = settings.preferences.value.userName
                 (user != null && keys.trust(user, peer)).also { trusted -> if (trusted) sync.keyTrusted(peer) }

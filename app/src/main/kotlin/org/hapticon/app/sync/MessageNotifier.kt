@@ -19,8 +19,6 @@ import kotlinx.coroutines.CoroutineScope
 import kotlinx.coroutines.Dispatchers
 import kotlinx.coroutines.SupervisorJob
 import kotlinx.coroutines.launch
-import org.hapticon.app.HapticonApplication
-import org.hapticon.app.MainActivity
 import org.hapticon.app.playback.playOffMain
 import org.hapticon.app.R
 import org.hapticon.messaging.ChatMessage
@@ -112,7 +110,7 @@ class MessageNotifier(private val context: Context, private val selfName: () -> 
 
     private fun openIntent(peer: String): PendingIntent = PendingIntent.getActivity(
         context, peer.hashCode(),
-        Intent(context, MainActivity::class.java).setAction(ACTION_OPEN_CHAT).putExtra(EXTRA_PEER, peer)
+        Intent(context, context.chatHost.launchActivity).setAction(ACTION_OPEN_CHAT).putExtra(EXTRA_PEER, peer)
             .addFlags(Intent.FLAG_ACTIVITY_SINGLE_TOP),
         PendingIntent.FLAG_UPDATE_CURRENT or PendingIntent.FLAG_IMMUTABLE,
     )
@@ -179,7 +177,7 @@ class MessageNotifier(private val context: Context, private val selfName: () -> 
  */
 class NotificationActionReceiver : BroadcastReceiver() {
     override fun onReceive(context: Context, intent: Intent) {
-        val chat = (context.applicationContext as HapticonApplication).container.chat ?: return
+        val chat = context.chatHost.chat ?: return
         val peer = intent.getStringExtra(MessageNotifier.EXTRA_PEER) ?: return
         val pending = goAsync()
         CoroutineScope(SupervisorJob() + Dispatchers.Default).launch {

@@ -20,8 +20,6 @@ import kotlinx.coroutines.SupervisorJob
 import kotlinx.coroutines.cancel
 import kotlinx.coroutines.flow.combine
 import kotlinx.coroutines.launch
-import org.hapticon.app.HapticonApplication
-import org.hapticon.app.MainActivity
 import org.hapticon.app.R
 import org.hapticon.messaging.ConnectionState
 
@@ -45,7 +43,7 @@ class ReachableService : Service() {
     override fun onCreate() {
         super.onCreate()
         ensureChannel(this)
-        val chat = (application as HapticonApplication).container.chat
+        val chat = chatHost.chat
         startInForeground(notification(this, chat?.settings?.preferences?.value?.brokerUrl.orEmpty(), ConnectionState.Disconnected))
         if (chat == null) return
         chat.sync.start()
@@ -105,7 +103,7 @@ class ReachableService : Service() {
 
         private fun notification(context: Context, broker: String, state: ConnectionState): android.app.Notification {
             val open = PendingIntent.getActivity(
-                context, 0, Intent(context, MainActivity::class.java), PendingIntent.FLAG_IMMUTABLE,
+                context, 0, Intent(context, context.chatHost.launchActivity), PendingIntent.FLAG_IMMUTABLE,
             )
             return NotificationCompat.Builder(context, CHANNEL)
                 .setSmallIcon(R.drawable.ic_notification)
@@ -124,7 +122,7 @@ class ReachableService : Service() {
 class BootReceiver : BroadcastReceiver() {
     override fun onReceive(context: Context, intent: Intent) {
         if (intent.action != Intent.ACTION_BOOT_COMPLETED) return
-        val prefs = (context.applicationContext as HapticonApplication).container.chat?.settings?.preferences?.value ?: return
+        val prefs = context.chatHost.chat?.settings?.preferences?.value ?: return
         if (prefs.stayReachable && prefs.reachableAfterBoot) ReachableService.start(context)
     }
 }

@@ -2,16 +2,9 @@ package org.hapticon.messaging.mqtt
 
 import org.hapticon.messaging.BrokerAddress
 import com.hivemq.client.mqtt.MqttClient
-import com.hivemq.client.mqtt.datatypes.MqttQos
 import com.hivemq.client.mqtt.mqtt3.Mqtt3AsyncClient
 import com.hivemq.client.mqtt.mqtt3.exceptions.Mqtt3ConnAckException
-import com.hivemq.client.mqtt.mqtt3.message.connect.connack.Mqtt3ConnAckReturnCode
-import kotlinx.coroutines.runBlocking
-import org.hapticon.messaging.ChatMessage
 import org.hapticon.messaging.CollectingListener
-import org.hapticon.messaging.InboxEvent
-import org.hapticon.messaging.MessageCodec
-import org.hapticon.messaging.RejectionReason
 import org.hapticon.messaging.Topics
 import org.hapticon.messaging.broker.CertificateAuthority
 import org.junit.After
@@ -27,9 +20,6 @@ import java.io.File
 import java.security.KeyStore
 import java.time.Duration
 import java.time.Instant
-import java.util.concurrent.ExecutionException
-import java.util.concurrent.LinkedBlockingQueue
-import java.util.concurrent.TimeUnit
 import javax.net.ssl.KeyManagerFactory
 
 /**
@@ -58,14 +48,10 @@ abstract class ClientCertificateContract {
     /** True when the broker refuses a client id that is not the certificate's user; Mosquitto replaces it. */
     protected abstract val refusesForeignClientIds: Boolean
 
-    private val messengers = mutableListOf<MqttMessenger>()
-    private val rawClients = mutableListOf<Mqtt3AsyncClient>()
+    private val clients = TestClients()
 
     @After
-    fun disconnectCertificateClients() {
-        runBlocking { messengers.forEach { it.disconnect() } }
-        rawClients.forEach { runCatching { it.disconnect().get(5, TimeUnit.SECONDS) } }
-    }
+    fun disconnectCertificateClients() = clients.close()
 
     protected fun p12(user: String, by: CertificateAuthority = ca, now: Instant = Instant.now(), validity: Duration = Duration.ofDays(30)): ByteArray =
         by.issueClient(user, PASSWORD.toCharArray(), validity, now)
@@ -76,7 +62,7 @@ abstract class ClientCertificateContract {
             clientCertificate = ClientCertificate.fromPkcs12(p12(user), PASSWORD.toCharArray()),
             trustedCertificates = listOf(ca.certificate),
         )
-        return MqttMessenger(settings).also { messengers += it; runBlocking { it.connect(listener) } }
+        return clients.messenger(settings, listener)
     }
 
     /**
@@ -92,14 +78,11 @@ abstract class ClientCertificateContract {
         }
         var builder = ssl.applySslConfig()
         if (user != null) builder = builder.simpleAuth().username(user).password(password!!.toByteArray()).applySimpleAuth()
-        val client = builder.buildAsync()
-        rawClients += client
-        try {
-            client.connectWith().cleanSession(false).send().get(20, TimeUnit.SECONDS)
-        } catch (e: ExecutionException) {
-            throw e.cause!!
-        }
-        return client
+        return clients.raw(builder)
+    }
+
+    private val attacks by lazy {
+        ThirdUserAttacks(alice, bob, mallory, ::connected, { clientId -> raw(clientId, p12(mallory)) }, refusesForeignClientIds)
     }
 
     /** What [connect] threw; fails when it connected. */
@@ -143,63 +126,14 @@ abstract class ClientCertificateContract {
     }
 
     @Test
-    fun certificateUsers_exchangeMessages_andAThirdReadsNothingOfBobs() {
-        val received = LinkedBlockingQueue<String>()
-        val eavesdropper = raw(mallory, p12(mallory))
-        for (filter in listOf("#", "hapticon/#", Topics.inboxFilter(bob), Topics.inboxFilter(mallory))) {
-            runCatching {
-                eavesdropper.subscribeWith().topicFilter(filter).qos(MqttQos.AT_LEAST_ONCE)
-                    .callback { received.put(it.topic.toString()) }.send().get(20, TimeUnit.SECONDS)
-            }
-        }
-        val bobInbox = CollectingListener()
-        connected(bob, bobInbox)
-        val aliceMessenger = connected(alice)
-        val secret = ChatMessage.compose(alice, "for bob only")
-        runBlocking {
-            aliceMessenger.send(bob, secret)
-            aliceMessenger.send(mallory, ChatMessage.compose(alice, "for mallory"))
-        }
-        assertEquals(InboxEvent.MessageReceived(secret), bobInbox.awaitEvent())
-        assertEquals(Topics.inbox(mallory, alice), received.poll(CollectingListener.WAIT_SECONDS, TimeUnit.SECONDS))
-        Thread.sleep(300)
-        assertEquals(emptyList<String>(), received.filter { it.contains("/$bob") })
-    }
+    fun certificateUsers_exchangeMessages_andAThirdReadsNothingOfBobs() =
+        attacks.eavesdropping_receivesNothingOfBobs(listOf("#", "hapticon/#", Topics.inboxFilter(bob), Topics.inboxFilter(mallory)))
 
     @Test
-    fun certificateUser_publishingAsAlice_isNeverShownAsAlice() {
-        val bobInbox = CollectingListener()
-        connected(bob, bobInbox)
-        val forger = raw(mallory, p12(mallory))
-        val forged = ChatMessage.compose(alice, "I am alice")
-        for (topic in listOf(Topics.inbox(bob, mallory), Topics.inbox(bob, alice))) {
-            runCatching { forger.publishWith().topic(topic).qos(MqttQos.AT_LEAST_ONCE).payload(MessageCodec.encode(forged)).send().get(10, TimeUnit.SECONDS) }
-        }
-        val genuine = ChatMessage.compose(alice, "the real alice")
-        runBlocking { connected(alice).send(bob, genuine) }
-        val events = bobInbox.awaitEvents(2)
-        val rejection = (events[0] as InboxEvent.Rejected).rejection
-        assertEquals(RejectionReason.INVALID_VALUE to "sender", rejection.reason to rejection.field)
-        assertEquals(InboxEvent.MessageReceived(genuine), events[1])
-    }
+    fun certificateUser_publishingAsAlice_isNeverShownAsAlice() = attacks.forgingAlice_isNeverShownAsAlice()
 
     @Test
-    fun certificateUser_withBobsClientId_cannotTakeBobsSession() {
-        connected(bob).let { runBlocking { it.disconnect() } }
-        val queued = List(2) { ChatMessage.compose(alice, "queued $it") }
-        val aliceMessenger = connected(alice)
-        runBlocking { queued.forEach { aliceMessenger.send(bob, it) } }
-        val code = try {
-            raw(bob, p12(mallory)).subscribeWith().topicFilter("#").send().get(10, TimeUnit.SECONDS)
-            null
-        } catch (e: Mqtt3ConnAckException) {
-            e.mqttMessage.returnCode
-        }
-        if (refusesForeignClientIds) assertEquals(Mqtt3ConnAckReturnCode.IDENTIFIER_REJECTED, code) else assertEquals(null, code)
-        val bobInbox = CollectingListener()
-        connected(bob, bobInbox)
-        assertEquals(queued.map { InboxEvent.MessageReceived(it) }, bobInbox.awaitEvents(2))
-    }
+    fun certificateUser_withBobsClientId_cannotTakeBobsSession() = attacks.bobsClientId_cannotTakeBobsSession()
 
     @Test
     fun settings_refuseACertificateOfAnotherUser() {

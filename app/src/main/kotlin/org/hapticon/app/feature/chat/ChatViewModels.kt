@@ -26,6 +26,7 @@ import org.hapticon.app.playback.playMessageOffMain
 import org.hapticon.app.playback.playOffMain
 import org.hapticon.app.playback.PeerPitch
 import org.hapticon.app.playback.RendererChoice
+import org.hapticon.app.sync.BrokerProbe
 import org.hapticon.core.HapticIcon
 import org.hapticon.core.pattern.HapticPattern
 import org.hapticon.core.pattern.toPattern
@@ -49,9 +50,6 @@ sealed interface ChatListUiState {
         val archived: Set<String> = emptySet(),
     ) : ChatListUiState
 }
-
-/** Asks a broker whether [user] can connect; null when it can, else a one-line reason. */
-typealias BrokerProbe = suspend (user: String, broker: BrokerAddress, password: String?) -> String?
 
 class ChatListViewModel(
     private val repository: ChatRepository,

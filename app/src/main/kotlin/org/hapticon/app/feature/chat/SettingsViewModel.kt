@@ -17,6 +17,7 @@ import org.hapticon.app.data.ChatPreferences
 import org.hapticon.app.data.ChatSettingsRepository
 import org.hapticon.app.data.ClientCertificateRepository
 import org.hapticon.app.data.ClientCertificateStatus
+import org.hapticon.app.sync.BrokerProbe
 import org.hapticon.messaging.ConnectionState
 import org.hapticon.messaging.RendererKind
 import org.hapticon.messaging.Topics

@@ -22,7 +22,7 @@ import androidx.compose.ui.unit.dp
 import androidx.lifecycle.viewmodel.compose.viewModel
 import androidx.lifecycle.viewmodel.initializer
 import androidx.lifecycle.viewmodel.viewModelFactory
-import org.hapticon.app.AppContainer
+import org.hapticon.app.di.AppContainer
 import java.io.FileNotFoundException
 
 /** The Gestures destination's parts, in tab order. */

@@ -42,7 +42,7 @@ import androidx.lifecycle.viewmodel.compose.viewModel
 import androidx.lifecycle.viewmodel.initializer
 import androidx.lifecycle.viewmodel.viewModelFactory
 import java.util.Locale
-import org.hapticon.app.AppContainer
+import org.hapticon.app.di.AppContainer
 import org.hapticon.app.designsystem.HapticonIcons
 import org.hapticon.app.ui.SwitchRow
 

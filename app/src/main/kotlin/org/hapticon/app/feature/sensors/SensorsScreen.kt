@@ -38,7 +38,7 @@ import androidx.lifecycle.viewmodel.compose.viewModel
 import androidx.lifecycle.viewmodel.initializer
 import androidx.lifecycle.viewmodel.viewModelFactory
 import java.io.File
-import org.hapticon.app.AppContainer
+import org.hapticon.app.di.AppContainer
 import org.hapticon.app.designsystem.HapticonIcons
 import org.hapticon.app.feature.glove.CalibrationRoute
 import org.hapticon.app.feature.glove.HandshakeRoute

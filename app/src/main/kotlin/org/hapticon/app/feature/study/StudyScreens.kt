@@ -57,7 +57,7 @@ import androidx.lifecycle.compose.collectAsStateWithLifecycle
 import androidx.lifecycle.viewmodel.compose.viewModel
 import androidx.lifecycle.viewmodel.initializer
 import androidx.lifecycle.viewmodel.viewModelFactory
-import org.hapticon.app.AppContainer
+import org.hapticon.app.di.AppContainer
 import org.hapticon.app.designsystem.HapticonIcons
 import org.hapticon.app.feature.chat.Sticker
 import org.hapticon.app.feature.sensors.ElectrodeLevelsStore

@@ -1,9 +1,5 @@
 package org.hapticon.app.feature.chat
 
-import android.content.Context
-import android.os.Vibrator
-import androidx.compose.runtime.collectAsState
-import androidx.compose.runtime.getValue
 import androidx.compose.ui.semantics.SemanticsProperties
 import androidx.compose.ui.test.hasContentDescription
 import androidx.compose.ui.test.hasSetTextAction
@@ -16,28 +12,22 @@ import androidx.compose.ui.test.performScrollToKey
 import androidx.compose.ui.test.performTextInput
 import androidx.compose.ui.test.performTouchInput
 import androidx.room.Room
-import androidx.test.core.app.ApplicationProvider
 import kotlin.coroutines.EmptyCoroutineContext
 import kotlinx.coroutines.CoroutineScope
 import kotlinx.coroutines.Dispatchers
 import kotlinx.coroutines.SupervisorJob
 import kotlinx.coroutines.cancelAndJoin
 import kotlinx.coroutines.flow.Flow
-import kotlinx.coroutines.flow.MutableStateFlow
 import kotlinx.coroutines.flow.first
 import kotlinx.coroutines.flow.map
 import kotlinx.coroutines.runBlocking
 import kotlinx.coroutines.withTimeout
 import org.hapticon.app.data.ChatPreferences
 import org.hapticon.app.data.InMemoryChatSettings
-import org.hapticon.app.data.OfflineFirstChatRepository
-import org.hapticon.app.data.RoomIconRepository
 import org.hapticon.app.data.RoomPatternRepository
-import org.hapticon.app.data.database.HapticonDatabase
 import org.hapticon.app.data.database.MessageState
 import org.hapticon.app.data.database.patternFromJson
 import org.hapticon.app.playback.AdaptiveHapticPlayer
-import org.hapticon.app.playback.DeviceCapabilities
 import org.hapticon.app.playback.RecordedVibration
 import org.hapticon.app.playback.RendererChoice
 import org.hapticon.app.playback.lastVibration
@@ -46,7 +36,6 @@ import org.hapticon.app.sync.TestMessenger
 import org.hapticon.core.pattern.AmplitudeKey
 import org.hapticon.core.pattern.FrequencyKey
 import org.hapticon.core.pattern.HapticPattern
-import org.hapticon.messaging.Capabilities
 import org.hapticon.messaging.ChatMessage
 import org.hapticon.messaging.Clock
 import org.hapticon.messaging.ConnectionState
@@ -75,12 +64,12 @@ class ComposerPatternSendTest {
     @get:Rule
     val compose = createComposeRule()
 
-    private val context = ApplicationProvider.getApplicationContext<Context>()
-    private val vibrator = context.getSystemService(Vibrator::class.java)
-    private val now = 1_767_225_600_000L
+    private val fixture = ComposerFixture(compose, allowMainThreadQueries = false)
+    private val vibrator = fixture.vibrator
+    private val now = fixture.now
     private val scope = CoroutineScope(SupervisorJob() + Dispatchers.Default)
-    private lateinit var db: HapticonDatabase
-    private lateinit var repository: OfflineFirstChatRepository
+    private val db = fixture.db
+    private val repository = fixture.repository
     private lateinit var messenger: TestMessenger
     private lateinit var sync: ChatSync
 
@@ -93,13 +82,9 @@ class ComposerPatternSendTest {
 
     @Before
     fun setUp() {
-        shadowOf(vibrator).setHasAmplitudeControl(true)
-        db = Room.inMemoryDatabaseBuilder(context, HapticonDatabase::class.java).build()
-        repository = OfflineFirstChatRepository(db, clock = { now })
         val patterns = RoomPatternRepository(db.patternDao(), clock = { now })
         runBlocking { patterns.save(ramp, source = "ramp.ahap") }
-        val device = DeviceCapabilities(hasVibrator = true, hasAmplitudeControl = true, apiLevel = 35)
-        val player = AdaptiveHapticPlayer(vibrator, { device }, { null })
+        val device = fixture.device
         messenger = TestMessenger("alice")
         sync = ChatSync(
             repository, repository, InMemoryChatSettings(ChatPreferences(userName = "alice")), { _, _, _ -> messenger },
@@ -108,23 +93,7 @@ class ComposerPatternSendTest {
             clock = { now },
         )
         sync.start()
-        val viewModel = ConversationViewModel(
-            "bob", { "alice" }, repository, RoomIconRepository(db.iconDao()), player,
-            MutableStateFlow<Map<String, Capabilities>>(emptyMap()), sync::wake,
-            patterns = patterns.patterns().map { stored -> stored.map { it.pattern } },
-        )
-        compose.setContent {
-            val state by viewModel.uiState.collectAsState()
-            ConversationScreen(
-                state,
-                ConversationActions(
-                    onSend = { viewModel.send(it) }, onSelectIcon = viewModel::selectIcon, onSelectSticker = viewModel::selectSticker,
-                    onPreview = viewModel::play, onFeel = viewModel::feel,
-                    onSelectPattern = viewModel::selectPattern, onPreviewPattern = viewModel::play,
-                ),
-            )
-        }
-        compose.waitUntil(5_000) { compose.onAllNodes(hasSetTextAction()).fetchSemanticsNodes().isNotEmpty() }
+        fixture.show(onSent = sync::wake, patterns = patterns.patterns().map { stored -> stored.map { it.pattern } })
         // The patterns come after the four presets, beyond a 400 dp screen's edge: scroll there as a user would.
         compose.waitUntil(5_000) {
             runCatching { compose.onNodeWithTag(COMPOSER_ICONS_TAG).performScrollToKey("pattern:ramp") }.isSuccess
@@ -135,7 +104,7 @@ class ComposerPatternSendTest {
     fun tearDown() {
         // Stop the sync before closing the database it writes to.
         runBlocking { scope.coroutineContext[kotlinx.coroutines.Job]!!.cancelAndJoin() }
-        db.close()
+        fixture.close()
     }
 
     private fun <T> await(flow: Flow<T>, predicate: (T) -> Boolean): T = runBlocking { withTimeout(5_000) { flow.first(predicate) } }

@@ -1,13 +1,8 @@
 package org.hapticon.app.feature.chat
 
-import android.content.Context
-import android.os.Vibrator
-import androidx.compose.runtime.collectAsState
-import androidx.compose.runtime.getValue
 import androidx.compose.ui.test.hasSetTextAction
 import androidx.compose.ui.test.junit4.createComposeRule
 import androidx.compose.ui.test.onNodeWithContentDescription
-import androidx.compose.ui.test.onNodeWithText
 import androidx.compose.ui.test.performClick
 import androidx.compose.ui.test.performTextInput
 import androidx.compose.ui.test.performTouchInput
@@ -17,20 +12,11 @@ import androidx.compose.ui.test.assert
 import androidx.compose.ui.test.SemanticsNodeInteraction
 import androidx.compose.ui.semantics.SemanticsProperties
 import androidx.room.Room
-import androidx.test.core.app.ApplicationProvider
-import kotlinx.coroutines.flow.MutableStateFlow
-import kotlinx.coroutines.flow.first
 import kotlinx.coroutines.runBlocking
-import org.hapticon.app.data.OfflineFirstChatRepository
-import org.hapticon.app.data.RoomIconRepository
-import org.hapticon.app.data.database.HapticonDatabase
 import org.hapticon.app.data.database.MessageState
-import org.hapticon.app.playback.AdaptiveHapticPlayer
-import org.hapticon.app.playback.DeviceCapabilities
 import org.hapticon.app.playback.RecordedVibration
 import org.hapticon.app.playback.lastVibration
 import org.hapticon.core.HapticIcon
-import org.hapticon.messaging.Capabilities
 import org.junit.After
 import org.junit.Assert.assertEquals
 import org.junit.Before
@@ -51,47 +37,24 @@ class ComposerSendTest {
     @get:Rule
     val compose = createComposeRule()
 
-    private val context = ApplicationProvider.getApplicationContext<Context>()
-    private val vibrator = context.getSystemService(Vibrator::class.java)
-    private lateinit var db: HapticonDatabase
-    private lateinit var repository: OfflineFirstChatRepository
+    private val fixture = ComposerFixture(compose)
     @Volatile private var wakes = 0
 
     @Before
-    fun setUp() {
-        shadowOf(vibrator).setHasAmplitudeControl(true)
-        db = Room.inMemoryDatabaseBuilder(context, HapticonDatabase::class.java).allowMainThreadQueries().build()
-        repository = OfflineFirstChatRepository(db, clock = { 1_767_225_600_000 })
-        val viewModel = ConversationViewModel(
-            "bob", { "alice" }, repository, RoomIconRepository(db.iconDao()),
-            AdaptiveHapticPlayer(vibrator, { DeviceCapabilities(true, true, 35) }, { null }),
-            MutableStateFlow<Map<String, Capabilities>>(emptyMap()), { wakes++ },
-        )
-        compose.setContent {
-            val state by viewModel.uiState.collectAsState()
-            ConversationScreen(
-                state,
-                ConversationActions(
-                    onSend = { viewModel.send(it) }, onSelectIcon = viewModel::selectIcon, onSelectSticker = viewModel::selectSticker,
-                    onPreview = viewModel::play, onFeel = viewModel::feel,
-                ),
-            )
-        }
-        compose.waitUntil(5_000) { compose.onAllNodes(hasSetTextAction()).fetchSemanticsNodes().isNotEmpty() }
-    }
+    fun setUp() = fixture.show(onSent = { wakes++ })
 
     @After
-    fun tearDown() = db.close()
+    fun tearDown() = fixture.close()
 
-    private fun stored() = runBlocking { repository.messages("bob").first() }
+    private fun stored() = fixture.stored()
 
     @Test
     fun textWithIcon_longPressPreviewsTapChoosesAndSendStoresBothAndQueuesIt() {
         compose.onNodeWithContentDescription("Icon knock").performTouchInput { longClick() }
-        compose.waitUntil(5_000) { lastVibration(vibrator) != null } // rendered off the main thread, then played
+        compose.waitUntil(5_000) { lastVibration(fixture.vibrator) != null } // rendered off the main thread, then played
         // A long press previews: the knock went to the vibrator, and nothing was chosen.
         // The processing knock (the default model): 10 ms at 175, 10 ms at 111, then 250 ms off, three times.
-        assertEquals(RecordedVibration(listOf(10L, 10L, 250L, 10L, 10L, 250L, 10L, 10L), listOf(175, 111, 0, 175, 111, 0, 175, 111)), lastVibration(vibrator))
+        assertEquals(RecordedVibration(listOf(10L, 10L, 250L, 10L, 10L, 250L, 10L, 10L), listOf(175, 111, 0, 175, 111, 0, 175, 111)), lastVibration(fixture.vibrator))
         compose.onNodeWithContentDescription("Icon knock").assertStateDescription("not selected")
         compose.onNodeWithContentDescription("Icon knock").performClick()
         compose.onNodeWithContentDescription("Icon knock").assertStateDescription("selected")
@@ -104,7 +67,7 @@ class ComposerSendTest {
         assertEquals(HapticIcon.KNOCK, message.icon)
         assertEquals(null, message.sticker)
         assertEquals(MessageState.SENDING, message.state)
-        assertEquals(listOf(message.id), runBlocking { db.outboxDao().pending() }.map { it.messageId })
+        assertEquals(listOf(message.id), runBlocking { fixture.db.outboxDao().pending() }.map { it.messageId })
         // The outbox sender is woken once the message is stored.
         compose.waitUntil(5_000) {
             // The ViewModel resumes on the main looper once Room's transaction is done.

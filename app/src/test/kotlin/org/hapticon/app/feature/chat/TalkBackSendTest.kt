@@ -1,9 +1,5 @@
 package org.hapticon.app.feature.chat
 
-import android.content.Context
-import android.os.Vibrator
-import androidx.compose.runtime.collectAsState
-import androidx.compose.runtime.getValue
 import androidx.compose.ui.semantics.Role
 import androidx.compose.ui.semantics.SemanticsActions
 import androidx.compose.ui.semantics.SemanticsProperties
@@ -16,20 +12,11 @@ import androidx.compose.ui.test.junit4.createComposeRule
 import androidx.compose.ui.test.performSemanticsAction
 import androidx.compose.ui.text.AnnotatedString
 import androidx.room.Room
-import androidx.test.core.app.ApplicationProvider
-import kotlinx.coroutines.flow.MutableStateFlow
-import kotlinx.coroutines.flow.first
 import kotlinx.coroutines.runBlocking
-import org.hapticon.app.data.OfflineFirstChatRepository
-import org.hapticon.app.data.RoomIconRepository
-import org.hapticon.app.data.database.HapticonDatabase
 import org.hapticon.app.data.database.MessageState
-import org.hapticon.app.playback.AdaptiveHapticPlayer
-import org.hapticon.app.playback.DeviceCapabilities
 import org.hapticon.app.playback.lastVibration
 import org.hapticon.core.HapticIcon
 import org.hapticon.core.render.VibrationWaveform
-import org.hapticon.messaging.Capabilities
 import org.hapticon.messaging.ChatMessage
 import org.junit.After
 import org.junit.Assert.assertEquals
@@ -39,7 +26,6 @@ import org.junit.Rule
 import org.junit.Test
 import org.junit.runner.RunWith
 import org.robolectric.RobolectricTestRunner
-import org.robolectric.Shadows.shadowOf
 import org.robolectric.annotation.Config
 
 /**
@@ -54,40 +40,16 @@ class TalkBackSendTest {
     @get:Rule
     val compose = createComposeRule()
 
-    private val context = ApplicationProvider.getApplicationContext<Context>()
-    private val vibrator = context.getSystemService(Vibrator::class.java)
-    private lateinit var db: HapticonDatabase
-    private lateinit var repository: OfflineFirstChatRepository
+    private val fixture = ComposerFixture(compose)
     private val felt = java.util.concurrent.CopyOnWriteArrayList<Pair<String, String>>()
 
     @Before
-    fun setUp() {
-        shadowOf(vibrator).setHasAmplitudeControl(true)
-        db = Room.inMemoryDatabaseBuilder(context, HapticonDatabase::class.java).allowMainThreadQueries().build()
-        repository = OfflineFirstChatRepository(db, clock = { 1_767_225_600_000 })
-        val viewModel = ConversationViewModel(
-            "bob", { "alice" }, repository, RoomIconRepository(db.iconDao()),
-            AdaptiveHapticPlayer(vibrator, { DeviceCapabilities(true, true, 35) }, { null }),
-            MutableStateFlow<Map<String, Capabilities>>(emptyMap()), {},
-            onFelt = { peer, id -> felt += peer to id },
-        )
-        compose.setContent {
-            val state by viewModel.uiState.collectAsState()
-            ConversationScreen(
-                state,
-                ConversationActions(
-                    onSend = { viewModel.send(it) }, onSelectIcon = viewModel::selectIcon, onSelectSticker = viewModel::selectSticker,
-                    onPreview = viewModel::play, onFeel = viewModel::feel,
-                ),
-            )
-        }
-        compose.waitUntil(5_000) { compose.onAllNodes(hasSetTextAction()).fetchSemanticsNodes().isNotEmpty() }
-    }
+    fun setUp() = fixture.show(onFelt = { peer, id -> felt += peer to id })
 
     @After
-    fun tearDown() = db.close()
+    fun tearDown() = fixture.close()
 
-    private fun stored() = runBlocking { repository.messages("bob").first() }
+    private fun stored() = fixture.stored()
 
     /** The one control TalkBack reads as [description] with [role]: it must be a focusable merged node. */
     private fun control(description: String, role: Role) =
@@ -124,26 +86,26 @@ class TalkBackSendTest {
         assertEquals("feel this", message.text)
         assertEquals(HapticIcon.KNOCK, message.icon)
         assertEquals(MessageState.SENDING, message.state)
-        assertEquals(listOf(message.id), runBlocking { db.outboxDao().pending() }.map { it.messageId })
+        assertEquals(listOf(message.id), runBlocking { fixture.db.outboxDao().pending() }.map { it.messageId })
         // The composer is cleared for the next message: nothing chosen any more.
         compose.waitUntil(5_000) { control("Icon knock", Role.Button).state() == "not selected" }
         // Choosing and sending played nothing on this phone.
-        assertNull(lastVibration(vibrator))
+        assertNull(lastVibration(fixture.vibrator))
     }
 
     @Test
     fun receivedIconChip_throughItsAccessibilityAction_isFelt() {
         val hug = ChatMessage("0b7e7c1e-3f7b-4a57-9d3e-2f1c5a6b7c8d", "bob", 1_767_225_500_000, "hug", icon = HapticIcon.HUG)
-        runBlocking { repository.receive(hug) }
+        runBlocking { fixture.repository.receive(hug) }
         compose.waitUntil(5_000) {
             compose.onAllNodes(hasContentDescription("Play haptic icon hug")).fetchSemanticsNodes().isNotEmpty()
         }
-        assertNull(lastVibration(vibrator))
+        assertNull(lastVibration(fixture.vibrator))
 
         control("Play haptic icon hug", Role.Button).performSemanticsAction(SemanticsActions.OnClick)
-        compose.waitUntil(5_000) { lastVibration(vibrator) != null }
+        compose.waitUntil(5_000) { lastVibration(fixture.vibrator) != null }
         // The hug's own step waveform, as the player renders it for an amplitude-controlled vibrator.
-        assertEquals(VibrationWaveform.render(HapticIcon.HUG).timings().toList(), lastVibration(vibrator)!!.timings)
+        assertEquals(VibrationWaveform.render(HapticIcon.HUG).timings().toList(), lastVibration(fixture.vibrator)!!.timings)
         // And bob is told it was felt (the felt receipt the sync sends).
         assertEquals(listOf("bob" to hug.id), felt.toList())
     }

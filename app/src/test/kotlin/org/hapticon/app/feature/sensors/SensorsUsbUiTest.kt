@@ -16,7 +16,7 @@ import androidx.compose.ui.test.performClick
 import androidx.compose.ui.test.performScrollToNode
 import androidx.test.core.app.ApplicationProvider
 import androidx.test.platform.app.InstrumentationRegistry
-import org.hapticon.app.AppContainer
+import org.hapticon.app.di.AppContainer
 import org.hapticon.app.HapticonApplication
 import org.hapticon.app.MainActivity
 import org.hapticon.app.sensors.AndroidTestDevices
