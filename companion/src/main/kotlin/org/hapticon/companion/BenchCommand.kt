@@ -6,13 +6,24 @@ import org.hapticon.companion.cli.UsageException
 import org.hapticon.companion.bench.BenchConfig
 import org.hapticon.companion.bench.BenchReport
 import org.hapticon.companion.bench.Benchmark
+import org.hapticon.companion.bench.GrainLatency
 import org.hapticon.companion.chat.runMessagingBench
 import org.hapticon.companion.study.AnalysisBench
 
-/** `hapticon bench [--json] [--quick] [--messaging | --analysis]`: measurements to stdout, progress to stderr. */
+/**
+ * `hapticon bench [--json] [--quick] [--messaging | --analysis | --grain [--runs N] [--interval-us N] [--spin-us N]]`:
+ * measurements to stdout, progress to stderr.
+ */
 fun runBench(args: List<String>, console: Console) {
-    val arguments = Arguments.parse("bench", args, flagOptions = setOf("json", "quick", "messaging", "analysis"))
+    val arguments = Arguments.parse(
+        "bench", args,
+        valueOptions = setOf("runs", "interval-us", "spin-us"),
+        flagOptions = setOf("json", "quick", "messaging", "analysis", "grain"),
+    )
     arguments.requireNoPositionals()
+    val grainOptions = listOf("runs", "interval-us", "spin-us").filter { arguments.value(it) != null }
+    if (!arguments.flag("grain") && grainOptions.isNotEmpty()) throw UsageException("--${grainOptions[0]} goes with --grain")
+    if (arguments.flag("grain")) return runGrainBench(arguments, console)
     if (arguments.flag("analysis")) {
         if (arguments.flag("json")) throw UsageException("bench --analysis prints a table only; leave out --json")
         val config = if (arguments.flag("quick")) AnalysisBench.Config.QUICK else AnalysisBench.Config.FULL
@@ -24,3 +35,40 @@ fun runBench(args: List<String>, console: Console) {
     val result = Benchmark(config) { step -> console.err.println("bench: $step") }.run()
     console.out.println(if (arguments.flag("json")) BenchReport.json(result) else BenchReport.table(result))
 }
+
+/**
+ * `hapticon bench --grain`: only the fake-port sample-to-grain latency through `GrainEngine`, [GrainLatency]
+ * run `--runs` times (default 3) with the `uptime` load average printed beside each run, since the worst case
+ * depends on what else the machine runs. `--interval-us` paces the samples (1000 = the board's 1 kHz; default
+ * 0, back to back), `--spin-us` keeps the reader spinning that long after each sample before it blocks.
+ */
+private fun runGrainBench(arguments: Arguments, console: Console) {
+    if (arguments.flag("json") || arguments.flag("messaging") || arguments.flag("analysis")) {
+        throw UsageException("bench --grain prints its lines only; leave out --json, --messaging and --analysis")
+    }
+    val runs = arguments.int("runs", 3)
+    val interval = arguments.int("interval-us", 0)
+    val spin = arguments.int("spin-us", 0)
+    if (runs !in 1..100) throw UsageException("--runs must be in 1..100, got $runs")
+    if (interval !in 0..100_000) throw UsageException("--interval-us must be in 0..100000, got $interval")
+    if (spin !in 0..100_000) throw UsageException("--spin-us must be in 0..100000, got $spin")
+    val quick = arguments.flag("quick")
+    val config = if (quick) BenchConfig.QUICK else BenchConfig.FULL
+    // Paced runs take a period per sample: 20,000 measured after 5,000 warm-up at 1 kHz is 25 s a run.
+    val samples = if (interval > 0 && !quick) PACED_SAMPLES else config.latencySamples
+    val warmup = if (interval > 0 && !quick) PACED_WARMUP_SAMPLES else config.latencyWarmupSamples
+    console.out.println("grain latency through GrainEngine, µs; samples ${if (interval > 0) "every $interval µs" else "back to back"}, reader spin $spin µs after each sample")
+    repeat(runs) { run ->
+        val load = loadAverage()
+        console.err.println("bench: grain latency run ${run + 1} of $runs")
+        val result = GrainLatency(samples, warmup, GrainLatency.Route.ENGINE, intervalMicros = interval, readerSpinMicros = spin).run()
+        console.out.println("run ${run + 1} (load $load): " + BenchReport.grainLine(result))
+    }
+}
+
+private const val PACED_SAMPLES = 20_000
+private const val PACED_WARMUP_SAMPLES = 5_000
+
+/** The 1, 5 and 15 minute load averages as `uptime` prints them, or "unknown" off Linux. */
+private fun loadAverage(): String =
+    runCatching { java.io.File("/proc/loadavg").readText().split(' ').take(3).joinToString(" / ") }.getOrDefault("unknown")

@@ -20,13 +20,16 @@ val USAGE: String = """
     |      (default 65.4:523.3, MIDI notes 36-72).
     |  hapticon plot ICON --out FILE.png [--model paper|processing] [--rate HZ]
     |      Draw ICON's envelope over its carrier waveform.
-    |  hapticon bench [--json] [--quick] [--messaging | --analysis]
+    |  hapticon bench [--json] [--quick] [--messaging | --analysis | --grain [--runs N] [--interval-us N] [--spin-us N]]
     |      Measure render speed, FAST-mode error, first-block latency and allocation, and the sensor
     |      path: decoding speed, grain and handshake cost per sample, fake-port sample-to-grain latency
     |      through GrainEngine (p50/p99/max beside the re-created arithmetic, same run);
     |      --json prints one JSON object, --quick does fewer runs (a smoke test, not a measurement);
     |      --messaging measures message encode + decode and send-to-receive latency instead;
     |      --analysis times `analyze` on synthetic results of 10k, 100k and 1M rows (growth ratio, heap).
+    |      --grain runs only the sample-to-grain latency, --runs times (3) with the load average beside
+    |      each: p50/p99/max, run-queue wait, reader CPU; --interval-us paces samples (1000 = the board's
+    |      1 kHz; default back to back), --spin-us keeps the reader spinning that long after each sample.
     |  hapticon demo --out DIR [--apk PATH]
     |      Render and plot the presets into DIR, plus envelope-models.png; report the APK if given.
     |      Also a sensor demo: a synthetic FSR press as a framed stream, decoded, and its grains; a handshake.

@@ -85,6 +85,7 @@ object BenchReport {
             "  bytes allocated per sample: %s from decoded frame to command encoded; %s on the whole reader thread (with the fake port's own)",
             allocation(latency.handlerBytesPerSample), allocation(latency.readerBytesPerSample),
         )
+        line("  reader thread CPU: %s", readerCpu(latency))
         val baseline = sensors.latencyBaseline
         line(
             "  baseline, same run (the engine's arithmetic re-created, no GrainEngine): p50 %.1f, p99 %.1f, max %.1f µs (%d grains);" +
@@ -95,6 +96,22 @@ object BenchReport {
         line("  framed sample written to a FakeSerialPort -> SensorReader thread -> FramedDecoder -> LiveFrame -> GrainEngine")
         line("  (FSR force, GrainDecider) -> its GrainSink encodes the set-outputs command, written back; one sample in flight at a time")
     }
+
+    /**
+     * One run of `bench --grain` on one line: p50, p99, max, the worst grain's run-queue wait, the worst grain
+     * without its own wait, the grains over 1 ms, allocation and the reader's CPU.
+     */
+    fun grainLine(r: GrainLatencyResult): String = String.format(
+        Locale.ROOT,
+        "p50 %.1f, p99 %.1f, max %.1f (%d grains); worst waited %.1f in the run queue%s; max without that wait %.1f;" +
+            " over 1 ms: %d (%d by run-queue wait, %d with a GC); %s bytes/sample frame to command; reader CPU %s",
+        r.p50Micros, r.p99Micros, r.maxMicros, r.grains, r.runQueueMicrosAtMax, if (r.gcAtMax) " and saw a GC" else "",
+        r.maxWithoutRunQueueMicros, r.over1ms, r.over1msByRunQueue, r.over1msWithGc, allocation(r.handlerBytesPerSample), readerCpu(r),
+    )
+
+    private fun readerCpu(r: GrainLatencyResult): String =
+        if (r.readerCpuMicrosPerSample.isNaN()) "not measured"
+        else String.format(Locale.ROOT, "%.2f µs per sample, %.1f %% of one core", r.readerCpuMicrosPerSample, r.readerCpuShare * 100)
 
     /** One JSON object with every figure; rates in samples per second, times in µs. */
     fun json(result: BenchResult): String = SchemaJson.encodeElement(jsonValue(result), "  ")
@@ -194,6 +211,8 @@ object BenchReport {
             "over1msWithGc" to shortNumber(sensors.latency.over1msWithGc),
             "handlerAllocatedBytesPerSample" to measured(sensors.latency.handlerBytesPerSample, 3),
             "readerAllocatedBytesPerSample" to measured(sensors.latency.readerBytesPerSample, 3),
+            "readerCpuMicrosPerSample" to measured(sensors.latency.readerCpuMicrosPerSample, 3),
+            "readerCpuShare" to measured(sensors.latency.readerCpuShare, 3),
         ),
         "grainLatencyBaseline" to obj(
             "samples" to shortNumber(sensors.latencyBaseline.samples),

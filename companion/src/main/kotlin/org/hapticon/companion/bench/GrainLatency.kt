@@ -27,6 +27,7 @@ import java.nio.ByteBuffer
 import java.nio.channels.FileChannel
 import java.nio.file.Path
 import java.util.concurrent.atomic.AtomicInteger
+import java.util.concurrent.locks.LockSupport
 import kotlin.math.ceil
 
 /**
@@ -45,6 +46,10 @@ import kotlin.math.ceil
  * run-queue wait is taken off — what a machine with a free core would show; [over1ms] grains took longer
  * than 1 ms, of which [over1msByRunQueue] are under 1 ms without their run-queue wait and [over1msWithGc] saw
  * a collection.
+ *
+ * What the reader costs in CPU (Linux, schedstat field 1, NaN elsewhere): [readerCpuMicrosPerSample], its
+ * running time per measured sample, and [readerCpuShare], that time over the measured wall time (1.0 = one
+ * core kept busy), which shows what a spinning reader burns.
  */
 data class GrainLatencyResult(
     val samples: Int,
@@ -60,6 +65,8 @@ data class GrainLatencyResult(
     val over1ms: Int = 0,
     val over1msByRunQueue: Int = 0,
     val over1msWithGc: Int = 0,
+    val readerCpuMicrosPerSample: Double = Double.NaN,
+    val readerCpuShare: Double = Double.NaN,
 )
 
 /**
@@ -72,8 +79,23 @@ data class GrainLatencyResult(
  * One sample is in flight at a time: the next is written only once the reader has handled the previous one,
  * so a latency never includes queueing behind earlier samples, only the wake-up and the work. The first
  * [warmupSamples] are not counted, so the JIT has compiled the path.
+ *
+ * The bench thread waits for each answer parked (the reader unparks it after recording the latency), not
+ * spinning: on 2 cores a spinning bench thread holds one of them while the reader needs one (issue 13; on the
+ * phone no CPU thread writes the samples). [intervalMicros] > 0 paces the samples at that period (1000 = the board's 1 kHz), so
+ * the reader parks between samples as on the phone; 0 writes each sample as soon as the last was handled.
+ * [readerSpinMicros] > 0 keeps the reader warm: after each read that delivered bytes it spins that long
+ * ([Thread.onSpinWait]) watching for the next sample before it blocks in the port's read — the experiment
+ * behind the choice in docs/performance.md, not something the app's USB port can do (Android's bulk
+ * transfer cannot poll).
  */
-class GrainLatency(private val samples: Int, private val warmupSamples: Int, private val route: Route = Route.ENGINE) {
+class GrainLatency(
+    private val samples: Int,
+    private val warmupSamples: Int,
+    private val route: Route = Route.ENGINE,
+    private val intervalMicros: Int = 0,
+    private val readerSpinMicros: Int = 0,
+) {
     /** What runs between the decoded frame and the command. */
     enum class Route(val label: String) {
         /**
@@ -89,6 +111,7 @@ class GrainLatency(private val samples: Int, private val warmupSamples: Int, pri
 
     init {
         require(samples >= 1 && warmupSamples >= 0) { "need samples >= 1 and warmupSamples >= 0, were $samples and $warmupSamples" }
+        require(intervalMicros in 0..1_000_000 && readerSpinMicros in 0..1_000_000) { "intervalMicros and readerSpinMicros must be in 0..1000000, were $intervalMicros and $readerSpinMicros" }
     }
 
     /** Runs the measurement; throws [IllegalStateException] if the reader fails, stalls, or no grain fires. */
@@ -100,15 +123,18 @@ class GrainLatency(private val samples: Int, private val warmupSamples: Int, pri
         // The reader's run-queue wait (ns, cumulative) and the JVM's collection count after each sample; read by
         // this thread between samples, so outside every latency, into preallocated arrays (nothing allocated).
         val waitedAfter = LongArray(total) { -1L }
+        val ranAfter = LongArray(total) { -1L }
         val collectionsAfter = LongArray(total)
         val collectors = ManagementFactory.getGarbageCollectorMXBeans()
         val runQueue = ByteBuffer.allocateDirect(RUN_QUEUE_BYTES)
         var schedstat: FileChannel? = null
         val handled = AtomicInteger(0)
-        val port = FakeSerialPort()
+        val fake = FakeSerialPort()
+        val port = WarmPort(fake, readerSpinMicros * 1_000L)
+        val waiter = Thread.currentThread()
         val side = when (route) {
-            Route.ENGINE -> EnginePath(port, writtenAt, latencies, handled, warmupSamples, total)
-            Route.ARITHMETIC -> ArithmeticPath(port, writtenAt, latencies, handled, warmupSamples, total)
+            Route.ENGINE -> EnginePath(port, writtenAt, latencies, handled, warmupSamples, total, waiter)
+            Route.ARITHMETIC -> ArithmeticPath(port, writtenAt, latencies, handled, warmupSamples, total, waiter)
         }
         var failure: Throwable? = null
         val decoder = when (side) {
@@ -117,16 +143,29 @@ class GrainLatency(private val samples: Int, private val warmupSamples: Int, pri
         }
         val reader = SensorReader(port, decoder, { _, cause -> failure = cause }, bufferSize = READ_BYTES)
         reader.start("hapticon-bench-grain-latency")
+        var measuredFrom = 0L
+        var measuredTo = 0L
         try {
             port.enqueue(frames.deviceInfo)
+            var due = System.nanoTime()
             for (i in 0 until total) {
+                if (intervalMicros > 0) {
+                    // Paced: the next sample is due one period after the last was due, as a board's clock sends them.
+                    due += intervalMicros * 1_000L
+                    while (System.nanoTime() < due) LockSupport.parkNanos(due - System.nanoTime())
+                }
+                if (i == warmupSamples) measuredFrom = System.nanoTime()
                 writtenAt[i] = System.nanoTime()
                 port.enqueue(frames.samples[i])
                 awaitHandled(handled, i + 1, reader) { failure }
                 if (schedstat == null) schedstat = side.schedstat?.let { openOrNull(it) }
-                waitedAfter[i] = schedstat?.let { runQueueNanos(it, runQueue) } ?: -1L
+                if (schedstat != null && schedstatNanos(schedstat!!, runQueue)) {
+                    ranAfter[i] = runQueue.getLong(RAN_AT)
+                    waitedAfter[i] = runQueue.getLong(WAITED_AT)
+                }
                 collectionsAfter[i] = collectors.sumOf { it.collectionCount }
             }
+            measuredTo = System.nanoTime()
         } finally {
             schedstat?.close()
             reader.stop()
@@ -142,6 +181,9 @@ class GrainLatency(private val samples: Int, private val warmupSamples: Int, pri
         }
         val collected = grainIndices.associateWith { i -> i > 0 && collectionsAfter[i] != collectionsAfter[i - 1] }
         val worst = grainIndices.maxBy { latencies[it] }
+        // The reader's running time over the measured samples (from the end of the last warm-up sample).
+        val ranFrom = if (warmupSamples > 0) ranAfter[warmupSamples - 1] else -1L
+        val ran = if (ranFrom < 0 || ranAfter[total - 1] < 0) Double.NaN else (ranAfter[total - 1] - ranFrom).toDouble()
         val over = grainIndices.filter { latencies[it] > ONE_MS_NANOS }
         return GrainLatencyResult(
             samples, measured.size, rank(measured, 0.50) / 1e3, rank(measured, 0.99) / 1e3, measured.last() / 1e3,
@@ -153,6 +195,8 @@ class GrainLatency(private val samples: Int, private val warmupSamples: Int, pri
             over1ms = over.size,
             over1msByRunQueue = over.count { latencies[it] - waited.getValue(it) <= ONE_MS_NANOS },
             over1msWithGc = over.count { collected.getValue(it) },
+            readerCpuMicrosPerSample = ran / 1e3 / samples,
+            readerCpuShare = ran / (measuredTo - measuredFrom).coerceAtLeast(1L),
         )
     }
 
@@ -161,12 +205,13 @@ class GrainLatency(private val samples: Int, private val warmupSamples: Int, pri
      * frame to the command encoded ([measure]), then the command's write and its latency.
      */
     private sealed class GrainPath(
-        val port: FakeSerialPort,
+        val port: WarmPort,
         val writtenAt: LongArray,
         val latencies: LongArray,
         val handled: AtomicInteger,
         val warmupSamples: Int,
         val total: Int,
+        private val waiter: Thread,
     ) {
         private val threads = ManagementFactory.getThreadMXBean() as com.sun.management.ThreadMXBean
         private val counting = threads.isThreadAllocatedMemorySupported && threads.isThreadAllocatedMemoryEnabled
@@ -207,20 +252,23 @@ class GrainLatency(private val samples: Int, private val warmupSamples: Int, pri
             }
             val left = threadBytes()
             if (i == total - 1) bytesAtEnd = left
-            // The volatile write publishes latencies[i] (and the byte counts) to the bench thread.
+            // The volatile write publishes latencies[i] (and the byte counts) to the bench thread, then wakes it:
+            // after the latency was taken, so its wake-up is not on the figure.
             handled.set(i + 1)
+            LockSupport.unpark(waiter)
         }
     }
 
     /** The shipped path: the decoded [LiveFrame] goes to a real [GrainEngine], whose sink encodes the command. */
     private class EnginePath(
-        port: FakeSerialPort,
+        port: WarmPort,
         writtenAt: LongArray,
         latencies: LongArray,
         handled: AtomicInteger,
         warmupSamples: Int,
         total: Int,
-    ) : GrainPath(port, writtenAt, latencies, handled, warmupSamples, total), FrameListener {
+        waiter: Thread,
+    ) : GrainPath(port, writtenAt, latencies, handled, warmupSamples, total, waiter), FrameListener {
         private var length = 0
 
         // The engine calls the sink on this (the reader) thread, at most once per frame.
@@ -238,13 +286,14 @@ class GrainLatency(private val samples: Int, private val warmupSamples: Int, pri
 
     /** The baseline: the engine's arithmetic re-created on the decoded [SampleFrame] (the bench's figure before issue 13's work). */
     private class ArithmeticPath(
-        port: FakeSerialPort,
+        port: WarmPort,
         writtenAt: LongArray,
         latencies: LongArray,
         handled: AtomicInteger,
         warmupSamples: Int,
         total: Int,
-    ) : GrainPath(port, writtenAt, latencies, handled, warmupSamples, total), ProtocolListener {
+        waiter: Thread,
+    ) : GrainPath(port, writtenAt, latencies, handled, warmupSamples, total, waiter), ProtocolListener {
         private val converter = FsrForceConverter()
         private val decider = GrainDecider(GrainSettings(), SyntheticPress.SAMPLE_RATE_HZ.toDouble())
 
@@ -269,33 +318,77 @@ class GrainLatency(private val samples: Int, private val warmupSamples: Int, pri
         return Frames(deviceInfo, samples)
     }
 
-    /** Spins until [handled] reaches [count]; the reader answers within microseconds, so a stall is a failure. */
+    /**
+     * Parks until [handled] reaches [count] (the reader unparks this thread); the reader answers within
+     * microseconds, so a stall is a failure. Parked, not spinning: a spinning waiter would hold one of the
+     * machine's cores while the reader needs one.
+     */
     private inline fun awaitHandled(handled: AtomicInteger, count: Int, reader: SensorReader, failure: () -> Throwable?) {
         val deadline = System.nanoTime() + STALL_MILLIS * 1_000_000
         while (handled.get() < count) {
             if (!reader.isRunning) throw IllegalStateException("the sensor reader stopped at sample $count", failure())
-            check(System.nanoTime() < deadline) { "sample $count was not handled within $STALL_MILLIS ms" }
-            Thread.onSpinWait()
+            val left = deadline - System.nanoTime()
+            check(left > 0) { "sample $count was not handled within $STALL_MILLIS ms" }
+            LockSupport.parkNanos(this, minOf(left, PARK_SLICE_NANOS))
+        }
+    }
+
+    /**
+     * The [FakeSerialPort] as the reader sees it, optionally kept warm: after a read that delivered bytes, the
+     * next read first spins up to [spinNanos] watching for a sample the bench has enqueued since ([enqueued], a
+     * volatile count), so one that arrives within the window is read without the reader ever parking. With 0
+     * it is the plain port: the reader blocks in the port's read and is woken by each sample.
+     */
+    private class WarmPort(private val fake: FakeSerialPort, private val spinNanos: Long) : org.hapticon.sensor.port.SerialPort by fake {
+        @Volatile private var enqueued = 0L
+        private var consumed = 0L
+        private var delivered = false
+
+        /** Enqueues [bytes] as one read and counts it. */
+        fun enqueue(bytes: ByteArray) {
+            fake.enqueue(bytes)
+            enqueued++
+        }
+
+        override fun read(buffer: ByteArray, offset: Int, length: Int, timeoutMillis: Int): Int {
+            if (spinNanos > 0 && delivered) {
+                val until = System.nanoTime() + spinNanos
+                while (enqueued == consumed && System.nanoTime() < until) Thread.onSpinWait()
+            }
+            val n = fake.read(buffer, offset, length, timeoutMillis)
+            delivered = n > 0
+            if (delivered) consumed = enqueued.coerceAtMost(consumed + 1)
+            return n
         }
     }
 
     private fun openOrNull(path: String): FileChannel? = runCatching { FileChannel.open(Path.of(path)) }.getOrNull()
 
-    /** Field 2 of a schedstat file ("run ns, run-queue wait ns, slices"), read again from offset 0 into [buffer]. */
-    private fun runQueueNanos(channel: FileChannel, buffer: ByteBuffer): Long {
-        buffer.clear()
-        if (channel.read(buffer, 0) <= 0) return -1L
+    /**
+     * Reads a schedstat file ("run ns, run-queue wait ns, slices") again from offset 0 into [buffer] and, on
+     * success, leaves fields 1 and 2 as longs at [RAN_AT] and [WAITED_AT] of it (past the text; no allocation).
+     */
+    private fun schedstatNanos(channel: FileChannel, buffer: ByteBuffer): Boolean {
+        buffer.clear().limit(TEXT_BYTES)
+        val read = channel.read(buffer, 0)
+        if (read <= 0) return false
+        // Absolute puts are bounded by the limit: open the whole buffer again for the two longs.
+        buffer.limit(buffer.capacity())
         var field = 0
         var value = 0L
-        for (k in 0 until buffer.position()) {
+        for (k in 0 until read) {
             val c = buffer.get(k).toInt()
             when {
-                c == ' '.code -> if (field++ == 1) return value else value = 0L
+                c == ' '.code -> {
+                    if (field == 0) buffer.putLong(RAN_AT, value) else { buffer.putLong(WAITED_AT, value); return true }
+                    field++
+                    value = 0L
+                }
                 c in '0'.code..'9'.code -> value = value * 10 + (c - '0'.code)
-                else -> return -1L
+                else -> return false
             }
         }
-        return -1L
+        return false
     }
 
     private fun rank(sorted: List<Long>, fraction: Double): Double = sorted[(ceil(fraction * sorted.size).toInt() - 1).coerceAtLeast(0)].toDouble()
@@ -305,7 +398,11 @@ class GrainLatency(private val samples: Int, private val warmupSamples: Int, pri
         const val READ_BYTES = 256
         const val WRITE_TIMEOUT_MILLIS = 100
         const val STALL_MILLIS = 5_000L
+        const val TEXT_BYTES = 112
+        const val RAN_AT = 112
+        const val WAITED_AT = 120
         const val RUN_QUEUE_BYTES = 128
+        const val PARK_SLICE_NANOS = 10_000_000L
         const val ONE_MS_NANOS = 1_000_000L
     }
 }

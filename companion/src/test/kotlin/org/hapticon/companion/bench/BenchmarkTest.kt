@@ -198,6 +198,35 @@ class BenchmarkTest {
     }
 
     @Test
+    fun benchCommand_grainQuick_printsOneLinePerRunWithTheLoadBesideIt() {
+        val result = cli("bench", "--grain", "--quick", "--runs", "2", "--spin-us", "20")
+        assertEquals(result.toString(), 0, result.exitCode)
+        val lines = result.stdout.trimEnd().lines()
+        assertEquals(result.stdout, "grain latency through GrainEngine, µs; samples back to back, reader spin 20 µs after each sample", lines[0])
+        assertEquals(result.stdout, 3, lines.size)
+        // 2,000 samples after 500 of warm-up (QUICK): the press cycle repeats, so 46 grains as in GrainLatencyTest.
+        for ((k, line) in lines.drop(1).withIndex()) {
+            assertTrue(line, line.startsWith("run ${k + 1} (load "))
+            assertTrue(line, "(46 grains)" in line)
+            assertTrue(line, "reader CPU " in line)
+        }
+    }
+
+    @Test
+    fun benchCommand_grainOptionWithoutGrain_exitsTwoNamingIt() {
+        val result = cli("bench", "--spin-us", "50")
+        assertEquals(2, result.exitCode)
+        assertEquals(listOf("hapticon: --spin-us goes with --grain"), result.stderrLines)
+    }
+
+    @Test
+    fun benchCommand_grainRunsOutOfRange_exitsTwo() {
+        val result = cli("bench", "--grain", "--runs", "0")
+        assertEquals(2, result.exitCode)
+        assertEquals(listOf("hapticon: --runs must be in 1..100, got 0"), result.stderrLines)
+    }
+
+    @Test
     fun benchCommand_unknownOption_exitsTwo() {
         val result = cli("bench", "--fast")
         assertEquals(2, result.exitCode)

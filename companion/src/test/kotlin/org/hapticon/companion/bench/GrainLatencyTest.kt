@@ -58,6 +58,35 @@ class GrainLatencyTest {
         assertTrue(result.toString(), result.handlerBytesPerSample < 1.0)
     }
 
+    @Test
+    fun run_pacedAtTheBoardsRate_takesAPeriodPerSampleAndSeesTheSameGrains() {
+        // 1 kHz pacing: 2,000 samples cannot take less than 2 s, and pacing changes no decision.
+        val started = System.nanoTime()
+        val result = GrainLatency(samples = 2_000, warmupSamples = 0, intervalMicros = 1_000).run()
+        val seconds = (System.nanoTime() - started) / 1e9
+        assertEquals(46, result.grains)
+        assertTrue("took $seconds s", seconds >= 2.0)
+    }
+
+    @Test
+    fun run_readerKeptSpinning_seesTheSameGrains() {
+        val result = GrainLatency(samples = 2_000, warmupSamples = 0, readerSpinMicros = 200).run()
+        assertEquals(46, result.grains)
+    }
+
+    @Test
+    fun run_onLinux_measuresTheReadersCpuAsAShareOfOneCore() {
+        assumeTrue("the reader's CPU time is read from Linux's schedstat", java.io.File("/proc/thread-self/schedstat").exists())
+        val result = GrainLatency(samples = 500, warmupSamples = 100, intervalMicros = 1_000).run()
+        // A thread runs on at most one core; paced at 1 kHz the reader is parked most of each period.
+        assertTrue(result.toString(), result.readerCpuMicrosPerSample > 0.0 && result.readerCpuShare > 0.0 && result.readerCpuShare < 1.0)
+    }
+
+    @Test(expected = IllegalArgumentException::class)
+    fun constructor_negativeSpin_isRejected() {
+        GrainLatency(samples = 1, warmupSamples = 0, readerSpinMicros = -1)
+    }
+
     @Test(expected = IllegalArgumentException::class)
     fun constructor_noSamples_isRejected() {
         GrainLatency(samples = 0, warmupSamples = 0)
