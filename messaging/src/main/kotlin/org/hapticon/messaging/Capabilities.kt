@@ -1,5 +1,6 @@
 package org.hapticon.messaging
 
+import org.hapticon.core.pattern.EnvelopeEffectInfo
 import org.hapticon.core.pattern.PitchFit
 
 /**
@@ -18,6 +19,9 @@ import org.hapticon.core.pattern.PitchFit
  *   min..max Hz), null without a frequency profile or when not said.
  * @property pitchFit what it does with frequencies outside [frequencyRangeHz] (its user's setting), null when not said
  *   (older builds play [PitchFit.OCTAVES]).
+ * @property envelopeLimits what its envelope effects accept (API 36 `Vibrator.getEnvelopeEffectInfo()`: most control
+ *   points, shortest and longest control point, longest effect), null without envelope effects or when not said (older
+ *   builds); a sender then assumes [EnvelopeEffectInfo.GUARANTEED].
  */
 public data class Capabilities(
     val user: String,
@@ -28,6 +32,7 @@ public data class Capabilities(
     val envelopeEffects: Boolean? = null,
     val frequencyRangeHz: ClosedFloatingPointRange<Double>? = null,
     val pitchFit: PitchFit? = null,
+    val envelopeLimits: EnvelopeEffectInfo? = null,
 ) {
     init {
         check(Topics.isValidUserName(user), RejectionReason.INVALID_VALUE, "user") { "not a valid user name: ${quote(user)}" }
@@ -47,6 +52,19 @@ public data class Capabilities(
                 RejectionReason.INVALID_VALUE, "frequencyMinHz",
             ) { "expected 1 ≤ frequencyMinHz < frequencyMaxHz ≤ $MAX_RESONANT_FREQUENCY_HZ Hz, got $min..$max" }
         }
+        if (envelopeLimits != null) {
+            val (points, min, max, total) = envelopeLimits
+            check(points in 1..MAX_ENVELOPE_CONTROL_POINTS, RejectionReason.INVALID_VALUE, "envelopeMaxControlPoints") {
+                "expected 1..$MAX_ENVELOPE_CONTROL_POINTS, got $points"
+            }
+            // Android's own invariant: maxDuration = maxSize × longest control point, so each bound holds the next.
+            check(min >= 1 && min <= max, RejectionReason.INVALID_VALUE, "envelopeMinControlPointMillis") {
+                "expected 1 ≤ envelopeMinControlPointMillis ≤ envelopeMaxControlPointMillis, got $min and $max"
+            }
+            check(max <= total && total <= MAX_ENVELOPE_MILLIS, RejectionReason.INVALID_VALUE, "envelopeMaxDurationMillis") {
+                "expected envelopeMaxControlPointMillis ≤ envelopeMaxDurationMillis ≤ $MAX_ENVELOPE_MILLIS, got $max and $total"
+            }
+        }
     }
 
     public companion object {
@@ -55,6 +73,12 @@ public data class Capabilities(
 
         /** Highest resonant frequency accepted, in Hz; phone actuators resonate around 150–250 Hz. */
         public const val MAX_RESONANT_FREQUENCY_HZ: Double = 2_000.0
+
+        /** Most envelope control points accepted; Android guarantees 16, and more than this is garbage, not a phone. */
+        public const val MAX_ENVELOPE_CONTROL_POINTS: Int = 1_000
+
+        /** Longest envelope effect (and control point) accepted, in ms: 10 minutes, far above any vibrator's. */
+        public const val MAX_ENVELOPE_MILLIS: Long = 600_000
     }
 }
 

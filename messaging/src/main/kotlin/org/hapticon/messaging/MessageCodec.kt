@@ -17,6 +17,7 @@ import org.hapticon.core.io.JsonKind
 import org.hapticon.core.io.SchemaJson
 import org.hapticon.core.io.SchemaReport
 import org.hapticon.core.io.ShortDouble
+import org.hapticon.core.pattern.EnvelopeEffectInfo
 import org.hapticon.core.pattern.HapticPattern
 import org.hapticon.core.pattern.PatternException
 import org.hapticon.core.pattern.PatternJson
@@ -33,7 +34,9 @@ import org.hapticon.core.pattern.PitchFit
  * {"schema":"hapticon.hand","version":1,"from":"bob","thumb":12.5,"middle":48.0,"at":<epoch ms>}
  * {"schema":"hapticon.capabilities","version":1,"user":"bob","renderer":"amplitude-waveform","amplitudeControl":true,
  *  "apiLevel":34|null,"resonantFrequencyHz":170.0|null,
- *  "envelopeEffects":true,"frequencyMinHz":120,"frequencyMaxHz":240,"pitchFit":"octaves"|"clamp"}   (each optional)
+ *  "envelopeEffects":true,"frequencyMinHz":120,"frequencyMaxHz":240,"pitchFit":"octaves"|"clamp",
+ *  "envelopeMaxControlPoints":16,"envelopeMinControlPointMillis":20,"envelopeMaxControlPointMillis":1000,
+ *  "envelopeMaxDurationMillis":16000}   (each optional; the frequency pair and the four envelope limits all or none)
  * ```
  *
  * Each document is a `@Serializable` type (`MessageDocument` …, this file), encoded by kotlinx-serialization;
@@ -102,6 +105,11 @@ public object MessageCodec {
             frequencyMinHz = capabilities.frequencyRangeHz?.start,
             frequencyMaxHz = capabilities.frequencyRangeHz?.endInclusive,
             pitchFit = capabilities.pitchFit?.wireName,
+            // Added with the published envelope limits, the same way: absent when unknown.
+            envelopeMaxControlPoints = capabilities.envelopeLimits?.maxControlPoints?.toLong(),
+            envelopeMinControlPointMillis = capabilities.envelopeLimits?.minControlPointMillis,
+            envelopeMaxControlPointMillis = capabilities.envelopeLimits?.maxControlPointMillis,
+            envelopeMaxDurationMillis = capabilities.envelopeLimits?.maxDurationMillis,
         ),
     )
 
@@ -136,7 +144,27 @@ public object MessageCodec {
             },
             // A fit a newer build names is unknown here, like a renderer: the sender then sees no pitch promise.
             pitchFit = doc.pitchFit?.let { name -> PitchFit.entries.firstOrNull { it.wireName == name } },
+            envelopeLimits = envelopeLimitsOf(doc),
         )
+    }
+
+    // The four envelope limits come together (one VibratorEnvelopeEffectInfo) or not at all: a document without them
+    // is an older build's or a phone without envelope effects, and its reader assumes the guaranteed ones.
+    private fun envelopeLimitsOf(doc: CapabilitiesDocument): EnvelopeEffectInfo? {
+        val members = listOf(
+            "envelopeMaxControlPoints" to doc.envelopeMaxControlPoints,
+            "envelopeMinControlPointMillis" to doc.envelopeMinControlPointMillis,
+            "envelopeMaxControlPointMillis" to doc.envelopeMaxControlPointMillis,
+            "envelopeMaxDurationMillis" to doc.envelopeMaxDurationMillis,
+        )
+        if (members.all { it.second == null }) return null
+        members.firstOrNull { it.second == null }?.let { (field, _) -> throw InvalidMessageException(RejectionReason.MISSING_FIELD, field, "missing") }
+        val (points, min, max, total) = members.map { it.second!! }
+        // Range-checked here before the Int conversion; the Capabilities constructor checks how they relate.
+        if (points !in 1..Capabilities.MAX_ENVELOPE_CONTROL_POINTS) {
+            invalid("envelopeMaxControlPoints", "expected 1..${Capabilities.MAX_ENVELOPE_CONTROL_POINTS}, got $points")
+        }
+        return EnvelopeEffectInfo(points.toInt(), min, max, total)
     }
 
     private fun decodeMessage(doc: MessageDocument, version: Int): ChatMessage {
@@ -283,6 +311,10 @@ internal class CapabilitiesDocument(
     @EncodeDefault(EncodeDefault.Mode.NEVER) @Serializable(with = ShortDouble::class) val frequencyMinHz: Double? = null,
     @EncodeDefault(EncodeDefault.Mode.NEVER) @Serializable(with = ShortDouble::class) val frequencyMaxHz: Double? = null,
     @EncodeDefault(EncodeDefault.Mode.NEVER) val pitchFit: String? = null,
+    @EncodeDefault(EncodeDefault.Mode.NEVER) val envelopeMaxControlPoints: Long? = null,
+    @EncodeDefault(EncodeDefault.Mode.NEVER) val envelopeMinControlPointMillis: Long? = null,
+    @EncodeDefault(EncodeDefault.Mode.NEVER) val envelopeMaxControlPointMillis: Long? = null,
+    @EncodeDefault(EncodeDefault.Mode.NEVER) val envelopeMaxDurationMillis: Long? = null,
 )
 
 /** The wire format's wording of schema problems: an [InvalidMessageException] with the [RejectionReason] and a one-line detail. */

@@ -1,6 +1,7 @@
 package org.hapticon.messaging
 
 import org.hapticon.core.HapticIcon
+import org.hapticon.core.pattern.EnvelopeEffectInfo
 import org.junit.Assert.assertEquals
 import org.junit.Assert.assertThrows
 import org.junit.Assert.assertTrue
@@ -53,6 +54,9 @@ class ChatMessageTest {
             "user" to { Capabilities("bob/x", RendererKind.NONE, false) },
             "apiLevel" to { Capabilities("bob", RendererKind.NONE, false, apiLevel = 0) },
             "resonantFrequencyHz" to { Capabilities("bob", RendererKind.NONE, false, resonantFrequencyHz = Double.NaN) },
+            "envelopeMaxControlPoints" to { Capabilities("bob", RendererKind.ENVELOPE, true, envelopeLimits = EnvelopeEffectInfo(0, 20, 1000, 16_000)) },
+            "envelopeMinControlPointMillis" to { Capabilities("bob", RendererKind.ENVELOPE, true, envelopeLimits = EnvelopeEffectInfo(16, 2000, 1000, 16_000)) },
+            "envelopeMaxDurationMillis" to { Capabilities("bob", RendererKind.ENVELOPE, true, envelopeLimits = EnvelopeEffectInfo(16, 20, 1000, 999)) },
         )
         for ((field, build) in cases) {
             val e = assertThrows(InvalidMessageException::class.java) { build() }

@@ -1,6 +1,7 @@
 package org.hapticon.messaging
 
 import org.hapticon.core.HapticIcon
+import org.hapticon.core.pattern.EnvelopeEffectInfo
 import org.hapticon.core.pattern.PitchFit
 import org.junit.Assert.assertArrayEquals
 import org.junit.Assert.assertEquals
@@ -126,6 +127,43 @@ class MessageCodecTest {
         assertCapabilitiesRejected(RejectionReason.INVALID_VALUE, "frequencyMinHz", caps(""""frequencyMinHz":240,"frequencyMaxHz":120"""))
         assertCapabilitiesRejected(RejectionReason.INVALID_VALUE, "frequencyMinHz", caps(""""frequencyMinHz":0,"frequencyMaxHz":120"""))
         assertCapabilitiesRejected(RejectionReason.WRONG_TYPE, "envelopeEffects", caps(""""envelopeEffects":"yes""""))
+    }
+
+    @Test
+    fun decodeCapabilities_envelopeLimits_roundTripExactlyAfterThePitchMembers() {
+        val bob = Capabilities(
+            "bob", RendererKind.ENVELOPE, amplitudeControl = true, apiLevel = 36, envelopeEffects = true,
+            frequencyRangeHz = 120.0..240.0, pitchFit = PitchFit.OCTAVES, envelopeLimits = EnvelopeEffectInfo(4, 50, 500, 2000),
+        )
+        assertEquals(
+            """{"schema":"hapticon.capabilities","version":1,"user":"bob","renderer":"envelope","amplitudeControl":true,""" +
+                """"apiLevel":36,"resonantFrequencyHz":null,"envelopeEffects":true,"frequencyMinHz":120,"frequencyMaxHz":240,"pitchFit":"octaves",""" +
+                """"envelopeMaxControlPoints":4,"envelopeMinControlPointMillis":50,"envelopeMaxControlPointMillis":500,"envelopeMaxDurationMillis":2000}""",
+            String(MessageCodec.encode(bob), Charsets.UTF_8),
+        )
+        assertEquals(Decoded.Accepted(bob), MessageCodec.decodeCapabilities(MessageCodec.encode(bob)))
+    }
+
+    @Test
+    fun decodeCapabilities_badEnvelopeLimits_rejectedByField() {
+        fun caps(points: String, min: String, max: String, total: String) =
+            """{"schema":"hapticon.capabilities","version":1,"user":"bob","renderer":"envelope","amplitudeControl":true,""" +
+                listOf("envelopeMaxControlPoints" to points, "envelopeMinControlPointMillis" to min, "envelopeMaxControlPointMillis" to max, "envelopeMaxDurationMillis" to total)
+                    .filter { it.second.isNotEmpty() }.joinToString(",") { "\"${it.first}\":${it.second}" } + "}"
+        // All four or none: one VibratorEnvelopeEffectInfo.
+        assertCapabilitiesRejected(RejectionReason.MISSING_FIELD, "envelopeMaxDurationMillis", caps("4", "50", "500", ""))
+        assertCapabilitiesRejected(RejectionReason.MISSING_FIELD, "envelopeMaxControlPoints", caps("", "50", "500", "2000"))
+        assertCapabilitiesRejected(RejectionReason.INVALID_VALUE, "envelopeMaxControlPoints", caps("0", "50", "500", "2000"))
+        assertCapabilitiesRejected(RejectionReason.INVALID_VALUE, "envelopeMaxControlPoints", caps("1001", "50", "500", "2000"))
+        assertCapabilitiesRejected(RejectionReason.INVALID_VALUE, "envelopeMaxControlPoints", caps("4.5", "50", "500", "2000"))
+        assertCapabilitiesRejected(RejectionReason.INVALID_VALUE, "envelopeMinControlPointMillis", caps("4", "0", "500", "2000"))
+        assertCapabilitiesRejected(RejectionReason.INVALID_VALUE, "envelopeMinControlPointMillis", caps("4", "600", "500", "2000"))
+        assertCapabilitiesRejected(RejectionReason.INVALID_VALUE, "envelopeMaxDurationMillis", caps("4", "50", "500", "400"))
+        assertCapabilitiesRejected(RejectionReason.INVALID_VALUE, "envelopeMaxDurationMillis", caps("4", "50", "500", "600001"))
+        assertCapabilitiesRejected(RejectionReason.WRONG_TYPE, "envelopeMinControlPointMillis", caps("4", "\"50\"", "500", "2000"))
+        // The largest accepted limits still decode.
+        val largest = MessageCodec.decodeCapabilities(caps("1000", "1", "600000", "600000").toByteArray()) as Decoded.Accepted
+        assertEquals(EnvelopeEffectInfo(1000, 1, 600_000, 600_000), largest.value.envelopeLimits)
     }
 
     @Test

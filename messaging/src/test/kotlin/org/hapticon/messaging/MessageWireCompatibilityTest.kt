@@ -2,8 +2,10 @@ package org.hapticon.messaging
 
 import org.hapticon.core.HapticIcon
 import org.hapticon.core.pattern.AmplitudeKey
+import org.hapticon.core.pattern.EnvelopeEffectInfo
 import org.hapticon.core.pattern.FrequencyKey
 import org.hapticon.core.pattern.HapticPattern
+import org.hapticon.core.pattern.PitchFit
 import org.hapticon.core.pattern.Transient
 import org.junit.Assert.assertEquals
 import org.junit.Test
@@ -36,6 +38,10 @@ class MessageWireCompatibilityTest {
         """"amplitudeControl":true,"apiLevel":34,"resonantFrequencyHz":170}"""
     private val bareCapabilities = """{"schema":"hapticon.capabilities","version":1,"user":"carol","renderer":"envelope",""" +
         """"amplitudeControl":false,"apiLevel":null,"resonantFrequencyHz":null}"""
+
+    // Written by the build before envelope limits were published (85d0595, issue 12's pitch members): an API 36 phone.
+    private val pitchCapabilities = """{"schema":"hapticon.capabilities","version":1,"user":"bob","renderer":"envelope","amplitudeControl":true,""" +
+        """"apiLevel":36,"resonantFrequencyHz":170,"envelopeEffects":true,"frequencyMinHz":120,"frequencyMaxHz":240,"pitchFit":"clamp"}"""
 
     @Test
     fun decode_recordedV1IconMessage_givesTheExactMessageAndIsWrittenIdentically() {
@@ -89,6 +95,25 @@ class MessageWireCompatibilityTest {
         val bare = Capabilities("carol", RendererKind.ENVELOPE, false, null, null)
         assertEquals(Decoded.Accepted(bare), MessageCodec.decodeCapabilities(bareCapabilities.toByteArray()))
         assertEquals(bareCapabilities, String(MessageCodec.encode(bare), Charsets.UTF_8))
+    }
+
+    @Test
+    fun decode_recordedCapabilitiesWithoutEnvelopeLimits_decodeWithNoneAndAreWrittenIdentically() {
+        val bob = Capabilities(
+            "bob", RendererKind.ENVELOPE, true, 36, 170.0, envelopeEffects = true, frequencyRangeHz = 120.0..240.0, pitchFit = PitchFit.CLAMP,
+        )
+        val decoded = MessageCodec.decodeCapabilities(pitchCapabilities.toByteArray())
+        assertEquals(Decoded.Accepted(bob), decoded)
+        // No limits published: the sender falls back to the guaranteed ones (PeerPitch), it does not reject the peer.
+        assertEquals(null, (decoded as Decoded.Accepted).value.envelopeLimits)
+        assertEquals(pitchCapabilities, String(MessageCodec.encode(bob), Charsets.UTF_8))
+        // The new members only follow the old ones, so an older reader (which ignores unknown members) sees its document.
+        val withLimits = String(MessageCodec.encode(bob.copy(envelopeLimits = EnvelopeEffectInfo(16, 20, 1000, 16_000))), Charsets.UTF_8)
+        assertEquals(
+            pitchCapabilities.removeSuffix("}") +
+                ""","envelopeMaxControlPoints":16,"envelopeMinControlPointMillis":20,"envelopeMaxControlPointMillis":1000,"envelopeMaxDurationMillis":16000}""",
+            withLimits,
+        )
     }
 
     @Test

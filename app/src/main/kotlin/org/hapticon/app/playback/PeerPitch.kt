@@ -16,9 +16,10 @@ import org.hapticon.messaging.RendererKind
  */
 object PeerPitch {
     /**
-     * The peer's phone as [PatternPlan.of] needs it. Envelope limits are not published: the guaranteed ones
-     * (16 points, 20 ms..1 s) stand in. A peer that does not say whether it has envelope effects (an older build)
-     * is taken to have them when its renderer is the envelope.
+     * The peer's phone as [PatternPlan.of] needs it, with the envelope limits it publishes ([Capabilities.envelopeLimits]);
+     * a peer that does not publish them (an older build) gets the guaranteed ones ([EnvelopeEffectInfo.GUARANTEED]:
+     * 16 points, 20 ms..1 s), and [describeEnvelope] says so. A peer that does not say whether it has envelope effects
+     * (an older build) is taken to have them when its renderer is the envelope.
      */
     fun deviceOf(caps: Capabilities): DeviceCapabilities {
         val envelope = caps.envelopeEffects ?: (caps.renderer == RendererKind.ENVELOPE)
@@ -31,7 +32,7 @@ object PeerPitch {
             resonantFrequencyHz = caps.resonantFrequencyHz,
             envelopeEffectsSupported = envelope,
             frequencyRangeHz = caps.frequencyRangeHz,
-            envelopeInfo = if (envelope) EnvelopeEffectInfo.GUARANTEED else null,
+            envelopeInfo = if (envelope) caps.envelopeLimits ?: EnvelopeEffectInfo.GUARANTEED else null,
             hapticPlaybackSupported = audio,
             hapticGeneratorAvailable = audio,
         )
@@ -87,6 +88,68 @@ object PeerPitch {
                 }
             }
         }
+    }
+
+    /**
+     * The line for how [caps]'s phone resamples [pattern] into its envelope effect: the control points it will send,
+     * resampled by the same [PatternEnvelope.of] its API 36 renderer runs, within the limits it publishes, e.g.
+     * "bob's envelope: 4 control points (7 merged into 4 by its limits: 4 points, 50 ms–1 s each, 4 s in all)", where
+     * 7 is what the guaranteed limits would give; "… (limits not published; assumed 16 points, 20 ms–1 s each, 16 s in
+     * all)" for a peer that does not publish them; "bob's envelope cannot follow it within its limits (…)" when the peer
+     * plays steps instead. Null when the peer plays no envelope effect (audio-coupled, steps by its own choice, none)
+     * and for an [icon] on an older build, which renders icons with its own fixed points.
+     */
+    fun describeEnvelope(caps: Capabilities, pattern: HapticPattern, icon: Boolean = false): String? {
+        if (icon && caps.envelopeEffects == null) return null
+        val device = deviceOf(caps)
+        if (!device.envelopeEffectsSupported || device.apiLevel < 36) return null
+        val published = caps.envelopeLimits
+        val limits = limitsText(published ?: EnvelopeEffectInfo.GUARANTEED)
+        return when (val plan = planOf(caps, pattern)) {
+            is PatternPlan.Envelope -> {
+                val count = pointsOf(plan.envelope)
+                val points = if (count == 1) "1 control point" else "$count control points"
+                val how = when {
+                    published == null -> "limits not published; assumed $limits"
+                    else -> {
+                        // What the guaranteed limits would give, resampled by the same function: more points were merged.
+                        val guaranteed = if (published == EnvelopeEffectInfo.GUARANTEED) null else PatternEnvelope.of(
+                            pattern, EnvelopeEffectInfo.GUARANTEED, device.frequencyRangeHz, caps.pitchFit ?: PitchFit.OCTAVES,
+                        )?.let(::pointsOf)
+                        if (guaranteed != null && guaranteed > count) "$guaranteed merged into $count by its limits: $limits" else "its limits: $limits"
+                    }
+                }
+                "${caps.user}'s envelope: $points ($how)"
+            }
+            // Steps on a phone that plays the envelope by choice: the envelope could not follow the pattern within the limits.
+            is PatternPlan.Steps -> if (caps.renderer == RendererKind.ENVELOPE) {
+                "${caps.user}'s envelope cannot follow it within " + (if (published == null) "the assumed limits ($limits; not published)" else "its limits ($limits)")
+            } else {
+                null
+            }
+            else -> null
+        }
+    }
+
+    private fun pointsOf(envelope: PatternEnvelope): Int = when (envelope) {
+        is PatternEnvelope.Waveform -> envelope.points.size
+        is PatternEnvelope.Basic -> envelope.points.size
+    }
+
+    // "4 points, 50 ms–1 s each, 4 s in all"
+    private fun limitsText(info: EnvelopeEffectInfo): String {
+        val min = info.minControlPointMillis
+        val max = info.maxControlPointMillis
+        val each = if (max < 1000) "$min–$max ms" else "${millis(min)}–${millis(max)}"
+        val points = if (info.maxControlPoints == 1) "1 point" else "${info.maxControlPoints} points"
+        return "$points, $each each, ${millis(info.maxDurationMillis)} in all"
+    }
+
+    private fun millis(value: Long): String = when {
+        value < 1000 -> "$value ms"
+        value % 1000 == 0L -> "${value / 1000} s"
+        value % 100 == 0L -> String.format(Locale.ROOT, "%.1f s", value / 1000.0)
+        else -> "$value ms"
     }
 
     private fun hzRange(pattern: HapticPattern): String {

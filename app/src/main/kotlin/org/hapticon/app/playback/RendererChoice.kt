@@ -146,18 +146,30 @@ object RendererChoice {
     /**
      * This device's capabilities message for [user]: with the envelope support, frequency profile and [pitchFit]
      * a sender needs to tell which pitch this phone will play ([org.hapticon.app.feature.chat.PeerFeel]). A profile
-     * outside what the wire accepts (1..2000 Hz) is left out rather than refused, so the rest is still published.
+     * outside what the wire accepts (1..2000 Hz) is left out rather than refused, so the rest is still published; so
+     * are envelope limits outside the wire's bounds (the sender then assumes the guaranteed ones).
      */
-    fun capabilitiesOf(user: String, device: DeviceCapabilities, override: RendererKind?, pitchFit: PitchFit = PitchFit.OCTAVES): Capabilities = Capabilities(
-        user = user,
-        renderer = choose(device, null, override),
-        amplitudeControl = device.hasAmplitudeControl,
-        apiLevel = device.apiLevel,
-        resonantFrequencyHz = device.resonantFrequencyHz?.takeIf { it in 1.0..Capabilities.MAX_RESONANT_FREQUENCY_HZ },
-        envelopeEffects = device.apiLevel >= 36 && device.envelopeEffectsSupported && device.envelopeInfo != null,
-        frequencyRangeHz = device.frequencyRangeHz?.takeIf { it.start >= 1.0 && it.endInclusive <= Capabilities.MAX_RESONANT_FREQUENCY_HZ },
-        pitchFit = pitchFit,
-    )
+    fun capabilitiesOf(user: String, device: DeviceCapabilities, override: RendererKind?, pitchFit: PitchFit = PitchFit.OCTAVES): Capabilities {
+        val envelope = device.apiLevel >= 36 && device.envelopeEffectsSupported && device.envelopeInfo != null
+        return Capabilities(
+            user = user,
+            renderer = choose(device, null, override),
+            amplitudeControl = device.hasAmplitudeControl,
+            apiLevel = device.apiLevel,
+            resonantFrequencyHz = device.resonantFrequencyHz?.takeIf { it in 1.0..Capabilities.MAX_RESONANT_FREQUENCY_HZ },
+            envelopeEffects = envelope,
+            frequencyRangeHz = device.frequencyRangeHz?.takeIf { it.start >= 1.0 && it.endInclusive <= Capabilities.MAX_RESONANT_FREQUENCY_HZ },
+            pitchFit = pitchFit,
+            // The vibrator's own VibratorEnvelopeEffectInfo, so that a sender resamples exactly as this phone will.
+            envelopeLimits = device.envelopeInfo?.takeIf { envelope && publishable(it) },
+        )
+    }
+
+    // The bounds Capabilities checks (messaging), as a test rather than an exception.
+    private fun publishable(info: EnvelopeEffectInfo): Boolean =
+        info.maxControlPoints in 1..Capabilities.MAX_ENVELOPE_CONTROL_POINTS && info.minControlPointMillis >= 1 &&
+            info.minControlPointMillis <= info.maxControlPointMillis && info.maxControlPointMillis <= info.maxDurationMillis &&
+            info.maxDurationMillis <= Capabilities.MAX_ENVELOPE_MILLIS
 }
 
 /**

@@ -21,6 +21,7 @@ import org.hapticon.app.playback.DeviceCapabilities
 import org.hapticon.app.playback.RendererChoice
 import org.hapticon.app.playback.defaultVibrator
 import org.hapticon.core.HapticIcon
+import org.hapticon.messaging.Capabilities
 import org.hapticon.messaging.Clock
 import org.hapticon.messaging.Messenger
 import org.hapticon.messaging.VibrationRateLimiter
@@ -81,7 +82,6 @@ class ChatComponent(
             val device = {
                 DeviceCapabilities.detect(context, vibrator, audio.hapticPlaybackSupported, audio.hapticGeneratorAvailable)
             }
-            val override = { rendererOverride(settings) }
             val player = chatPlayer(
                 vibrator, device, settings,
                 audio = Media3AudioCoupledOutput(context),
@@ -96,7 +96,7 @@ class ChatComponent(
                 },
                 player = player,
                 rateLimiter = VibrationRateLimiter(Clock.MONOTONIC),
-                localCapabilities = { user -> RendererChoice.capabilitiesOf(user, device(), override(), settings.preferences.value.pitchFit) },
+                localCapabilities = localCapabilities(device, settings),
                 scope = scope,
                 quietNow = { doNotDisturb(context) },
             )
@@ -112,6 +112,14 @@ class ChatComponent(
             val patterns = org.hapticon.app.data.RoomPatternRepository(db.patternDao())
             return ChatComponent(repository, RoomIconRepository(db.iconDao()), settings, sync, player, device, probe, notifier, trustKey, patterns, certificates)
         }
+
+        /**
+         * What this phone publishes as its capabilities, at connect and on every republish ([ChatSync]): read afresh
+         * from [device] (the vibrator's renderer, frequency profile and envelope limits) and [settings] (the renderer
+         * override and the pitch fit) each time.
+         */
+        internal fun localCapabilities(device: () -> DeviceCapabilities, settings: ChatSettingsRepository): (user: String) -> Capabilities =
+            { user -> RendererChoice.capabilitiesOf(user, device(), rendererOverride(settings), settings.preferences.value.pitchFit) }
 
         /** The renderer the user forces in [settings], or null for the automatic choice. */
         internal fun rendererOverride(settings: ChatSettingsRepository): RendererKind? =

@@ -13,7 +13,10 @@ import org.hapticon.core.pattern.EnvelopeEffectInfo
 import org.hapticon.core.pattern.FrequencyKey
 import org.hapticon.core.pattern.FrequencyMapping
 import org.hapticon.core.pattern.HapticPattern
+import org.hapticon.core.pattern.PatternEnvelope
 import org.hapticon.core.pattern.PitchFit
+import org.hapticon.messaging.Decoded
+import org.hapticon.messaging.MessageCodec
 import org.hapticon.messaging.RendererKind
 import org.junit.Assert.assertEquals
 import org.junit.Assert.assertNull
@@ -80,6 +83,32 @@ class EnvelopeEffectApi36Test {
         assertEquals(EnvelopeEffectInfo(16, 20, 1000, 16_000), device.envelopeInfo)
         assertNull(phone(null).frequencyRangeHz)
         assertEquals(120.0..240.0, phone(narrow).frequencyRangeHz)
+    }
+
+    @Test
+    fun publishedCapabilities_carryTheShadowedVibratorsEnvelopeLimits() {
+        // What ChatSync publishes at connect and on every republish (ChatComponent.create hands it this function).
+        val settings = InMemoryChatSettings()
+        val narrowLimits = phone(narrow, TestEnvelopeLimits(4, 50, 500))
+        val caps = ChatComponent.localCapabilities({ narrowLimits }, settings)("alice")
+        // getMaxDurationMillis() is the platform's: 4 × 500 ms.
+        assertEquals(EnvelopeEffectInfo(4, 50, 500, 2000), caps.envelopeLimits)
+        assertEquals(
+            """{"schema":"hapticon.capabilities","version":1,"user":"alice","renderer":"envelope","amplitudeControl":true,"apiLevel":36,""" +
+                """"resonantFrequencyHz":170,"envelopeEffects":true,"frequencyMinHz":120,"frequencyMaxHz":240,"pitchFit":"octaves",""" +
+                """"envelopeMaxControlPoints":4,"envelopeMinControlPointMillis":50,"envelopeMaxControlPointMillis":500,"envelopeMaxDurationMillis":2000}""",
+            String(MessageCodec.encode(caps), Charsets.UTF_8),
+        )
+        // A sender reading it previews with these limits: the one resampling this phone plays with.
+        val preview = (PeerPitch.planOf((MessageCodec.decodeCapabilities(MessageCodec.encode(caps)) as Decoded.Accepted).value, swell) as PatternPlan.Envelope)
+            .envelope as PatternEnvelope.Waveform
+        play(narrowLimits, swell)
+        assertEquals(preview.points.map { it.millis }, lastEnvelopeSegments().map { it.millis })
+        assertEquals(listOf(100L, 200L, 100L), preview.points.map { it.millis })
+        // A vibrator without envelope effects publishes none.
+        val plain = ChatComponent.localCapabilities({ phone(narrow, limits = null) }, settings)("alice")
+        assertNull(plain.envelopeLimits)
+        assertEquals(false, String(MessageCodec.encode(plain), Charsets.UTF_8).contains("envelopeMax"))
     }
 
     @Test

@@ -2,6 +2,7 @@ package org.hapticon.app.playback
 
 import org.hapticon.core.HapticIcon
 import org.hapticon.core.pattern.AmplitudeKey
+import org.hapticon.core.pattern.EnvelopeEffectInfo
 import org.hapticon.core.pattern.FrequencyKey
 import org.hapticon.core.pattern.HapticPattern
 import org.hapticon.core.pattern.PitchFit
@@ -76,7 +77,52 @@ class PeerPitchTest {
         // Knock's 20 ms pulses: no control points follow them, so an envelope phone plays amplitude steps.
         val knock = HapticIcon.KNOCK.toPattern()
         assertEquals("bob's phone: too quick for its envelope effect, amplitude steps at its resonance (170 Hz)", PeerPitch.describe(bob(), knock))
-        assertEquals(org.hapticon.app.feature.chat.PeerFeel(RendererKind.AMPLITUDE_WAVEFORM, null, pitch = PeerPitch.describe(bob(), knock)),
-            org.hapticon.app.feature.chat.PeerFeel.ofPattern(bob(), knock))
+        assertEquals(
+            org.hapticon.app.feature.chat.PeerFeel(
+                RendererKind.AMPLITUDE_WAVEFORM, null, pitch = PeerPitch.describe(bob(), knock),
+                envelope = "bob's envelope cannot follow it within the assumed limits (16 points, 20 ms–1 s each, 16 s in all; not published)",
+            ),
+            org.hapticon.app.feature.chat.PeerFeel.ofPattern(bob(), knock),
+        )
+    }
+
+    // Two 40 ms triangles 200 ms apart: six segments of 20 ms or more.
+    private val taps = HapticPattern(
+        "taps",
+        listOf(
+            AmplitudeKey(0.0, 0.0), AmplitudeKey(0.02, 1.0), AmplitudeKey(0.04, 0.0), AmplitudeKey(0.2, 0.0),
+            AmplitudeKey(0.22, 1.0), AmplitudeKey(0.24, 0.0), AmplitudeKey(0.4, 0.0),
+        ),
+        listOf(FrequencyKey(0.0, 150.0)),
+    )
+
+    @Test
+    fun publishedLimits_guaranteedOnes_sixPointsNothingMerged() {
+        val caps = bob().copy(envelopeLimits = EnvelopeEffectInfo.GUARANTEED)
+        assertEquals("bob's envelope: 6 control points (its limits: 16 points, 20 ms–1 s each, 16 s in all)", PeerPitch.describeEnvelope(caps, taps))
+        assertEquals("bob's phone (120–240 Hz): 150 Hz → plays 150 Hz", PeerPitch.describe(caps, taps))
+    }
+
+    @Test
+    fun publishedLimits_50msMinimum_theTapsBecomeStepsAndBothLinesSaySo() {
+        val caps = bob().copy(envelopeLimits = EnvelopeEffectInfo(4, 50, 1000, 4000))
+        assertEquals("bob's envelope cannot follow it within its limits (4 points, 50 ms–1 s each, 4 s in all)", PeerPitch.describeEnvelope(caps, taps))
+        assertEquals("bob's phone: too quick for its envelope effect, amplitude steps at its resonance (170 Hz)", PeerPitch.describe(caps, taps))
+        assertEquals(RendererKind.AMPLITUDE_WAVEFORM, org.hapticon.app.feature.chat.PeerFeel.ofPattern(caps, taps).renderer)
+    }
+
+    @Test
+    fun publishedLimits_shortControlPoints_longRampsCutAndDurationsInMs() {
+        // At most 100 ms per point, 16 of them: taps' two 160 ms silences are cut in two each, 6 + 2 points.
+        val caps = bob().copy(envelopeLimits = EnvelopeEffectInfo(16, 20, 100, 1600))
+        assertEquals("bob's envelope: 8 control points (its limits: 16 points, 20–100 ms each, 1.6 s in all)", PeerPitch.describeEnvelope(caps, taps))
+    }
+
+    @Test
+    fun noEnvelopeLine_forAudioStepsByChoiceOrAnOlderBuildsIcon() {
+        assertNull(PeerPitch.describeEnvelope(bob(RendererKind.AUDIO_COUPLED), taps))
+        assertNull(PeerPitch.describeEnvelope(bob(RendererKind.AMPLITUDE_WAVEFORM, envelope = false), taps))
+        val old = Capabilities("bob", RendererKind.ENVELOPE, amplitudeControl = true, apiLevel = 36, resonantFrequencyHz = 170.0)
+        assertNull(PeerPitch.describeEnvelope(old, HapticIcon.HUG.toPattern(), icon = true))
     }
 }

@@ -114,11 +114,13 @@ class PatternScreenshotTest : ScreenshotTest() {
                     message(3, false, MessageState.RECEIVED, "Slow and rising, nice"),
                 ),
                 HapticIcon.PRESETS, null, null,
-                // bob's Android 16 phone publishes a narrow frequency profile: the line under the composer names the pitch.
+                // bob's Android 16 phone publishes a narrow frequency profile and its envelope limits: the lines under the
+                // composer name the pitch and the control points it will play.
                 PeerFeel.ofPattern(
                     Capabilities(
                         "bob", RendererKind.ENVELOPE, amplitudeControl = true, apiLevel = 36, resonantFrequencyHz = 170.0,
                         envelopeEffects = true, frequencyRangeHz = 120.0..240.0, pitchFit = PitchFit.OCTAVES,
+                        envelopeLimits = EnvelopeEffectInfo.GUARANTEED,
                     ),
                     boing,
                 ),

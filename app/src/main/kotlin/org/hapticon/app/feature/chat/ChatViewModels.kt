@@ -167,6 +167,11 @@ data class PeerFeel(
     val alternative: RendererKind? = null,
     /** The pitch the peer's phone will play, one line ([org.hapticon.app.playback.PeerPitch]); null when it plays none. */
     val pitch: String? = null,
+    /**
+     * The control points the peer's envelope effect will get, resampled within the limits it publishes (or the guaranteed
+     * ones, said so), one line ([PeerPitch.describeEnvelope]); null when it plays no envelope effect.
+     */
+    val envelope: String? = null,
 ) {
     companion object {
         /**
@@ -177,10 +182,16 @@ data class PeerFeel(
             caps: Capabilities,
             icon: HapticIcon,
             fidelityPercent: Int? = RendererChoice.fidelityPercent(caps.renderer, icon),
-        ): PeerFeel = PeerFeel(
-            caps.renderer, fidelityPercent,
-            pitch = PeerPitch.describe(caps, icon.toPattern(), audioCoupled = caps.renderer == RendererKind.AUDIO_COUPLED, icon = true),
-        )
+        ): PeerFeel {
+            val pattern = icon.toPattern()
+            val audioCoupled = caps.renderer == RendererKind.AUDIO_COUPLED
+            return PeerFeel(
+                caps.renderer, fidelityPercent,
+                pitch = PeerPitch.describe(caps, pattern, audioCoupled = audioCoupled, icon = true),
+                // The peer's envelope renderer resamples the icon's pattern as it does a pattern; audio carries it whole.
+                envelope = if (audioCoupled) null else PeerPitch.describeEnvelope(caps, pattern, icon = true),
+            )
+        }
 
         /**
          * How [caps]'s phone plays a pattern, following [org.hapticon.app.playback.PatternPlan.of]: audio-coupled where
@@ -191,10 +202,11 @@ data class PeerFeel(
         fun ofPattern(caps: Capabilities, pattern: HapticPattern? = null): PeerFeel {
             val steps = if (caps.amplitudeControl) RendererKind.AMPLITUDE_WAVEFORM else RendererKind.ON_OFF
             val pitch = pattern?.let { PeerPitch.describe(caps, it) }
+            val envelope = pattern?.let { PeerPitch.describeEnvelope(caps, it) }
             // A peer that publishes envelopeEffects (this build) is planned exactly: an envelope phone plays a pattern
-            // its envelope cannot follow (a sharp pulse) as steps, and the line must say so.
+            // its envelope cannot follow (a sharp pulse, or beyond its limits) as steps, and the line must say so.
             if (pattern != null && caps.envelopeEffects != null && caps.renderer != RendererKind.AUDIO_COUPLED) {
-                return PeerFeel(PeerPitch.planOf(caps, pattern).renderer, null, pitch = pitch)
+                return PeerFeel(PeerPitch.planOf(caps, pattern).renderer, null, pitch = pitch, envelope = envelope)
             }
             return when (caps.renderer) {
                 RendererKind.AUDIO_COUPLED -> when {
@@ -206,7 +218,7 @@ data class PeerFeel(
                 }
                 RendererKind.AMPLITUDE_WAVEFORM -> PeerFeel(steps, null, pitch = pitch)
                 // Envelope, on/off, no actuator, the CLI's audio and unknown stay what the peer said.
-                else -> PeerFeel(caps.renderer, null, pitch = pitch)
+                else -> PeerFeel(caps.renderer, null, pitch = pitch, envelope = envelope)
             }
         }
     }

@@ -367,9 +367,10 @@ private fun Composer(uiState: ConversationUiState.Success, actions: Conversation
                     style = MaterialTheme.typography.bodySmall, color = MaterialTheme.colorScheme.onSurfaceVariant,
                     modifier = Modifier.padding(horizontal = 4.dp),
                 )
-                feel?.pitch?.let { pitch ->
+                // The pitch, then the envelope's control points within the peer's limits: one line each.
+                listOfNotNull(feel?.pitch, feel?.envelope).forEach { line ->
                     Text(
-                        pitch, style = MaterialTheme.typography.bodySmall, color = MaterialTheme.colorScheme.onSurfaceVariant,
+                        line, style = MaterialTheme.typography.bodySmall, color = MaterialTheme.colorScheme.onSurfaceVariant,
                         modifier = Modifier.padding(horizontal = 4.dp),
                     )
                 }

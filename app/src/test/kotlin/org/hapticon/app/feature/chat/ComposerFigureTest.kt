@@ -25,7 +25,14 @@ import org.hapticon.app.playback.Playback
 import org.hapticon.app.playback.PlaybackCapabilities
 import org.hapticon.app.playback.RendererChoice
 import org.hapticon.core.HapticIcon
+import org.hapticon.app.playback.PatternPlan
+import org.hapticon.app.playback.PeerPitch
+import org.hapticon.core.pattern.AmplitudeKey
+import org.hapticon.core.pattern.EnvelopeEffectInfo
+import org.hapticon.core.pattern.FrequencyKey
 import org.hapticon.core.pattern.HapticPattern
+import org.hapticon.core.pattern.PatternEnvelope
+import org.hapticon.core.pattern.PitchFit
 import org.hapticon.messaging.Capabilities
 import org.hapticon.messaging.RendererKind
 import org.junit.After
@@ -39,7 +46,8 @@ import org.robolectric.Shadows.shadowOf
 /**
  * The composer's "how it will feel there" figure renders the chosen icon, so the ViewModel computes it in the
  * player's render context, never on the main thread (issue 13); while it is being computed the line shows the
- * peer's renderer without a figure, and a figure is only ever shown beside the icon it was computed for.
+ * peer's renderer without a figure, and a figure is only ever shown beside the icon it was computed for. A chosen
+ * pattern's preview resamples it within the envelope limits the peer publishes (issue 12).
  */
 @RunWith(RobolectricTestRunner::class)
 class ComposerFigureTest {
@@ -118,7 +126,66 @@ class ComposerFigureTest {
         assertTrue("rendered on the main thread: ${violations.map { it.message }}", violations.isEmpty())
     }
 
+    /** The composer's state after choosing [pattern] in a conversation with [bob] (the capabilities bob publishes). */
+    private fun peerFeelOfPattern(bob: Capabilities, pattern: HapticPattern): PeerFeel? {
+        val viewModel = ConversationViewModel(
+            "bob", { "alice" }, OfflineFirstChatRepository(db), RoomIconRepository(db.iconDao()), player,
+            MutableStateFlow(mapOf("bob" to bob)), onSent = {},
+        )
+        val states = CopyOnWriteArrayList<ConversationUiState.Success>()
+        CoroutineScope(Dispatchers.Main + collector).launch {
+            viewModel.uiState.collect { if (it is ConversationUiState.Success) states += it }
+        }
+        idleUntil("the conversation") { states.isNotEmpty() }
+        viewModel.selectPattern(pattern)
+        idleUntil("${pattern.name} chosen") { states.last().selectedPattern == pattern }
+        return states.last().peerFeel
+    }
+
+    @Test
+    fun chosenPattern_peerPublishesNarrowEnvelopeLimits_previewResamplesWithThem() {
+        // 4 points of at least 50 ms: the ramp's 7 segments are fitted into 4 (PatternEnvelope.of, as bob's phone runs it).
+        val narrow = BOB_API36.copy(envelopeLimits = EnvelopeEffectInfo(4, 50, 1000, 4000))
+        assertEquals(
+            PeerFeel(
+                RendererKind.ENVELOPE, null,
+                pitch = "bob's phone (120–240 Hz): 150 Hz → plays 150 Hz",
+                envelope = "bob's envelope: 4 control points (7 merged into 4 by its limits: 4 points, 50 ms–1 s each, 4 s in all)",
+            ),
+            peerFeelOfPattern(narrow, RAMP),
+        )
+        assertEquals(4, ((PeerPitch.planOf(narrow, RAMP) as PatternPlan.Envelope).envelope as PatternEnvelope.Waveform).points.size)
+    }
+
+    @Test
+    fun chosenPattern_peerWithoutEnvelopeLimits_previewAssumesTheGuaranteedOnesAndSaysSo() {
+        assertEquals(
+            PeerFeel(
+                RendererKind.ENVELOPE, null,
+                pitch = "bob's phone (120–240 Hz): 150 Hz → plays 150 Hz",
+                envelope = "bob's envelope: 7 control points (limits not published; assumed 16 points, 20 ms–1 s each, 16 s in all)",
+            ),
+            peerFeelOfPattern(BOB_API36, RAMP),
+        )
+    }
+
     private companion object {
+        /** bob's Android 16 phone as a build before published envelope limits describes it. */
+        val BOB_API36 = Capabilities(
+            "bob", RendererKind.ENVELOPE, amplitudeControl = true, apiLevel = 36, resonantFrequencyHz = 170.0,
+            envelopeEffects = true, frequencyRangeHz = 120.0..240.0, pitchFit = PitchFit.OCTAVES,
+        )
+
+        /** Seven straight segments of 100–200 ms, no two on one line: seven control points where 16 are allowed. */
+        val RAMP = HapticPattern(
+            "ramp",
+            listOf(
+                AmplitudeKey(0.0, 0.0), AmplitudeKey(0.1, 0.5), AmplitudeKey(0.2, 0.8), AmplitudeKey(0.3, 0.95),
+                AmplitudeKey(0.4, 1.0), AmplitudeKey(0.6, 1.0), AmplitudeKey(0.8, 0.4), AmplitudeKey(1.0, 0.0),
+            ),
+            listOf(FrequencyKey(0.0, 150.0)),
+        )
+
         /** The pitch line for a peer that publishes no frequency range (an amplitude-waveform phone): shown from the first state, it needs no render. */
         const val NO_PITCH = "bob's phone has no pitch control: plays at its resonance"
     }

@@ -144,6 +144,17 @@ class ConversationScreenTest {
     }
 
     @Test
+    fun composer_envelopeLine_shownUnderThePitchLine() {
+        val feel = PeerFeel(
+            RendererKind.ENVELOPE, null, pitch = "bob's phone (120–240 Hz): 147 Hz → plays 147 Hz",
+            envelope = "bob's envelope: 4 control points (7 merged into 4 by its limits: 4 points, 50 ms–1 s each, 4 s in all)",
+        )
+        compose.setContent { ConversationScreen(state(emptyList(), HapticIcon.HUG, feel), ConversationActions()) }
+        compose.onNodeWithText("bob's phone (120–240 Hz): 147 Hz → plays 147 Hz").assertExists()
+        compose.onNodeWithText("bob's envelope: 4 control points (7 merged into 4 by its limits: 4 points, 50 ms–1 s each, 4 s in all)").assertExists()
+    }
+
+    @Test
     fun composer_peerPublishedANarrowProfile_saysThePitchItsPhoneWillPlay() {
         val bob = Capabilities(
             "bob", RendererKind.ENVELOPE, amplitudeControl = true, apiLevel = 36, resonantFrequencyHz = 170.0,
