@@ -1,6 +1,16 @@
 package org.hapticon.app.ui
 
 import androidx.compose.foundation.layout.Arrangement
+import androidx.compose.foundation.layout.ExperimentalLayoutApi
+import androidx.compose.foundation.layout.FlowRow
+import androidx.compose.foundation.shape.CornerSize
+import androidx.compose.foundation.shape.RoundedCornerShape
+import androidx.compose.ui.geometry.Size
+import androidx.compose.ui.graphics.Shape
+import androidx.compose.ui.layout.Layout
+import androidx.compose.ui.text.TextStyle
+import androidx.compose.ui.unit.Constraints
+import androidx.compose.ui.unit.Density
 import androidx.compose.foundation.layout.Box
 import androidx.compose.foundation.layout.BoxWithConstraints
 import androidx.compose.foundation.layout.heightIn
@@ -64,12 +74,14 @@ fun <T> DropdownField(
             OutlinedButton(
                 onClick = { expanded = true },
                 enabled = enabled,
+                shape = WrappingButtonShape,
                 modifier = Modifier.semantics {
                     contentDescription = label
                     stateDescription = optionLabel(selected)
                 },
             ) {
-                Text(optionLabel(selected))
+                // Weighted so a label too long for one line wraps and still leaves room for the arrow.
+                Text(optionLabel(selected), Modifier.weight(1f, fill = false))
                 Spacer(Modifier.width(4.dp))
                 Icon(HapticonIcons.ArrowDropDown, contentDescription = null, modifier = Modifier.size(18.dp))
             }
@@ -162,16 +174,75 @@ fun SwitchRow(label: String, checked: Boolean, onCheckedChange: (Boolean) -> Uni
         verticalAlignment = Alignment.CenterVertically,
         horizontalArrangement = Arrangement.SpaceBetween,
     ) {
-        Text(label, style = MaterialTheme.typography.titleMedium, modifier = Modifier.weight(1f))
+        // Material 3 list items keep 16 dp between a wrapped label and the trailing switch.
+        Text(label, style = MaterialTheme.typography.titleMedium, modifier = Modifier.weight(1f).padding(end = 16.dp))
         Switch(checked = checked, onCheckedChange = null, enabled = enabled)
     }
 }
 
-/** A label on the left, its value on the right. */
+/**
+ * A label on the left, its value on the right; when both do not fit one line (the largest font sizes) the
+ * value moves under its label whole instead of being squeezed into a column of broken words beside it.
+ */
+@OptIn(ExperimentalLayoutApi::class)
 @Composable
-fun LabeledValue(label: String, value: String, modifier: Modifier = Modifier) {
-    Row(modifier.fillMaxWidth(), horizontalArrangement = Arrangement.SpaceBetween) {
-        Text(label, style = MaterialTheme.typography.bodyMedium)
-        Text(value, style = MaterialTheme.typography.bodyMedium)
+fun LabeledValue(label: String, value: String, modifier: Modifier = Modifier, style: TextStyle = MaterialTheme.typography.bodyMedium, labelStyle: TextStyle = style) {
+    FlowRow(modifier.fillMaxWidth(), horizontalArrangement = Arrangement.SpaceBetween) {
+        Text(label, style = labelStyle, modifier = Modifier.padding(end = 8.dp))
+        Text(value, style = style)
     }
+}
+
+/**
+ * A group of buttons: side by side while every label fits on one line (as a `Row` with [spacing]), otherwise
+ * stacked, each button the full width, [spacing] apart. Material 3 stacks buttons that do not fit side by side
+ * (its dialogs' "stacked" button layout) rather than letting a label break inside a pill next to its
+ * neighbour; at font scale 2.0 "Next | Send condition again" became a two-line oval beside a short button.
+ * The decision uses each button's max intrinsic width, the width at which its label needs no line break.
+ */
+@Composable
+fun ButtonRow(modifier: Modifier = Modifier, spacing: Dp = 12.dp, content: @Composable () -> Unit) {
+    Layout(content, modifier) { measurables, constraints ->
+        val gap = spacing.roundToPx()
+        val natural = measurables.map { it.maxIntrinsicWidth(Constraints.Infinity) }
+        val sideBySide = !constraints.hasBoundedWidth ||
+            natural.sum() + gap * (measurables.size - 1).coerceAtLeast(0) <= constraints.maxWidth
+        if (sideBySide) {
+            val placeables = measurables.mapIndexed { i, m ->
+                m.measure(constraints.copy(minWidth = 0, minHeight = 0, maxWidth = minOf(natural[i], constraints.maxWidth)))
+            }
+            val width = (placeables.sumOf { it.width } + gap * (placeables.size - 1).coerceAtLeast(0)).coerceIn(constraints.minWidth, constraints.maxWidth)
+            val height = (placeables.maxOfOrNull { it.height } ?: 0).coerceIn(constraints.minHeight, constraints.maxHeight)
+            layout(width, height) {
+                var x = 0
+                for (p in placeables) {
+                    p.placeRelative(x, 0)
+                    x += p.width + gap
+                }
+            }
+        } else {
+            val placeables = measurables.map { it.measure(Constraints.fixedWidth(constraints.maxWidth).copy(maxHeight = constraints.maxHeight)) }
+            val height = (placeables.sumOf { it.height } + gap * (placeables.size - 1)).coerceIn(constraints.minHeight, constraints.maxHeight)
+            layout(constraints.maxWidth, height) {
+                var y = 0
+                for (p in placeables) {
+                    p.placeRelative(0, y)
+                    y += p.height + gap
+                }
+            }
+        }
+    }
+}
+
+/**
+ * Material 3's fully rounded button shape, with the corner radius capped at 32 dp so a label that needs two
+ * lines (a long protocol name at font scale 2.0) sits in a rounded rectangle instead of an oval whose curve
+ * cuts into the first and last words. A one-line button at any font scale (at most 64 dp tall) is exactly
+ * the pill of `ButtonDefaults.shape`.
+ */
+val WrappingButtonShape: Shape = RoundedCornerShape(CappedHalfCorner(32.dp))
+
+/** Half the shorter side (a pill) up to [cap]. */
+private class CappedHalfCorner(private val cap: Dp) : CornerSize {
+    override fun toPx(shapeSize: Size, density: Density): Float = minOf(shapeSize.minDimension / 2, with(density) { cap.toPx() })
 }

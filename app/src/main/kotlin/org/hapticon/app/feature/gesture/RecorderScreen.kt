@@ -42,6 +42,7 @@ import org.hapticon.gesture.Recording
 import org.hapticon.gesture.extraction.FitReport
 import org.hapticon.gesture.recognition.GestureLabel
 import java.util.Locale
+import org.hapticon.app.ui.ButtonRow
 
 /** The Record tab wired to [viewModel]; [touch] is the touchscreen source the pad feeds, [onImport] opens the file picker. */
 @Composable
@@ -184,7 +185,7 @@ private fun TrimAndFit(state: RecorderUiState.Ready, take: Recording, actions: R
             style = MaterialTheme.typography.bodySmall,
         )
         FitReportView(fit.report)
-        Row(horizontalArrangement = Arrangement.spacedBy(12.dp)) {
+        ButtonRow {
             OutlinedButton(onClick = { actions.onPlay() }) { Text("Play") }
             Button(onClick = { actions.onSaveIcon() }, enabled = state.iconName.isNotBlank()) { Text("Save icon") }
         }

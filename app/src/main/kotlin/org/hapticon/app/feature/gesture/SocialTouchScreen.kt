@@ -5,7 +5,6 @@ import androidx.compose.foundation.background
 import androidx.compose.foundation.layout.Arrangement
 import androidx.compose.foundation.layout.Box
 import androidx.compose.foundation.layout.Column
-import androidx.compose.foundation.layout.Row
 import androidx.compose.foundation.layout.fillMaxSize
 import androidx.compose.foundation.layout.fillMaxWidth
 import androidx.compose.foundation.layout.height
@@ -37,6 +36,7 @@ import org.hapticon.app.ui.DropdownField
 import org.hapticon.app.ui.SwitchRow
 import org.hapticon.gesture.social.ContactFrame
 import java.util.Locale
+import org.hapticon.app.ui.ButtonRow
 
 /** The Social touch tab wired to [viewModel]; [onImportModel] and [onClassifyFile] open the file picker. */
 @Composable
@@ -110,7 +110,7 @@ private fun SocialTouchContent(state: SocialTouchUiState.Ready, actions: SocialT
             modifier = Modifier.semantics { contentDescription = "Recognised touch: ${latest?.label ?: "nothing yet"}" },
         )
         latest?.let { Text(String.format(Locale.ROOT, "%s over %.1f s · %s", touches(it.touches), it.seconds, it.source), style = MaterialTheme.typography.bodySmall) }
-        Row(horizontalArrangement = Arrangement.spacedBy(12.dp)) {
+        ButtonRow {
             OutlinedButton(onClick = actions.onImportModel) { Text("Import model") }
             OutlinedButton(onClick = actions.onClassifyFile, enabled = state.modelLabels.isNotEmpty()) { Text("Classify a contact CSV") }
         }
@@ -136,7 +136,7 @@ private fun TeachSection(state: SocialTouchUiState.Ready, actions: SocialTouchAc
     if (state.examples.isNotEmpty()) {
         Text(state.examples.entries.joinToString(" · ") { "${it.key}: ${it.value}" }, style = MaterialTheme.typography.bodyMedium)
     }
-    Row(horizontalArrangement = Arrangement.spacedBy(12.dp)) {
+    ButtonRow {
         Button(onClick = actions.onTrain, enabled = state.examples.size >= 2 && !state.training) { Text(if (state.training) "Training…" else "Train") }
         OutlinedButton(onClick = actions.onClearExamples, enabled = state.examples.isNotEmpty()) { Text("Clear examples") }
     }

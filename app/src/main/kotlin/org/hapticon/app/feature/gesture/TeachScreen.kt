@@ -4,7 +4,6 @@ import org.hapticon.sensor.live.PlotSource
 import androidx.compose.foundation.layout.Arrangement
 import androidx.compose.foundation.layout.Column
 import androidx.compose.foundation.layout.FlowRow
-import androidx.compose.foundation.layout.Row
 import androidx.compose.foundation.layout.fillMaxSize
 import androidx.compose.foundation.layout.padding
 import androidx.compose.foundation.rememberScrollState
@@ -27,6 +26,7 @@ import org.hapticon.app.ui.DropdownField
 import org.hapticon.app.ui.LabeledValue
 import org.hapticon.gesture.recognition.GestureLabel
 import java.util.Locale
+import org.hapticon.app.ui.ButtonRow
 
 /** The Teach tab wired to [viewModel]; [touch] is the touchscreen source the pad feeds, [onImportModel] opens the file picker. */
 @Composable
@@ -101,7 +101,7 @@ private fun TeachContent(state: TeachUiState.Ready, plot: PlotSource, touch: Tou
             Text("All $wanted takes recorded")
         }
         Text("$done of $wanted takes", style = MaterialTheme.typography.bodySmall)
-        Row(horizontalArrangement = Arrangement.spacedBy(12.dp)) {
+        ButtonRow {
             Button(onClick = { actions.onTrain() }, enabled = done > 0 && !state.training && !state.recording) { Text(if (state.training) "Training…" else "Train") }
             OutlinedButton(onClick = { actions.onClearExamples() }, enabled = done > 0 && !state.recording) { Text("Clear takes") }
         }

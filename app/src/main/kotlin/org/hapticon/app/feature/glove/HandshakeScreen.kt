@@ -44,6 +44,7 @@ import androidx.lifecycle.viewmodel.viewModelFactory
 import java.util.Locale
 import org.hapticon.app.di.AppContainer
 import org.hapticon.app.designsystem.HapticonIcons
+import org.hapticon.app.ui.LabeledValue
 import org.hapticon.app.ui.SwitchRow
 
 /** The handshake view wired to its [HandshakeViewModel]. */
@@ -150,20 +151,16 @@ fun HandshakeScreen(uiState: HandshakeUiState, actions: HandshakeActions) {
 private fun Hands(state: HandshakeUiState.Ready) {
     Column(verticalArrangement = Arrangement.spacedBy(4.dp)) {
         Text("Angles", style = MaterialTheme.typography.titleMedium, modifier = Modifier.semantics { heading() })
-        Row(Modifier.fillMaxWidth(), horizontalArrangement = Arrangement.SpaceBetween) {
-            Text("You", style = MaterialTheme.typography.labelLarge)
-            Text(
-                "thumb ${angle(state.selfThumbDegrees, state.thumbFault)} · middle ${angle(state.selfMiddleDegrees, state.middleFault)}",
-                style = MaterialTheme.typography.bodyMedium,
-            )
-        }
-        Row(Modifier.fillMaxWidth(), horizontalArrangement = Arrangement.SpaceBetween) {
-            Text(if (state.simulatedPartner) "Partner (simulated)" else "Partner", style = MaterialTheme.typography.labelLarge)
-            Text(
-                "thumb ${angle(state.partnerThumbDegrees, false)} · middle ${angle(state.partnerMiddleDegrees, false)}",
-                style = MaterialTheme.typography.bodyMedium,
-            )
-        }
+        // Label and angles side by side while both fit, else the angles whole under the label (font scale 2.0).
+        LabeledValue(
+            "You", "thumb ${angle(state.selfThumbDegrees, state.thumbFault)} · middle ${angle(state.selfMiddleDegrees, state.middleFault)}",
+            labelStyle = MaterialTheme.typography.labelLarge,
+        )
+        LabeledValue(
+            if (state.simulatedPartner) "Partner (simulated)" else "Partner",
+            "thumb ${angle(state.partnerThumbDegrees, false)} · middle ${angle(state.partnerMiddleDegrees, false)}",
+            labelStyle = MaterialTheme.typography.labelLarge,
+        )
     }
 }
 

@@ -29,6 +29,7 @@ import androidx.compose.ui.semantics.semantics
 import androidx.compose.ui.unit.dp
 import org.hapticon.app.designsystem.HapticonIcons
 import org.hapticon.app.ui.DropdownField
+import org.hapticon.app.ui.ButtonRow
 
 /** The Sensors screen's connection section: protocol, baud rate, Connect/Disconnect and the connection's state. */
 @OptIn(ExperimentalLayoutApi::class)
@@ -49,7 +50,7 @@ internal fun ConnectionSection(state: SensorsUiState.Ready, actions: SensorsActi
                 enabled = !locked,
             )
         }
-        Row(horizontalArrangement = Arrangement.spacedBy(12.dp)) {
+        ButtonRow {
             Button(onClick = actions.onConnect, enabled = state.canConnect) { Text("Connect") }
             OutlinedButton(onClick = actions.onDisconnect, enabled = state.canDisconnect) { Text("Disconnect") }
         }

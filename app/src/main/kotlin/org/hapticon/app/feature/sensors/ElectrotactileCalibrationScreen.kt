@@ -31,6 +31,7 @@ import androidx.compose.runtime.getValue
 import androidx.compose.runtime.remember
 import androidx.compose.ui.Alignment
 import androidx.compose.ui.Modifier
+import androidx.compose.ui.text.style.TextAlign
 import androidx.compose.ui.semantics.LiveRegionMode
 import androidx.compose.ui.semantics.contentDescription
 import androidx.compose.ui.semantics.heading
@@ -144,9 +145,13 @@ private fun ElectrodeGrid(uiState: ElectrotactileUiState) {
                             .semantics { contentDescription = "Electrode ${e + 1}: ${if (pending) "not yet calibrated" else mA(AmplitudeSteps.milliampsOf(step))}" },
                         contentAlignment = Alignment.Center,
                     ) {
-                        Column(Modifier.padding(vertical = 6.dp), horizontalAlignment = Alignment.CenterHorizontally) {
+                        // A 4 dp margin keeps the current off the cell's edge; too wide for it, "mA" goes to a second line.
+                        Column(Modifier.padding(vertical = 6.dp, horizontal = 4.dp), horizontalAlignment = Alignment.CenterHorizontally) {
                             Text("${e + 1}", style = MaterialTheme.typography.labelSmall)
-                            Text(if (pending) "—" else mA(AmplitudeSteps.milliampsOf(step)), style = MaterialTheme.typography.labelLarge)
+                            Text(
+                                if (pending) "—" else mA(AmplitudeSteps.milliampsOf(step)),
+                                style = MaterialTheme.typography.labelLarge, textAlign = TextAlign.Center,
+                            )
                         }
                     }
                 }

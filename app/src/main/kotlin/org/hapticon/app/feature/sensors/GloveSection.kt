@@ -5,7 +5,6 @@ import androidx.compose.foundation.layout.Arrangement
 import androidx.compose.foundation.layout.Column
 import androidx.compose.foundation.layout.ExperimentalLayoutApi
 import androidx.compose.foundation.layout.FlowRow
-import androidx.compose.foundation.layout.Row
 import androidx.compose.foundation.layout.fillMaxWidth
 import androidx.compose.foundation.layout.padding
 import androidx.compose.material3.Button
@@ -16,6 +15,7 @@ import androidx.compose.runtime.Composable
 import androidx.compose.ui.Modifier
 import androidx.compose.ui.unit.dp
 import org.hapticon.app.ui.DropdownField
+import org.hapticon.app.ui.ButtonRow
 
 /** The Sensors screen's flex-sensor glove section: finger channels, calibration and handshake. */
 @OptIn(ExperimentalLayoutApi::class)
@@ -34,7 +34,7 @@ internal fun GloveSection(glove: GloveUi, actions: SensorsActions) {
                     DropdownField("ADC resolution", listOf(10, 12), glove.adcBits, { "$it bit" }, { actions.onGloveChannels(current.copy(adcBits = it)) })
                 }
             }
-            Row(horizontalArrangement = Arrangement.spacedBy(12.dp)) {
+            ButtonRow {
                 Button(onClick = actions.onOpenCalibration) { Text("Calibrate glove") }
                 OutlinedButton(onClick = actions.onOpenHandshake) { Text("Handshake") }
             }

@@ -35,6 +35,7 @@ import org.hapticon.app.ui.LabeledValue
 import org.hapticon.sensor.electrotactile.AmplitudeSteps
 import org.hapticon.study.compliance.ComplianceProtocol
 import java.util.Locale
+import org.hapticon.app.ui.ButtonRow
 
 /** The compliance study wired to [viewModel]; [onBack] returns to the researcher screen. */
 @Composable
@@ -96,7 +97,7 @@ private fun SetupContent(state: ComplianceUiState.Setup, actions: ComplianceActi
         style = MaterialTheme.typography.bodyMedium,
     )
     OutlinedTextField(state.participant, actions.onParticipant, label = { Text("Participant") }, singleLine = true, modifier = Modifier.fillMaxWidth())
-    Row(horizontalArrangement = Arrangement.spacedBy(12.dp)) {
+    ButtonRow {
         DropdownField("Participant number", (0 until 40).toList(), state.participantIndex, { (it + 1).toString() }, actions.onParticipantIndex)
         DropdownField("Repetitions", (1..ComplianceProtocol.MAX_REPETITIONS).toList(), protocol.repetitions, { it.toString() }, actions.onRepetitions)
     }
@@ -123,7 +124,7 @@ private fun TrialContent(state: ComplianceUiState.Trial, actions: ComplianceActi
         answer, { answer = it }, label = { Text("How soft, as a number") }, singleLine = true,
         keyboardOptions = KeyboardOptions(keyboardType = KeyboardType.Decimal), modifier = Modifier.fillMaxWidth(),
     )
-    Row(horizontalArrangement = Arrangement.spacedBy(12.dp)) {
+    ButtonRow {
         Button(onClick = { actions.onAnswer(answer) }, enabled = state.sent && answer.isNotBlank()) { Text("Next") }
         OutlinedButton(onClick = actions.onSendCondition, enabled = state.boardReady) { Text("Send condition again") }
     }

@@ -54,6 +54,8 @@ import org.hapticon.study.StudyTask
 import org.hapticon.app.study.StoredProtocol
 import org.hapticon.study.LikertScale
 import org.hapticon.study.design.OrderScheme
+import org.hapticon.app.ui.WrappingButtonShape
+import org.hapticon.app.ui.ButtonRow
 
 /** What the researcher screen can ask for. */
 @Immutable
@@ -117,7 +119,7 @@ private fun ResearcherContent(state: ResearcherUiState.Success, actions: Researc
                             if (masking.isOn) "${masking.color.label} at ${"%.0f".format(Locale.ROOT, masking.cappedLevelDbfs)} dBFS" else "off",
                         style = MaterialTheme.typography.bodyMedium,
                     )
-                    Row(horizontalArrangement = Arrangement.spacedBy(8.dp)) {
+                    ButtonRow(spacing = 8.dp) {
                         if (selected.readOnly) {
                             OutlinedButton(onClick = { actions.onDuplicate(selected) }) { Text("Duplicate to edit") }
                         } else {
@@ -135,7 +137,7 @@ private fun ResearcherContent(state: ResearcherUiState.Success, actions: Researc
         }
         item {
             // Shaping Compliance's study runs on the FSR board, not as an icon protocol: its own runner.
-            OutlinedButton(onClick = actions.onOpenCompliance, modifier = Modifier.fillMaxWidth()) { Text("Compliance study (Shaping Compliance, FSR board)") }
+            OutlinedButton(onClick = actions.onOpenCompliance, modifier = Modifier.fillMaxWidth(), shape = WrappingButtonShape) { Text("Compliance study (Shaping Compliance, FSR board)") }
         }
         item { Text("Sessions", style = MaterialTheme.typography.titleMedium, modifier = Modifier.semantics { heading() }) }
         if (state.sessions.isEmpty()) item { Text("No sessions yet.", style = MaterialTheme.typography.bodyMedium) }
@@ -158,7 +160,7 @@ private fun ResearcherContent(state: ResearcherUiState.Success, actions: Researc
                 state.export?.let { export ->
                     Text("${export.csvFile.name}, ${export.jsonFile.name}: ${export.rows} rows", style = MaterialTheme.typography.bodySmall)
                     for (check in export.checks) Text("${check.participant}: ${check.summary}", style = MaterialTheme.typography.bodyMedium)
-                    Row(horizontalArrangement = Arrangement.spacedBy(8.dp)) {
+                    ButtonRow(spacing = 8.dp) {
                         OutlinedButton(onClick = { share(export.csvFile, "text/csv") }) { Text("Share CSV") }
                         OutlinedButton(onClick = { share(export.jsonFile, "application/json") }) { Text("Share JSON") }
                     }
@@ -193,7 +195,7 @@ private fun CollectorSettings(state: ResearcherUiState.Success, actions: Researc
             supportingText = { Text("hapticon collect token add --study ${state.selected?.protocol?.id ?: "ID"} --role upload") },
             visualTransformation = PasswordVisualTransformation(), modifier = Modifier.fillMaxWidth(),
         )
-        Row(horizontalArrangement = Arrangement.spacedBy(8.dp)) {
+        ButtonRow(spacing = 8.dp) {
             OutlinedButton(onClick = { actions.onSetCollector(url, token) }) { Text("Save collector") }
             val failed = state.upload is UploadState.Failed
             Button(onClick = actions.onUpload, enabled = state.upload != UploadState.Uploading && state.collectorUrl.isNotBlank()) {
@@ -291,7 +293,7 @@ fun ProtocolEditorScreen(state: ProtocolEditorUiState, actions: ProtocolEditorAc
                 Button(onClick = actions.onSave, enabled = problem == null) { Text("Save") }
                 Text("Protocol JSON", style = MaterialTheme.typography.titleMedium, modifier = Modifier.semantics { heading() })
                 OutlinedTextField(editing.json, actions.onSetJson, label = { Text("Protocol JSON") }, minLines = 4, modifier = Modifier.fillMaxWidth())
-                Row(horizontalArrangement = Arrangement.spacedBy(8.dp)) {
+                ButtonRow(spacing = 8.dp) {
                     OutlinedButton(onClick = actions.onExportJson) { Text("Export JSON") }
                     OutlinedButton(onClick = actions.onImportJson, enabled = editing.json.isNotBlank()) { Text("Import JSON") }
                 }
