@@ -85,6 +85,7 @@ import org.hapticon.app.designsystem.HapticonIcons
 import org.hapticon.app.playback.label
 import org.hapticon.app.ui.EnvelopeThumbnail
 import org.hapticon.app.ui.PatternThumbnail
+import org.hapticon.app.ui.keepUnitsWithNumbers
 import org.hapticon.core.HapticIcon
 import org.hapticon.core.pattern.HapticPattern
 
@@ -370,7 +371,7 @@ private fun Composer(uiState: ConversationUiState.Success, actions: Conversation
                 // The pitch, then the envelope's control points within the peer's limits: one line each.
                 listOfNotNull(feel?.pitch, feel?.envelope).forEach { line ->
                     Text(
-                        line, style = MaterialTheme.typography.bodySmall, color = MaterialTheme.colorScheme.onSurfaceVariant,
+                        keepUnitsWithNumbers(line), style = MaterialTheme.typography.bodySmall, color = MaterialTheme.colorScheme.onSurfaceVariant,
                         modifier = Modifier.padding(horizontal = 4.dp),
                     )
                 }

@@ -150,8 +150,8 @@ class ConversationScreenTest {
             envelope = "bob's envelope: 4 control points (7 merged into 4 by its limits: 4 points, 50 ms–1 s each, 4 s in all)",
         )
         compose.setContent { ConversationScreen(state(emptyList(), HapticIcon.HUG, feel), ConversationActions()) }
-        compose.onNodeWithText("bob's phone (120–240 Hz): 147 Hz → plays 147 Hz").assertExists()
-        compose.onNodeWithText("bob's envelope: 4 control points (7 merged into 4 by its limits: 4 points, 50 ms–1 s each, 4 s in all)").assertExists()
+        compose.onNodeWithText("bob's phone (120–240\u00A0Hz): 147\u00A0Hz → plays 147\u00A0Hz").assertExists()
+        compose.onNodeWithText("bob's envelope: 4 control points (7 merged into 4 by its limits: 4 points, 50\u00A0ms–1\u00A0s each, 4\u00A0s in all)").assertExists()
     }
 
     @Test
@@ -167,13 +167,13 @@ class ConversationScreenTest {
             val icon by selected.collectAsState()
             ConversationScreen(state(emptyList(), icon, f), ConversationActions())
         }
-        compose.onNodeWithText("bob's phone (120–240 Hz): 349 Hz → plays 175 Hz, shifted down one octave").assertExists()
+        compose.onNodeWithText("bob's phone (120–240\u00A0Hz): 349\u00A0Hz → plays 175\u00A0Hz, shifted down one octave").assertExists()
         // The peer switched to clamping: its next capabilities change the line.
         feel.value = PeerFeel.ofIcon(bob.copy(pitchFit = PitchFit.CLAMP), HapticIcon.STROKE)
-        compose.onNodeWithText("bob's phone (120–240 Hz): 349 Hz → plays 240 Hz, clamped").assertExists()
+        compose.onNodeWithText("bob's phone (120–240\u00A0Hz): 349\u00A0Hz → plays 240\u00A0Hz, clamped").assertExists()
         // A phone without a frequency profile: the note becomes sharpness.
         feel.value = PeerFeel.ofIcon(bob.copy(frequencyRangeHz = null), HapticIcon.STROKE)
-        compose.onNodeWithText("bob's phone has no frequency profile: 349 Hz → sharpness 0.81").assertExists()
+        compose.onNodeWithText("bob's phone has no frequency profile: 349\u00A0Hz → sharpness 0.81").assertExists()
     }
 
     @Test
