@@ -226,9 +226,15 @@ public class CommandWriter(
         val sequence = command.ackSequence
         // Registered before the write: the board may answer before write() returns, on the reading thread.
         if (sequence != null) {
-            synchronized(lock) {
+            val displaced = synchronized(lock) {
                 record.deadlineNanos = clock() + ackTimeoutMillis * 1_000_000
-                awaiting[sequence] = record
+                // Two encoders on one board can reuse a number; the older command's ack can no longer be told apart.
+                awaiting.put(sequence, record)?.also { counts = counts.copy(timedOut = counts.timedOut + 1) }
+            }
+            if (displaced != null) {
+                val state = CommandState.TimedOut("a later command reused sequence number $sequence before the board answered")
+                displaced.mutableState.value = state
+                problem.value = describeProblem(displaced.description, state)
             }
         }
         record.mutableState.value = CommandState.Sent(isFinal = sequence == null)

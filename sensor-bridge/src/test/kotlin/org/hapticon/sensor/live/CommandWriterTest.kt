@@ -163,6 +163,18 @@ class CommandWriterTest {
     }
 
     @Test
+    fun secondCommandWithTheSameSequence_endsTheFirstAsUnanswerable_insteadOfLeavingItWaitingForever() {
+        val first = writer.submit(port, FirmwareCommands.stimulate(FramedEncoder(3), FirmwareStimulus(0, 60)))
+        val second = writer.submit(port, FirmwareCommands.stimulate(FramedEncoder(3), FirmwareStimulus(1, 60)))
+        runWrites()
+
+        assertEquals(CommandState.TimedOut("a later command reused sequence number 3 before the board answered"), first.state.value)
+        writer.onAck(3, AckStatus.OK, 0)
+        assertSame(CommandState.Acknowledged, second.state.value)
+        assertEquals(CommandCounts(sent = 2, acknowledged = 1, timedOut = 1), writer.counts())
+    }
+
+    @Test
     fun failedWrite_isNotAwaitingAnAck() {
         port.stallWritesAfter(3)
         val handle = writer.submit(port, FirmwareCommands.stimulate(encoder, FirmwareStimulus(0, 60)))
