@@ -249,6 +249,47 @@ void device_outOfRangeCommand_changesNoOutput() {
   }
 }
 
+Bytes stimulateCommand(uint16_t sequence, const uint8_t* payload, size_t length) {
+  hfp::FrameWriter writer(sequence);
+  writer.begin(hfp::TYPE_STIMULATE);
+  for (size_t i = 0; i < length; i++) writer.u8(payload[i]);
+  return encode(writer);
+}
+
+// The acks the host's CommandWriter matches by sequence number: a STIMULATE at the 2.7 mA cap (step 200) is
+// acknowledged and plays; one step past it, a 0 ms stimulus and a short payload are refused with the reason the
+// host shows (OUT_OF_RANGE with grains.h's ParamError 5 and 9, MALFORMED), and nothing more plays.
+void device_stimulate_acksAtTheCap_nacksPastItWithTheReason() {
+  hfp::DeviceConfig config = referenceConfig();
+  CaptureSink sink;
+  RecordingOutputs outputs;
+  hgr::GrainRenderer grains;
+  hfp::Device device(config, sink, outputs, 0, &grains);
+  const uint8_t atCap[] = {8, 200, 200, 0};
+  const uint8_t pastCap[] = {8, 201, 200, 0};
+  const uint8_t noTime[] = {8, 100, 0, 0};
+  const uint8_t shortPayload[] = {8, 100, 200};
+  Bytes commands = concat(concat(stimulateCommand(5, atCap, 4), stimulateCommand(6, pastCap, 4)),
+                          concat(stimulateCommand(7, noTime, 4), stimulateCommand(8, shortPayload, 3)));
+  device.receive(&commands[0], commands.size());
+  CHECK(grains.stimulating());
+  hfp::FrameDecoder decoder;
+  Decoded answers = decodeAll(sink.data, decoder);
+  CHECK(answers.frames.size() == 4);
+  if (answers.frames.size() == 4) {
+    const uint8_t expected[4][4] = {
+        {5, 0, hfp::ACK_OK, 0},
+        {6, 0, hfp::NACK_OUT_OF_RANGE, hgr::STEP_ABOVE_CAP},
+        {7, 0, hfp::NACK_OUT_OF_RANGE, hgr::BAD_DURATION},
+        {8, 0, hfp::NACK_MALFORMED, 0},
+    };
+    for (int i = 0; i < 4; i++) {
+      CHECK(answers.frames[i].type == hfp::TYPE_ACK);
+      CHECK(answers.payloads[i] == Bytes(expected[i], expected[i] + 4));
+    }
+  }
+}
+
 void device_begin_sendsDelimiterThenDeviceInfo() {
   hfp::DeviceConfig config = referenceConfig();
   CaptureSink sink;
@@ -420,6 +461,7 @@ int main(int argc, char** argv) {
   decoder_oneByteAtATime_matchesWholeBuffer();
   decoder_overlongAndShortFrames_areBadFrames();
   device_outOfRangeCommand_changesNoOutput();
+  device_stimulate_acksAtTheCap_nacksPastItWithTheReason();
   device_begin_sendsDelimiterThenDeviceInfo();
   device_sampleDue_keepsTheGridAndRestartsAfterAStall();
   device_setSampleRate_changesThePeriod();

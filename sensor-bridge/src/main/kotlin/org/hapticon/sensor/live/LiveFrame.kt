@@ -6,6 +6,7 @@ import org.hapticon.sensor.protocol.stream.StreamDecoder
 import org.hapticon.sensor.protocol.csv.CsvDecoder
 import org.hapticon.sensor.protocol.csv.CsvSample
 import org.hapticon.sensor.protocol.decoderFor
+import org.hapticon.sensor.protocol.framed.AckStatus
 import org.hapticon.sensor.protocol.framed.ChannelUnit
 import org.hapticon.sensor.protocol.framed.DeviceInfo
 import org.hapticon.sensor.protocol.framed.SampleFrame
@@ -67,7 +68,7 @@ public fun interface FrameListener {
  * benches that drive a real [FrameListener] such as the grain engine. Frames carry no arrival time.
  */
 public fun liveDecoderFor(protocol: SensorProtocol, listener: FrameListener): StreamDecoder =
-    LiveDecoder(protocol) { frame, info -> listener.onFrame(frame, info) }.decoder
+    LiveDecoder(protocol, sink = { frame, info -> listener.onFrame(frame, info) }).decoder
 
 /**
  * Turns one protocol's decoder callbacks ([decoderFor]) into [LiveFrame]s for [sink], keeping [info]
@@ -75,6 +76,8 @@ public fun liveDecoderFor(protocol: SensorProtocol, listener: FrameListener): St
  */
 internal class LiveDecoder(
     val protocol: SensorProtocol,
+    /** Hears the board's acknowledgements (framed protocol), to settle the commands awaiting them. */
+    private val acks: (sequence: Int, status: AckStatus, detail: Int) -> Unit = { _, _, _ -> },
     private val sink: (LiveFrame, StreamInfo) -> Unit,
 ) : ProtocolListener {
     private val frame = LiveFrame()
@@ -128,6 +131,10 @@ internal class LiveDecoder(
             deviceDescription = "${info.name.ifEmpty { "unnamed board" }} · firmware ${info.firmwareVersion} · " +
                 "${info.sampleRateHz} Hz · ${info.adcBits}-bit",
         )
+    }
+
+    override fun onAck(sequence: Int, status: AckStatus, detail: Int) {
+        acks(sequence, status, detail)
     }
 
     private fun deliver(channels: Int) {

@@ -62,7 +62,10 @@ public enum class StopCause {
  * [SensorProtocol] ([LiveDecoder] over [org.hapticon.sensor.protocol.decoderFor]), and hands every
  * frame to the registered [FrameListener]s (FSR grains, glove) on the reading thread. The newest
  * values, counters and rate are kept by a [StreamTally] (copied by [snapshot]), the plot points by
- * [history]; commands to the board go through [commands] ([CommandWriter]: newest wins).
+ * [history]; commands to the board go through [commands] ([CommandWriter]: settings coalesce per key, events
+ * queue in order), and the board's acks (framed protocol) settle them: each [submit] returns a [CommandHandle]
+ * whose state ends acknowledged, rejected with the board's reason, or timed out; [commandError] says the last
+ * problem in one line and the [snapshot]'s counters count them.
  *
  * When the stream stops (unplug, end, failure, [disconnect]) everything decoded so far stays until
  * the next [connect]. Per frame nothing is allocated here; the UI copies a [snapshot] at its own rate.
@@ -91,25 +94,50 @@ public class SensorSession(
     /** Why the last command to the board could not be written (a timeout, an unplug), or null. */
     public val writeError: StateFlow<String?> get() = commands.writeError
 
-    /** Commands written to the board since the session was made. */
+    /**
+     * The last command that went wrong, in one line (the board refused it and why, no answer came, the queue was
+     * full, or it could not be written); null since the stream started until one does.
+     */
+    public val commandError: StateFlow<String?> get() = commands.commandError
+
+    /** Commands written to the board since the stream started. */
     public val commandsSent: Long get() = commands.commandsSent
 
-    /** Commands that could not be written (timeout, unplug, I/O error). */
+    /** Commands that could not be written (timeout, unplug, I/O error) since the stream started. */
     public val commandsLost: Long get() = commands.commandsLost
 
     /**
-     * Queues [command] for the board on the line and returns at once: false when no stream is running.
-     * A command still waiting is replaced by the newer one ([CommandWriter]); each write has [timeoutMillis].
+     * Queues raw [command] bytes for the board on the line and returns at once: false when no stream is running.
+     * They form one setting: a command still waiting is replaced by the newer one ([CommandWriter.send]); no ack
+     * is awaited (for the LucidGloves force feedback). Each write has [timeoutMillis].
      */
     public fun send(command: ByteArray, timeoutMillis: Int = CommandWriter.WRITE_TIMEOUT_MILLIS): Boolean {
-        val target = port ?: return false
-        if (connection.value !is ConnectionState.Streaming || !target.isOpen) return false
+        val target = streamingPort() ?: return false
         commands.send(target, command, timeoutMillis)
         return true
     }
 
-    /** What the stream has given so far. */
-    public fun snapshot(): StreamSnapshot = tally.snapshot()
+    /**
+     * Queues [command] for the board ([CommandWriter.submit]: an event in order, a setting replacing a waiting one
+     * of its key) and returns its handle at once, or null when no stream is running. The handle's state follows the
+     * command to the board's answer; a full queue refuses an event at once ([CommandState.Overflowed]).
+     */
+    public fun submit(command: OutgoingCommand, timeoutMillis: Int = CommandWriter.WRITE_TIMEOUT_MILLIS): CommandHandle? {
+        val target = streamingPort() ?: return null
+        return commands.submit(target, command, timeoutMillis)
+    }
+
+    private fun streamingPort(): SerialPort? {
+        val target = port ?: return null
+        if (connection.value !is ConnectionState.Streaming || !target.isOpen) return null
+        return target
+    }
+
+    /** What the stream has given so far, with the commands' counts; overdue acks are timed out first. */
+    public fun snapshot(): StreamSnapshot {
+        commands.expireOverdue()
+        return tally.snapshot(commands.counts())
+    }
 
     /** The stream's channel names and units, once known. */
     public fun currentInfo(): StreamInfo? = tally.currentInfo()
@@ -159,7 +187,8 @@ public class SensorSession(
      */
     public fun start(port: SerialPort, device: SensorDevice, protocol: SensorProtocol, baudRate: Int) {
         stopRequested = false
-        val decoder = CountingDecoder(LiveDecoder(protocol, ::onFrame))
+        commands.reset()
+        val decoder = CountingDecoder(LiveDecoder(protocol, commands::onAck, ::onFrame))
         val newReader = SensorReader(port, decoder, { reason, cause -> onStopped(port, device, protocol, reason, cause) })
         this.port = port
         reader = newReader
@@ -200,6 +229,7 @@ public class SensorSession(
 
     private fun onStopped(stoppedPort: SerialPort, device: SensorDevice, protocol: SensorProtocol, reason: SensorReader.StopReason, cause: Throwable?) {
         runCatching { stoppedPort.close() }
+        commands.abandonAwaiting("the stream stopped before the board answered")
         val stopCause = when {
             stopRequested -> StopCause.BY_USER
             reason == SensorReader.StopReason.DISCONNECTED -> StopCause.UNPLUGGED
@@ -221,6 +251,8 @@ public class SensorSession(
             inner.feed(bytes, offset, length)
             tally.publishInfo(live.info)
             tally.copyStats(inner.stats)
+            // A streaming board sends often, so overdue acks end here; snapshot() covers a silent board.
+            commands.expireOverdue()
         }
 
         override fun finish() {

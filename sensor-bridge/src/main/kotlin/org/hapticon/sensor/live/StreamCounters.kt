@@ -3,7 +3,7 @@ package org.hapticon.sensor.live
 import org.hapticon.sensor.protocol.stream.FrameError
 import org.hapticon.sensor.protocol.stream.StreamStats
 
-/** The decoder's counters, copied for the UI. */
+/** The decoder's counters and what happened to the commands sent to the board, copied for the UI. */
 public data class StreamCounters(
     val bytes: Long = 0,
     val frames: Long = 0,
@@ -14,6 +14,24 @@ public data class StreamCounters(
     val lostFrames: Long = 0,
     /** Frames cut short by the end of the stream (an unplug mid-frame). */
     val truncatedFrames: Long = 0,
+    /** Commands written to the board ([CommandWriter]). */
+    val commandsSent: Long = 0,
+    /** Commands the board acknowledged. */
+    val commandsAcknowledged: Long = 0,
+    /** Commands the board refused (NACK). */
+    val commandsRejected: Long = 0,
+    /** Commands the board never answered within the ack timeout, or before the stream stopped. */
+    val commandsTimedOut: Long = 0,
+    /** Commands whose write failed. */
+    val commandsLost: Long = 0,
+    /** Settings replaced by a newer one of the same key before they were written (nothing lost). */
+    val commandsSuperseded: Long = 0,
+    /** Events refused because the writer's queue was full. */
+    val commandsOverflowed: Long = 0,
+    /** Well-formed acks for no command awaiting one. */
+    val unmatchedAcks: Long = 0,
+    /** Ack frames of the wrong length (also in [badFrames]). */
+    val malformedAcks: Long = 0,
 )
 
 /** What the stream holds now, copied for the UI. */
@@ -48,6 +66,7 @@ internal class StreamTally {
     private var sequenceGaps = 0L
     private var lostFrames = 0L
     private var truncated = 0L
+    private var malformedAcks = 0L
     private var rateWindowStart = 0L
     private var rateWindowSamples = 0L
     private var samples = 0L
@@ -59,7 +78,7 @@ internal class StreamTally {
             latestCount = 0
             info = null
             bytes = 0; frames = 0; badFrames = 0; droppedBytes = 0; ignoredLines = 0
-            sequenceGaps = 0; lostFrames = 0; truncated = 0
+            sequenceGaps = 0; lostFrames = 0; truncated = 0; malformedAcks = 0
             rateWindowStart = 0; rateWindowSamples = 0; samples = 0; measuredRate = Double.NaN
         }
     }
@@ -95,6 +114,7 @@ internal class StreamTally {
             sequenceGaps = stats.sequenceGaps
             lostFrames = stats.lostFrames
             truncated = stats.badFrames(FrameError.TRUNCATED)
+            malformedAcks = stats.malformedAcks
         }
     }
 
@@ -107,11 +127,23 @@ internal class StreamTally {
 
     fun currentInfo(): StreamInfo? = synchronized(lock) { info }
 
-    fun snapshot(): StreamSnapshot = synchronized(lock) {
+    /** What the stream holds now, with [commands]' counts beside the decoder's. */
+    fun snapshot(commands: CommandCounts = CommandCounts()): StreamSnapshot = synchronized(lock) {
         StreamSnapshot(
             info = info,
             latest = List(latestCount) { latest[it] },
-            counters = StreamCounters(bytes, frames, badFrames, droppedBytes, ignoredLines, sequenceGaps, lostFrames, truncated),
+            counters = StreamCounters(
+                bytes, frames, badFrames, droppedBytes, ignoredLines, sequenceGaps, lostFrames, truncated,
+                commandsSent = commands.sent,
+                commandsAcknowledged = commands.acknowledged,
+                commandsRejected = commands.rejected,
+                commandsTimedOut = commands.timedOut,
+                commandsLost = commands.lost,
+                commandsSuperseded = commands.superseded,
+                commandsOverflowed = commands.overflowed,
+                unmatchedAcks = commands.unmatchedAcks,
+                malformedAcks = malformedAcks,
+            ),
             samples = samples,
             measuredRateHz = measuredRate.takeUnless { it.isNaN() },
         )

@@ -110,9 +110,17 @@ fun ElectrotactileCalibrationScreen(uiState: ElectrotactileUiState, actions: Ele
                 is ElectrotactileUiState.Done -> DoneStep(uiState, actions)
             }
             uiState.message?.let { message ->
+                // A board's refusal must be seen, not only logged: the error colours, and read out at once.
                 Card(
-                    colors = CardDefaults.cardColors(containerColor = MaterialTheme.colorScheme.surfaceVariant),
-                    modifier = Modifier.fillMaxWidth().semantics { liveRegion = LiveRegionMode.Polite },
+                    colors = if (uiState.problem) {
+                        CardDefaults.cardColors(
+                            containerColor = MaterialTheme.colorScheme.errorContainer,
+                            contentColor = MaterialTheme.colorScheme.onErrorContainer,
+                        )
+                    } else {
+                        CardDefaults.cardColors(containerColor = MaterialTheme.colorScheme.surfaceVariant)
+                    },
+                    modifier = Modifier.fillMaxWidth().semantics { liveRegion = if (uiState.problem) LiveRegionMode.Assertive else LiveRegionMode.Polite },
                 ) { Text(message, Modifier.padding(12.dp), style = MaterialTheme.typography.bodyMedium) }
             }
         }

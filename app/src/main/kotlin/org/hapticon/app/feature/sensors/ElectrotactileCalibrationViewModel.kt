@@ -7,20 +7,25 @@ import kotlinx.coroutines.flow.MutableStateFlow
 import kotlinx.coroutines.flow.SharingStarted
 import kotlinx.coroutines.flow.StateFlow
 import kotlinx.coroutines.flow.combine
+import kotlinx.coroutines.flow.first
 import kotlinx.coroutines.flow.stateIn
 import kotlinx.coroutines.flow.update
+import kotlinx.coroutines.launch
 import org.hapticon.sensor.electrotactile.AmplitudeSteps
 import org.hapticon.sensor.electrotactile.ElectrotactileCalibration
 import org.hapticon.sensor.grains.FirmwareForceRange
 import org.hapticon.sensor.grains.FirmwareGrainParams
 import org.hapticon.sensor.grains.FirmwareStimulus
+import org.hapticon.sensor.live.CommandHandle
+import org.hapticon.sensor.live.describeProblem
 import org.hapticon.sensor.safety.SafetyLimitException
 import java.util.Locale
 
 /**
  * The board's stimulator, which renders compliance grains stand-alone from a SET_GRAINS command ([FirmwareGrainParams])
  * and gives single calibration stimuli from a STIMULATE command ([FirmwareStimulus]). [ready] says whether a board that
- * takes them (framed protocol) is streaming; [send] and [stimulate] queue a command and return false when they could not.
+ * takes them (framed protocol) is streaming; [send] and [stimulate] queue a command and return its handle, whose state
+ * follows it to the board's ack or NACK, or null when nothing could be queued.
  */
 interface StimulatorLink {
     /** True while a framed board is streaming. */
@@ -35,11 +40,11 @@ interface StimulatorLink {
      */
     fun forceRange(): FirmwareForceRange?
 
-    /** Queues [params] for the board; false when no framed board is streaming. */
-    fun send(params: FirmwareGrainParams): Boolean
+    /** Queues [params] for the board (a newer set replaces one still waiting); null when no framed board is streaming. */
+    fun send(params: FirmwareGrainParams): CommandHandle?
 
-    /** Queues one calibration [stimulus] for the board; false when no framed board is streaming. */
-    fun stimulate(stimulus: FirmwareStimulus): Boolean
+    /** Queues one calibration [stimulus] for the board (never replaced); null when no framed board is streaming. */
+    fun stimulate(stimulus: FirmwareStimulus): CommandHandle?
 
     companion object {
         /** Why nothing was sent: no framed board. */
@@ -61,6 +66,9 @@ sealed interface ElectrotactileUiState {
     /** A refusal or a confirmation for the researcher. */
     val message: String?
 
+    /** True when [message] says something went wrong on the board (refused, unanswered): shown as an error. */
+    val problem: Boolean
+
     /** Calibrating [electrode] (0..8): the next 200 ms stimulus is [step] ([milliamps]). */
     data class Electrode(
         val electrode: Int,
@@ -71,6 +79,7 @@ sealed interface ElectrotactileUiState {
         override val steps: List<Int>,
         override val boardReady: Boolean,
         override val message: String?,
+        override val problem: Boolean = false,
     ) : ElectrotactileUiState
 
     /** All nine electrodes at their levels while the person presses, [ElectrotactileCalibration.CHECK_GRAINS] grains per press. */
@@ -80,6 +89,7 @@ sealed interface ElectrotactileUiState {
         override val steps: List<Int>,
         override val boardReady: Boolean,
         override val message: String?,
+        override val problem: Boolean = false,
     ) : ElectrotactileUiState
 
     /** Calibration finished: each electrode's current and the person's limit (the highest, at most 2.7 mA). */
@@ -89,6 +99,7 @@ sealed interface ElectrotactileUiState {
         override val steps: List<Int>,
         override val boardReady: Boolean,
         override val message: String?,
+        override val problem: Boolean = false,
     ) : ElectrotactileUiState
 }
 
@@ -98,8 +109,8 @@ sealed interface ElectrotactileUiState {
  * then the whole-array check with 39 grains on all nine electrodes. The 2.7 mA cap is enforced three times over:
  * the state machine never raises past step 200, [AmplitudeSteps.requireStep] refuses anything else, and
  * [FirmwareGrainParams] and [FirmwareStimulus] check every step before a command exists. Each electrode's 200 ms
- * stimulus ([giveStimulus]) and the check go to the board through [link];
- * [onCalibrated] gets the finished steps (kept for the compliance study).
+ * stimulus ([giveStimulus]) and the check go to the board through [link], and a NACK (with the firmware's reason) or a
+ * missing ack replaces the message with a one-line error; [onCalibrated] gets the finished steps (kept for the compliance study).
  * Not thread-safe: call from the main thread.
  */
 class ElectrotactileCalibrationViewModel(
@@ -109,7 +120,7 @@ class ElectrotactileCalibrationViewModel(
     private var calibration = ElectrotactileCalibration()
 
     /** Bumped after every change to [calibration] (it is mutable, so the flow needs a new value). */
-    private val progress = MutableStateFlow(Progress(0, sent = false, message = null))
+    private val progress = MutableStateFlow(Progress(0, sent = false, message = null, problem = false))
 
     /** What the screen shows. */
     val uiState: StateFlow<ElectrotactileUiState> = combine(progress, link.ready) { p, ready -> snapshot(p, ready) }
@@ -151,10 +162,11 @@ class ElectrotactileCalibrationViewModel(
     fun giveStimulus() {
         if (calibration.currentElectrode == null) return
         val stimulus = FirmwareStimulus.of(calibration.stimulus() ?: return)
-        val queued = link.stimulate(stimulus)
+        val handle = link.stimulate(stimulus)
         progress.update {
             it.copy(
-                message = if (queued) {
+                problem = false,
+                message = if (handle != null) {
                     String.format(
                         Locale.ROOT, "Gave %d ms at %.3f mA on electrode %d: how did it feel?",
                         stimulus.durationMillis, AmplitudeSteps.milliampsOf(stimulus.step), stimulus.electrode + 1,
@@ -164,6 +176,7 @@ class ElectrotactileCalibrationViewModel(
                 },
             )
         }
+        handle?.let(::reportProblems)
     }
 
     /**
@@ -178,25 +191,39 @@ class ElectrotactileCalibrationViewModel(
             FirmwareGrainParams.wholeArrayCheck(calibration.steps(), range)
         } catch (e: SafetyLimitException) {
             // Unreachable while the state machine caps at step 200; kept so a future bug refuses instead of stimulating.
-            progress.update { it.copy(message = e.message) }
+            progress.update { it.copy(message = e.message, problem = true) }
             return
         }
-        val queued = link.send(params)
+        val handle = link.send(params)
         progress.update {
-            it.copy(sent = queued, message = if (queued) "Sent: press the sensor and feel the grains" else StimulatorLink.NO_BOARD)
+            it.copy(sent = handle != null, problem = false, message = if (handle != null) "Sent: press the sensor and feel the grains" else StimulatorLink.NO_BOARD)
+        }
+        handle?.let(::reportProblems)
+    }
+
+    /**
+     * Waits for [handle]'s outcome and, when the board refused it, never answered, or it could not be written, shows
+     * why as an error (and the check as not sent), unless the levels changed meanwhile.
+     */
+    private fun reportProblems(handle: CommandHandle) {
+        val revision = progress.value.revision
+        viewModelScope.launch {
+            val outcome = handle.state.first { it.isFinal }
+            val problem = describeProblem(handle.description, outcome) ?: return@launch
+            progress.update { if (it.revision == revision) it.copy(sent = false, message = problem, problem = true) else it }
         }
     }
 
     /** Starts again from electrode 0 at step 60. */
     fun restart() {
         calibration = ElectrotactileCalibration()
-        progress.update { Progress(it.revision + 1, sent = false, message = null) }
+        progress.update { Progress(it.revision + 1, sent = false, message = null, problem = false) }
     }
 
     private fun change(action: () -> String?) {
         val message = action()
         // Any level change makes what the board has stale.
-        progress.update { Progress(it.revision + 1, sent = false, message = message) }
+        progress.update { Progress(it.revision + 1, sent = false, message = message, problem = false) }
     }
 
     private fun snapshot(p: Progress, ready: Boolean): ElectrotactileUiState {
@@ -205,16 +232,16 @@ class ElectrotactileCalibrationViewModel(
         return when {
             electrode != null -> {
                 val step = steps[electrode]
-                ElectrotactileUiState.Electrode(electrode, step, AmplitudeSteps.milliampsOf(step), step == AmplitudeSteps.STEPS, steps, ready, p.message)
+                ElectrotactileUiState.Electrode(electrode, step, AmplitudeSteps.milliampsOf(step), step == AmplitudeSteps.STEPS, steps, ready, p.message, p.problem)
             }
-            calibration.isCheckingWholeArray -> ElectrotactileUiState.WholeArrayCheck(p.sent, steps, ready, p.message)
+            calibration.isCheckingWholeArray -> ElectrotactileUiState.WholeArrayCheck(p.sent, steps, ready, p.message, p.problem)
             else -> {
                 val result = calibration.result()
                 val limit = if (result.steps.all { it == 0 }) null else result.userLimit().maxMilliamps
-                ElectrotactileUiState.Done(limit, steps, ready, p.message)
+                ElectrotactileUiState.Done(limit, steps, ready, p.message, p.problem)
             }
         }
     }
 
-    private data class Progress(val revision: Int, val sent: Boolean, val message: String?)
+    private data class Progress(val revision: Int, val sent: Boolean, val message: String?, val problem: Boolean)
 }

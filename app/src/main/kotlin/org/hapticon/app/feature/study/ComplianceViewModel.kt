@@ -116,7 +116,7 @@ class ComplianceViewModel(
         // The board's own range (its device info), so a full press fires the condition's grains on any ADC.
         val range = link.forceRange()
             ?: return run { local.value = trial.copy(sent = false, message = if (link.isReady()) StimulatorLink.NO_FORCE_RANGE else NO_BOARD) }
-        val sent = link.send(trial.trial.condition.firmwareParams(steps, range, protocol.distribution))
+        val sent = link.send(trial.trial.condition.firmwareParams(steps, range, protocol.distribution)) != null
         local.value = trial.copy(sent = sent, message = if (sent) null else NO_BOARD)
     }
 

@@ -5,6 +5,7 @@ import org.hapticon.sensor.grains.FirmwareGrainParams
 import org.hapticon.sensor.grains.FirmwareStimulus
 import org.hapticon.sensor.grains.setGrains
 import org.hapticon.sensor.grains.stimulate
+import org.hapticon.sensor.live.CommandState
 import org.hapticon.sensor.live.CommandWriter
 import org.hapticon.sensor.live.SensorSession
 import org.hapticon.sensor.protocol.SensorProtocol
@@ -18,12 +19,14 @@ import org.hapticon.testing.TEST_UNO
 import org.hapticon.testing.TestUsbDevices
 import org.hapticon.sensor.electrotactile.ElectrodePattern
 import org.hapticon.sensor.port.FakeSerialPort
+import org.hapticon.sensor.protocol.framed.AckStatus
 import org.hapticon.sensor.protocol.framed.FramedEncoder
 import org.hapticon.sensor.protocol.framed.FramedProtocol
 import org.hapticon.sensor.safety.SafetyLimitException
 import org.junit.Assert.assertArrayEquals
 import org.junit.Assert.assertEquals
 import org.junit.Assert.assertFalse
+import org.junit.Assert.assertNotNull
 import org.junit.Assert.assertNull
 import org.junit.Assert.assertThrows
 import org.junit.Assert.assertTrue
@@ -182,24 +185,24 @@ class ElectrotactileCalibrationTest {
         val csvHub = SensorSession(TestUsbDevices(), commands = CommandWriter { it.run() })
         val framedHub = SensorSession(TestUsbDevices(), commands = CommandWriter { it.run() })
         try {
-            assertFalse(HubStimulatorLink(csvHub).send(params))
+            assertNull(HubStimulatorLink(csvHub).send(params))
             val csvPort = FakeSerialPort()
             csvHub.start(csvPort, TEST_UNO, SensorProtocol.CSV, 115_200)
-            assertFalse(HubStimulatorLink(csvHub).send(params))
+            assertNull(HubStimulatorLink(csvHub).send(params))
             assertEquals(0, csvPort.writtenBytes().size)
 
             val framedPort = FakeSerialPort()
             framedHub.start(framedPort, TEST_UNO, SensorProtocol.FRAMED, 115_200)
             val link = HubStimulatorLink(framedHub)
-            assertTrue(link.send(params))
-            assertTrue(link.stimulate(stimulus))
+            assertNotNull(link.send(params))
+            assertNotNull(link.stimulate(stimulus))
             // One encoder per link: the stimulus is the next sequence number.
             val expected = ByteArray(2 * FramedProtocol.MAX_ENCODED_FRAME_LENGTH)
             val encoder = FramedEncoder()
             var length = encoder.setGrains(params, expected)
             length += encoder.stimulate(stimulus, expected, length)
             assertArrayEquals(expected.copyOf(length), framedPort.writtenBytes())
-            assertFalse(HubStimulatorLink(csvHub).stimulate(stimulus))
+            assertNull(HubStimulatorLink(csvHub).stimulate(stimulus))
         } finally {
             csvHub.disconnect()
             framedHub.disconnect()
@@ -218,5 +221,41 @@ class ElectrotactileCalibrationTest {
         compose.onNodeWithText("Next stimulus: 2.700 mA, step 200 of 200, 200 ms").assertExists()
         compose.onNodeWithContentDescription("Electrode 1: 0.945 mA").assertExists()
         compose.onNodeWithContentDescription("Electrode 6: not yet calibrated").assertExists()
+    }
+
+    @Test
+    fun boardRefusesTheStimulus_theScreenShowsTheFirmwaresReasonAsAnError() {
+        val link = TestStimulatorLink(ready = true)
+        val viewModel = ElectrotactileCalibrationViewModel(link)
+        viewModel.giveStimulus()
+        assertEquals("Gave 200 ms at 0.810 mA on electrode 1: how did it feel?", viewModel.state().message)
+        assertFalse(viewModel.state().problem)
+
+        link.handles.single().answer(CommandState.Rejected(AckStatus.OUT_OF_RANGE, 5, "an amplitude step past 200 (2.7 mA)"))
+
+        val refused = viewModel.state()
+        assertEquals("The board refused the 200 ms stimulus on electrode 1: an amplitude step past 200 (2.7 mA)", refused.message)
+        assertTrue(refused.problem)
+        compose.setContent { ElectrotactileCalibrationScreen(refused, ElectrotactileActions()) }
+        compose.onNodeWithText("The board refused the 200 ms stimulus on electrode 1: an amplitude step past 200 (2.7 mA)").assertExists()
+    }
+
+    @Test
+    fun wholeArrayCheckUnanswered_isNotSentAnyMore_andSaysSo_anAcknowledgedOneStaysSent() {
+        val link = TestStimulatorLink(ready = true)
+        val viewModel = ElectrotactileCalibrationViewModel(link)
+        repeat(9) { viewModel.clearAndPainFree() }
+        viewModel.sendWholeArrayCheck()
+        link.handles.last().answer(CommandState.Acknowledged)
+        assertTrue((viewModel.state() as ElectrotactileUiState.WholeArrayCheck).sent)
+        assertEquals("Sent: press the sensor and feel the grains", viewModel.state().message)
+
+        viewModel.sendWholeArrayCheck()
+        link.handles.last().answer(CommandState.TimedOut("no acknowledgement within 500 ms"))
+
+        val unanswered = viewModel.state() as ElectrotactileUiState.WholeArrayCheck
+        assertFalse(unanswered.sent)
+        assertTrue(unanswered.problem)
+        assertEquals("No answer from the board to the grain settings (39 grains on 9 electrodes): no acknowledgement within 500 ms", unanswered.message)
     }
 }

@@ -205,7 +205,10 @@ public class FramedDecoder(private val listener: Listener) : StreamDecoder {
     }
 
     private fun decodeAck(payloadLength: Int): FrameError? {
-        if (payloadLength != ACK_LENGTH) return FrameError.FIELD_COUNT
+        if (payloadLength != ACK_LENGTH) {
+            stats.malformedAcks++
+            return FrameError.FIELD_COUNT
+        }
         val p = HEADER_LENGTH
         stats.frames++
         listener.onAck(u16(p), AckStatus.of(frame[p + 2].toInt() and 0xFF), frame[p + 3].toInt() and 0xFF)

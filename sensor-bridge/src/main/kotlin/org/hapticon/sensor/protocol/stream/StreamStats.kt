@@ -41,6 +41,13 @@ public class StreamStats {
     public var lostFrames: Long = 0
         internal set
 
+    /**
+     * Acknowledgement frames with a good CRC but the wrong payload length (framed protocol only; also counted in
+     * [badFrames] as [FrameError.FIELD_COUNT]): an ack that cannot be matched to its command.
+     */
+    public var malformedAcks: Long = 0
+        internal set
+
     private val byError = LongArray(FrameError.entries.size)
 
     /** The number of frames rejected because of [error]. */
@@ -56,6 +63,7 @@ public class StreamStats {
         copy.ignoredLines = ignoredLines
         copy.sequenceGaps = sequenceGaps
         copy.lostFrames = lostFrames
+        copy.malformedAcks = malformedAcks
         byError.copyInto(copy.byError)
         return copy
     }
@@ -77,6 +85,7 @@ public class StreamStats {
         append(", badFrames=").append(badFrames).append(", droppedBytes=").append(droppedBytes)
         append(", ignoredLines=").append(ignoredLines).append(", sequenceGaps=").append(sequenceGaps)
         append(", lostFrames=").append(lostFrames)
+        if (malformedAcks != 0L) append(", malformedAcks=").append(malformedAcks)
         for (error in FrameError.entries) {
             val count = byError[error.ordinal]
             if (count != 0L) append(", ").append(error.name).append('=').append(count)
