@@ -1,5 +1,7 @@
 package org.hapticon.app.di
 
+import org.hapticon.app.sensors.StimulatorLink
+import org.hapticon.app.sensors.HubStimulatorLink
 import android.content.Context
 import org.hapticon.app.data.IconRepository
 import org.hapticon.app.data.RoomPatternRepository
@@ -48,6 +50,13 @@ class AppContainer(
     /** The user's haptic patterns (imported AHAP / `.haptic` / pattern JSON); null in containers built without it. */
     val patterns: RoomPatternRepository? = null,
 ) {
+    /**
+     * The one command link to the electrotactile board, shared by calibration and the compliance study: one
+     * [org.hapticon.sensor.protocol.framed.FramedEncoder] per session, so their commands never reuse a sequence
+     * number and each ack matches the command it answers (FramedEncoder: one sequence per direction).
+     */
+    val stimulator: StimulatorLink by lazy { HubStimulatorLink(sensorHub) }
+
     /** A pattern file shared to or opened with Hapticon, waiting for the Icons screen to import it. */
     val pendingPatternFile: kotlinx.coroutines.flow.MutableStateFlow<android.net.Uri?> = kotlinx.coroutines.flow.MutableStateFlow(null)
 

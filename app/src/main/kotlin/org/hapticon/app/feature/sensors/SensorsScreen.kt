@@ -72,7 +72,7 @@ fun SensorsRoute(container: AppContainer) {
             val levels = ElectrodeLevelsStore(File(LocalContext.current.filesDir, ElectrodeLevelsStore.FILE_NAME))
             val viewModel: ElectrotactileCalibrationViewModel = viewModel(
                 factory = viewModelFactory {
-                    initializer { ElectrotactileCalibrationViewModel(HubStimulatorLink(container.sensorHub), onCalibrated = levels::save) }
+                    initializer { ElectrotactileCalibrationViewModel(container.stimulator, onCalibrated = levels::save) }
                 },
             )
             ElectrotactileCalibrationRoute(viewModel, onBack = { pane = SensorsPane.STREAM })

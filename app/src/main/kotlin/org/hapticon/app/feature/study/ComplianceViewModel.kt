@@ -8,7 +8,7 @@ import kotlinx.coroutines.flow.StateFlow
 import kotlinx.coroutines.flow.combine
 import kotlinx.coroutines.flow.stateIn
 import kotlinx.coroutines.flow.update
-import org.hapticon.app.feature.sensors.StimulatorLink
+import org.hapticon.app.sensors.StimulatorLink
 import org.hapticon.study.compliance.ComplianceCondition
 import org.hapticon.study.compliance.ComplianceProtocol
 import org.hapticon.study.compliance.ComplianceStudy

@@ -61,7 +61,6 @@ import org.hapticon.app.di.AppContainer
 import org.hapticon.app.designsystem.HapticonIcons
 import org.hapticon.app.feature.chat.Sticker
 import org.hapticon.app.feature.sensors.ElectrodeLevelsStore
-import org.hapticon.app.feature.sensors.HubStimulatorLink
 import org.hapticon.study.LikertScale
 import org.hapticon.study.Stimulus
 import org.hapticon.study.StudyStep
@@ -112,7 +111,7 @@ fun StudyRoute(container: AppContainer) {
                 factory = viewModelFactory {
                     initializer {
                         val levels = ElectrodeLevelsStore(File(files, ElectrodeLevelsStore.FILE_NAME))
-                        ComplianceViewModel(HubStimulatorLink(container.sensorHub), levels::load, File(files, "compliance"))
+                        ComplianceViewModel(container.stimulator, levels::load, File(files, "compliance"))
                     }
                 },
             )

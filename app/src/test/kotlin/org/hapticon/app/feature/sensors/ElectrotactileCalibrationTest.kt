@@ -1,5 +1,7 @@
 package org.hapticon.app.feature.sensors
 
+import org.hapticon.app.sensors.StimulatorLink
+import org.hapticon.app.sensors.HubStimulatorLink
 import org.hapticon.sensor.grains.FirmwareForceRange
 import org.hapticon.sensor.grains.FirmwareGrainParams
 import org.hapticon.sensor.grains.FirmwareStimulus

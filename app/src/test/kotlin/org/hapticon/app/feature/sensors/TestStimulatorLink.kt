@@ -1,5 +1,6 @@
 package org.hapticon.app.feature.sensors
 
+import org.hapticon.app.sensors.StimulatorLink
 import kotlinx.coroutines.flow.MutableStateFlow
 import org.hapticon.sensor.grains.FirmwareForceRange
 import org.hapticon.sensor.grains.FirmwareGrainParams

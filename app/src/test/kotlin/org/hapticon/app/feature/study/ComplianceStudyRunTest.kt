@@ -4,8 +4,8 @@ import androidx.compose.ui.test.assertIsNotEnabled
 import androidx.compose.ui.test.junit4.createComposeRule
 import androidx.compose.ui.test.onNodeWithText
 import org.hapticon.app.feature.sensors.ElectrodeLevelsStore
-import org.hapticon.app.feature.sensors.HubStimulatorLink
-import org.hapticon.app.feature.sensors.StimulatorLink
+import org.hapticon.app.sensors.HubStimulatorLink
+import org.hapticon.app.sensors.StimulatorLink
 import org.hapticon.app.feature.sensors.TestStimulatorLink
 import org.hapticon.testing.TEST_UNO
 import org.hapticon.testing.TestUsbDevices

@@ -1,4 +1,4 @@
-package org.hapticon.app.feature.sensors
+package org.hapticon.app.sensors
 
 import kotlinx.coroutines.flow.Flow
 import kotlinx.coroutines.flow.map
