@@ -885,11 +885,13 @@ REFLECTIVE_MEMBERS = [
 # netty) and netty's `ReferenceCountUpdater.getUnsafeOffset(X.class, "f")`, `X.class.getDeclaredField("f")`.
 # HiveMQ's Android guide names these as what R8 must not rename or remove; app/proguard-rules.pro and the
 # libraries' own rules (coroutines: `volatile <fields>`) keep them.
-# The packages whose by-name fields the check requires. Others found by the scan (androidx.concurrent's
-# AbstractResolvableFuture, kotlin.SafePublicationLazyImpl._value, Guava's AbstractFuture) use newUpdater with
-# constants, which R8 rewrites itself when it renames the field ([DEX_FIELD_LOOKUPS], docs/release.md); the
-# smoke check accepts exactly that, and they join this list once a full release dex has been checked with them.
-FIELD_LOOKUP_PACKAGES = ("io.netty.", "org.jctools.", "kotlinx.coroutines.", "io.reactivex.")
+# The packages whose by-name fields the check requires: netty, JCTools, coroutines and RxJava, kept by rules, and
+# androidx.concurrent (AbstractResolvableFuture), the Kotlin standard library (SafePublicationLazyImpl._value,
+# SafeContinuation.result) and Guava's futures, whose constant newUpdater names R8 rewrites itself when it renames
+# the field ([DEX_FIELD_LOOKUPS]; checked in the release dex on 2026-11-26, docs/release.md). The rest of the scan
+# finds only framework classes (android.*, java.*), which are not in the dex.
+FIELD_LOOKUP_PACKAGES = ("io.netty.", "org.jctools.", "kotlinx.coroutines.", "io.reactivex.", "androidx.concurrent.",
+                         "kotlin.", "com.google.common.util.concurrent.")
 FIELD_LOOKUPS = {"newUpdater", "fieldOffset", "getUnsafeOffset", "getDeclaredField",
                  "newAtomicIntegerFieldUpdater", "newAtomicLongFieldUpdater", "newAtomicReferenceFieldUpdater"}
 
