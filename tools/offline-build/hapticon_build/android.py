@@ -286,10 +286,13 @@ class AndroidApp:
         # R8 also writes the Java resources it kept (kotlin/*.kotlin_builtins, …) next to the dex files.
         dex_files = sorted((os.path.join(dex_out, f) for f in os.listdir(dex_out) if f.endswith(".dex")), key=_dex_order)
         with Stage("smoke check of the R8 output"):
-            classes, members = smoke_check(dex_files, required_classes(program, os.path.join(work, "AndroidManifest.xml")),
-                                           required_members(program, library_jars, os.path.join(self.b.cache, "field-lookups")),
-                                           read_mapping(os.path.join(work, "mapping.txt")))
-            info(f"{classes} classes and {members} members reached by name found under their own names in the R8 output")
+            mapping = os.path.join(work, "mapping.txt")
+            classes, members, rewritten = smoke_check(
+                dex_files, required_classes(program, os.path.join(work, "AndroidManifest.xml")),
+                required_members(program, library_jars, os.path.join(self.b.cache, "field-lookups")),
+                read_mapping(mapping), read_field_mapping(mapping))
+            info(f"{classes} classes and {members} members reached by name found in the R8 output "
+                 f"({rewritten} fields renamed by R8 together with the newUpdater/getDeclaredField names that find them)")
         apk = os.path.join(self.out, f"{self.b.project.name}-release.apk")
         with Stage("package and sign (release)"):
             unsigned = os.path.join(work, "unsigned.apk")
@@ -401,8 +404,8 @@ class AndroidApp:
         if clash:
             raise BuildError(f"classes defined by both the app and its libraries: {sorted(clash)[:5]}")
         manifest = os.path.join(os.path.dirname(self.res_apk), "AndroidManifest.xml")
-        classes, members = smoke_check(library_dex + program_dex, required_classes(program, manifest),
-                                       required_members(program, library_jars, os.path.join(self.b.cache, "field-lookups")))
+        classes, members, _ = smoke_check(library_dex + program_dex, required_classes(program, manifest),
+                                          required_members(program, library_jars, os.path.join(self.b.cache, "field-lookups")))
         info(f"{classes} classes and {members} members reached by name found in the dex")
         return library_dex + program_dex
 
@@ -613,70 +616,217 @@ class DexClass:
     fields: frozenset[str]
 
 
-def dex_classes(dex: bytes) -> dict[str, DexClass]:
-    """Every class a dex file defines, by descriptor, with its declared methods and fields. Reads the header's
-    string_ids, type_ids, proto_ids, field_ids, method_ids and class_defs, and each class_data_item (four
-    uleb128 counts, then field_idx_diff/access_flags and method_idx_diff/access_flags/code_off per member,
-    the index a running sum within each list), as the DEX format defines them:
+class _Dex:
+    """The id tables of a dex file (header, string_ids, type_ids, proto_ids, field_ids, method_ids, class_defs)
+    and its classes' class_data_items, as the DEX format defines them:
     https://source.android.com/docs/core/runtime/dex-format"""
-    if dex[:4] != b"dex\n" or len(dex) < 0x70:
-        raise BuildError("not a dex file")
-    (string_ids_size, string_ids_off, type_ids_size, type_ids_off, _proto_ids_size, proto_ids_off,
-     _field_ids_size, field_ids_off, _method_ids_size, method_ids_off, class_defs_size,
-     class_defs_off) = struct.unpack_from("<12I", dex, 0x38)
-    strings: dict[int, str] = {}
 
-    def string(i: int) -> str:
-        if i not in strings:
-            off = struct.unpack_from("<I", dex, string_ids_off + 4 * i)[0]
-            _length, start = _uleb128(dex, off)
-            strings[i] = dex[start:dex.index(b"\0", start)].decode("utf-8", "replace")  # MUTF-8; names are ASCII
-        return strings[i]
+    def __init__(self, dex: bytes):
+        if dex[:4] != b"dex\n" or len(dex) < 0x70:
+            raise BuildError("not a dex file")
+        self.dex = dex
+        (_string_ids_size, self.string_ids_off, _type_ids_size, self.type_ids_off, _proto_ids_size, self.proto_ids_off,
+         _field_ids_size, self.field_ids_off, _method_ids_size, self.method_ids_off, self.class_defs_size,
+         self.class_defs_off) = struct.unpack_from("<12I", dex, 0x38)
+        self._strings: dict[int, str] = {}
 
-    def type_name(i: int) -> str:
-        return string(struct.unpack_from("<I", dex, type_ids_off + 4 * i)[0])
+    def string(self, i: int) -> str:
+        if i not in self._strings:
+            off = struct.unpack_from("<I", self.dex, self.string_ids_off + 4 * i)[0]
+            _length, start = _uleb128(self.dex, off)
+            # MUTF-8; the names looked at here are ASCII
+            self._strings[i] = self.dex[start:self.dex.index(b"\0", start)].decode("utf-8", "replace")
+        return self._strings[i]
 
-    def proto(i: int) -> str:
-        _shorty, return_idx, parameters_off = struct.unpack_from("<III", dex, proto_ids_off + 12 * i)
+    def type_name(self, i: int) -> str:
+        return self.string(struct.unpack_from("<I", self.dex, self.type_ids_off + 4 * i)[0])
+
+    def proto(self, i: int) -> str:
+        _shorty, return_idx, parameters_off = struct.unpack_from("<III", self.dex, self.proto_ids_off + 12 * i)
         params = []
         if parameters_off:
-            size = struct.unpack_from("<I", dex, parameters_off)[0]
-            params = [type_name(t) for t in struct.unpack_from(f"<{size}H", dex, parameters_off + 4)]
-        return "(" + "".join(params) + ")" + type_name(return_idx)
+            size = struct.unpack_from("<I", self.dex, parameters_off)[0]
+            params = [self.type_name(t) for t in struct.unpack_from(f"<{size}H", self.dex, parameters_off + 4)]
+        return "(" + "".join(params) + ")" + self.type_name(return_idx)
 
-    def field(i: int) -> str:
-        _class_idx, type_idx, name_idx = struct.unpack_from("<HHI", dex, field_ids_off + 8 * i)
-        return f"{string(name_idx)}:{type_name(type_idx)}"
+    def field(self, i: int) -> str:
+        _class_idx, type_idx, name_idx = struct.unpack_from("<HHI", self.dex, self.field_ids_off + 8 * i)
+        return f"{self.string(name_idx)}:{self.type_name(type_idx)}"
 
-    def method(i: int) -> str:
-        _class_idx, proto_idx, name_idx = struct.unpack_from("<HHI", dex, method_ids_off + 8 * i)
-        return string(name_idx) + proto(proto_idx)
+    def method(self, i: int) -> str:
+        _class_idx, proto_idx, name_idx = struct.unpack_from("<HHI", self.dex, self.method_ids_off + 8 * i)
+        return self.string(name_idx) + self.proto(proto_idx)
 
-    classes = {}
-    for c in range(class_defs_size):
-        class_idx, _flags, superclass_idx, _interfaces, _source, _annotations, class_data_off, _static = \
-            struct.unpack_from("<8I", dex, class_defs_off + 32 * c)
-        fields, methods = set(), set()
-        if class_data_off:
-            pos = class_data_off
-            counts = []
-            for _ in range(4):
-                n, pos = _uleb128(dex, pos)
-                counts.append(n)
-            for k, count in enumerate(counts):
-                index = 0
-                for _ in range(count):
-                    diff, pos = _uleb128(dex, pos)
-                    index += diff
-                    _access, pos = _uleb128(dex, pos)
-                    if k < 2:  # static_fields, instance_fields
-                        fields.add(field(index))
-                    else:  # direct_methods, virtual_methods (then code_off)
-                        _code, pos = _uleb128(dex, pos)
-                        methods.add(method(index))
-        classes[type_name(class_idx)] = DexClass(None if superclass_idx == 0xFFFFFFFF else type_name(superclass_idx),
-                                                 frozenset(methods), frozenset(fields))
-    return classes
+    def method_holder(self, i: int) -> str:
+        return self.type_name(struct.unpack_from("<H", self.dex, self.method_ids_off + 8 * i)[0])
+
+    def classes(self):
+        """Each class_def as (descriptor, superclass descriptor or None, fields, methods as (name+proto,
+        code_off))): class_data_item is four uleb128 counts, then field_idx_diff/access_flags and
+        method_idx_diff/access_flags/code_off per member, the index a running sum within each list."""
+        dex = self.dex
+        for c in range(self.class_defs_size):
+            class_idx, _flags, superclass_idx, _interfaces, _source, _annotations, class_data_off, _static = \
+                struct.unpack_from("<8I", dex, self.class_defs_off + 32 * c)
+            fields, methods = set(), []
+            if class_data_off:
+                pos = class_data_off
+                counts = []
+                for _ in range(4):
+                    n, pos = _uleb128(dex, pos)
+                    counts.append(n)
+                for k, count in enumerate(counts):
+                    index = 0
+                    for _ in range(count):
+                        diff, pos = _uleb128(dex, pos)
+                        index += diff
+                        _access, pos = _uleb128(dex, pos)
+                        if k < 2:  # static_fields, instance_fields
+                            fields.add(self.field(index))
+                        else:  # direct_methods, virtual_methods (then code_off)
+                            code, pos = _uleb128(dex, pos)
+                            methods.append((index, code))
+            yield (self.type_name(class_idx), None if superclass_idx == 0xFFFFFFFF else self.type_name(superclass_idx),
+                   fields, methods)
+
+
+def dex_classes(dex: bytes) -> dict[str, DexClass]:
+    """Every class a dex file defines, by descriptor, with its declared methods and fields ([_Dex])."""
+    d = _Dex(dex)
+    return {name: DexClass(superclass, frozenset(d.method(m) for m, _code in methods), frozenset(fields))
+            for name, superclass, fields, methods in d.classes()}
+
+
+# Dalvik instructions by opcode: (size in 16-bit code units, how it writes a register) — "": none,
+# "a4": vA in the low nibble of byte 1, "a8": vA is byte 1, "a16": vA is code unit 1 (format 32x); a "w" suffix
+# marks a wide (register pair) result. From the DEX bytecode and instruction-format tables:
+# https://source.android.com/docs/core/runtime/dalvik-bytecode, …/instruction-formats
+def _dalvik_table() -> list[tuple[int, str]]:
+    t = [(1, "")] * 256  # unused opcodes are 10x
+    def put(first, last, size, writes=""):
+        for op in range(first, last + 1):
+            t[op] = (size, writes)
+    put(0x01, 0x01, 1, "a4"); put(0x02, 0x02, 2, "a8"); put(0x03, 0x03, 3, "a16")          # move
+    put(0x04, 0x04, 1, "a4w"); put(0x05, 0x05, 2, "a8w"); put(0x06, 0x06, 3, "a16w")       # move-wide
+    put(0x07, 0x07, 1, "a4"); put(0x08, 0x08, 2, "a8"); put(0x09, 0x09, 3, "a16")          # move-object
+    put(0x0a, 0x0a, 1, "a8"); put(0x0b, 0x0b, 1, "a8w"); put(0x0c, 0x0d, 1, "a8")         # move-result*, move-exception
+    put(0x0f, 0x11, 1)                                                                      # return
+    put(0x12, 0x12, 1, "a4"); put(0x13, 0x13, 2, "a8"); put(0x14, 0x14, 3, "a8"); put(0x15, 0x15, 2, "a8")
+    put(0x16, 0x16, 2, "a8w"); put(0x17, 0x17, 3, "a8w"); put(0x18, 0x18, 5, "a8w"); put(0x19, 0x19, 2, "a8w")
+    put(0x1a, 0x1a, 2, "a8"); put(0x1b, 0x1b, 3, "a8"); put(0x1c, 0x1c, 2, "a8")          # const-string(/jumbo), -class
+    put(0x1d, 0x1e, 1); put(0x1f, 0x1f, 2); put(0x20, 0x20, 2, "a4"); put(0x21, 0x21, 1, "a4")
+    put(0x22, 0x22, 2, "a8"); put(0x23, 0x23, 2, "a4"); put(0x24, 0x26, 3); put(0x27, 0x28, 1)
+    put(0x29, 0x29, 2); put(0x2a, 0x2c, 3); put(0x2d, 0x31, 2, "a8")                       # goto/32, switches, cmp
+    put(0x32, 0x3d, 2)                                                                      # if-*
+    put(0x44, 0x4a, 2, "a8"); put(0x45, 0x45, 2, "a8w"); put(0x4b, 0x51, 2)                # aget, aput
+    put(0x52, 0x58, 2, "a4"); put(0x53, 0x53, 2, "a4w"); put(0x59, 0x5f, 2)                # iget, iput
+    put(0x60, 0x66, 2, "a8"); put(0x61, 0x61, 2, "a8w"); put(0x67, 0x6d, 2)                # sget, sput
+    put(0x6e, 0x72, 3); put(0x74, 0x78, 3)                                                  # invoke-*, /range
+    put(0x7b, 0x8f, 1, "a4")                                                                # unops
+    for op in (0x7d, 0x7e, 0x80, 0x81, 0x83, 0x86, 0x88, 0x89, 0x8b):
+        t[op] = (1, "a4w")
+    put(0x90, 0xaf, 2, "a8"); put(0x9b, 0xa5, 2, "a8w"); put(0xab, 0xaf, 2, "a8w")        # binops
+    put(0xb0, 0xcf, 1, "a4"); put(0xbb, 0xc5, 1, "a4w"); put(0xcb, 0xcf, 1, "a4w")        # binop/2addr
+    put(0xd0, 0xd7, 2, "a4"); put(0xd8, 0xe2, 2, "a8")                                    # lit16, lit8
+    put(0xfa, 0xfb, 4); put(0xfc, 0xfd, 3); put(0xfe, 0xff, 2, "a8")                      # polymorphic, custom
+    return t
+
+
+_DALVIK = _dalvik_table()
+# Library methods that find a field by a name R8 can see, as (holder, name + descriptor): the field updaters'
+# newUpdater and Class.getDeclaredField/getField. R8 recognises exactly these with constant arguments
+# (r8 9.x, com.android.tools.r8.shaking.reflectiveidentification.EnqueuerReflectiveIdentificationAnalysis
+# .scanInvoke: an implicit -identifiernamestring, then naming/IdentifierNameStringMarker rewrites the
+# string to the field's new name).
+DEX_FIELD_LOOKUPS = {
+    ("Ljava/util/concurrent/atomic/AtomicIntegerFieldUpdater;",
+     "newUpdater(Ljava/lang/Class;Ljava/lang/String;)Ljava/util/concurrent/atomic/AtomicIntegerFieldUpdater;"),
+    ("Ljava/util/concurrent/atomic/AtomicLongFieldUpdater;",
+     "newUpdater(Ljava/lang/Class;Ljava/lang/String;)Ljava/util/concurrent/atomic/AtomicLongFieldUpdater;"),
+    ("Ljava/util/concurrent/atomic/AtomicReferenceFieldUpdater;",
+     "newUpdater(Ljava/lang/Class;Ljava/lang/Class;Ljava/lang/String;)"
+     "Ljava/util/concurrent/atomic/AtomicReferenceFieldUpdater;"),
+    ("Ljava/lang/Class;", "getDeclaredField(Ljava/lang/String;)Ljava/lang/reflect/Field;"),
+    ("Ljava/lang/Class;", "getField(Ljava/lang/String;)Ljava/lang/reflect/Field;"),
+}
+
+
+def dex_field_lookups(dex: bytes) -> set[tuple[str, str]]:
+    """(class descriptor, field name) pairs the dex's code looks up by name: a [DEX_FIELD_LOOKUPS] call whose
+    class and name arguments hold a `const-class` and a `const-string` (the class the first argument, or the
+    receiver of getDeclaredField; the name the last). Registers are followed through each method's
+    instructions in order (straight-line code, which is how javac/kotlinc/R8 emit these calls); any other write
+    to a register forgets its constant, so a lookup whose arguments are not plain constants is not reported."""
+    return _dex_code_constants(dex)[0]
+
+
+def dex_code_strings(dex: bytes) -> set[str]:
+    """Every string the dex's code loads with const-string(/jumbo): a name that is not among them cannot be
+    looked up by any constant in this dex."""
+    return _dex_code_constants(dex)[1]
+
+
+def _dex_code_constants(dex: bytes) -> tuple[set[tuple[str, str]], set[str]]:
+    d = _Dex(dex)
+    dex_ = d.dex
+    lookup_methods: dict[int, bool] = {}
+    found, strings = set(), set()
+    for _name, _super, _fields, methods in d.classes():
+        for _m, code in methods:
+            if not code:
+                continue
+            insns_size = struct.unpack_from("<I", dex_, code + 12)[0]
+            pos, end = code + 16, code + 16 + 2 * insns_size
+            regs: dict[int, tuple[str, str]] = {}  # register → ("class", descriptor) or ("string", text)
+            while pos < end:
+                op, b1 = dex_[pos], dex_[pos + 1]
+                if op == 0x00 and b1 in (1, 2, 3):  # switch and array-data payloads (pseudo-instructions)
+                    if b1 == 1:
+                        size = 4 + 2 * struct.unpack_from("<H", dex_, pos + 2)[0]
+                    elif b1 == 2:
+                        size = 2 + 4 * struct.unpack_from("<H", dex_, pos + 2)[0]
+                    else:
+                        width, count = struct.unpack_from("<HI", dex_, pos + 2)
+                        size = 4 + (width * count + 1) // 2
+                    pos += 2 * size
+                    continue
+                size, writes = _DALVIK[op]
+                if op in (0x1a, 0x1b):
+                    idx = struct.unpack_from("<H" if op == 0x1a else "<I", dex_, pos + 2)[0]
+                    regs[b1] = ("string", d.string(idx))
+                    strings.add(regs[b1][1])
+                elif op == 0x1c:
+                    regs[b1] = ("class", d.type_name(struct.unpack_from("<H", dex_, pos + 2)[0]))
+                elif op in (0x07, 0x08, 0x09):  # move-object keeps a constant
+                    a, b = ((b1 & 0xF, b1 >> 4) if op == 0x07 else (b1, struct.unpack_from("<H", dex_, pos + 2)[0])
+                            if op == 0x08 else struct.unpack_from("<HH", dex_, pos + 2))
+                    if b in regs:
+                        regs[a] = regs[b]
+                    else:
+                        regs.pop(a, None)
+                elif op in (0x6e, 0x71, 0x74, 0x77):  # invoke-virtual, invoke-static (and /range)
+                    midx = struct.unpack_from("<H", dex_, pos + 2)[0]
+                    if midx not in lookup_methods:
+                        lookup_methods[midx] = (d.method_holder(midx), d.method(midx)) in DEX_FIELD_LOOKUPS
+                    if lookup_methods[midx]:
+                        if op in (0x6e, 0x71):
+                            unit = struct.unpack_from("<H", dex_, pos + 4)[0]
+                            args = [unit & 0xF, (unit >> 4) & 0xF, (unit >> 8) & 0xF, (unit >> 12) & 0xF, b1 & 0xF]
+                            args = args[:b1 >> 4]
+                        else:
+                            first = struct.unpack_from("<H", dex_, pos + 4)[0]
+                            args = list(range(first, first + b1))
+                        cls, name = regs.get(args[0]), regs.get(args[-1])
+                        if cls and name and cls[0] == "class" and name[0] == "string":
+                            found.add((cls[1], name[1]))
+                elif writes:
+                    a = b1 & 0xF if writes.startswith("a4") else b1 if writes.startswith("a8") else \
+                        struct.unpack_from("<H", dex_, pos + 2)[0]
+                    regs.pop(a, None)
+                    if writes.endswith("w"):
+                        regs.pop(a + 1, None)
+                pos += 2 * size
+    return found, strings
 
 
 @dataclass(frozen=True)
@@ -735,11 +885,13 @@ REFLECTIVE_MEMBERS = [
 # netty) and netty's `ReferenceCountUpdater.getUnsafeOffset(X.class, "f")`, `X.class.getDeclaredField("f")`.
 # HiveMQ's Android guide names these as what R8 must not rename or remove; app/proguard-rules.pro and the
 # libraries' own rules (coroutines: `volatile <fields>`) keep them.
-# The packages whose by-name fields keep rules cover today (app/proguard-rules.pro, coroutines' own rules).
-# Others found by the scan are not required yet: androidx.concurrent's AbstractResolvableFuture (value, listeners,
-# waiters; it falls back to a synchronized helper) and kotlin.SafePublicationLazyImpl._value are renamed by R8
-# today, open in docs/release.md until a keep rule or R8's own handling of newUpdater is confirmed for them.
-FIELD_LOOKUP_PACKAGES = ("io.netty.", "org.jctools.", "kotlinx.coroutines.", "io.reactivex.")
+# The packages whose by-name fields the check requires: netty, JCTools, coroutines and RxJava, kept by rules, and
+# androidx.concurrent (AbstractResolvableFuture), the Kotlin standard library (SafePublicationLazyImpl._value,
+# SafeContinuation.result) and Guava's futures, whose constant newUpdater names R8 rewrites itself when it renames
+# the field ([DEX_FIELD_LOOKUPS]; checked in the release dex on 2026-11-26, docs/release.md). The rest of the scan
+# finds only framework classes (android.*, java.*), which are not in the dex.
+FIELD_LOOKUP_PACKAGES = ("io.netty.", "org.jctools.", "kotlinx.coroutines.", "io.reactivex.", "androidx.concurrent.",
+                         "kotlin.", "com.google.common.util.concurrent.")
 FIELD_LOOKUPS = {"newUpdater", "fieldOffset", "getUnsafeOffset", "getDeclaredField",
                  "newAtomicIntegerFieldUpdater", "newAtomicLongFieldUpdater", "newAtomicReferenceFieldUpdater"}
 
@@ -891,38 +1043,86 @@ def read_mapping(path: str | None) -> dict[str, str]:
         return dict(re.findall(r"(?m)^(\S+) -> (\S+):$", f.read()))
 
 
+def read_field_mapping(path: str | None) -> dict[tuple[str, str], str]:
+    """R8's field renames from its mapping file, as (original class, original field) → new name: the
+    `    type name -> new` lines under each `original.Class -> new.Class:` line (methods have a `(`); {} without
+    one. https://r8.googlesource.com/r8/+/refs/heads/main/doc/retrace.md describes the format."""
+    if not path or not os.path.exists(path):
+        return {}
+    fields, cls = {}, None
+    with open(path, encoding="utf-8") as f:
+        for line in f:
+            if m := re.match(r"(\S+) -> (\S+):$", line):
+                cls = m.group(1)
+            elif cls and (m := re.match(r"    (\S+) ([^\s(]+) -> (\S+)$", line)):
+                fields[(cls, m.group(2))] = m.group(3)
+    return fields
+
+
 def smoke_check(dex_files: list[str], required: list[str], members: list[tuple[str, str]] = (),
-                mapping: dict[str, str] | None = None) -> tuple[int, int]:
+                mapping: dict[str, str] | None = None,
+                field_mapping: dict[tuple[str, str], str] | None = None) -> tuple[int, int, int]:
     """Fails unless every class in `required` is defined, under its own name, in `dex_files`, and every member
-    in `members` ((class, `name(params)return`) for a method, (class, `name`) for a field) is declared under
-    its own name by that class — under the name R8 gave the class in `mapping`, for a class it renamed.
-    That is what a missing keep rule breaks: R8 removes or renames a class or member reached only by
-    reflection. A member whose class R8 removed is not required (its lookups went with it), unless the class
-    itself is in `required`. Returns the numbers of classes and members checked."""
+    in `members` ((class, `name(params)return`) for a method, (class, `name`) for a field) is declared by that
+    class — under the name R8 gave the class in `mapping`, for a class it renamed. A method must keep its own
+    name; so must a field, unless R8 renamed it (`field_mapping`) and rewrote its lookups too: the R8 output
+    then calls a field updater's newUpdater or Class.getDeclaredField/getField with the class and the field's
+    new name as constants ([dex_field_lookups]; R8 9.x does this itself for constant arguments, see
+    [DEX_FIELD_LOOKUPS]). That is what a missing keep rule breaks: R8 removes or renames a class or member
+    reached only by reflection. A member whose class R8 removed is not required (its lookups went with it),
+    unless the class itself is in `required`; nor is a field R8 removed when the code no longer loads its name
+    as a string constant ([dex_code_strings]): no lookup of it is left. Returns the numbers of classes and members checked, and of the
+    fields among them found renamed with their lookups rewritten."""
     mapping = mapping or {}
+    field_mapping = field_mapping or {}
     defined: dict[str, DexClass] = {}
+    dex_data = []
     for d in dex_files:
         with open(d, "rb") as f:
-            defined.update(dex_classes(f.read()))
+            dex_data.append(f.read())
+        defined.update(dex_classes(dex_data[-1]))
     descriptor = lambda n: "L" + n.replace(".", "/") + ";"
     missing = [n for n in required if descriptor(n) not in defined]
     if missing:
         raise BuildError("the R8 output lacks classes reached by name (a missing keep rule in "
                          f"app/proguard-rules.pro?): {', '.join(missing)}")
-    lost, checked = [], 0
+    code: tuple[set, set] | None = None  # lookups and strings, read from the code only when a field is not found
+
+    def code_constants() -> tuple[set[tuple[str, str]], set[str]]:
+        nonlocal code
+        if code is None:
+            parts = [_dex_code_constants(d) for d in dex_data]
+            code = set().union(*(p[0] for p in parts)), set().union(*(p[1] for p in parts))
+        return code
+
+    lost, checked, rewritten = [], 0, 0
     for cls, member in members:
-        found = defined.get(descriptor(mapping.get(cls, cls)))
+        target = descriptor(mapping.get(cls, cls))
+        found = defined.get(target)
         if found is None:
             continue
         checked += 1
+        renamed = f" (renamed {mapping[cls]})" if mapping.get(cls, cls) != cls else ""
         if "(" in member:
-            ok = member in found.methods
-        else:
-            ok = any(f.split(":", 1)[0] == member for f in found.fields)
-        if not ok:
-            renamed = f" (renamed {mapping[cls]})" if mapping.get(cls, cls) != cls else ""
+            if member not in found.methods:
+                lost.append(f"{cls}{renamed}.{member}")
+            continue
+        names = {f.split(":", 1)[0] for f in found.fields}
+        if member in names:
+            continue
+        new = field_mapping.get((cls, member))
+        if new in names:
+            if (target, new) in code_constants()[0]:
+                rewritten += 1
+                continue
+            lost.append(f"{cls}{renamed}.{member} (renamed {new}, which no lookup in the R8 output names)")
+        elif member in code_constants()[1]:
             lost.append(f"{cls}{renamed}.{member}")
+        else:
+            # R8 removed the field and no code still holds its name: every lookup of it went with it (e.g. the
+            # static updater of a class whose updating methods are unreachable). Nothing can miss it.
+            checked -= 1
     if lost:
         raise BuildError(f"the R8 output lacks {len(lost)} members reached by name (a missing keep rule in "
                          f"app/proguard-rules.pro?): {', '.join(lost[:8])}{' …' if len(lost) > 8 else ''}")
-    return len(required), checked
+    return len(required), checked, rewritten

@@ -7,8 +7,9 @@ import textwrap
 import unittest
 from unittest import mock
 
-from hapticon_build.android import (REFLECTIVE_CLASSES, REFLECTIVE_MEMBERS, DexClass, Signing, dex_classes, excluded,
-                                    field_lookups, required_classes, required_members, smoke_check)
+from hapticon_build.android import (REFLECTIVE_CLASSES, REFLECTIVE_MEMBERS, DexClass, Signing, dex_classes,
+                                    dex_code_strings, dex_field_lookups, excluded, field_lookups, read_field_mapping, read_mapping,
+                                    required_classes, required_members, smoke_check)
 from hapticon_build.errors import BuildError
 from hapticon_build.kotlin import compiler_arguments
 from hapticon_build.maven import Repository
@@ -411,6 +412,8 @@ class Sdk36JavaTest(unittest.TestCase):
 
 FIXTURES = os.path.join(os.path.dirname(__file__), "fixtures", "dex")
 FIELDS_DEX = os.path.join(FIXTURES, "fields.dex")  # D8 output of fixtures/dex/Fields.java (how: its header)
+FIELDS_R8_DEX = os.path.join(FIXTURES, "fields-r8.dex")  # R8 9.5.28 output of the same, fields renamed
+FIELDS_R8_MAPPING = os.path.join(FIXTURES, "fields-r8-mapping.txt")
 
 
 def read(path: str, mode: str = "r"):
@@ -437,6 +440,24 @@ class DexParserTest(unittest.TestCase):
             "Lfixture/Fields$Child;": DexClass("Lfixture/Fields;", frozenset({"<init>()V", "touch()V"}), frozenset()),
         }, classes)
 
+    def test_dexFieldLookups_d8Output_updaterAndGetDeclaredFieldNames(self):
+        self.assertEqual({("Lfixture/Fields;", "count"), ("Lfixture/Fields;", "name")},
+                         dex_field_lookups(read(FIELDS_DEX, "rb")))
+
+    def test_dexFieldLookups_r8Output_namesRewrittenToTheNewFieldNames(self):
+        # What R8 9.5.28 does itself for newUpdater(X.class, "f") and X.class.getDeclaredField("f"): the const-string
+        # becomes the field's new name; neither "count" nor "name" is left in the dex.
+        dex = read(FIELDS_R8_DEX, "rb")
+        self.assertEqual({("Lfixture/Fields;", "a"), ("Lfixture/Fields;", "b")}, dex_field_lookups(dex))
+        self.assertNotIn(b"\x05count\x00", dex)
+        self.assertEqual({"a:I", "b:Ljava/lang/String;", "c:Ljava/util/concurrent/atomic/AtomicIntegerFieldUpdater;"},
+                         set(dex_classes(dex)["Lfixture/Fields;"].fields))
+
+    def test_readFieldMapping_r8Mapping_fieldRenamesOnly(self):
+        self.assertEqual({("fixture.Fields", "count"): "a", ("fixture.Fields", "name"): "b", ("fixture.Fields", "COUNT"): "c"},
+                         read_field_mapping(FIELDS_R8_MAPPING))
+        self.assertEqual({}, read_field_mapping(None))
+
     def test_dexClasses_notDex_fails(self):
         with self.assertRaises(BuildError):
             dex_classes(b"PK\x03\x04" + bytes(200))
@@ -454,7 +475,7 @@ class DexParserTest(unittest.TestCase):
 
 class SmokeCheckTest(unittest.TestCase):
     def test_smokeCheck_presentClassesAndMembers_countsThem(self):
-        self.assertEqual((2, 3), smoke_check([FIELDS_DEX], ["fixture.Fields", "fixture.Fields$Child"], [
+        self.assertEqual((2, 3, 0), smoke_check([FIELDS_DEX], ["fixture.Fields", "fixture.Fields$Child"], [
             ("fixture.Fields", "<init>()V"), ("fixture.Fields", "count"), ("fixture.Fields$Child", "touch()V")]))
 
     def test_smokeCheck_missingConstructor_failsNamingIt(self):
@@ -465,13 +486,39 @@ class SmokeCheckTest(unittest.TestCase):
 
     def test_smokeCheck_fieldOfRenamedClassMissing_failsNamingBothNames(self):
         mapping = {"org.jctools.queues.Queue": "fixture.Fields"}
-        self.assertEqual((0, 1), smoke_check([FIELDS_DEX], [], [("org.jctools.queues.Queue", "count")], mapping))
+        self.assertEqual((0, 1, 0), smoke_check([FIELDS_DEX], [], [("org.jctools.queues.Queue", "count")], mapping))
+        with self.assertRaises(BuildError) as e:  # the code still loads "count" for a lookup; Child lacks it
+            smoke_check([FIELDS_DEX], [], [("org.jctools.queues.Queue", "count")],
+                        {"org.jctools.queues.Queue": "fixture.Fields$Child"})
+        self.assertIn("org.jctools.queues.Queue (renamed fixture.Fields$Child).count", str(e.exception))
+
+    def test_smokeCheck_fieldsRenamedWithTheirUpdaterNames_countsThemRewritten(self):
+        # R8 renamed count -> a, name -> b and its output's newUpdater/getDeclaredField calls name a and b.
+        fields = read_field_mapping(FIELDS_R8_MAPPING)
+        self.assertEqual((0, 2, 2), smoke_check([FIELDS_R8_DEX], [], [("fixture.Fields", "count"), ("fixture.Fields", "name")],
+                                                read_mapping(FIELDS_R8_MAPPING), fields))
+
+    def test_smokeCheck_renamedFieldNoLookupNames_failsNamingNewName(self):
+        # The updater field COUNT was renamed c, but no lookup in the dex names c: its string was not rewritten.
         with self.assertRaises(BuildError) as e:
-            smoke_check([FIELDS_DEX], [], [("org.jctools.queues.Queue", "producerIndex")], mapping)
-        self.assertIn("org.jctools.queues.Queue (renamed fixture.Fields).producerIndex", str(e.exception))
+            smoke_check([FIELDS_R8_DEX], [], [("fixture.Fields", "COUNT")], {}, read_field_mapping(FIELDS_R8_MAPPING))
+        self.assertIn("fixture.Fields.COUNT (renamed c, which no lookup in the R8 output names)", str(e.exception))
+
+    def test_smokeCheck_removedFieldWhoseNameNoCodeLoads_notRequired(self):
+        # R8 removed the updater field NAME (nothing used it); no code in the dex loads the string "NAME".
+        self.assertEqual((0, 0, 0), smoke_check([FIELDS_R8_DEX], [], [("fixture.Fields", "NAME")], {},
+                                                read_field_mapping(FIELDS_R8_MAPPING)))
+        self.assertNotIn("NAME", dex_code_strings(read(FIELDS_R8_DEX, "rb")))
+
+    def test_smokeCheck_missingFieldWhoseNameCodeStillLoads_fails(self):
+        # Fields.<clinit> still loads "a" for its newUpdater; Child declares no field a.
+        self.assertIn("a", dex_code_strings(read(FIELDS_R8_DEX, "rb")))
+        with self.assertRaises(BuildError) as e:
+            smoke_check([FIELDS_R8_DEX], [], [("fixture.Fields$Child", "a")])
+        self.assertIn("fixture.Fields$Child.a", str(e.exception))
 
     def test_smokeCheck_memberOfRemovedClass_notRequired(self):
-        self.assertEqual((0, 0), smoke_check([FIELDS_DEX], [], [("org.gone.Queue", "producerIndex")]))
+        self.assertEqual((0, 0, 0), smoke_check([FIELDS_DEX], [], [("org.gone.Queue", "producerIndex")]))
 
     def test_smokeCheck_missingClass_failsNamingIt(self):
         with self.assertRaises(BuildError) as e:
