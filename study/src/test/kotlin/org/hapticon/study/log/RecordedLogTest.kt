@@ -4,6 +4,7 @@ import kotlinx.serialization.json.Json
 import kotlinx.serialization.json.jsonArray
 import kotlinx.serialization.json.jsonPrimitive
 import org.junit.Assert.assertEquals
+import org.junit.Assert.assertTrue
 import org.junit.Test
 
 /**
@@ -50,5 +51,34 @@ class RecordedLogTest {
                 "\"f697ea712d91e576e936f884cb744250ad21b9e1b3572c73a366c6749898de38\"]",
             lines[2].first,
         )
+    }
+}
+
+/** [LogEntry.canonicalJson] spells strings exactly as the hand-written writer of earlier builds did. */
+class CanonicalJsonTest {
+    @Test
+    fun everySpecialCharacter_isEscapedAsTheOldWriterDid() {
+        // The old writer's own test (JsonTest.encode_specialCharacters_areEscaped) pinned this spelling.
+        val text = "\"\\\b\u000C\n\r\t\u0001\u001f\u007F\u2028\u2029/é😀"
+        assertEquals(
+            "[\"\\\"\\\\\\b\\f\\n\\r\\t\\u0001\\u001f\u007F\\u2028\\u2029/é😀\"]",
+            LogEntry.canonicalJson(kotlinx.serialization.json.JsonArray(listOf(kotlinx.serialization.json.JsonPrimitive(text)))),
+        )
+    }
+
+    @Test
+    fun integersAndNesting_areCompact() {
+        val payload = StudyEvent.payload(StudyEvent.SessionStarted("p\u2028", -2, Int.MAX_VALUE, 5))
+        assertEquals("""{"protocol":"p\u2028","revision":-2,"participantIndex":2147483647,"seed":"5"}""", LogEntry.canonicalJson(payload))
+    }
+
+    @Test
+    fun unpairedSurrogate_isRefusedAsBefore() {
+        for (text in listOf("a\uD83D", "\uDE00b", "\uDE00\uD83D")) {
+            val e = org.junit.Assert.assertThrows(IllegalArgumentException::class.java) {
+                LogEntry.canonicalForm(0, 0, text, "t", "{}", LogEntry.GENESIS_HASH)
+            }
+            assertTrue(e.message!!.startsWith("unpaired surrogate at index"))
+        }
     }
 }
