@@ -3,15 +3,12 @@ package org.hapticon.study
 import org.hapticon.study.schema.ProtocolException
 import org.hapticon.study.schema.StudyReport
 import kotlinx.serialization.json.JsonElement
+import kotlinx.serialization.json.JsonObject
 import org.hapticon.core.IconValidationException
 import org.hapticon.core.io.IconJson
 import org.hapticon.core.io.Json
 import org.hapticon.core.io.JsonException
-import org.hapticon.core.io.JsonObject
-import org.hapticon.core.io.JsonValue
 import org.hapticon.core.io.SchemaJson
-import org.hapticon.core.io.toJsonElement
-import org.hapticon.core.io.toJsonValue
 import org.hapticon.core.render.EnvelopeModel
 import org.hapticon.study.design.OrderScheme
 
@@ -34,23 +31,23 @@ import org.hapticon.study.design.OrderScheme
  * [ProtocolException] whose path names the member, for example `tasks[0].stimuli[2].icon.attack`.
  */
 public object ProtocolJson {
-    /** The value of the `schema` member. */
-    public const val SCHEMA: String = "hapticon.study"
+    /** The value of the `schema` member ([StudyFormats.PROTOCOL_SCHEMA]). */
+    public const val SCHEMA: String = StudyFormats.PROTOCOL_SCHEMA
 
-    /** The schema version this build writes and reads. */
-    public const val VERSION: Int = 1
+    /** The schema version this build writes and reads ([StudyFormats.PROTOCOL_VERSION]). */
+    public const val VERSION: Int = StudyFormats.PROTOCOL_VERSION
 
     /** [protocol] as a JSON object, members in schema order. Does not throw. */
-    public fun toJsonValue(protocol: StudyProtocol): JsonObject =
-        SchemaJson.encodeToElement(ProtocolDocument.serializer(), document(protocol)).toJsonValue() as JsonObject
+    public fun toJsonElement(protocol: StudyProtocol): JsonObject =
+        SchemaJson.encodeToElement(ProtocolDocument.serializer(), document(protocol)) as JsonObject
 
     /**
-     * The protocol [value] describes. Throws [ProtocolException] naming the path of the first problem: not an
+     * The protocol [element] describes. Throws [ProtocolException] naming the path of the first problem: not an
      * object, wrong schema or version, a missing or mistyped member, an invalid icon, or a protocol
      * [StudyProtocol] rejects.
      */
-    public fun fromJsonValue(value: JsonValue): StudyProtocol =
-        protocol(SchemaJson.decode(ProtocolDocument.serializer(), value.toJsonElement(), StudyReport("protocol", mapOf("" to (SCHEMA to VERSION)))))
+    public fun fromJsonElement(element: JsonElement): StudyProtocol =
+        protocol(SchemaJson.decode(ProtocolDocument.serializer(), element, StudyReport("protocol", mapOf("" to (SCHEMA to VERSION)))))
 
     /** [protocol] as JSON text: compact when [indent] is empty, else indented. Does not throw for a valid [indent]. */
     public fun encode(protocol: StudyProtocol, indent: String = "  "): String =
@@ -58,9 +55,9 @@ public object ProtocolJson {
 
     /**
      * Parses a protocol from [text]. Throws [JsonException] when [text] is not valid JSON (or over
-     * [Json.DEFAULT_MAX_LENGTH]), and [ProtocolException] as [fromJsonValue] does.
+     * [Json.DEFAULT_MAX_LENGTH]), and [ProtocolException] as [fromJsonElement] does.
      */
-    public fun decode(text: String): StudyProtocol = fromJsonValue(Json.decode(text))
+    public fun decode(text: String): StudyProtocol = fromJsonElement(Json.decode(text))
 
     internal fun document(protocol: StudyProtocol): ProtocolDocument = ProtocolDocument(
         schema = SCHEMA,
@@ -77,7 +74,7 @@ public object ProtocolJson {
         tasks = protocol.tasks.map { task ->
             TaskDocument(
                 task.id, task.title, task.instructions, task.question, task.stimulusOrder.jsonName, task.presentation.jsonName,
-                task.stimuli.map { StimulusDocument(it.id, it.text, it.sticker, it.label, it.number, IconJson.toJsonValue(it.icon).toJsonElement()) },
+                task.stimuli.map { StimulusDocument(it.id, it.text, it.sticker, it.label, it.number, IconJson.toJsonElement(it.icon)) },
             )
         },
     )
@@ -124,7 +121,7 @@ public object ProtocolJson {
     }
 
     private fun icon(path: String, icon: JsonElement) = try {
-        IconJson.fromJsonValue(icon.toJsonValue())
+        IconJson.fromJsonElement(icon)
     } catch (e: IconValidationException) {
         throw ProtocolException(if (e.field == "icon") path else "$path.${e.field}", e.message.orEmpty().removePrefix("${e.field}: "))
     }

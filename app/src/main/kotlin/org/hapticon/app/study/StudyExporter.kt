@@ -10,9 +10,9 @@ import java.net.HttpURLConnection
 import java.net.URI
 import kotlinx.coroutines.Dispatchers
 import kotlinx.coroutines.withContext
+import kotlinx.serialization.json.JsonObject
+import kotlinx.serialization.json.JsonPrimitive
 import org.hapticon.core.io.Json
-import org.hapticon.core.io.JsonObject
-import org.hapticon.core.io.JsonString
 import org.hapticon.study.StudyProtocol
 import org.hapticon.study.export.ResponseCsv
 import org.hapticon.study.export.ResponseRow
@@ -161,7 +161,7 @@ class HttpResultUploader(
         }
 
         private fun errorOf(body: String): String {
-            val error = runCatching { ((Json.decode(body) as JsonObject).members["error"] as JsonString).value }.getOrNull()
+            val error = runCatching { ((Json.decode(body) as JsonObject)["error"] as JsonPrimitive).takeIf { it.isString }?.content }.getOrNull()
             return error ?: body.take(200).ifBlank { "no details" }
         }
     }

@@ -1,13 +1,11 @@
 package org.hapticon.companion.bench
 
+import kotlinx.serialization.json.JsonArray
+import kotlinx.serialization.json.JsonObject
+import kotlinx.serialization.json.JsonPrimitive
 import org.hapticon.companion.cli
 import org.hapticon.core.HapticIcon
 import org.hapticon.core.io.Json
-import org.hapticon.core.io.JsonArray
-import org.hapticon.core.io.JsonBoolean
-import org.hapticon.core.io.JsonNumber
-import org.hapticon.core.io.JsonObject
-import org.hapticon.core.io.JsonString
 import org.hapticon.core.render.EnvelopeModel
 import org.hapticon.core.render.IconRenderer
 import org.hapticon.sensor.grains.SensorBenchmarkResult
@@ -152,33 +150,33 @@ class BenchmarkTest {
     @Test
     fun json_isOneObjectWithEveryFigure() {
         val json = Json.decode(BenchReport.json(SAMPLE_RESULT)) as JsonObject
-        assertEquals(JsonNumber(44_100), json["sampleRate"])
+        assertEquals(JsonPrimitive(44_100), json["sampleRate"])
         val longest = (json["throughput"] as JsonArray)[0] as JsonObject
-        assertEquals(JsonNumber(1_100_000_000), (longest["fast"] as JsonObject)["median"])
-        assertEquals(JsonNumber(2.75), (longest["fastVsPhasor"] as JsonObject)["median"])
-        assertEquals(JsonNumber(0.8), (longest["exactVsSine"] as JsonObject)["min"])
-        assertEquals(JsonNumber(5.960464477539063E-8), json["fastMaxAbsError"])
-        assertEquals(JsonNumber(1.14e-11), json["fastMaxAbsErrorDouble"])
+        assertEquals(JsonPrimitive(1_100_000_000), (longest["fast"] as JsonObject)["median"])
+        assertEquals(JsonPrimitive(2.75), (longest["fastVsPhasor"] as JsonObject)["median"])
+        assertEquals(JsonPrimitive(0.8), (longest["exactVsSine"] as JsonObject)["min"])
+        assertEquals(JsonPrimitive(5.960464477539063E-8), json["fastMaxAbsError"])
+        assertEquals(JsonPrimitive(1.14e-11), json["fastMaxAbsErrorDouble"])
         assertEquals(2, (json["fastErrorCases"] as JsonArray).size)
         val firstBlock = (json["targets"] as JsonObject)["firstBlock"] as JsonObject
-        assertEquals(JsonBoolean(false), firstBlock["met"])
-        assertEquals(JsonNumber(150.0), firstBlock["measured"])
+        assertEquals(JsonPrimitive(false), firstBlock["met"])
+        assertEquals(JsonPrimitive(150), firstBlock["measured"])
         val sensors = json["sensors"] as JsonObject
         val framed = (sensors["decode"] as JsonArray)[1] as JsonObject
-        assertEquals(JsonString("framed"), framed["protocol"])
-        assertEquals(JsonNumber(45.5), framed["megabytesPerSecond"])
-        assertEquals(JsonNumber(2_000_000), framed["framesPerSecond"])
+        assertEquals(JsonPrimitive("framed"), framed["protocol"])
+        assertEquals(JsonPrimitive(45.5), framed["megabytesPerSecond"])
+        assertEquals(JsonPrimitive(2_000_000), framed["framesPerSecond"])
         val handshake = (sensors["models"] as JsonArray)[1] as JsonObject
-        assertEquals(JsonNumber(70.0), handshake["medianNanosPerSample"])
+        assertEquals(JsonPrimitive(70), handshake["medianNanosPerSample"])
         assertEquals(null, handshake["allocatedBytesPerSample"]) // -1: not counted, so left out
         val latency = sensors["grainLatency"] as JsonObject
-        assertEquals(JsonNumber(1200.0), latency["p99Micros"])
-        assertEquals(JsonNumber(2200), latency["grains"])
+        assertEquals(JsonPrimitive(1200), latency["p99Micros"])
+        assertEquals(JsonPrimitive(2200), latency["grains"])
         val baseline = sensors["grainLatencyBaseline"] as JsonObject
-        assertEquals(JsonNumber(3956.0), baseline["maxMicros"])
-        assertEquals(JsonNumber(12.4), baseline["p99Micros"])
+        assertEquals(JsonPrimitive(3956), baseline["maxMicros"])
+        assertEquals(JsonPrimitive(12.4), baseline["p99Micros"])
         val p99 = (json["targets"] as JsonObject)["grainLatencyP99"] as JsonObject
-        assertEquals(JsonBoolean(false), p99["met"])
+        assertEquals(JsonPrimitive(false), p99["met"])
     }
 
     @Test
@@ -187,13 +185,13 @@ class BenchmarkTest {
         assertEquals(result.toString(), 0, result.exitCode)
         val json = Json.decode(result.stdout) as JsonObject
         val allocation = json["allocatedBytesPerBlock"] as JsonObject
-        assertEquals(JsonNumber(0), allocation["exact"])
-        assertEquals(JsonNumber(0), allocation["fast"])
+        assertEquals(JsonPrimitive(0), allocation["exact"])
+        assertEquals(JsonPrimitive(0), allocation["fast"])
         val targets = setOf("fast", "exactVsSine", "firstBlock", "allocation", "decodeCsv", "decodeFramed", "decodeAllocation", "grainDecision", "grainLatencyP99", "grainLatencyMax", "grainLatencyMaxFreeCore")
-        assertEquals(targets, (json["targets"] as JsonObject).members.keys)
+        assertEquals(targets, (json["targets"] as JsonObject).keys)
         val latency = (json["sensors"] as JsonObject)["grainLatency"] as JsonObject
-        assertEquals(JsonNumber(2_000), latency["samples"])
-        assertEquals(JsonNumber(2_000), ((json["sensors"] as JsonObject)["grainLatencyBaseline"] as JsonObject)["samples"])
+        assertEquals(JsonPrimitive(2_000), latency["samples"])
+        assertEquals(JsonPrimitive(2_000), ((json["sensors"] as JsonObject)["grainLatencyBaseline"] as JsonObject)["samples"])
         assertTrue(result.stderr, result.stderr.startsWith("bench: throughput over longest"))
     }
 

@@ -1,12 +1,13 @@
 package org.hapticon.companion.gesture
 
+import kotlinx.serialization.json.JsonObject
+import org.hapticon.core.io.SchemaJson
 import org.hapticon.companion.EXIT_OK
 import org.hapticon.companion.EXIT_USAGE
 import org.hapticon.companion.cli
 import org.hapticon.core.HapticIcon
 import org.hapticon.core.io.IconJson
 import org.hapticon.core.io.Json
-import org.hapticon.core.io.JsonObject
 import org.hapticon.core.render.EnvelopeModel
 import org.hapticon.core.render.IconRenderer
 import org.hapticon.gesture.Channel
@@ -45,10 +46,10 @@ class FitCommandTest {
         val result = cli("fit", "--in", knockWav().path, "--out", File(temp.root, "k.json").path, "--json", "--envelope", "rms", "--name", "tap")
         assertEquals(result.toString(), EXIT_OK, result.exitCode)
         val json = Json.decode(result.stdout) as JsonObject
-        assertEquals("tap", IconJson.fromJsonValue(json["icon"]!!).name)
+        assertEquals("tap", IconJson.fromJsonElement(json["icon"]!!).name)
         val report = json["report"] as JsonObject
-        assertEquals("\"rms\"", Json.encode(report["envelope"]!!))
-        assertEquals("\"vibration\"", Json.encode(report["kind"]!!))
+        assertEquals("\"rms\"", SchemaJson.encodeElement(report["envelope"]!!))
+        assertEquals("\"vibration\"", SchemaJson.encodeElement(report["kind"]!!))
     }
 
     @Test fun fitsAForceCsvAndReportsNoGestureForSilence() {

@@ -1,5 +1,6 @@
 package org.hapticon.gesture.recognition
 
+import org.hapticon.gesture.GestureFormats
 import org.hapticon.core.io.SchemaJson
 import org.hapticon.gesture.Recording
 import kotlin.math.abs
@@ -96,11 +97,11 @@ public class GestureModel(
         "GestureModel($channels at $sampleRate Hz, $window, ${labels.size} labels, ${forest.treeCount} trees)"
 
     public companion object {
-        /** The `schema` member of a model file. */
-        public const val SCHEMA: String = "hapticon.gesture-model"
+        /** The `schema` member of a model file ([GestureFormats.GESTURE_MODEL_SCHEMA]). */
+        public const val SCHEMA: String = GestureFormats.GESTURE_MODEL_SCHEMA
 
-        /** The version this build writes and reads. */
-        public const val VERSION: Int = 1
+        /** The version this build writes and reads ([GestureFormats.GESTURE_MODEL_VERSION]). */
+        public const val VERSION: Int = GestureFormats.GESTURE_MODEL_VERSION
 
         /** Names the feature definition ([WindowFeatures]); a model with another set is refused. */
         public const val FEATURE_SET: String = "stats33-v1"

@@ -8,7 +8,6 @@ import org.hapticon.core.io.Json
 import org.hapticon.core.io.JsonException
 import org.hapticon.core.io.JsonKind
 import org.hapticon.core.io.SchemaReport
-import org.hapticon.core.io.toJsonElement
 
 /** A gesture model file, schema `hapticon.gesture-model` (docs/gesture-recognition.md); members in file order. */
 @Serializable
@@ -77,7 +76,7 @@ internal class ModelReport(private val header: (member: String, value: JsonEleme
     companion object {
         /** The text of a model file parsed strictly (at most [maxLength] characters), as a kotlinx tree. */
         fun parse(text: String, maxLength: Int = Json.DEFAULT_MAX_LENGTH): JsonElement = try {
-            Json.decode(text, maxLength = maxLength).toJsonElement()
+            Json.decode(text, maxLength = maxLength)
         } catch (e: JsonException) {
             throw IllegalArgumentException("model is not valid JSON: ${e.message}")
         }

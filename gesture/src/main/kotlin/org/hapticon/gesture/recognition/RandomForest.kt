@@ -1,10 +1,8 @@
 package org.hapticon.gesture.recognition
 
-import org.hapticon.core.io.JsonObject
-import org.hapticon.core.io.JsonValue
+import kotlinx.serialization.json.JsonElement
+import kotlinx.serialization.json.JsonObject
 import org.hapticon.core.io.SchemaJson
-import org.hapticon.core.io.toJsonElement
-import org.hapticon.core.io.toJsonValue
 import java.util.SplittableRandom
 import kotlin.math.roundToInt
 import kotlin.math.sqrt
@@ -84,7 +82,7 @@ public class RandomForest private constructor(
     }
 
     /** The forest as JSON: counts and, per tree, parallel node arrays (see [fromJson]). */
-    public fun toJson(): JsonObject = SchemaJson.encodeToElement(ForestDocument.serializer(), toDocument()).toJsonValue() as JsonObject
+    public fun toJson(): JsonObject = SchemaJson.encodeToElement(ForestDocument.serializer(), toDocument()) as JsonObject
 
     internal fun toDocument(): ForestDocument = ForestDocument(featureCount, classCount, trees.map { TreeDocument(it.feature, it.threshold, it.left, it.right) })
 
@@ -117,9 +115,9 @@ public class RandomForest private constructor(
          * The forest [json] describes, as written by [toJson]. [IllegalArgumentException] naming the problem
          * when a member is missing or malformed or a node points outside its tree.
          */
-        public fun fromJson(json: JsonValue): RandomForest {
+        public fun fromJson(json: JsonElement): RandomForest {
             // The forest alone is checked with the paths it has inside a model file ("forest", "forest.trees[3]").
-            val checked = SchemaJson.check(json.toJsonElement(), ForestDocument.serializer().descriptor, "forest", ModelReport())
+            val checked = SchemaJson.check(json, ForestDocument.serializer().descriptor, "forest", ModelReport())
             return fromDocument(SchemaJson.format.decodeFromJsonElement(ForestDocument.serializer(), checked))
         }
 

@@ -1,5 +1,6 @@
 package org.hapticon.gesture.social
 
+import org.hapticon.gesture.GestureFormats
 import kotlinx.serialization.Serializable
 import kotlinx.serialization.json.JsonArray
 import org.hapticon.core.io.SchemaJson
@@ -37,11 +38,11 @@ public class SocialTouchModel(public val labels: List<String>, public val boost:
     }
 
     public companion object {
-        /** The `schema` member of a model file. */
-        public const val SCHEMA: String = "hapticon.social-touch-model"
+        /** The `schema` member of a model file ([GestureFormats.SOCIAL_TOUCH_MODEL_SCHEMA]). */
+        public const val SCHEMA: String = GestureFormats.SOCIAL_TOUCH_MODEL_SCHEMA
 
-        /** The version this build writes and reads. */
-        public const val VERSION: Int = 1
+        /** The version this build writes and reads ([GestureFormats.SOCIAL_TOUCH_MODEL_VERSION]). */
+        public const val VERSION: Int = GestureFormats.SOCIAL_TOUCH_MODEL_VERSION
 
         /** Whether [text] looks like a social-touch model (its schema member), without parsing the rest. */
         public fun isSocialTouchModel(text: String): Boolean = text.contains("\"$SCHEMA\"")

@@ -4,8 +4,9 @@ package org.hapticon.core.io
  * Every schema name and version of the icon and pattern file family, in one place: Hapticon's own documents
  * ([IconJson], [org.hapticon.core.pattern.PatternJson]) and the two foreign pattern formats this build reads and
  * writes ([org.hapticon.core.pattern.Ahap], [org.hapticon.core.pattern.MetaHaptic]). The chat wire family
- * (which embeds icons and patterns) keeps its own in `org.hapticon.messaging.WireFormats`; docs/json.md lists
- * every family.
+ * (which embeds icons and patterns) keeps its own in `org.hapticon.messaging.WireFormats`, the study family in
+ * `org.hapticon.study.StudyFormats`, the gesture models in `org.hapticon.gesture.GestureFormats`; docs/json.md
+ * lists every family.
  *
  * A version is what this build writes and the newest it reads; raising one is a format change that older
  * builds will refuse (docs/json.md, "Versions").

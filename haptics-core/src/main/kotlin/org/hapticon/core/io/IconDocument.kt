@@ -47,11 +47,11 @@ internal object IconReport : SchemaReport {
     override val nullMeansAbsent: Boolean get() = false
 
     override fun notAnObject(path: String, value: JsonElement): Nothing =
-        throw IconValidationException("icon", "expected an object, got ${snippet(value.toJsonValue())}")
+        throw IconValidationException("icon", "expected an object, got ${snippet(value)}")
 
     override fun wrongType(path: String, member: String, expected: JsonKind, value: JsonElement?): Nothing {
         if (value == null) throw IconValidationException(member, if (member == "schema") "missing; expected \"${IconJson.SCHEMA}\"" else "missing")
-        val got = snippet(value.toJsonValue())
+        val got = snippet(value)
         val number = (value as? JsonPrimitive)?.takeUnless { it.isString }?.doubleOrNull
         throw IconValidationException(
             member,
@@ -67,13 +67,13 @@ internal object IconReport : SchemaReport {
     }
 
     override fun wrongElement(path: String, member: String, index: Int, expected: JsonKind, value: JsonElement): Nothing =
-        throw IconValidationException("$member[$index]", "expected ${expected.name.lowercase()}, got ${snippet(value.toJsonValue())}")
+        throw IconValidationException("$member[$index]", "expected ${expected.name.lowercase()}, got ${snippet(value)}")
 
     // Schema and version come first: a newer document may have changed any other member.
     override fun checked(path: String, member: String, value: JsonElement) {
         val found = (value as? JsonPrimitive)?.content ?: return
         when (member) {
-            "schema" -> if (found != IconJson.SCHEMA) throw IconValidationException(member, "expected \"${IconJson.SCHEMA}\", got ${snippet(value.toJsonValue())}")
+            "schema" -> if (found != IconJson.SCHEMA) throw IconValidationException(member, "expected \"${IconJson.SCHEMA}\", got ${snippet(value)}")
             "version" -> if (found != "${IconJson.VERSION}") {
                 throw IconValidationException(member, "unsupported icon schema version $found (this build reads version ${IconJson.VERSION})")
             }

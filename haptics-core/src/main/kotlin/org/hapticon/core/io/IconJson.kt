@@ -1,5 +1,8 @@
 package org.hapticon.core.io
 
+import kotlinx.serialization.json.JsonArray
+import kotlinx.serialization.json.JsonElement
+import kotlinx.serialization.json.JsonObject
 import org.hapticon.core.HapticIcon
 import org.hapticon.core.IconValidationException
 
@@ -21,24 +24,18 @@ public object IconJson {
     /** The schema version this build writes, and the newest it reads. */
     public const val VERSION: Int = HapticFormats.ICON_VERSION
 
-    /** [icon] as a JSON object with members in schema order. Does not throw. */
-    public fun toJsonValue(icon: HapticIcon): JsonObject = SchemaJson.encodeToElement(IconDocument.serializer(), document(icon)).toJsonValue() as JsonObject
+    /** [icon] as a JSON object with members in schema order (whole numbers without a fraction). Does not throw. */
+    public fun toJsonElement(icon: HapticIcon): JsonObject =
+        SchemaJson.encodeToElement(IconDocument.serializer(), document(icon)) as JsonObject
 
     /**
-     * The icon that [value] describes, for example one embedded in a message.
+     * The icon that [element] describes, for example one embedded in a message.
      *
-     * Throws [IconValidationException] naming the field when [value] is not an object (field `icon`), when
+     * Throws [IconValidationException] naming the field when [element] is not an object (field `icon`), when
      * `schema` is not [SCHEMA], when `version` is newer than [VERSION] ("unsupported icon schema version 2"),
      * or when a member is missing, of the wrong type, not finite, or out of range.
      */
-    public fun fromJsonValue(value: JsonValue): HapticIcon = fromJsonElement(value.toJsonElement())
-
-    /** [icon] as a kotlinx JSON object with members in schema order (whole numbers without a fraction). Does not throw. */
-    public fun toJsonElement(icon: HapticIcon): kotlinx.serialization.json.JsonObject =
-        SchemaJson.encodeToElement(IconDocument.serializer(), document(icon)) as kotlinx.serialization.json.JsonObject
-
-    /** The icon [element] describes; throws [IconValidationException] as [fromJsonValue] does. */
-    public fun fromJsonElement(element: kotlinx.serialization.json.JsonElement): HapticIcon {
+    public fun fromJsonElement(element: JsonElement): HapticIcon {
         val doc = SchemaJson.decode(IconDocument.serializer(), element, IconReport)
         if (doc.count !in 1L..HapticIcon.MAX_COUNT.toLong()) fail("count", "must be in 1..${HapticIcon.MAX_COUNT}, was ${doc.count}")
         return HapticIcon(doc.name, doc.attack, doc.sustain, doc.level, doc.release, doc.note, doc.period, doc.count.toInt())
@@ -51,13 +48,13 @@ public object IconJson {
      * Parses one icon from [text].
      *
      * Throws [JsonException] when [text] is not valid JSON or exceeds [Json.DEFAULT_MAX_LENGTH], and
-     * [IconValidationException] as [fromJsonValue] does.
+     * [IconValidationException] as [fromJsonElement] does.
      */
-    public fun decode(text: String): HapticIcon = fromJsonValue(Json.decode(text))
+    public fun decode(text: String): HapticIcon = fromJsonElement(Json.decode(text))
 
     /** [icons] as a JSON array of icon objects. Does not throw for a valid [indent]. */
     public fun encodeList(icons: List<HapticIcon>, indent: String = ""): String =
-        Json.encode(JsonArray(icons.map(::toJsonValue)), indent)
+        SchemaJson.encodeElement(JsonArray(icons.map(::toJsonElement)), indent)
 
     /**
      * Parses a JSON array of icons from [text].
@@ -69,9 +66,9 @@ public object IconJson {
     public fun decodeList(text: String): List<HapticIcon> {
         val value = Json.decode(text)
         if (value !is JsonArray) throw IconValidationException("icons", "expected an array, got ${snippet(value)}")
-        return value.elements.mapIndexed { index, element ->
+        return value.mapIndexed { index, element ->
             try {
-                fromJsonValue(element)
+                fromJsonElement(element)
             } catch (e: IconValidationException) {
                 val detail = e.message.orEmpty().removePrefix("${e.field}: ")
                 throw IconValidationException("icons[$index].${e.field}", detail)

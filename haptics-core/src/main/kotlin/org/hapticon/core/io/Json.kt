@@ -1,15 +1,20 @@
 package org.hapticon.core.io
 
+import kotlinx.serialization.json.JsonElement
+import kotlinx.serialization.json.JsonPrimitive
+import kotlinx.serialization.json.doubleOrNull
 import java.nio.ByteBuffer
 import java.nio.CharBuffer
 import java.nio.charset.CodingErrorAction
 
 /**
- * Strict JSON (RFC 8259) decoding and encoding without dependencies.
+ * Strict JSON (RFC 8259) decoding into kotlinx-serialization [JsonElement]s; writing is kotlinx's
+ * ([SchemaJson.encode], [SchemaJson.encodeElement]).
  *
  * Decoding is safe for hostile input: the text length and nesting depth are capped, malformed input
  * fails with a [JsonException] giving the character offset, duplicate member names and unpaired
- * surrogates are rejected, and nothing may follow the value.
+ * surrogates are rejected, and nothing may follow the value. Why this reader and not kotlinx's: see
+ * [JsonReader] (kotlinx keeps the last of duplicate names, Kotlin/kotlinx.serialization#1990).
  */
 public object Json {
     /** Default cap on the input size, in characters for [decode] and bytes for [decodeUtf8]: 1 MiB. */
@@ -28,7 +33,7 @@ public object Json {
      * deeper than [maxDepth] objects and arrays; [IllegalArgumentException] when [maxLength] is negative
      * or [maxDepth] is outside 1..[MAX_DEPTH_LIMIT].
      */
-    public fun decode(text: String, maxLength: Int = DEFAULT_MAX_LENGTH, maxDepth: Int = DEFAULT_MAX_DEPTH): JsonValue {
+    public fun decode(text: String, maxLength: Int = DEFAULT_MAX_LENGTH, maxDepth: Int = DEFAULT_MAX_DEPTH): JsonElement {
         checkLimits(maxLength, maxDepth)
         if (text.length > maxLength) {
             throw JsonException("input of ${text.length} characters exceeds the limit of $maxLength", maxLength)
@@ -42,35 +47,22 @@ public object Json {
      * Throws [JsonException] when the bytes are not valid UTF-8 (offset = byte index), when the text is
      * malformed or exceeds a limit (offset = character index); [IllegalArgumentException] for bad limits.
      */
-    public fun decodeUtf8(bytes: ByteArray, maxLength: Int = DEFAULT_MAX_LENGTH, maxDepth: Int = DEFAULT_MAX_DEPTH): JsonValue =
+    public fun decodeUtf8(bytes: ByteArray, maxLength: Int = DEFAULT_MAX_LENGTH, maxDepth: Int = DEFAULT_MAX_DEPTH): JsonElement =
         decodeUtf8(bytes, maxLength, maxDepth, allowTrailingCommas = false)
 
     /**
      * Like [decodeUtf8], but also accepts a comma before a closing `]` or `}` — a JSON5 liberty found in
      * files such as Apple's own AHAP samples. Everything else stays strict.
      */
-    public fun decodeUtf8AllowingTrailingCommas(bytes: ByteArray, maxLength: Int = DEFAULT_MAX_LENGTH): JsonValue =
+    public fun decodeUtf8AllowingTrailingCommas(bytes: ByteArray, maxLength: Int = DEFAULT_MAX_LENGTH): JsonElement =
         decodeUtf8(bytes, maxLength, DEFAULT_MAX_DEPTH, allowTrailingCommas = true)
 
-    internal fun decodeUtf8(bytes: ByteArray, maxLength: Int, maxDepth: Int, allowTrailingCommas: Boolean): JsonValue {
+    internal fun decodeUtf8(bytes: ByteArray, maxLength: Int, maxDepth: Int, allowTrailingCommas: Boolean): JsonElement {
         checkLimits(maxLength, maxDepth)
         if (bytes.size > maxLength) {
             throw JsonException("input of ${bytes.size} bytes exceeds the limit of $maxLength", maxLength)
         }
         return JsonReader(decodeUtf8Strictly(bytes), maxDepth, allowTrailingCommas).readDocument()
-    }
-
-    /**
-     * Writes [value] as JSON text: compact when [indent] is empty, otherwise one member or element per
-     * line, each level indented by [indent].
-     *
-     * Throws [IllegalArgumentException] when a number is infinite, a string holds an unpaired surrogate
-     * (it has no UTF-8 form), nesting exceeds [MAX_DEPTH_LIMIT], or [indent] holds anything but spaces and tabs.
-     */
-    public fun encode(value: JsonValue, indent: String = ""): String {
-        val out = StringBuilder()
-        JsonWriter(out, indent).write(value)
-        return out.toString()
     }
 
     private fun checkLimits(maxLength: Int, maxDepth: Int) {
@@ -91,4 +83,16 @@ public object Json {
         output.flip()
         return output.toString()
     }
+}
+
+/**
+ * [value] as short JSON for an error message: at most about 40 characters, `…` marking a cut, and
+ * non-finite numbers spelled out (they have no JSON form; the reader keeps `1e400` as `Infinity`).
+ */
+internal fun snippet(value: JsonElement): String {
+    if (value is JsonPrimitive && !value.isString && value.doubleOrNull?.isInfinite() == true) {
+        return if (value.content.startsWith("-")) "a number too small for a double" else "a number too large for a double"
+    }
+    val text = SchemaJson.encodeElement(value)
+    return if (text.length <= 40) text else text.substring(0, 40) + "…"
 }

@@ -1,9 +1,22 @@
 package org.hapticon.core.io
 
+import kotlinx.serialization.json.JsonArray
+import kotlinx.serialization.json.JsonElement
+import kotlinx.serialization.json.JsonNull
+import kotlinx.serialization.json.JsonObject
+import kotlinx.serialization.json.JsonPrimitive
 import java.util.Locale
 
 /**
- * A strict RFC 8259 recursive-descent parser over one string.
+ * A strict RFC 8259 recursive-descent parser over one string, building kotlinx-serialization [JsonElement]s (the
+ * one JSON tree of the project).
+ *
+ * Why it exists beside kotlinx's own parser: kotlinx keeps the last of duplicate member names without a word
+ * (`JsonTreeReader`: `result[key] = element`) and its maintainers declined an option to refuse them
+ * (Kotlin/kotlinx.serialization#1990, "we would prefer not to introduce such a feature"); kotlinx 1.12.0's
+ * `JsonBuilder` still has none. Our formats refuse duplicates (parsers disagree on which wins, so one document
+ * could mean two things), reject unpaired surrogates and report the offset of the offending character
+ * ([JsonException.offset]). This is a strictness requirement, not a speed one.
  *
  * Recursion is bounded by [maxDepth] (at most [Json.MAX_DEPTH_LIMIT]), so hostile nesting fails with a
  * [JsonException] instead of a StackOverflowError. Every loop advances [pos], so it cannot hang.
@@ -16,7 +29,7 @@ internal class JsonReader(
 ) {
     private var pos = 0
 
-    fun readDocument(): JsonValue {
+    fun readDocument(): JsonElement {
         skipWhitespace()
         val value = readValue(depth = 0)
         skipWhitespace()
@@ -24,14 +37,14 @@ internal class JsonReader(
         return value
     }
 
-    private fun readValue(depth: Int): JsonValue {
+    private fun readValue(depth: Int): JsonElement {
         if (pos >= text.length) fail("unexpected end of input, expected a value")
         return when (val c = text[pos]) {
             '{' -> readObject(depth + 1)
             '[' -> readArray(depth + 1)
-            '"' -> JsonString(readString())
-            't' -> readLiteral("true", JsonBoolean(true))
-            'f' -> readLiteral("false", JsonBoolean(false))
+            '"' -> JsonPrimitive(readString())
+            't' -> readLiteral("true", TRUE)
+            'f' -> readLiteral("false", FALSE)
             'n' -> readLiteral("null", JsonNull)
             '-', in '0'..'9' -> readNumber()
             else -> fail("unexpected ${describe(c)}, expected a value")
@@ -41,11 +54,11 @@ internal class JsonReader(
     private fun readObject(depth: Int): JsonObject {
         checkDepth(depth)
         pos++ // '{'
-        val members = LinkedHashMap<String, JsonValue>()
+        val members = LinkedHashMap<String, JsonElement>()
         skipWhitespace()
         if (peek() == '}') {
             pos++
-            return JsonObject(members, owned = true)
+            return JsonObject(members)
         }
         while (true) {
             skipWhitespace()
@@ -57,13 +70,13 @@ internal class JsonReader(
             pos++
             skipWhitespace()
             // Duplicate names are legal but ambiguous (parsers disagree on which wins), so refuse them.
-            if (members.put(name, readValue(depth)) != null) fail("duplicate member name ${snippet(JsonString(name))}", nameOffset)
+            if (members.put(name, readValue(depth)) != null) fail("duplicate member name ${snippet(JsonPrimitive(name))}", nameOffset)
             skipWhitespace()
             when (peek()) {
-                ',' -> if (trailingCommaBefore('}')) return JsonObject(members, owned = true)
+                ',' -> if (trailingCommaBefore('}')) return JsonObject(members)
                 '}' -> {
                     pos++
-                    return JsonObject(members, owned = true)
+                    return JsonObject(members)
                 }
                 else -> failExpected("',' or '}'")
             }
@@ -73,21 +86,21 @@ internal class JsonReader(
     private fun readArray(depth: Int): JsonArray {
         checkDepth(depth)
         pos++ // '['
-        val elements = ArrayList<JsonValue>()
+        val elements = ArrayList<JsonElement>()
         skipWhitespace()
         if (peek() == ']') {
             pos++
-            return JsonArray(elements, owned = true)
+            return JsonArray(elements)
         }
         while (true) {
             skipWhitespace()
             elements.add(readValue(depth))
             skipWhitespace()
             when (peek()) {
-                ',' -> if (trailingCommaBefore(']')) return JsonArray(elements, owned = true)
+                ',' -> if (trailingCommaBefore(']')) return JsonArray(elements)
                 ']' -> {
                     pos++
-                    return JsonArray(elements, owned = true)
+                    return JsonArray(elements)
                 }
                 else -> failExpected("',' or ']'")
             }
@@ -157,7 +170,7 @@ internal class JsonReader(
         return code.toChar()
     }
 
-    private fun readNumber(): JsonNumber {
+    private fun readNumber(): JsonPrimitive {
         val start = pos
         val negative = peek() == '-'
         if (negative) pos++
@@ -211,13 +224,21 @@ internal class JsonReader(
         val scale = exponent - fractionDigits
         if (fitsMantissa && mantissa <= MAX_EXACT_MANTISSA && scale in -MAX_EXACT_POWER..MAX_EXACT_POWER) {
             val magnitude = if (scale >= 0) mantissa * EXACT_POWERS_OF_TEN[scale] else mantissa / EXACT_POWERS_OF_TEN[-scale]
-            return JsonNumber(if (negative) -magnitude else magnitude, isIntegral)
+            return number(if (negative) -magnitude else magnitude, isIntegral)
         }
         // Overlong literals such as 1e400 become ±infinity here; callers decide whether that is acceptable.
-        return JsonNumber(text.substring(start, pos).toDouble(), isIntegral)
+        return number(text.substring(start, pos).toDouble(), isIntegral)
     }
 
-    private fun readLiteral(literal: String, value: JsonValue): JsonValue {
+    /**
+     * A literal without fraction or exponent stays an integer (`3`, and `-0` becomes `0`), as a `Long` while it
+     * fits; anything else is a double (`3.0`, `3e0` → `3.0`; `1e400` → `Infinity`, kept so that the schema check
+     * can name the member). The content is what kotlinx decodes and what [SchemaJson.check] inspects.
+     */
+    private fun number(value: Double, isIntegral: Boolean): JsonPrimitive =
+        if (isIntegral && Math.abs(value) < 9.2E18) JsonPrimitive(value.toLong()) else JsonPrimitive(value)
+
+    private fun readLiteral(literal: String, value: JsonElement): JsonElement {
         if (!text.startsWith(literal, pos)) fail("invalid literal, expected '$literal'")
         pos += literal.length
         return value
@@ -230,10 +251,6 @@ internal class JsonReader(
         if (!allowTrailingCommas || peek() != close) return false
         pos++
         return true
-    }
-
-    private fun skipDigits() {
-        while (pos < text.length && text[pos] in '0'..'9') pos++
     }
 
     private fun skipWhitespace() {
@@ -263,6 +280,8 @@ internal class JsonReader(
         const val MAX_EXACT_MANTISSA = 1L shl 53
         const val MAX_EXACT_POWER = 22
         val EXACT_POWERS_OF_TEN = DoubleArray(MAX_EXACT_POWER + 1) { "1e$it".toDouble() }
+        val TRUE = JsonPrimitive(true)
+        val FALSE = JsonPrimitive(false)
     }
 }
 

@@ -21,8 +21,9 @@ import kotlinx.serialization.json.JsonObject as KObject
  * [JsonElement] → [check] against the type's [SerialDescriptor] → `decodeFromJsonElement`.
  *
  * Why the strict reader stays in front: kotlinx-serialization's parser keeps the last of duplicate member names
- * (`JsonTreeReader`: `result[key] = element`), has no nesting or size limit, and reports errors without a
- * stable offset; our formats refuse duplicates, cap depth and length, and tests name the offset.
+ * (`JsonTreeReader`: `result[key] = element`; Kotlin/kotlinx.serialization#1990 declined an option to refuse them)
+ * and reports errors without a stable offset; our formats refuse duplicates, cap depth and length, and tests name
+ * the offset. The reader builds kotlinx elements directly, so there is one tree type.
  *
  * Why [check] comes before kotlinx decoding: every format words its errors itself (`title: missing`,
  * `model: 'schema' must be a string`), and those messages are part of the format's contract (tests assert them);
@@ -39,8 +40,8 @@ public object SchemaJson {
     }
 
     /**
-     * [value] as JSON text: compact when [indent] is empty, otherwise one member or element per line (as
-     * [Json.encode]). Throws [IllegalArgumentException] when [indent] holds anything but spaces and tabs.
+     * [value] as JSON text: compact when [indent] is empty, otherwise one member or element per line, each level
+     * indented by [indent]. Throws [IllegalArgumentException] when [indent] holds anything but spaces and tabs.
      */
     @OptIn(ExperimentalSerializationApi::class)
     public fun <T> encode(serializer: SerializationStrategy<T>, value: T, indent: String = ""): String {
@@ -67,11 +68,11 @@ public object SchemaJson {
         maxLength: Int = Json.DEFAULT_MAX_LENGTH,
         maxDepth: Int = Json.DEFAULT_MAX_DEPTH,
         allowTrailingCommas: Boolean = false,
-    ): JsonElement = Json.decodeUtf8(bytes, maxLength, maxDepth, allowTrailingCommas).toJsonElement()
+    ): JsonElement = Json.decodeUtf8(bytes, maxLength, maxDepth, allowTrailingCommas)
 
     /** Parses [text] with the strict reader ([Json.decode]) into a kotlinx tree. Throws [JsonException]. */
     public fun parse(text: String, maxLength: Int = Json.DEFAULT_MAX_LENGTH, maxDepth: Int = Json.DEFAULT_MAX_DEPTH): JsonElement =
-        Json.decode(text, maxLength, maxDepth).toJsonElement()
+        Json.decode(text, maxLength, maxDepth)
 
     /** [element] as JSON text, compact or indented as [encode] writes it. */
     public fun encodeElement(element: JsonElement, indent: String = ""): String = encode(JsonElement.serializer(), element, indent)
@@ -249,33 +250,3 @@ public interface SchemaReport {
      */
     public fun checked(path: String, member: String, value: JsonElement) {}
 }
-
-/** [this] kotlinx tree as a [JsonValue], for codecs whose public API still hands out [JsonValue]s. */
-public fun JsonElement.toJsonValue(): JsonValue = when (this) {
-    is KObject -> JsonObject(mapValuesTo(LinkedHashMap()) { it.value.toJsonValue() })
-    is KArray -> JsonArray(map { it.toJsonValue() })
-    KNull -> JsonNull
-    is JsonPrimitive -> when {
-        isString -> JsonString(content)
-        content == "true" -> JsonBoolean(true)
-        content == "false" -> JsonBoolean(false)
-        else -> content.toLongOrNull()?.let { JsonNumber(it) } ?: JsonNumber(content.toDouble(), isIntegral = false)
-    }
-}
-
-/** [this] strictly parsed value as a kotlinx tree; members keep their order. Integral numbers stay integral. */
-public fun JsonValue.toJsonElement(): JsonElement = when (this) {
-    is JsonObject -> KObject(members.mapValuesTo(LinkedHashMap()) { it.value.toJsonElement() })
-    is JsonArray -> KArray(elements.map { it.toJsonElement() })
-    is JsonString -> JsonPrimitive(value)
-    is JsonNumber -> when {
-        !value.isFinite() -> JsonPrimitive(value) // kept so the schema check can name it
-        isIntegral && Math.abs(value) < 9.2E18 -> JsonPrimitive(value.toLong())
-        else -> JsonPrimitive(value)
-    }
-    is JsonBoolean -> JsonPrimitive(value)
-    JsonNull -> KNull
-}
-
-/** [element] as short JSON for an error message, as [snippet] of a [JsonValue] writes it. */
-internal fun snippet(element: JsonElement): String = snippet(element.toJsonValue())

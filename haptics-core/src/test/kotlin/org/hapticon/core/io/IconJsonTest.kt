@@ -1,5 +1,7 @@
 package org.hapticon.core.io
 
+import kotlinx.serialization.json.JsonObject
+import kotlinx.serialization.json.JsonPrimitive
 import org.hapticon.core.HapticIcon
 import org.hapticon.core.IconValidationException
 import org.junit.Assert.assertEquals
@@ -24,9 +26,9 @@ class IconJsonTest {
     /** The knock document with [member] replaced by [json], or removed when [json] is null. */
     private fun knockWith(member: String, json: String?): String {
         val value = Json.decode(knockText) as JsonObject
-        val members = LinkedHashMap(value.members)
+        val members = LinkedHashMap(value)
         if (json == null) members.remove(member) else members[member] = Json.decode(json)
-        return Json.encode(JsonObject(members))
+        return SchemaJson.encodeElement(JsonObject(members))
     }
 
     @Test
@@ -72,7 +74,7 @@ class IconJsonTest {
 
     @Test
     fun decode_withoutPeriodAndCount_usesDefaults() {
-        val text = knockWith("period", null).let { Json.encode(JsonObject((Json.decode(it) as JsonObject).members - "count")) }
+        val text = knockWith("period", null).let { SchemaJson.encodeElement(JsonObject((Json.decode(it) as JsonObject) - "count")) }
         assertEquals(HapticIcon("knock", 0.005, 0.01, 0.5, 0.005, 57.0, period = 0.0, count = 1), IconJson.decode(text))
     }
 
@@ -150,7 +152,7 @@ class IconJsonTest {
 
     @Test
     fun decode_versionIsCheckedBeforeOtherMembers() {
-        val text = knockWith("version", "2").let { v -> Json.encode(JsonObject((Json.decode(v) as JsonObject).members - "attack")) }
+        val text = knockWith("version", "2").let { v -> SchemaJson.encodeElement(JsonObject((Json.decode(v) as JsonObject) - "attack")) }
         assertInvalid(text, "version", "version: unsupported icon schema version 2 (this build reads version 1)")
     }
 
@@ -176,10 +178,10 @@ class IconJsonTest {
     }
 
     @Test
-    fun jsonValue_embeddedInAMessage_roundTrips() {
-        val message = JsonObject(linkedMapOf("from" to JsonString("ana"), "icon" to IconJson.toJsonValue(HapticIcon.HIT)))
-        val received = Json.decode(Json.encode(message)) as JsonObject
-        assertEquals(HapticIcon.HIT, IconJson.fromJsonValue(received["icon"]!!))
+    fun jsonElement_embeddedInAMessage_roundTrips() {
+        val message = JsonObject(linkedMapOf("from" to JsonPrimitive("ana"), "icon" to IconJson.toJsonElement(HapticIcon.HIT)))
+        val received = Json.decode(SchemaJson.encodeElement(message)) as JsonObject
+        assertEquals(HapticIcon.HIT, IconJson.fromJsonElement(received["icon"]!!))
     }
 
     @Test
@@ -188,6 +190,10 @@ class IconJsonTest {
         assertEquals('[', text.first())
         assertEquals(HapticIcon.PRESETS, IconJson.decodeList(text))
         assertEquals(emptyList<HapticIcon>(), IconJson.decodeList("[]"))
+        // As the hand-written writer spelled it: one member per line, whole numbers without a fraction.
+        val pretty = IconJson.encodeList(HapticIcon.PRESETS.take(1), indent = "  ").lines()
+        assertEquals(listOf("[", "  {", "    \"schema\": \"hapticon.icon\","), pretty.take(3))
+        assertEquals(listOf("    \"count\": ${HapticIcon.PRESETS[0].count}", "  }", "]"), pretty.takeLast(3))
     }
 
     @Test

@@ -1,12 +1,13 @@
 package org.hapticon.core.pattern
 
+import kotlinx.serialization.json.JsonArray
+import kotlinx.serialization.json.JsonObject
+import kotlinx.serialization.json.JsonPrimitive
+import kotlinx.serialization.json.double
+import kotlinx.serialization.json.jsonPrimitive
 import org.hapticon.core.HapticIcon
 import org.hapticon.core.io.Json
-import org.hapticon.core.io.JsonArray
 import org.hapticon.core.io.JsonException
-import org.hapticon.core.io.JsonNumber
-import org.hapticon.core.io.JsonObject
-import org.hapticon.core.io.JsonString
 import org.junit.Assert.assertEquals
 import org.junit.Assert.assertThrows
 import org.junit.Assert.assertTrue
@@ -108,16 +109,16 @@ class AhapTest {
         val keys = (0..40).map { AmplitudeKey(it * 0.01, (it % 5) / 5.0) }
         val pattern = HapticPattern("saw", keys, listOf(FrequencyKey(0.0, 200.0)))
         val text = Ahap.write(pattern).text
-        val curves = (Json.decode(text) as JsonObject)["Pattern"].let { it as JsonArray }.elements
+        val curves = (Json.decode(text) as JsonObject)["Pattern"].let { it as JsonArray }
             .mapNotNull { (it as JsonObject)["ParameterCurve"] as JsonObject? }
         assertTrue(curves.size > 2)
         var previousEnd: Double? = null
-        for (curve in curves.filter { it["ParameterID"] == JsonString("HapticIntensityControl") }) {
-            val points = (curve["ParameterCurveControlPoints"] as JsonArray).elements
+        for (curve in curves.filter { it["ParameterID"] == JsonPrimitive("HapticIntensityControl") }) {
+            val points = curve["ParameterCurveControlPoints"] as JsonArray
             assertTrue(points.size in 2..Ahap.MAX_CURVE_POINTS)
-            val start = (curve["Time"] as JsonNumber).value
+            val start = curve["Time"]!!.jsonPrimitive.double
             previousEnd?.let { assertEquals(it, start, 1e-12) } // each curve starts where the last one ended
-            previousEnd = start + ((points.last() as JsonObject)["Time"] as JsonNumber).value
+            previousEnd = start + (points.last() as JsonObject)["Time"]!!.jsonPrimitive.double
         }
         assertSameShape(pattern, Ahap.read(text.toByteArray(), "saw").pattern)
     }

@@ -4,11 +4,11 @@ import kotlinx.serialization.Serializable
 import org.hapticon.core.io.Json
 import org.hapticon.core.io.JsonException
 import org.hapticon.core.io.SchemaJson
-import org.hapticon.core.io.toJsonElement
 import org.hapticon.study.ProtocolDocument
 import org.hapticon.study.schema.ProtocolException
 import org.hapticon.study.ProtocolJson
 import org.hapticon.study.schema.StudyReport
+import org.hapticon.study.StudyFormats
 import org.hapticon.study.StudyProtocol
 import org.hapticon.study.log.LogEntry
 
@@ -40,11 +40,11 @@ public data class StudyExport(
     val sessions: List<SessionLog>,
 ) {
     public companion object {
-        /** The value of the `schema` member. */
-        public const val SCHEMA: String = "hapticon.study-export"
+        /** The value of the `schema` member ([StudyFormats.EXPORT_SCHEMA]). */
+        public const val SCHEMA: String = StudyFormats.EXPORT_SCHEMA
 
-        /** The schema version this build writes and reads. */
-        public const val VERSION: Int = 1
+        /** The schema version this build writes and reads ([StudyFormats.EXPORT_VERSION]). */
+        public const val VERSION: Int = StudyFormats.EXPORT_VERSION
 
         /** Largest export [decode] reads: 64 MiB, a few thousand participants' logs. */
         public const val MAX_LENGTH: Int = 64 shl 20
@@ -70,8 +70,8 @@ public data class StudyExport(
          * member or an invalid protocol. Hashes are read as they are; verify them with the log's chain check.
          */
         public fun decode(text: String): StudyExport {
-            val report = StudyReport("export", mapOf("" to (SCHEMA to VERSION), "protocol" to (ProtocolJson.SCHEMA to ProtocolJson.VERSION)))
-            val doc = SchemaJson.decode(ExportDocument.serializer(), Json.decode(text, MAX_LENGTH).toJsonElement(), report)
+            val report = StudyReport("export", mapOf("" to (SCHEMA to VERSION), "protocol" to (StudyFormats.PROTOCOL_SCHEMA to StudyFormats.PROTOCOL_VERSION)))
+            val doc = SchemaJson.decode(ExportDocument.serializer(), Json.decode(text, MAX_LENGTH), report)
             val protocol = try {
                 ProtocolJson.protocol(doc.protocol)
             } catch (e: ProtocolException) {

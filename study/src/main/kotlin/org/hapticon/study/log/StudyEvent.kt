@@ -3,11 +3,9 @@ package org.hapticon.study.log
 import kotlinx.serialization.DeserializationStrategy
 import kotlinx.serialization.Serializable
 import kotlinx.serialization.SerializationStrategy
-import org.hapticon.core.io.JsonObject
-import org.hapticon.core.io.JsonValue
+import kotlinx.serialization.json.JsonElement
+import kotlinx.serialization.json.JsonObject
 import org.hapticon.core.io.SchemaJson
-import org.hapticon.core.io.toJsonElement
-import org.hapticon.core.io.toJsonValue
 import org.hapticon.study.schema.ProtocolException
 import org.hapticon.study.schema.StudyReport
 
@@ -110,9 +108,8 @@ public sealed interface StudyEvent {
          * The event of [type] with [payload]. Throws [ProtocolException] (path `payload.MEMBER`)
          * when the payload lacks a member or has one of the wrong type, and [IllegalArgumentException] for an unknown [type].
          */
-        public fun of(type: String, payload: JsonValue): StudyEvent {
-            val element = payload.toJsonElement()
-            fun <T> read(deserializer: DeserializationStrategy<T>): T = SchemaJson.decode(deserializer, element, PAYLOAD_REPORT, "payload")
+        public fun of(type: String, payload: JsonElement): StudyEvent {
+            fun <T> read(deserializer: DeserializationStrategy<T>): T = SchemaJson.decode(deserializer, payload, PAYLOAD_REPORT, "payload")
             return when (type) {
                 SESSION_STARTED -> read(SessionPayload.serializer()).let {
                     SessionStarted(
@@ -135,9 +132,10 @@ public sealed interface StudyEvent {
 
         private val PAYLOAD_REPORT = StudyReport("payload", emptyMap())
 
-        // Through our writer's JsonValue: the payload text is hashed, so its spelling must not change (LogEntry).
+        // The payload holds strings and Ints only, so kotlinx spells its numbers as the old writer did; its text is
+        // hashed, and LogEntry.canonicalJson restores the old writer's escapes (LogEntry).
         private fun <T> encode(serializer: SerializationStrategy<T>, value: T): JsonObject =
-            SchemaJson.encodeToElement(serializer, value).toJsonValue() as JsonObject
+            SchemaJson.encodeToElement(serializer, value) as JsonObject
     }
 }
 

@@ -88,7 +88,7 @@ class HashChainTest {
             StudyEvent.StimulusShown("t", "s"), StudyEvent.IconPressed("t", "s"), StudyEvent.PlaybackStarted("t", "s"),
             StudyEvent.PlaybackFinished("t", "s"), StudyEvent.Answer("t", "s", 4),
         )
-        for (event in events) assertEquals(event, StudyEvent.of(event.type, Json.decode(Json.encode(StudyEvent.payload(event)))))
+        for (event in events) assertEquals(event, StudyEvent.of(event.type, Json.decode(LogEntry.canonicalJson(StudyEvent.payload(event)))))
         expect("unknown event type \"nap\"") { StudyEvent.of("nap", Json.decode("{}")) }
         expect("payload.value: expected an integer, got \"4\"") { StudyEvent.of("answer", Json.decode("""{"task":"t","stimulus":"s","value":"4"}""")) }
     }
