@@ -126,6 +126,39 @@ class ComposerFigureTest {
         assertTrue("rendered on the main thread: ${violations.map { it.message }}", violations.isEmpty())
     }
 
+    /**
+     * Control: the same ViewModel with a player that renders on the caller's thread (the [HapticPlayer.renderContext]
+     * default) computes the figure on the main thread, and the policy and listener used above and by
+     * `MainThreadStrictModeTest` name it, so the green run above means the figure was not computed on main.
+     */
+    @Test
+    fun control_figureOnTheCallersThread_isCaughtOnTheMainThread() {
+        val onCaller = object : HapticPlayer {
+            override val capabilities = PlaybackCapabilities(hasVibrator = true, hasAmplitudeControl = true, apiLevel = 35)
+            override fun play(icon: HapticIcon): Playback = Playback.Unsupported
+            override fun play(pattern: HapticPattern): Playback = Playback.Unsupported
+            override fun stop() {}
+        }
+        val hitFigure = RendererChoice.fidelityPercent(RendererKind.AMPLITUDE_WAVEFORM, HapticIcon.HIT)
+        val bob = Capabilities("bob", RendererKind.AMPLITUDE_WAVEFORM, amplitudeControl = true, apiLevel = 35)
+        val viewModel = ConversationViewModel(
+            "bob", { "alice" }, OfflineFirstChatRepository(db), RoomIconRepository(db.iconDao()), onCaller,
+            MutableStateFlow(mapOf("bob" to bob)), onSent = {},
+        )
+        val states = CopyOnWriteArrayList<ConversationUiState.Success>()
+        CoroutineScope(Dispatchers.Main + collector).launch {
+            viewModel.uiState.collect { if (it is ConversationUiState.Success) states += it }
+        }
+        idleUntil("the conversation") { states.isNotEmpty() }
+        recordMainThreadViolations(violations)
+
+        viewModel.selectIcon(HapticIcon.HIT)
+        idleUntil("hit's figure") { states.last().peerFeel?.fidelityPercent == hitFigure }
+        shadowOf(Looper.getMainLooper()).idle()
+        assertTrue("expected the figure's slow call, got ${violations.map { it.message }}", violations.isNotEmpty())
+        assertEquals(setOf("fidelity of hit"), violations.map { it.message }.toSet())
+    }
+
     /** The composer's state after choosing [pattern] in a conversation with [bob] (the capabilities bob publishes). */
     private fun peerFeelOfPattern(bob: Capabilities, pattern: HapticPattern): PeerFeel? {
         val viewModel = ConversationViewModel(
