@@ -50,6 +50,7 @@ import androidx.compose.ui.Alignment
 import androidx.compose.ui.Modifier
 import androidx.compose.ui.graphics.Color
 import androidx.compose.ui.semantics.CustomAccessibilityAction
+import androidx.compose.ui.semantics.clearAndSetSemantics
 import androidx.compose.ui.semantics.contentDescription
 import androidx.compose.ui.semantics.customActions
 import androidx.compose.ui.semantics.semantics
@@ -198,7 +199,8 @@ private fun EmptyChats(user: String, modifier: Modifier, onInvite: () -> Unit, o
 @Composable
 fun Avatar(name: String, modifier: Modifier = Modifier.size(48.dp)) {
     Box(modifier.background(avatarColorOf(name), CircleShape), contentAlignment = Alignment.Center) {
-        Text(initialsOf(name), color = Color.White, style = MaterialTheme.typography.titleMedium)
+        // Decoration: the name is said next to it, so TalkBack skips the initials (a lone "B" stop before "bob").
+        Text(initialsOf(name), color = Color.White, style = MaterialTheme.typography.titleMedium, modifier = Modifier.clearAndSetSemantics {})
     }
 }
 

@@ -63,6 +63,7 @@ import androidx.compose.ui.graphics.graphicsLayer
 import androidx.compose.ui.graphics.vector.ImageVector
 import androidx.compose.ui.res.painterResource
 import androidx.compose.ui.semantics.Role
+import androidx.compose.ui.semantics.clearAndSetSemantics
 import androidx.compose.ui.semantics.contentDescription
 import androidx.compose.ui.semantics.semantics
 import androidx.compose.ui.semantics.stateDescription
@@ -255,10 +256,13 @@ private fun MessageBubble(message: StoredMessage, time: String, actions: Convers
                 } ?: message.sticker?.let { Text("[$it]") }
                 if (message.text.isNotEmpty()) Text(message.text, style = MaterialTheme.typography.bodyLarge)
                 message.icon?.let { icon ->
+                    // TalkBack names the chip by its description alone: the visible label and the thumbnail's own
+                    // description ("Envelope of hug") are cleared, else it said "Feel hug, Envelope of hug, Play haptic
+                    // icon hug" (TalkBackNodeTreeTest).
                     AssistChip(
                         onClick = { actions.onFeel(message) },
-                        label = { Text("Feel ${icon.name}") },
-                        leadingIcon = { EnvelopeThumbnail(icon, Modifier.width(32.dp).height(16.dp)) },
+                        label = { Text("Feel ${icon.name}", Modifier.clearAndSetSemantics {}) },
+                        leadingIcon = { EnvelopeThumbnail(icon, Modifier.clearAndSetSemantics {}.width(32.dp).height(16.dp)) },
                         colors = AssistChipDefaults.assistChipColors(labelColor = content),
                         modifier = Modifier.semantics { contentDescription = "Play haptic icon ${icon.name}" },
                     )
@@ -266,8 +270,10 @@ private fun MessageBubble(message: StoredMessage, time: String, actions: Convers
                 message.pattern?.let { pattern ->
                     AssistChip(
                         onClick = { actions.onFeel(message) },
-                        label = { Text("Feel ${pattern.name}") },
-                        leadingIcon = { PatternThumbnail(pattern, Modifier.width(32.dp).height(16.dp), showFrequency = false) },
+                        label = { Text("Feel ${pattern.name}", Modifier.clearAndSetSemantics {}) },
+                        leadingIcon = {
+                            PatternThumbnail(pattern, Modifier.clearAndSetSemantics {}.width(32.dp).height(16.dp), showFrequency = false)
+                        },
                         colors = AssistChipDefaults.assistChipColors(labelColor = content),
                         modifier = Modifier.semantics { contentDescription = "Play haptic pattern ${pattern.name}" },
                     )
@@ -379,7 +385,9 @@ private fun Composer(uiState: ConversationUiState.Success, actions: Conversation
             uiState.error?.let { Text(it, color = MaterialTheme.colorScheme.error, modifier = Modifier.padding(horizontal = 4.dp)) }
             Row(verticalAlignment = Alignment.CenterVertically) {
                 OutlinedTextField(
-                    text, { text = it }, placeholder = { Text("Message") }, shape = RoundedCornerShape(24.dp),
+                    // The field's name is its description, which stays when text is typed; the placeholder is cleared
+                    // for TalkBack, else an empty field was "Message, Message" (TalkBackNodeTreeTest).
+                    text, { text = it }, placeholder = { Text("Message", Modifier.clearAndSetSemantics {}) }, shape = RoundedCornerShape(24.dp),
                     maxLines = 4,
                     // Sentences start with a capital; the IME's action key is Send or, by default, a new line.
                     keyboardOptions = KeyboardOptions(
@@ -459,7 +467,12 @@ private fun ComposerChip(
                 stateDescription = if (selected) "selected" else "not selected"
             },
     ) {
-        Row(Modifier.padding(horizontal = 10.dp, vertical = 6.dp), verticalAlignment = Alignment.CenterVertically) {
+        // The chip's description names it ("Icon knock"); what it draws is for sight only, else TalkBack said
+        // "Icon knock, Envelope of knock, knock" (TalkBackNodeTreeTest).
+        Row(
+            Modifier.clearAndSetSemantics {}.padding(horizontal = 10.dp, vertical = 6.dp),
+            verticalAlignment = Alignment.CenterVertically,
+        ) {
             thumbnail()
             Text(name, style = MaterialTheme.typography.labelLarge, modifier = Modifier.padding(start = 6.dp))
             tag?.let { Text(it, style = MaterialTheme.typography.labelSmall, color = colors.onSurfaceVariant, modifier = Modifier.padding(start = 4.dp)) }

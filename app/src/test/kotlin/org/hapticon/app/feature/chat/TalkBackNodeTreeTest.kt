@@ -1,0 +1,241 @@
+package org.hapticon.app.feature.chat
+
+import android.accessibilityservice.AccessibilityServiceInfo
+import android.graphics.Rect
+import android.os.Bundle
+import android.view.View
+import android.view.ViewGroup
+import android.view.accessibility.AccessibilityManager
+import android.view.accessibility.AccessibilityNodeInfo
+import android.view.accessibility.AccessibilityNodeProvider
+import androidx.activity.ComponentActivity
+import androidx.compose.ui.test.junit4.createAndroidComposeRule
+import kotlinx.coroutines.runBlocking
+import org.hapticon.app.data.database.MessageState
+import org.hapticon.app.playback.RecordedVibration
+import org.hapticon.app.playback.lastVibration
+import org.hapticon.core.HapticIcon
+import org.hapticon.core.render.VibrationWaveform
+import org.hapticon.messaging.ChatMessage
+import org.junit.After
+import org.junit.Assert.assertEquals
+import org.junit.Assert.assertNull
+import org.junit.Assert.assertTrue
+import org.junit.Before
+import org.junit.Rule
+import org.junit.Test
+import org.junit.runner.RunWith
+import org.robolectric.RobolectricTestRunner
+import org.robolectric.Shadows.shadowOf
+import org.robolectric.annotation.Config
+
+/**
+ * Sending and feeling an icon one level below [TalkBackSendTest]: through the `AccessibilityNodeInfo` tree TalkBack
+ * itself reads, not Compose's merged semantics. With an accessibility service on and touch exploration enabled (as
+ * TalkBack turns them on), the conversation screen runs in an activity and the test walks its Compose view's
+ * [AccessibilityNodeProvider] from the host down, as the platform's `AccessibilityInteractionController` does for
+ * TalkBack, and drives controls only with `performAction` on their virtual nodes.
+ *
+ * Controls are found by what TalkBack would say for them, worked out from the tree as TalkBack does:
+ * - Compose exports the UNMERGED tree; a `mergeDescendants` node (every clickable, button, text field) is
+ *   exported as `isScreenReaderFocusable` and TalkBack does the merging (androidx
+ *   `compose/ui/ui/src/androidMain/kotlin/androidx/compose/ui/platform/accessibility/android_a11y_implementation_notes.md`,
+ *   "Merging"). Such a node with children carries no `contentDescription` or role itself: Compose moves them to a
+ *   "fake" rightmost child (same notes, "Fake nodes"; `AndroidComposeViewAccessibilityDelegateCompat
+ *   .populateAccessibilityNodeInfoProperties` sets `contentDescription` only on a non-merging node or a leaf).
+ * - TalkBack speaks a focused node's own description (its `contentDescription`, which overrides the subtree, else
+ *   its text) followed by the descriptions of its visible children that are not focus stops themselves,
+ *   recursively, joined with ", " (TalkBack `NodeSpeechRuleProcessor.appendDescriptionForTree`,
+ *   `hasOverridingContentDescription`; `StringBuilderUtils.appendWithSeparator`). [spoken] is that rule.
+ *
+ * Robolectric's default `AccessibilityNodeInfo` shadow keeps no virtual child ids, so the real class is used: the
+ * shadow reads the system property `robolectric.useRealAni` on every `obtain` (`ShadowAccessibilityNodeInfo
+ * .useRealAni`), so this class sets it for its own tests only and restores it after.
+ */
+@RunWith(RobolectricTestRunner::class)
+@Config(qualifiers = "w400dp-h1600dp")
+class TalkBackNodeTreeTest {
+    @get:Rule
+    val compose = createAndroidComposeRule<ComponentActivity>()
+
+    private val fixture = ComposerFixture(compose)
+    private val felt = java.util.concurrent.CopyOnWriteArrayList<Pair<String, String>>()
+    private var realAniBefore: String? = null
+
+    @Before
+    fun setUp() {
+        realAniBefore = System.setProperty(REAL_ANI, "true")
+        // What turning TalkBack on does to the accessibility manager the activity's views ask.
+        val manager = compose.activity.getSystemService(AccessibilityManager::class.java)
+        shadowOf(manager).setEnabledAccessibilityServiceList(listOf(AccessibilityServiceInfo()))
+        shadowOf(manager).setTouchExplorationEnabled(true)
+        shadowOf(manager).setEnabled(true)
+        // The activity's own ComposeView (ComponentActivity.setContent), created after TalkBack is "on".
+        fixture.show(onFelt = { peer, id -> felt += peer to id })
+        compose.waitUntil(5_000) { focusStops().any { it.info.isEditable } }
+    }
+
+    @After
+    fun tearDown() {
+        fixture.close()
+        if (realAniBefore == null) System.clearProperty(REAL_ANI) else System.setProperty(REAL_ANI, realAniBefore!!)
+    }
+
+    /** One virtual node of the Compose view: its id for the provider, the info TalkBack reads, its children. */
+    private class Node(val id: Int, val info: AccessibilityNodeInfo, val children: List<Node>) {
+        /**
+         * A node TalkBack's focus lands on: screen-reader focusable (a merging node) or actionable
+         * (TalkBack `AccessibilityNodeInfoUtils.isAccessibilityFocusable`).
+         */
+        val isFocusStop: Boolean
+            get() = info.isVisibleToUser &&
+                (info.isScreenReaderFocusable || info.isFocusable || info.isClickable || info.isLongClickable)
+
+        /** What TalkBack says for this node, before its state and role (see the class comment). */
+        val spoken: String
+            get() {
+                val description = info.contentDescription?.toString().orEmpty()
+                if (description.isNotEmpty()) return description
+                return (listOf(info.text?.toString().orEmpty()) +
+                    children.filter { it.info.isVisibleToUser && !it.isFocusStop }.map { it.spoken })
+                    .filter { it.isNotEmpty() }.joinToString(", ")
+            }
+
+        fun all(): List<Node> = listOf(this) + children.flatMap { it.all() }
+
+        fun actionLabel(action: Int): String? = info.actionList.firstOrNull { it.id == action }?.label?.toString()
+
+        override fun toString() = "\"$spoken\" (#$id ${info.className}, text=${info.text}, hint=${info.hintText}, " +
+            "cd=${info.contentDescription}, screenReaderFocusable=${info.isScreenReaderFocusable}, clickable=${info.isClickable})"
+    }
+
+    /** The view that hosts the Compose UI: the one in the activity's window that offers a node provider. */
+    private fun composeView(): View {
+        fun find(view: View): View? = when {
+            view.accessibilityNodeProvider != null -> view
+            view is ViewGroup -> (0 until view.childCount).firstNotNullOfOrNull { find(view.getChildAt(it)) }
+            else -> null
+        }
+        return checkNotNull(find(compose.activity.window.decorView)) { "no view in the window offers an AccessibilityNodeProvider" }
+    }
+
+    private fun provider(): AccessibilityNodeProvider = composeView().accessibilityNodeProvider!!
+
+    /**
+     * The whole tree, walked from the host as the platform walks it: a child is named by a
+     * `(virtualId << 32) | viewId` id (`AccessibilityNodeInfo.makeNodeId`), read with the framework's own `getChildId`.
+     */
+    private fun tree(): Node {
+        val provider = provider()
+        fun visit(id: Int): Node? {
+            val info = provider.createAccessibilityNodeInfo(id) ?: return null
+            val children = (0 until info.childCount).mapNotNull { visit(((GET_CHILD_ID.invoke(info, it) as Long) ushr 32).toInt()) }
+            return Node(id, info, children)
+        }
+        var root: Node? = null
+        compose.runOnUiThread { root = visit(AccessibilityNodeProvider.HOST_VIEW_ID) }
+        return checkNotNull(root)
+    }
+
+    private fun focusStops(): List<Node> = tree().all().filter { it.isFocusStop }
+
+    /** The one focus stop TalkBack speaks as [spoken]. */
+    private fun control(spoken: String): Node = focusStops().let { stops ->
+        val found = stops.filter { it.spoken == spoken }
+        check(found.size == 1) { "expected one focus stop spoken \"$spoken\", found ${found.size} among ${stops.joinToString("\n")}" }
+        found.single()
+    }
+
+    private fun perform(node: Node, action: Int, arguments: Bundle? = null) {
+        var done = false
+        compose.runOnUiThread { done = provider().performAction(node.id, action, arguments) }
+        assertTrue("$node refused action $action", done)
+        compose.waitForIdle()
+    }
+
+    /** A control TalkBack stops on and can activate, visible, at least 48 × 48 dp on screen. */
+    private fun assertTalkBackTarget(node: Node) {
+        assertTrue("$node is not screen-reader focusable", node.info.isScreenReaderFocusable)
+        assertTrue("$node is not visible to the user", node.info.isVisibleToUser)
+        assertTrue("$node is not enabled", node.info.isEnabled)
+        val bounds = Rect().also { node.info.getBoundsInScreen(it) }
+        val minimum = 48 * compose.activity.resources.displayMetrics.density
+        assertTrue("$node is ${bounds.width()}×${bounds.height()} px, under 48 dp ($minimum px)", bounds.width() >= minimum && bounds.height() >= minimum)
+    }
+
+    @Test
+    fun chooseTypeAndSend_throughTheNodeProvider_storeAndQueueTheMessage() {
+        val field = control("Message")
+        val knock = control("Icon knock")
+        val send = control("Send")
+        assertEquals("android.widget.EditText", field.info.className)
+        assertTrue(field.info.isEditable)
+        for (control in listOf(field, knock, send)) assertTalkBackTarget(control)
+        assertTrue(knock.info.isClickable && knock.info.isLongClickable && send.info.isClickable)
+        // What TalkBack says after the name: the state, and the hints for double-tap and double-tap-and-hold.
+        assertEquals("not selected", knock.info.stateDescription?.toString())
+        assertEquals("Add to message", knock.actionLabel(AccessibilityNodeInfo.ACTION_CLICK))
+        assertEquals("Feel knock here", knock.actionLabel(AccessibilityNodeInfo.ACTION_LONG_CLICK))
+
+        // Double-tap: the knock goes with the message.
+        perform(knock, AccessibilityNodeInfo.ACTION_CLICK)
+        compose.waitUntil(5_000) { control("Icon knock").info.stateDescription?.toString() == "selected" }
+        assertEquals("Remove from message", control("Icon knock").actionLabel(AccessibilityNodeInfo.ACTION_CLICK))
+
+        // TalkBack's "paste"/braille/voice typing: the text field's ACTION_SET_TEXT.
+        perform(field, AccessibilityNodeInfo.ACTION_SET_TEXT, Bundle().apply {
+            putCharSequence(AccessibilityNodeInfo.ACTION_ARGUMENT_SET_TEXT_CHARSEQUENCE, "feel this")
+        })
+        compose.waitUntil(5_000) { focusStops().any { it.info.isEditable && it.info.text?.toString() == "feel this" } }
+        // Typed, the field still says what it is: its text, then its name.
+        assertEquals("feel this, Message", focusStops().single { it.info.isEditable }.spoken)
+        perform(control("Send"), AccessibilityNodeInfo.ACTION_CLICK)
+        compose.waitUntil(5_000) { fixture.stored().isNotEmpty() }
+
+        val message = fixture.stored().single()
+        assertEquals("feel this", message.text)
+        assertEquals(HapticIcon.KNOCK, message.icon)
+        assertEquals(MessageState.SENDING, message.state)
+        assertEquals(listOf(message.id), runBlocking { fixture.db.outboxDao().pending() }.map { it.messageId })
+        // The composer is emptied for the next message: the field speaks its name again, the knock is not chosen.
+        compose.waitUntil(5_000) { control("Icon knock").info.stateDescription?.toString() == "not selected" }
+        assertEquals("", control("Message").info.text?.toString())
+        // Choosing and sending played nothing on this phone.
+        assertNull(lastVibration(fixture.vibrator))
+    }
+
+    @Test
+    fun knockLongClicked_throughTheNodeProvider_isFeltHereWithItsOwnWaveform() {
+        perform(control("Icon knock"), AccessibilityNodeInfo.ACTION_LONG_CLICK)
+        compose.waitUntil(5_000) { lastVibration(fixture.vibrator) != null }
+        val knock = VibrationWaveform.render(HapticIcon.KNOCK)
+        assertEquals(RecordedVibration(knock.timings().toList(), knock.amplitudes().toList()), lastVibration(fixture.vibrator))
+        // A preview chooses nothing.
+        assertEquals("not selected", control("Icon knock").info.stateDescription?.toString())
+    }
+
+    @Test
+    fun receivedIcon_clickedThroughTheNodeProvider_playsItsWaveformAndTellsTheSender() {
+        val hug = ChatMessage("0b7e7c1e-3f7b-4a57-9d3e-2f1c5a6b7c8d", "bob", 1_767_225_500_000, "hug", icon = HapticIcon.HUG)
+        runBlocking { fixture.repository.receive(hug) }
+        compose.waitUntil(5_000) { focusStops().any { it.spoken == "Play haptic icon hug" } }
+        val chip = control("Play haptic icon hug")
+        assertTalkBackTarget(chip)
+        assertTrue(chip.info.isClickable)
+        assertNull(lastVibration(fixture.vibrator))
+
+        perform(chip, AccessibilityNodeInfo.ACTION_CLICK)
+        compose.waitUntil(5_000) { lastVibration(fixture.vibrator) != null }
+        // The hug's own step waveform, timings and amplitudes, as the player renders it for this vibrator.
+        val waveform = VibrationWaveform.render(HapticIcon.HUG)
+        assertEquals(RecordedVibration(waveform.timings().toList(), waveform.amplitudes().toList()), lastVibration(fixture.vibrator))
+        assertEquals(listOf("bob" to hug.id), felt.toList())
+    }
+
+    private companion object {
+        const val REAL_ANI = "robolectric.useRealAni"
+
+        /** `AccessibilityNodeInfo.getChildId(int)`: hidden, the id the platform itself follows to a child. */
+        val GET_CHILD_ID = AccessibilityNodeInfo::class.java.getMethod("getChildId", Int::class.javaPrimitiveType)
+    }
+}
