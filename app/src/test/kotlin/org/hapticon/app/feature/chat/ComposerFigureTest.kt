@@ -88,13 +88,13 @@ class ComposerFigureTest {
         }
     }
 
-    @Test
-    fun chosenIcon_figureComputedOffMain_neverShownBesideAnotherIcon() {
-        val knockFigure = RendererChoice.fidelityPercent(RendererKind.AMPLITUDE_WAVEFORM, HapticIcon.KNOCK)
-        val hitFigure = RendererChoice.fidelityPercent(RendererKind.AMPLITUDE_WAVEFORM, HapticIcon.HIT)
-        val bob = Capabilities("bob", RendererKind.AMPLITUDE_WAVEFORM, amplitudeControl = true, apiLevel = 35)
+    /** The conversation with bob, who publishes [bob], played through [with]; and every Success state it emits. */
+    private fun openConversation(
+        bob: Capabilities,
+        with: HapticPlayer = player,
+    ): Pair<ConversationViewModel, CopyOnWriteArrayList<ConversationUiState.Success>> {
         val viewModel = ConversationViewModel(
-            "bob", { "alice" }, OfflineFirstChatRepository(db), RoomIconRepository(db.iconDao()), player,
+            "bob", { "alice" }, OfflineFirstChatRepository(db), RoomIconRepository(db.iconDao()), with,
             MutableStateFlow(mapOf("bob" to bob)), onSent = {},
         )
         val states = CopyOnWriteArrayList<ConversationUiState.Success>()
@@ -102,6 +102,15 @@ class ComposerFigureTest {
             viewModel.uiState.collect { if (it is ConversationUiState.Success) states += it }
         }
         idleUntil("the conversation") { states.isNotEmpty() }
+        return viewModel to states
+    }
+
+    @Test
+    fun chosenIcon_figureComputedOffMain_neverShownBesideAnotherIcon() {
+        val knockFigure = RendererChoice.fidelityPercent(RendererKind.AMPLITUDE_WAVEFORM, HapticIcon.KNOCK)
+        val hitFigure = RendererChoice.fidelityPercent(RendererKind.AMPLITUDE_WAVEFORM, HapticIcon.HIT)
+        val bob = Capabilities("bob", RendererKind.AMPLITUDE_WAVEFORM, amplitudeControl = true, apiLevel = 35)
+        val (viewModel, states) = openConversation(bob, player)
         recordMainThreadViolations(violations)
 
         // The render thread is busy: both choices show the renderer at once, without a figure.
@@ -141,15 +150,7 @@ class ComposerFigureTest {
         }
         val hitFigure = RendererChoice.fidelityPercent(RendererKind.AMPLITUDE_WAVEFORM, HapticIcon.HIT)
         val bob = Capabilities("bob", RendererKind.AMPLITUDE_WAVEFORM, amplitudeControl = true, apiLevel = 35)
-        val viewModel = ConversationViewModel(
-            "bob", { "alice" }, OfflineFirstChatRepository(db), RoomIconRepository(db.iconDao()), onCaller,
-            MutableStateFlow(mapOf("bob" to bob)), onSent = {},
-        )
-        val states = CopyOnWriteArrayList<ConversationUiState.Success>()
-        CoroutineScope(Dispatchers.Main + collector).launch {
-            viewModel.uiState.collect { if (it is ConversationUiState.Success) states += it }
-        }
-        idleUntil("the conversation") { states.isNotEmpty() }
+        val (viewModel, states) = openConversation(bob, onCaller)
         recordMainThreadViolations(violations)
 
         viewModel.selectIcon(HapticIcon.HIT)
@@ -161,15 +162,7 @@ class ComposerFigureTest {
 
     /** The composer's state after choosing [pattern] in a conversation with [bob] (the capabilities bob publishes). */
     private fun peerFeelOfPattern(bob: Capabilities, pattern: HapticPattern): PeerFeel? {
-        val viewModel = ConversationViewModel(
-            "bob", { "alice" }, OfflineFirstChatRepository(db), RoomIconRepository(db.iconDao()), player,
-            MutableStateFlow(mapOf("bob" to bob)), onSent = {},
-        )
-        val states = CopyOnWriteArrayList<ConversationUiState.Success>()
-        CoroutineScope(Dispatchers.Main + collector).launch {
-            viewModel.uiState.collect { if (it is ConversationUiState.Success) states += it }
-        }
-        idleUntil("the conversation") { states.isNotEmpty() }
+        val (viewModel, states) = openConversation(bob, player)
         viewModel.selectPattern(pattern)
         idleUntil("${pattern.name} chosen") { states.last().selectedPattern == pattern }
         return states.last().peerFeel
