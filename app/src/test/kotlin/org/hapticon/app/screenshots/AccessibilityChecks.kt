@@ -179,6 +179,13 @@ object AccessibilityChecks {
             .setEditable(editable)
             .setCheckable(toggleable)
             .setDrawingOrder(id)
+        // A scrolling container says which way it can still scroll, as a View reports canScrollVertically: ATF
+        // (ViewHierarchyElement.isAgainstScrollableEdge) then treats a control cut by the container's edge as
+        // partly scrolled away and does not measure its touch target (TouchTargetSizeCheck demotes it to
+        // NOT_RUN), instead of failing the chip of a bubble half under the top bar.
+        scrollDirections(node)?.let { (backward, forward) ->
+            builder.setScrollable(backward || forward).setCanScrollBackward(backward).setCanScrollForward(forward)
+        }
         parentId?.let { builder.setParentId(it) }
         text?.let { builder.setText(CharSequenceProto.newBuilder().setText(it)) }
         description?.let { builder.setContentDescription(CharSequenceProto.newBuilder().setText(it)) }
@@ -187,6 +194,21 @@ object AccessibilityChecks {
             builder.setTypefaceStyle(if (bold) 1 else 0)
         }
         return builder
+    }
+
+    /**
+     * Whether [node] can still scroll towards the top/left (ATF's "backward") and towards the bottom/right
+     * ("forward") on screen, or null when it does not scroll. A reversed range (a chat list anchored at the
+     * bottom) scrolls its value up the screen, so the directions swap.
+     */
+    private fun scrollDirections(node: SemanticsNode): Pair<Boolean, Boolean>? {
+        val range = node.config.getOrNull(SemanticsProperties.VerticalScrollAxisRange)
+            ?: node.config.getOrNull(SemanticsProperties.HorizontalScrollAxisRange)
+            ?: return null
+        val value = range.value()
+        val towardsStart = value > 0f
+        val towardsEnd = value < range.maxValue()
+        return if (range.reverseScrolling) towardsEnd to towardsStart else towardsStart to towardsEnd
     }
 
     /** The first text layout's font size in px and whether it is bold (ATF's large-text rule uses both). */

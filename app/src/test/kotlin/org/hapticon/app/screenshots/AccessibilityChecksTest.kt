@@ -16,6 +16,12 @@ import androidx.compose.ui.test.captureToImage
 import androidx.compose.ui.test.onRoot
 import androidx.compose.ui.unit.dp
 import androidx.compose.ui.unit.sp
+import androidx.compose.foundation.layout.height
+import androidx.compose.foundation.layout.offset
+import androidx.compose.foundation.rememberScrollState
+import androidx.compose.foundation.verticalScroll
+import androidx.compose.ui.draw.clipToBounds
+import androidx.compose.ui.platform.LocalDensity
 import org.junit.Assert.assertEquals
 import org.junit.Assert.assertTrue
 import org.junit.Test
@@ -35,6 +41,30 @@ class AccessibilityChecksTest : ScreenshotTest() {
         val failures = failuresOf(touchTargetDp = 56) { Box(Modifier.size(24.dp).background(Color.Black).clickable {}) }
         assertTrue(failures.toString(), failures.any { it.startsWith("TouchTargetSizeCheck: ERROR") && "KEY_WIDTH=48" in it })
         assertTrue(failures.toString(), failures.any { it.startsWith("SpeakableTextPresentCheck") })
+    }
+
+    @Test
+    fun run_controlCutByAScrolledListsEdge_notMeasured() {
+        // 48 dp tall, 30 dp of it scrolled (or clipped) away: 18 dp show. In a list scrolled past it ATF does not
+        // measure it (it may be partly scrolled off, isAgainstScrollableEdge); cut by a plain clip it is too small.
+        val scrolled = failuresOf {
+            val px = with(LocalDensity.current) { 30.dp.roundToPx() }
+            Column(Modifier.size(200.dp, 100.dp).verticalScroll(rememberScrollState(px))) {
+                Button(onClick = {}, Modifier.size(200.dp, 48.dp)) { Text("Feel stroke") }
+                Box(Modifier.height(300.dp))
+            }
+        }
+        assertEquals(emptyList<String>(), scrolled.filter { it.startsWith("TouchTargetSizeCheck") })
+    }
+
+    @Test
+    fun run_controlCutByAPlainClip_failsSize() {
+        val clipped = failuresOf {
+            Box(Modifier.size(200.dp, 18.dp).clipToBounds()) {
+                Button(onClick = {}, Modifier.offset(y = (-30).dp).size(200.dp, 48.dp)) { Text("Feel stroke") }
+            }
+        }
+        assertTrue(clipped.toString(), clipped.any { it.startsWith("TouchTargetSizeCheck: ERROR") })
     }
 
     @Test

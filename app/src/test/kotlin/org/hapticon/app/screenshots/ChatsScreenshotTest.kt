@@ -38,7 +38,8 @@ import org.junit.Test
 
 /**
  * The Chats tab's screens in light and dark (docs/app-tour.md, "Chats"): first launch, the chat list
- * (and empty), a conversation with every message state, the invite and Settings. A fixed clock, zone
+ * (and empty), a conversation with every message state, the invite and Settings. The main ones (the list,
+ * the conversation, Settings) also at the largest font scale (issue 11). A fixed clock, zone
  * and locale keep every time on them the same from run to run.
  */
 class ChatsScreenshotTest : ScreenshotTest() {
@@ -74,7 +75,8 @@ class ChatsScreenshotTest : ScreenshotTest() {
 
     @Test
     fun conversation_everyState_ownOnTheRightInPrimaryContainer() {
-        screen("chats-conversation") {
+        // Dark last, so the check below reads the dark rendering; the largest font scale is a main-screen variant.
+        screen("chats-conversation", variants = listOf(Variant.Light, Variant.LargestFont, Variant.Dark)) {
             ConversationScreen(
                 ConversationUiState.Success("bob", conversation, HapticIcon.PRESETS, HapticIcon.KNOCK, null, PeerFeel(RendererKind.AMPLITUDE_WAVEFORM, 93), null),
                 ConversationActions(), clock, now,
@@ -89,7 +91,7 @@ class ChatsScreenshotTest : ScreenshotTest() {
     }
 
     @Test
-    fun list_badgesTimesAndPreviews() = screen("chats-list") { ChatListScreen(list, ChatListActions(), clock, now) }
+    fun list_badgesTimesAndPreviews() = screen("chats-list", variants = Variant.MAIN) { ChatListScreen(list, ChatListActions(), clock, now) }
 
     @Test
     fun list_empty_saysWhatToDoFirst() = screen("chats-empty") {
@@ -109,7 +111,7 @@ class ChatsScreenshotTest : ScreenshotTest() {
     }
 
     @Test
-    fun settings_everythingOutOfTheList() = screen("chats-settings") {
+    fun settings_everythingOutOfTheList() = screen("chats-settings", variants = Variant.MAIN) {
         SettingsScreen(
             SettingsUiState(
                 ChatPreferences(userName = "alice", brokerUrl = "tcp://192.168.1.20:1883", autoPlay = true, stayReachable = true),

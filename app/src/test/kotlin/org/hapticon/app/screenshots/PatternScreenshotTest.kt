@@ -14,6 +14,8 @@ import org.hapticon.app.feature.chat.COMPOSER_ICONS_TAG
 import org.hapticon.app.feature.chat.PeerFeel
 import org.hapticon.core.pattern.PitchFit
 import androidx.compose.ui.test.onNodeWithTag
+import androidx.compose.ui.test.assertIsDisplayed
+import androidx.compose.ui.test.onNodeWithContentDescription
 import org.hapticon.messaging.Capabilities
 import org.hapticon.app.feature.icons.IconsActions
 import org.hapticon.app.feature.icons.IconsScreen
@@ -99,7 +101,27 @@ class PatternScreenshotTest : ScreenshotTest() {
         "chats-conversation-pattern",
         // The patterns follow the four presets in the composer's row: scroll it to them, as a user would.
         prepare = { compose.onNodeWithTag(COMPOSER_ICONS_TAG).performScrollToKey("pattern:swell") },
-    ) {
+    ) { patternConversation() }
+
+    /**
+     * The same conversation at the largest font scale (issue 11), scrolled at that scale: the row keeps its
+     * scroll offset in pixels across a font change, so scrolling at 1.0 left a sliver of the "hug" chip under
+     * the fading edge at 2.0. Scrolled to the chosen pattern, as a user would, it starts the row whole.
+     */
+    @Test
+    fun conversation_patternMessage_largestFont_composerLinesWrapAndFieldStaysUsable() = screen(
+        "chats-conversation-pattern",
+        variants = listOf(Variant.LargestFont),
+        prepare = {
+            compose.onNodeWithTag(COMPOSER_ICONS_TAG).performScrollToKey("pattern:boing")
+            // Three wrapped "how it will feel there" lines must not push the field or Send off the screen.
+            compose.onNodeWithContentDescription("Message").assertIsDisplayed()
+            compose.onNodeWithContentDescription("Send").assertIsDisplayed()
+        },
+    ) { patternConversation() }
+
+    @androidx.compose.runtime.Composable
+    private fun patternConversation() {
         val now = 1_767_225_600_000L + 15 * 3_600_000L
         fun message(n: Int, outgoing: Boolean, state: MessageState, text: String, pattern: HapticPattern? = null) = StoredMessage(
             "0b7e7c1e-3f7b-4a57-9d3e-%012d".format(n), "bob", if (outgoing) "alice" else "bob", now - (10 - n) * 60_000L, text, null,
