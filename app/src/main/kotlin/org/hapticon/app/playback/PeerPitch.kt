@@ -48,13 +48,20 @@ object PeerPitch {
      * The line for [pattern] (an [icon]'s as [org.hapticon.core.pattern.toPattern]) on [caps]'s phone; [audioCoupled]
      * when the peer plays it as audio with the haptic channel (icons on such phones), which carries the sine at the
      * pattern's own frequency. Null when the peer plays nothing or is not a phone (the CLI's audio, unknown).
+     * [knownPlan] is [planOf] when the caller has it already, so one composer choice plans the pattern once.
      */
-    fun describe(caps: Capabilities, pattern: HapticPattern, audioCoupled: Boolean = false, icon: Boolean = false): String? {
+    fun describe(
+        caps: Capabilities,
+        pattern: HapticPattern,
+        audioCoupled: Boolean = false,
+        icon: Boolean = false,
+        knownPlan: PatternPlan? = null,
+    ): String? {
         val phone = "${caps.user}'s phone"
         val own = hzRange(pattern)
         if (audioCoupled) return "$phone: $own → plays $own (audio haptic channel)"
         if (caps.renderer == RendererKind.AUDIO || caps.renderer == RendererKind.UNKNOWN) return null
-        val plan = planOf(caps, pattern)
+        val plan = knownPlan ?: planOf(caps, pattern)
         // Builds older than the published envelopeEffects play an icon's envelope with a fixed sharpness of 0.5.
         if (icon && caps.envelopeEffects == null && plan is PatternPlan.Envelope) return "$phone (an older Hapticon): $own → sharpness 0.50, the note is not played"
         return when (plan) {
@@ -97,15 +104,15 @@ object PeerPitch {
      * 7 is what the guaranteed limits would give; "… (limits not published; assumed 16 points, 20 ms–1 s each, 16 s in
      * all)" for a peer that does not publish them; "bob's envelope cannot follow it within its limits (…)" when the peer
      * plays steps instead. Null when the peer plays no envelope effect (audio-coupled, steps by its own choice, none)
-     * and for an [icon] on an older build, which renders icons with its own fixed points.
+     * and for an [icon] on an older build, which renders icons with its own fixed points. [knownPlan]: as for [describe].
      */
-    fun describeEnvelope(caps: Capabilities, pattern: HapticPattern, icon: Boolean = false): String? {
+    fun describeEnvelope(caps: Capabilities, pattern: HapticPattern, icon: Boolean = false, knownPlan: PatternPlan? = null): String? {
         if (icon && caps.envelopeEffects == null) return null
         val device = deviceOf(caps)
         if (!device.envelopeEffectsSupported || device.apiLevel < 36) return null
         val published = caps.envelopeLimits
         val limits = limitsText(published ?: EnvelopeEffectInfo.GUARANTEED)
-        return when (val plan = planOf(caps, pattern)) {
+        return when (val plan = knownPlan ?: planOf(caps, pattern)) {
             is PatternPlan.Envelope -> {
                 val count = pointsOf(plan.envelope)
                 val points = if (count == 1) "1 control point" else "$count control points"

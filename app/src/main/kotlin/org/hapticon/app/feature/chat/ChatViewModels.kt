@@ -185,11 +185,13 @@ data class PeerFeel(
         ): PeerFeel {
             val pattern = icon.toPattern()
             val audioCoupled = caps.renderer == RendererKind.AUDIO_COUPLED
+            // Planned once for both lines (it resamples the envelope); audio carries the icon whole and needs no plan.
+            val plan = if (audioCoupled) null else PeerPitch.planOf(caps, pattern)
             return PeerFeel(
                 caps.renderer, fidelityPercent,
-                pitch = PeerPitch.describe(caps, pattern, audioCoupled = audioCoupled, icon = true),
+                pitch = PeerPitch.describe(caps, pattern, audioCoupled = audioCoupled, icon = true, knownPlan = plan),
                 // The peer's envelope renderer resamples the icon's pattern as it does a pattern; audio carries it whole.
-                envelope = if (audioCoupled) null else PeerPitch.describeEnvelope(caps, pattern, icon = true),
+                envelope = plan?.let { PeerPitch.describeEnvelope(caps, pattern, icon = true, knownPlan = it) },
             )
         }
 
@@ -201,12 +203,14 @@ data class PeerFeel(
          */
         fun ofPattern(caps: Capabilities, pattern: HapticPattern? = null): PeerFeel {
             val steps = if (caps.amplitudeControl) RendererKind.AMPLITUDE_WAVEFORM else RendererKind.ON_OFF
-            val pitch = pattern?.let { PeerPitch.describe(caps, it) }
-            val envelope = pattern?.let { PeerPitch.describeEnvelope(caps, it) }
+            // Planned once for every line below (planning resamples the envelope).
+            val plan = pattern?.let { PeerPitch.planOf(caps, it) }
+            val pitch = pattern?.let { PeerPitch.describe(caps, it, knownPlan = plan) }
+            val envelope = pattern?.let { PeerPitch.describeEnvelope(caps, it, knownPlan = plan) }
             // A peer that publishes envelopeEffects (this build) is planned exactly: an envelope phone plays a pattern
             // its envelope cannot follow (a sharp pulse, or beyond its limits) as steps, and the line must say so.
-            if (pattern != null && caps.envelopeEffects != null && caps.renderer != RendererKind.AUDIO_COUPLED) {
-                return PeerFeel(PeerPitch.planOf(caps, pattern).renderer, null, pitch = pitch, envelope = envelope)
+            if (plan != null && caps.envelopeEffects != null && caps.renderer != RendererKind.AUDIO_COUPLED) {
+                return PeerFeel(plan.renderer, null, pitch = pitch, envelope = envelope)
             }
             return when (caps.renderer) {
                 RendererKind.AUDIO_COUPLED -> when {
