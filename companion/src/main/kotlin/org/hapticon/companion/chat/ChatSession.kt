@@ -117,8 +117,9 @@ class ChatSession(
             }
             try {
                 readLines(lines, connection)
-                // A refusal that came while the input was ending still ends the chat with its reason.
-                if (connection.isCompleted) connection.await()
+                // A refusal that came while the input was ending still ends the chat with its reason. The state
+                // turns Failed before connect() throws (it disconnects first), so a Failed state waits for that throw.
+                if (connection.isCompleted || messenger.state.value is ConnectionState.Failed) connection.await()
                 val left = drainOutbox()
                 val unconfirmed = outbox.pending().count { it.awaitingReceipt }
                 if (unconfirmed > 0) {
