@@ -1,5 +1,6 @@
 // Plugins are declared here once and applied per module (the Gradle convention).
-// The offline build (./build) reads the per-module build.gradle.kts files; keep them declarative.
+// The offline build (./build) reads the per-module build.gradle.kts files and the convention plugins in
+// build-logic/ (docs/build.md "Conventions"); keep them declarative.
 plugins {
     alias(libs.plugins.android.application) apply false
     alias(libs.plugins.android.library) apply false

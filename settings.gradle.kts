@@ -1,5 +1,7 @@
 // Module list, read by Android Studio (Gradle) and by the offline build (./build).
 pluginManagement {
+    // The convention plugins (build-logic/src/main/kotlin/*.gradle.kts), read by ./build as well.
+    includeBuild("build-logic")
     repositories {
         google()
         mavenCentral()

@@ -2,23 +2,15 @@
 // control, outbox with retries, deduplication, and the MQTT messenger. Pure Kotlin/JVM so the app and
 // the companion share it. The embedded broker lives in :messaging:broker and never reaches the app.
 plugins {
-    alias(libs.plugins.kotlin.jvm)
     // The wire documents are @Serializable types (MessageCodec, docs/json.md).
-    alias(libs.plugins.kotlin.serialization)
-}
-
-kotlin {
-    explicitApi()
-    jvmToolchain(libs.versions.jvmTarget.get().toInt())
+    alias(libs.plugins.hapticon.kotlin.library.serialization)
 }
 
 dependencies {
     api(project(":haptics-core"))
     api(libs.kotlinx.coroutines.core)
-    implementation(libs.kotlinx.serialization.json)
     implementation(libs.hivemq.mqtt.client)
     implementation(libs.tink.android)
 
     testImplementation(project(":messaging:broker"))
-    testImplementation(libs.junit4)
 }

@@ -1,12 +1,7 @@
 // Sensor protocols, models, safety limits and the live session: pure Kotlin, testable on the JVM. The Android USB
 // transport lives in :sensor-bridge:usb and only moves bytes.
 plugins {
-    alias(libs.plugins.kotlin.jvm)
-}
-
-kotlin {
-    explicitApi()
-    jvmToolchain(libs.versions.jvmTarget.get().toInt())
+    alias(libs.plugins.hapticon.kotlin.library)
 }
 
 dependencies {
@@ -14,5 +9,4 @@ dependencies {
     api(libs.kotlinx.coroutines.core) // the live session's state flows (live/, grains/, glove/)
 
     testImplementation(project(":test-fixtures"))
-    testImplementation(libs.junit4)
 }

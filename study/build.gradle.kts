@@ -1,13 +1,7 @@
 // User-study logic, pure Kotlin: protocols, counterbalancing, the hash-chained event log, export and analysis.
 plugins {
-    alias(libs.plugins.kotlin.jvm)
     // Protocols, exports and log payloads are @Serializable documents (StudyDocuments.kt).
-    alias(libs.plugins.kotlin.serialization)
-}
-
-kotlin {
-    explicitApi()
-    jvmToolchain(libs.versions.jvmTarget.get().toInt())
+    alias(libs.plugins.hapticon.kotlin.library.serialization)
 }
 
 dependencies {
@@ -16,5 +10,4 @@ dependencies {
     api(project(":sensor-bridge"))
 
     testImplementation(project(":test-fixtures"))
-    testImplementation(libs.junit4)
 }

@@ -2,18 +2,11 @@
 // the tests. A module of its own so that the broker and its server-side dependencies (RocksDB, Netty
 // server, logback…) never reach the app, which depends on :messaging only.
 plugins {
-    alias(libs.plugins.kotlin.jvm)
-}
-
-kotlin {
-    explicitApi()
-    jvmToolchain(libs.versions.jvmTarget.get().toInt())
+    alias(libs.plugins.hapticon.kotlin.library)
 }
 
 dependencies {
     implementation(libs.hivemq.community.edition.embedded)
     implementation(libs.logback.classic)
     implementation(libs.bouncycastle.bcpkix)
-
-    testImplementation(libs.junit4)
 }

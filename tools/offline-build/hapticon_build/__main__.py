@@ -113,8 +113,8 @@ def companion_classpath(build: Build) -> list[str]:
 def companion_inputs(project) -> list[str]:
     """
     Every file or directory whose change can change the companion, relative to the project root: the
-    main sources and build file of the companion and of each module it runs with, the settings, the
-    version catalog and this build tool. ./hapticon fingerprints these (paths, sizes, mtimes) in bash
+    main sources and build file of the companion and of each module it runs with, the convention plugins
+    those build files apply, the settings, the version catalog and this build tool. ./hapticon fingerprints these (paths, sizes, mtimes) in bash
     and calls the build only when the fingerprint differs from the one of its last successful build.
     """
     modules, stack = [], [project.module(":companion")]
@@ -129,7 +129,9 @@ def companion_inputs(project) -> list[str]:
     for m in sorted(modules, key=lambda m: m.path):
         rel = os.path.relpath(m.directory, project.root)
         inputs += [os.path.join(rel, "build.gradle.kts"), os.path.join(rel, "src", "main")]
-    return inputs
+    # The convention plugins those build files apply declare plugins and dependencies too.
+    conventions = {os.path.relpath(c, project.root) for m in modules for c in m.conventions}
+    return inputs + sorted(conventions)
 
 
 def run_companion(build: Build, classpath: list[str], args: list[str]) -> None:

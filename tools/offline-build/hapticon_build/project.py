@@ -45,6 +45,8 @@ class Module:
     main_class: str | None = None
     ksp_args: dict[str, str] = field(default_factory=dict)
     android: dict[str, str] = field(default_factory=dict)
+    # The convention plugins' scripts this module applies (directly or through another convention), in order.
+    conventions: list[str] = field(default_factory=list)
 
     @property
     def name(self) -> str:
@@ -134,6 +136,17 @@ class Catalog:
             raise BuildError(f"plugin {alias} has no id in gradle/libs.versions.toml")
         return spec["id"]
 
+    def plugin_alias_of_id(self, plugin_id: str) -> str | None:
+        """The [plugins] alias whose id is [plugin_id], or None."""
+        for alias, spec in self._plugins.values():
+            if (spec.split(":")[0] if isinstance(spec, str) else spec.get("id")) == plugin_id:
+                return alias
+        return None
+
+    def plugin_has_version(self, accessor: str) -> bool:
+        spec = self._plugin(accessor)[1]
+        return isinstance(spec, str) and ":" in spec or isinstance(spec, dict) and any(k.startswith("version") for k in spec)
+
     def _plugin(self, accessor: str) -> tuple:
         entry = self._plugins.get(self._key(accessor))
         if entry is None:
@@ -217,49 +230,31 @@ def _excludes(block: str, build_file: str) -> frozenset:
     return frozenset(found)
 
 
-def parse_module(path: str, directory: str, catalog: Catalog) -> Module:
+def conventions_of(root: str, settings_text: str) -> dict[str, str]:
+    """
+    The convention plugins of the builds that settings.gradle.kts includes in `pluginManagement {}`
+    (`includeBuild("build-logic")`): plugin id → script. Gradle makes every `src/main/kotlin/<id>.gradle.kts` of
+    such a build a precompiled script plugin with that id (docs/build.md "Conventions").
+    """
+    found = {}
+    for build in re.findall(r'includeBuild\("([^"]+)"\)', _block(settings_text, "pluginManagement") or ""):
+        sources = os.path.join(root, build, "src", "main", "kotlin")
+        if not os.path.isdir(sources):
+            raise BuildError(f"settings.gradle.kts includes the plugin build {build}, which has no src/main/kotlin")
+        for name in sorted(os.listdir(sources)):
+            if name.endswith(".gradle.kts"):
+                found[name[: -len(".gradle.kts")]] = os.path.join(sources, name)
+    return found
+
+
+def parse_module(path: str, directory: str, catalog: Catalog, conventions: dict[str, str] | None = None) -> Module:
     build_file = os.path.join(directory, "build.gradle.kts")
     try:
         text = _read(build_file)
     except FileNotFoundError:
         raise BuildError(f"module {path} is included in settings.gradle.kts but {build_file} does not exist")
-    text = re.sub(r"/\*.*?\*/", "", text, flags=re.S)
     module = Module(path=path, directory=directory)
-
-    for stmt in _statements(_block(text, "plugins") or ""):
-        m = re.fullmatch(r"alias\(libs\.plugins\.([\w.]+)\)", stmt)
-        if m:
-            module.plugins.add(catalog.plugin_alias(m.group(1)))
-            module.plugin_ids.add(catalog.plugin_id(m.group(1)))
-        elif stmt in CORE_PLUGINS or re.fullmatch(r"`[\w-]+`", stmt):
-            module.plugins.add(stmt.strip("`"))
-            module.plugin_ids.add(stmt.strip("`"))
-        else:
-            raise BuildError(f"{build_file}: plugins: cannot read {stmt!r} (use alias(libs.plugins.x))")
-
-    for stmt in _statements(_block(text, "dependencies") or ""):
-        m = re.fullmatch(r"(\w+)\((.*?\)?)\)\s*(?:\{(.*)\})?", stmt)
-        if not m or m.group(1) not in CONFIGURATIONS:
-            raise BuildError(f"{build_file}: dependencies: cannot read {stmt!r}")
-        conf, arg = m.group(1), m.group(2).strip()
-        excludes = _excludes(m.group(3), build_file) if m.group(3) is not None else frozenset()
-        pm = re.fullmatch(r'project\("(:[\w:-]+)"\)', arg)
-        lm = re.fullmatch(r"libs\.([\w.]+)", arg)
-        plm = re.fullmatch(r"platform\(libs\.([\w.]+)\)", arg)
-        if pm:
-            module.dependencies.append(Dependency(conf, project=pm.group(1)))
-        elif lm:
-            module.dependencies.append(Dependency(conf, library=catalog.library(lm.group(1)), excludes=excludes))
-        elif plm:
-            module.dependencies.append(Dependency(conf, library=catalog.library(plm.group(1)), platform=True))
-        else:
-            raise BuildError(f"{build_file}: dependencies: {arg!r} must be project(\":x\"), libs.x or platform(libs.x)")
-
-    kotlin = _block(text, "kotlin") or ""
-    module.explicit_api = "explicitApi()" in kotlin
-
-    for key, value in re.findall(r'arg\("([^"]+)",\s*"([^"]*)"\)', _block(text, "ksp") or ""):
-        module.ksp_args[key] = value.replace("$projectDir", directory).replace("${projectDir}", directory)
+    _apply_script(module, build_file, text, catalog, conventions or {}, convention=False)
 
     application = _block(text, "application")
     if application:
@@ -281,6 +276,78 @@ def parse_module(path: str, directory: str, catalog: Catalog) -> Module:
     if module.is_android and android is None:
         raise BuildError(f"{build_file}: an Android module needs an android {{}} block")
     return module
+
+
+def _apply_script(module: Module, build_file: str, text: str, catalog: Catalog, conventions: dict[str, str],
+                  convention: bool) -> None:
+    """
+    Adds what a build script declares in plugins {}, dependencies {}, kotlin {} and ksp {} to [module]. A plugin that
+    is one of the project's [conventions] is applied as Gradle applies a precompiled script plugin: its script's
+    declarations come first, at the point of the plugins {} block, then the applying script's own.
+    """
+    text = re.sub(r"/\*.*?\*/", "", text, flags=re.S)
+    if convention:
+        for name in ("android", "application", "ksp"):
+            if _block(text, name) is not None:
+                raise BuildError(f"{build_file}: a convention plugin may declare plugins {{}}, kotlin {{}} and "
+                                 f"dependencies {{}} only, not {name} {{}} (keep it in the module's build file)")
+
+    for stmt in _statements(_block(text, "plugins") or ""):
+        m = re.fullmatch(r"alias\(libs\.plugins\.([\w.]+)\)", stmt)
+        im = re.fullmatch(r'id\("([\w.-]+)"\)', stmt)
+        if m:
+            plugin_id, alias = catalog.plugin_id(m.group(1)), catalog.plugin_alias(m.group(1))
+            if plugin_id not in conventions and not catalog.plugin_has_version(m.group(1)):
+                raise BuildError(f"{build_file}: plugins: {stmt} has no version in gradle/libs.versions.toml and no "
+                                 f"convention script {plugin_id}.gradle.kts in a build that settings.gradle.kts includes")
+        elif im:
+            plugin_id, alias = im.group(1), catalog.plugin_alias_of_id(im.group(1))
+            if plugin_id not in conventions and alias is None:
+                raise BuildError(f"{build_file}: plugins: {stmt} is neither a [plugins] id of gradle/libs.versions.toml "
+                                 f"nor a convention plugin")
+        elif stmt in CORE_PLUGINS or re.fullmatch(r"`[\w-]+`", stmt):
+            plugin_id = alias = stmt.strip("`")
+        else:
+            raise BuildError(f"{build_file}: plugins: cannot read {stmt!r} (use alias(libs.plugins.x))")
+        if plugin_id in conventions:
+            script = conventions[plugin_id]
+            if script in module.conventions:
+                continue  # Gradle applies a plugin once
+            module.conventions.append(script)
+            _apply_script(module, script, _read(script), catalog, conventions, convention=True)
+            continue
+        module.plugins.add(alias)
+        module.plugin_ids.add(plugin_id)
+
+    for stmt in _statements(_block(text, "dependencies") or ""):
+        m = re.fullmatch(r"(\w+)\((.*?\)?)\)\s*(?:\{(.*)\})?", stmt)
+        if not m or m.group(1) not in CONFIGURATIONS:
+            raise BuildError(f"{build_file}: dependencies: cannot read {stmt!r}")
+        conf, arg = m.group(1), m.group(2).strip()
+        excludes = _excludes(m.group(3), build_file) if m.group(3) is not None else frozenset()
+        pm = re.fullmatch(r'project\("(:[\w:-]+)"\)', arg)
+        lm = re.fullmatch(r"libs\.([\w.]+)", arg)
+        # A convention reaches the catalog by name (precompiled script plugins get no `libs` accessor).
+        fm = re.fullmatch(r'libs\.findLibrary\("([\w.-]+)"\)\.get\(\)', arg)
+        plm = re.fullmatch(r"platform\(libs\.([\w.]+)\)", arg)
+        if pm and convention:
+            raise BuildError(f"{build_file}: dependencies: a convention plugin declares libraries only; "
+                             f"declare {arg} in the module's build file (the architecture check reads it there)")
+        if pm:
+            module.dependencies.append(Dependency(conf, project=pm.group(1)))
+        elif lm or fm:
+            accessor = (lm or fm).group(1)
+            module.dependencies.append(Dependency(conf, library=catalog.library(accessor), excludes=excludes))
+        elif plm:
+            module.dependencies.append(Dependency(conf, library=catalog.library(plm.group(1)), platform=True))
+        else:
+            raise BuildError(f"{build_file}: dependencies: {arg!r} must be project(\":x\"), libs.x or platform(libs.x)")
+
+    kotlin = _block(text, "kotlin") or ""
+    module.explicit_api = module.explicit_api or "explicitApi()" in kotlin
+
+    for key, value in re.findall(r'arg\("([^"]+)",\s*"([^"]*)"\)', _block(text, "ksp") or ""):
+        module.ksp_args[key] = value.replace("$projectDir", module.directory).replace("${projectDir}", module.directory)
 
 
 @dataclass
@@ -328,10 +395,11 @@ def load_project(root: str) -> Project:
         raise BuildError(f"{settings} not found: run ./build from the project root")
     name_match = re.search(r'rootProject\.name\s*=\s*"([^"]+)"', text)
     catalog = Catalog(os.path.join(root, "gradle", "libs.versions.toml"))
+    conventions = conventions_of(root, text)
     modules = {}
     for path in re.findall(r'(?m)^\s*include\("(:[\w:-]+)"\)', text):
         directory = os.path.join(root, *path.strip(":").split(":"))
-        modules[path] = parse_module(path, directory, catalog)
+        modules[path] = parse_module(path, directory, catalog, conventions)
     if not modules:
         raise BuildError(f"{settings} includes no modules")
     return Project(root, name_match.group(1) if name_match else "project", catalog, modules)

@@ -13,8 +13,10 @@ from hapticon_build.android import (REFLECTIVE_CLASSES, REFLECTIVE_MEMBERS, DexC
 from hapticon_build.errors import BuildError
 from hapticon_build.kotlin import compiler_arguments
 from hapticon_build.maven import Repository
-from hapticon_build.project import Catalog, load_project
+from hapticon_build.project import SERIALIZATION_PLUGIN as SERIALIZATION, Catalog, load_project
 from hapticon_build.resolver import Resolver, concrete_version, highest
+
+REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))))
 
 CATALOG = """
 [versions]
@@ -155,6 +157,104 @@ class ProjectReaderTest(unittest.TestCase):
     def test_load_project_noCompilerPluginApplied_addsNone(self):
         self.app("")
         self.assertEqual([], load_project(self.root).module(":core").compiler_plugins)
+
+    def conventions(self, *scripts):
+        """A build-logic build with the given (id, script) convention plugins, included as Gradle includes it."""
+        write(self.root, "settings.gradle.kts", 'pluginManagement {\n    includeBuild("build-logic")\n}\n'
+              'rootProject.name = "demo"\ninclude(":core")\ninclude(":app")\n')
+        with open(os.path.join(self.root, "gradle/libs.versions.toml"), "a") as f:
+            f.write("".join(f'{plugin_id.replace(".", "-")} = {{ id = "{plugin_id}" }}\n' for plugin_id, _ in scripts))
+        for plugin_id, script in scripts:
+            write(self.root, f"build-logic/src/main/kotlin/{plugin_id}.gradle.kts", script)
+        self.app("")
+
+    LIBRARY_CONVENTION = ("demo.library", """
+        plugins { id("org.jetbrains.kotlin.jvm") }
+        kotlin { explicitApi() }
+        dependencies { testImplementation(libs.findLibrary("junit4").get()) }
+    """)
+
+    def test_load_project_conventionPlugin_addsItsPluginsExplicitApiAndDependenciesFirst(self):
+        self.conventions(self.LIBRARY_CONVENTION)
+        write(self.root, "core/build.gradle.kts", """
+            plugins {
+                alias(libs.plugins.demo.library)
+            }
+            dependencies {
+                api(libs.kotlin.stdlib)
+            }
+        """)
+        core = load_project(self.root).module(":core")
+        self.assertEqual({"kotlin-jvm"}, core.plugins)
+        self.assertEqual({"org.jetbrains.kotlin.jvm"}, core.plugin_ids)
+        self.assertTrue(core.explicit_api)
+        # Gradle runs the convention at the plugins {} block, so its dependencies come before the module's.
+        self.assertEqual([("testImplementation", "junit:junit:4.13.2"), ("api", "org.jetbrains.kotlin:kotlin-stdlib:2.4.21")],
+                         [(d.configuration, str(d.library)) for d in core.dependencies])
+        self.assertEqual([os.path.join(self.root, "build-logic/src/main/kotlin/demo.library.gradle.kts")], core.conventions)
+
+    def test_load_project_conventionApplyingConvention_appliesEachOnceWithItsCompilerPlugin(self):
+        self.conventions(self.LIBRARY_CONVENTION, ("demo.library-serialization", """
+            plugins {
+                id("demo.library")
+                id("org.jetbrains.kotlin.plugin.serialization")
+            }
+        """))
+        write(self.root, "core/build.gradle.kts", """
+            plugins {
+                alias(libs.plugins.demo.library.serialization)
+                id("demo.library")
+            }
+        """)
+        core = load_project(self.root).module(":core")
+        self.assertEqual({"kotlin-jvm", "kotlin-serialization"}, core.plugins)
+        self.assertEqual(["tool-serialization-compiler-plugin"], core.compiler_plugins)
+        self.assertEqual(["junit:junit:4.13.2"], [str(d.library) for d in core.dependencies])
+        self.assertEqual(["demo.library-serialization.gradle.kts", "demo.library.gradle.kts"],
+                         [os.path.basename(c) for c in core.conventions])
+
+    def test_load_project_conventionWithProjectDependencyOrAndroidBlock_failsNamingTheScript(self):
+        for script, expected in (('dependencies {\n    testImplementation(project(":app"))\n}\n', "libraries only"),
+                                 ('android {\n    namespace = "org.demo"\n}\n', "not android {}")):
+            with self.subTest(expected):
+                self.setUp()
+                self.conventions(("demo.library", script))
+                write(self.root, "core/build.gradle.kts", "plugins {\n    alias(libs.plugins.demo.library)\n}\n")
+                with self.assertRaises(BuildError) as e:
+                    load_project(self.root)
+                self.assertIn("demo.library.gradle.kts", str(e.exception))
+                self.assertIn(expected, str(e.exception))
+
+    def test_load_project_versionlessCatalogPluginWithoutScript_fails(self):
+        self.conventions(self.LIBRARY_CONVENTION)
+        with open(os.path.join(self.root, "gradle/libs.versions.toml"), "a") as f:
+            f.write('demo-ghost = { id = "demo.ghost" }\n')
+        write(self.root, "core/build.gradle.kts", "plugins {\n    alias(libs.plugins.demo.ghost)\n}\n")
+        with self.assertRaises(BuildError) as e:
+            load_project(self.root)
+        self.assertIn("no convention script demo.ghost.gradle.kts", str(e.exception))
+
+    def test_load_project_unknownPluginId_fails(self):
+        write(self.root, "core/build.gradle.kts", 'plugins {\n    id("org.example.unknown")\n}\n')
+        self.app("")
+        with self.assertRaises(BuildError) as e:
+            load_project(self.root)
+        self.assertIn("org.example.unknown", str(e.exception))
+
+    def test_load_project_thisRepository_conventionsGiveTheLibraryModulesTheirSettings(self):
+        project = load_project(REPO)
+        for path in (":haptics-core", ":sensor-bridge", ":messaging", ":messaging:broker", ":study", ":gesture"):
+            module = project.module(path)
+            self.assertTrue(module.explicit_api, path)
+            self.assertEqual({"org.jetbrains.kotlin.jvm"}, module.plugin_ids - {SERIALIZATION}, path)
+            self.assertIn("junit:junit", [f"{d.library.group}:{d.library.name}" for d in module.deps("testImplementation") if d.library])
+        for path in (":haptics-core", ":messaging", ":study", ":gesture"):
+            module = project.module(path)
+            self.assertEqual(["tool-serialization-compiler-plugin"], module.compiler_plugins, path)
+            self.assertIn("org.jetbrains.kotlinx:kotlinx-serialization-json",
+                          [f"{d.library.group}:{d.library.name}" for d in module.deps("implementation", "api") if d.library])
+        for path in (":sensor-bridge", ":messaging:broker"):
+            self.assertEqual([], project.module(path).compiler_plugins, path)
 
     def test_compilerArguments_passEachPluginJarAsXplugin(self):
         args = compiler_arguments(sources=["A.kt"], classpath=["x.jar"], output="out", module_name="m",

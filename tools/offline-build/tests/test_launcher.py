@@ -145,6 +145,21 @@ class CompanionInputsTest(unittest.TestCase):
         self.assertIn("gradle/libs.versions.toml", inputs)
         self.assertIn("tools/offline-build/hapticon_build", inputs)
 
+    def test_companionInputs_listsTheConventionPluginsItsModulesApply(self):
+        root = tempfile.mkdtemp()
+        self.addCleanup(shutil.rmtree, root)
+        write(root, "gradle/libs.versions.toml", '[versions]\n[libraries]\n[plugins]\ndemo-library = { id = "demo.library" }\n')
+        write(root, "settings.gradle.kts", 'pluginManagement {\n    includeBuild("build-logic")\n}\n'
+              'include(":core")\ninclude(":companion")\ninclude(":fixtures")\n')
+        write(root, "build-logic/src/main/kotlin/demo.library.gradle.kts", "plugins {\n}\n")
+        write(root, "build-logic/src/main/kotlin/demo.unused.gradle.kts", "plugins {\n}\n")
+        write(root, "core/build.gradle.kts", "plugins {\n    alias(libs.plugins.demo.library)\n}\n")
+        write(root, "fixtures/build.gradle.kts", "plugins {\n}\n")
+        write(root, "companion/build.gradle.kts", 'dependencies {\n    implementation(project(":core"))\n}\n')
+        inputs = companion_inputs(load_project(root))
+        self.assertIn("build-logic/src/main/kotlin/demo.library.gradle.kts", inputs)
+        self.assertNotIn("build-logic/src/main/kotlin/demo.unused.gradle.kts", inputs)
+
 
 if __name__ == "__main__":
     unittest.main()

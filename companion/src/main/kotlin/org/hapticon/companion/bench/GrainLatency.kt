@@ -132,9 +132,10 @@ class GrainLatency(
         val fake = FakeSerialPort()
         val port = WarmPort(fake, readerSpinMicros * 1_000L)
         val waiter = Thread.currentThread()
+        val wiring = PathWiring(port, writtenAt, latencies, handled, warmupSamples, total, waiter)
         val side = when (route) {
-            Route.ENGINE -> EnginePath(port, writtenAt, latencies, handled, warmupSamples, total, waiter)
-            Route.ARITHMETIC -> ArithmeticPath(port, writtenAt, latencies, handled, warmupSamples, total, waiter)
+            Route.ENGINE -> EnginePath(wiring)
+            Route.ARITHMETIC -> ArithmeticPath(wiring)
         }
         var failure: Throwable? = null
         val decoder = when (side) {
@@ -213,6 +214,8 @@ class GrainLatency(
         val total: Int,
         private val waiter: Thread,
     ) {
+        constructor(w: PathWiring) : this(w.port, w.writtenAt, w.latencies, w.handled, w.warmupSamples, w.total, w.waiter)
+
         private val threads = ManagementFactory.getThreadMXBean() as com.sun.management.ThreadMXBean
         private val counting = threads.isThreadAllocatedMemorySupported && threads.isThreadAllocatedMemoryEnabled
 
@@ -259,16 +262,14 @@ class GrainLatency(
         }
     }
 
+    /** What the bench hands either path, as one value so that the two paths' constructors do not repeat the list. */
+    private class PathWiring(
+        val port: WarmPort, val writtenAt: LongArray, val latencies: LongArray, val handled: AtomicInteger,
+        val warmupSamples: Int, val total: Int, val waiter: Thread,
+    )
+
     /** The shipped path: the decoded [LiveFrame] goes to a real [GrainEngine], whose sink encodes the command. */
-    private class EnginePath(
-        port: WarmPort,
-        writtenAt: LongArray,
-        latencies: LongArray,
-        handled: AtomicInteger,
-        warmupSamples: Int,
-        total: Int,
-        waiter: Thread,
-    ) : GrainPath(port, writtenAt, latencies, handled, warmupSamples, total, waiter), FrameListener {
+    private class EnginePath(wiring: PathWiring) : GrainPath(wiring), FrameListener {
         private var length = 0
 
         // The engine calls the sink on this (the reader) thread, at most once per frame.
@@ -285,15 +286,7 @@ class GrainLatency(
     }
 
     /** The baseline: the engine's arithmetic re-created on the decoded [SampleFrame] (the bench's figure before issue 13's work). */
-    private class ArithmeticPath(
-        port: WarmPort,
-        writtenAt: LongArray,
-        latencies: LongArray,
-        handled: AtomicInteger,
-        warmupSamples: Int,
-        total: Int,
-        waiter: Thread,
-    ) : GrainPath(port, writtenAt, latencies, handled, warmupSamples, total, waiter), ProtocolListener {
+    private class ArithmeticPath(wiring: PathWiring) : GrainPath(wiring), ProtocolListener {
         private val converter = FsrForceConverter()
         private val decider = GrainDecider(GrainSettings(), SyntheticPress.SAMPLE_RATE_HZ.toDouble())
 

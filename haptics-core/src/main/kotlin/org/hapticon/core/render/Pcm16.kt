@@ -35,31 +35,23 @@ public object Pcm16 {
      * @throws IndexOutOfBoundsException if either range falls outside its array.
      */
     public fun convert(
-        source: FloatArray,
-        destination: ShortArray,
-        sourceOffset: Int = 0,
-        destinationOffset: Int = 0,
+        source: FloatArray, destination: ShortArray, sourceOffset: Int = 0, destinationOffset: Int = 0,
         length: Int = source.size - sourceOffset,
-    ) {
-        checkRange(source.size, sourceOffset, length)
-        checkRange(destination.size, destinationOffset, length)
-        for (j in 0 until length) destination[destinationOffset + j] = fromSample(source[sourceOffset + j].toDouble())
-    }
+    ): Unit = convert(source.size, destination, sourceOffset, destinationOffset, length) { source[it].toDouble() }
 
-    /**
-     * Converts [length] samples of [source] from [sourceOffset] into [destination] from [destinationOffset].
-     *
-     * @throws IndexOutOfBoundsException if either range falls outside its array.
-     */
+    /** [convert] for Double samples: the same ranges, checks and rounding. */
     public fun convert(
-        source: DoubleArray,
-        destination: ShortArray,
-        sourceOffset: Int = 0,
-        destinationOffset: Int = 0,
+        source: DoubleArray, destination: ShortArray, sourceOffset: Int = 0, destinationOffset: Int = 0,
         length: Int = source.size - sourceOffset,
+    ): Unit = convert(source.size, destination, sourceOffset, destinationOffset, length) { source[it] }
+
+    // One loop for both array types; inline, so reading a sample stays a plain array access.
+    private inline fun convert(
+        sourceSize: Int, destination: ShortArray, sourceOffset: Int, destinationOffset: Int, length: Int,
+        sample: (Int) -> Double,
     ) {
-        checkRange(source.size, sourceOffset, length)
+        checkRange(sourceSize, sourceOffset, length)
         checkRange(destination.size, destinationOffset, length)
-        for (j in 0 until length) destination[destinationOffset + j] = fromSample(source[sourceOffset + j])
+        for (j in 0 until length) destination[destinationOffset + j] = fromSample(sample(sourceOffset + j))
     }
 }

@@ -1,7 +1,6 @@
 package org.hapticon.sensor.serial
 
 import org.hapticon.sensor.port.LineSettings
-import org.hapticon.sensor.port.Parity
 import org.hapticon.sensor.port.StopBits
 
 /**
@@ -83,7 +82,7 @@ internal class CdcAcmPort(
     override fun applySettings(settings: LineSettings) {
         // Line coding: dwDTERate, bCharFormat, bParityType, bDataBits.
         val lineCoding = littleEndian32(settings.baudRate) +
-            byteArrayOf(charFormat(settings.stopBits), parityType(settings.parity), settings.dataBits.toByte())
+            byteArrayOf(charFormat(settings.stopBits), settings.parity.usbCode.toByte(), settings.dataBits.toByte())
         val index = function.control.id
         control(UsbRequestType.CLASS_INTERFACE_OUT, AcmRequest.SET_LINE_CODING, 0, index, lineCoding, "SET_LINE_CODING")
         val lines = (if (settings.dtr) AcmRequest.LINE_STATE_DTR else 0) or (if (settings.rts) AcmRequest.LINE_STATE_RTS else 0)
@@ -99,13 +98,5 @@ internal class CdcAcmPort(
         StopBits.ONE -> 0
         StopBits.ONE_POINT_FIVE -> 1
         StopBits.TWO -> 2
-    }
-
-    private fun parityType(parity: Parity): Byte = when (parity) {
-        Parity.NONE -> 0
-        Parity.ODD -> 1
-        Parity.EVEN -> 2
-        Parity.MARK -> 3
-        Parity.SPACE -> 4
     }
 }

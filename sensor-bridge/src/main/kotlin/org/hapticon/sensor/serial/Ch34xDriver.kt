@@ -53,19 +53,17 @@ internal class Ch34xPort(
     device: UsbDeviceDescription,
     transport: UsbTransport,
     clock: MonotonicClock,
-    private val usbInterface: UsbInterfaceDescription,
-) : UsbSerialPort(device, 0, transport, clock) {
+    usbInterface: UsbInterfaceDescription,
+) : SingleInterfacePort(device, 0, transport, clock, usbInterface) {
     /** Chip version from READ_VERSION: 0x27 on old CH340s, 0x30 and up on current parts. */
     internal var version: Int = 0
         private set
 
-    override fun claimAndInitialize(): DataEndpoints {
-        claim(usbInterface)
+    override fun initializeChip() {
         val reply = ByteArray(2)
         control(UsbRequestType.VENDOR_DEVICE_IN, Ch34xRequest.READ_VERSION, 0, 0, reply, "CH34x READ_VERSION")
         version = reply[0].toInt() and 0xFF
         control(UsbRequestType.VENDOR_DEVICE_OUT, Ch34xRequest.SERIAL_INIT, 0, 0, null, "CH34x SERIAL_INIT")
-        return bulkPairOf(usbInterface)
     }
 
     override fun applySettings(settings: LineSettings) {
@@ -85,10 +83,6 @@ internal class Ch34xPort(
         val modem = (if (settings.dtr) Ch34xRequest.MCR_DTR else 0) or (if (settings.rts) Ch34xRequest.MCR_RTS else 0)
         // The chip's modem-control lines are active low: it takes the inverted bits.
         control(UsbRequestType.VENDOR_DEVICE_OUT, Ch34xRequest.MODEM_CONTROL, modem.inv() and 0xFFFF, 0, null, "CH34x modem control")
-    }
-
-    override fun releaseInterfaces() {
-        transport.releaseInterface(usbInterface)
     }
 
     private fun lineControl(settings: LineSettings): Int {

@@ -2,7 +2,6 @@ package org.hapticon.sensor.serial
 
 import org.hapticon.sensor.port.UnsupportedSettingException
 import org.hapticon.sensor.port.LineSettings
-import org.hapticon.sensor.port.Parity
 import org.hapticon.sensor.port.StopBits
 
 /**
@@ -47,15 +46,12 @@ internal class Cp21xxPort(
     portIndex: Int,
     transport: UsbTransport,
     clock: MonotonicClock,
-    private val usbInterface: UsbInterfaceDescription,
-) : UsbSerialPort(device, portIndex, transport, clock) {
+    usbInterface: UsbInterfaceDescription,
+) : SingleInterfacePort(device, portIndex, transport, clock, usbInterface) {
     private val index = usbInterface.id
 
-    override fun claimAndInitialize(): DataEndpoints {
-        claim(usbInterface)
-        val endpoints = bulkPairOf(usbInterface)
+    override fun initializeChip() {
         control(UsbRequestType.VENDOR_INTERFACE_OUT, Cp21xxRequest.IFC_ENABLE, Cp21xxRequest.UART_ENABLE, index, null, "CP210x IFC_ENABLE")
-        return endpoints
     }
 
     override fun applySettings(settings: LineSettings) {
@@ -65,7 +61,7 @@ internal class Cp21xxPort(
         if (settings.stopBits == StopBits.ONE_POINT_FIVE) throw UnsupportedSettingException("CP210x chips do not do 1.5 stop bits")
         setBaudRate(settings.baudRate)
         // SET_LINE_CTL: bits 0..3 stop bits (0 = 1, 2 = 2), 4..7 parity, 8..15 data bits.
-        val lineControl = (if (settings.stopBits == StopBits.TWO) 2 else 0) or (parityCode(settings.parity) shl 4) or (settings.dataBits shl 8)
+        val lineControl = (if (settings.stopBits == StopBits.TWO) 2 else 0) or (settings.parity.usbCode shl 4) or (settings.dataBits shl 8)
         control(UsbRequestType.VENDOR_INTERFACE_OUT, Cp21xxRequest.SET_LINE_CTL, lineControl, index, null, "CP210x SET_LINE_CTL")
         val lines = Cp21xxRequest.MHS_WRITE_DTR or Cp21xxRequest.MHS_WRITE_RTS or
             (if (settings.dtr) Cp21xxRequest.MHS_DTR else 0) or (if (settings.rts) Cp21xxRequest.MHS_RTS else 0)
@@ -91,14 +87,6 @@ internal class Cp21xxPort(
                 UsbRequestType.VENDOR_INTERFACE_OUT, Cp21xxRequest.IFC_ENABLE, Cp21xxRequest.UART_DISABLE, index, null, 0, CONTROL_TIMEOUT_MILLIS,
             )
         }
-        transport.releaseInterface(usbInterface)
-    }
-
-    private fun parityCode(parity: Parity): Int = when (parity) {
-        Parity.NONE -> 0
-        Parity.ODD -> 1
-        Parity.EVEN -> 2
-        Parity.MARK -> 3
-        Parity.SPACE -> 4
+        super.releaseInterfaces()
     }
 }

@@ -2,7 +2,6 @@ package org.hapticon.sensor.serial
 
 import org.hapticon.sensor.port.UnsupportedSettingException
 import org.hapticon.sensor.port.LineSettings
-import org.hapticon.sensor.port.Parity
 import org.hapticon.sensor.port.StopBits
 import java.io.IOException
 
@@ -50,23 +49,20 @@ internal class FtdiPort(
     portIndex: Int,
     transport: UsbTransport,
     clock: MonotonicClock,
-    private val usbInterface: UsbInterfaceDescription,
-    private val multiPort: Boolean,
-) : UsbSerialPort(device, portIndex, transport, clock) {
+    usbInterface: UsbInterfaceDescription,
+    multiPort: Boolean,
+) : SingleInterfacePort(device, portIndex, transport, clock, usbInterface) {
     /** wIndex names the channel: A = 1, B = 2, … */
     private val channel = usbInterface.id + 1
     private var baudIndexNamesChannel = multiPort
 
-    override fun claimAndInitialize(): DataEndpoints {
-        claim(usbInterface)
-        val endpoints = bulkPairOf(usbInterface)
+    override fun initializeChip() {
         // The H chips (bcdDevice 7.00 FT2232H, 8.00 FT4232H, 9.00 FT232H) read the channel from the low
         // byte of SET_BAUD_RATE's wIndex and the divisor bit from the high byte, like multi-port chips.
         val descriptors = transport.rawDescriptors()
         if (descriptors != null && descriptors.size >= 14 && descriptors[13].toInt() in 7..9) baudIndexNamesChannel = true
         control(UsbRequestType.VENDOR_DEVICE_OUT, FtdiRequest.RESET, FtdiRequest.RESET_SIO, channel, null, "FTDI reset")
         control(UsbRequestType.VENDOR_DEVICE_OUT, FtdiRequest.SET_LATENCY_TIMER, FtdiRequest.LATENCY_MILLIS, channel, null, "FTDI latency timer")
-        return endpoints
     }
 
     override fun applySettings(settings: LineSettings) {
@@ -76,14 +72,10 @@ internal class FtdiPort(
         val baudIndex = if (baudIndexNamesChannel) (divisor.indexBit shl 8) or channel else divisor.indexBit
         control(UsbRequestType.VENDOR_DEVICE_OUT, FtdiRequest.SET_BAUD_RATE, divisor.value, baudIndex, null, "FTDI SET_BAUD_RATE")
         // SET_DATA: bits 0..7 data bits, 8..10 parity (none, odd, even, mark, space), 11..13 stop bits.
-        val dataFormat = settings.dataBits or (parityCode(settings.parity) shl 8) or (if (settings.stopBits == StopBits.TWO) 2 shl 11 else 0)
+        val dataFormat = settings.dataBits or (settings.parity.usbCode shl 8) or (if (settings.stopBits == StopBits.TWO) 2 shl 11 else 0)
         control(UsbRequestType.VENDOR_DEVICE_OUT, FtdiRequest.SET_DATA, dataFormat, channel, null, "FTDI SET_DATA")
         val lines = (if (settings.dtr) FtdiRequest.DTR_ON else FtdiRequest.DTR_OFF) or (if (settings.rts) FtdiRequest.RTS_ON else FtdiRequest.RTS_OFF)
         control(UsbRequestType.VENDOR_DEVICE_OUT, FtdiRequest.MODEM_CONTROL, lines, channel, null, "FTDI MODEM_CONTROL")
-    }
-
-    override fun releaseInterfaces() {
-        transport.releaseInterface(usbInterface)
     }
 
     /** Every packet of a transfer starts with the 2 modem-status bytes; only the rest is data. */
@@ -109,13 +101,5 @@ internal class FtdiPort(
     override fun transferLengthFor(payloadLength: Int, packetSize: Int): Int {
         val perPacket = packetSize - FtdiRequest.STATUS_BYTES
         return (payloadLength + perPacket - 1) / perPacket * packetSize
-    }
-
-    private fun parityCode(parity: Parity): Int = when (parity) {
-        Parity.NONE -> 0
-        Parity.ODD -> 1
-        Parity.EVEN -> 2
-        Parity.MARK -> 3
-        Parity.SPACE -> 4
     }
 }
