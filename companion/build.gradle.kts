@@ -22,6 +22,7 @@ dependencies {
     implementation(libs.postgresql) // the study collector's optional store
     implementation(libs.jetty.server) // the study collector's HTTP server
     implementation(libs.commons.csv) // bench --analysis only: the baseline our CSV reader is measured against
+    implementation(libs.jserialcomm) // `hapticon board`: the desktop's serial ports (the app has its own USB drivers)
     implementation(libs.logback.classic) // to quiet Jetty's INFO lines (HiveMQ's logback.xml prints them to stdout)
 
     testImplementation(project(":test-fixtures"))

@@ -1,5 +1,6 @@
 package org.hapticon.companion
 
+import org.hapticon.companion.board.runBoard
 import org.hapticon.companion.cli.Console
 import org.hapticon.companion.cli.UsageException
 import org.hapticon.companion.chat.runBroker
@@ -85,6 +86,7 @@ private fun dispatch(args: List<String>, console: Console) {
         "decode" -> runDecode(rest, console)
         "grains" -> runGrains(rest, console)
         "handshake" -> runHandshake(rest, console)
+        "board" -> runBoard(rest, console)
         "chat" -> runChat(rest, console)
         "broker" -> runBroker(rest, console)
         "schedule" -> runSchedule(rest, console)

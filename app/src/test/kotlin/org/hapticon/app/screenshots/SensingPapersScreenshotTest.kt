@@ -11,6 +11,12 @@ import org.hapticon.app.feature.study.ComplianceActions
 import org.hapticon.app.feature.study.ComplianceScreen
 import org.hapticon.app.feature.study.ComplianceUiState
 import org.hapticon.sensor.electrotactile.AmplitudeSteps
+import org.hapticon.sensor.grains.FirmwareCommands
+import org.hapticon.sensor.grains.FirmwareStimulus
+import org.hapticon.sensor.live.CommandState
+import org.hapticon.sensor.live.CommandWriter
+import org.hapticon.sensor.live.describeProblem
+import org.hapticon.sensor.protocol.framed.FramedEncoder
 import org.hapticon.study.compliance.ComplianceStudy
 import org.junit.Test
 
@@ -29,6 +35,23 @@ class SensingPapersScreenshotTest : ScreenshotTest() {
     fun electrotactile_wholeArrayCheck() = screen("sensors-electrotactile-check") {
         ElectrotactileCalibrationScreen(
             ElectrotactileUiState.WholeArrayCheck(sent = true, steps = listOf(66, 72, 61, 80, 63, 70, 64, 68, 75), boardReady = true, message = "Sent: press the sensor and feel the grains"),
+            ElectrotactileActions(),
+        )
+    }
+
+    /**
+     * The error card: the board never answered the second electrode's stimulus (the link failed). The line is the
+     * session's own ([describeProblem] of the [CommandWriter]'s timeout), as the view model shows it.
+     */
+    @Test
+    fun electrotactile_boardProblem() = screen("sensors-electrotactile-error") {
+        val command = FirmwareCommands.stimulate(FramedEncoder(), FirmwareStimulus(1, 61))
+        val noAnswer = CommandState.TimedOut("no acknowledgement within ${CommandWriter.ACK_TIMEOUT_MILLIS} ms")
+        ElectrotactileCalibrationScreen(
+            ElectrotactileUiState.Electrode(
+                1, 61, AmplitudeSteps.milliampsOf(61), atCap = false, steps = listOf(66, 61, 60, 60, 60, 60, 60, 60, 60), boardReady = true,
+                message = describeProblem(command.description, noAnswer), problem = true,
+            ),
             ElectrotactileActions(),
         )
     }

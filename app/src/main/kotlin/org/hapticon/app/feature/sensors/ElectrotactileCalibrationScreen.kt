@@ -121,7 +121,17 @@ fun ElectrotactileCalibrationScreen(uiState: ElectrotactileUiState, actions: Ele
                         CardDefaults.cardColors(containerColor = MaterialTheme.colorScheme.surfaceVariant)
                     },
                     modifier = Modifier.fillMaxWidth().semantics { liveRegion = if (uiState.problem) LiveRegionMode.Assertive else LiveRegionMode.Polite },
-                ) { Text(message, Modifier.padding(12.dp), style = MaterialTheme.typography.bodyMedium) }
+                ) {
+                    if (uiState.problem) {
+                        // Not by colour alone: the warning sign says "error" in greyscale and to colour-blind eyes too.
+                        Row(Modifier.padding(12.dp), horizontalArrangement = Arrangement.spacedBy(8.dp)) {
+                            Icon(HapticonIcons.Warning, contentDescription = null)
+                            Text(message, style = MaterialTheme.typography.bodyMedium)
+                        }
+                    } else {
+                        Text(message, Modifier.padding(12.dp), style = MaterialTheme.typography.bodyMedium)
+                    }
+                }
             }
         }
     }
