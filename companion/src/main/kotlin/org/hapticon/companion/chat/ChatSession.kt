@@ -117,8 +117,16 @@ class ChatSession(
             }
             try {
                 readLines(lines, connection)
-                // A refusal that came while the input was ending still ends the chat with its reason. The state
-                // turns Failed before connect() throws (it disconnects first), so a Failed state waits for that throw.
+                // A refusal must end the chat with its reason (exit 2) even when the input ends first, as a script
+                // piping nothing or one line in does: while the first attempt has not settled, wait for it as long
+                // as typed lines would be waited for. The state turns Failed before connect() throws (it disconnects
+                // first), so a Failed state waits for that throw.
+                val unsettled = messenger.state.value.let { it == ConnectionState.Disconnected || it == ConnectionState.Connecting(lastFailure = null) }
+                if (!connection.isCompleted && unsettled) {
+                    withTimeoutOrNull(drainTimeoutMillis) {
+                        messenger.state.first { it == ConnectionState.Connected || it is ConnectionState.Failed }
+                    }
+                }
                 if (connection.isCompleted || messenger.state.value is ConnectionState.Failed) connection.await()
                 val left = drainOutbox()
                 val unconfirmed = outbox.pending().count { it.awaitingReceipt }

@@ -1,6 +1,7 @@
 package org.hapticon.companion.chat
 
 import kotlinx.coroutines.CompletableDeferred
+import kotlinx.coroutines.delay
 import kotlinx.coroutines.flow.MutableStateFlow
 import kotlinx.coroutines.flow.StateFlow
 import kotlinx.coroutines.runBlocking
@@ -29,12 +30,13 @@ import java.util.concurrent.TimeUnit
 import kotlin.concurrent.thread
 
 /**
- * A refusal must end the chat with a non-zero exit even when the input ends in the moment between the
+ * A refusal must end the chat with a non-zero exit even when the input ends before the first attempt settles,
+ * or in the moment between the
  * messenger's state turning [ConnectionState.Failed] and its `connect` throwing ([MqttMessenger][org.hapticon.messaging.mqtt.MqttMessenger]
  * disconnects in between). Under load `ChatCommandTest.chat_wrongPassword_exitsTwoSayingSo` once exited 0 there.
  */
 class ChatSessionRefusalTest {
-    /** Turns Failed at once, then throws from [connect] only when the test [releases][release] it. */
+    /** Stays connecting until the test [releases][release] it, then turns Failed and throws from [connect] a moment later. */
     private class SlowlyRefusingMessenger : Messenger {
         override val user = "alice"
         private val mutableState = MutableStateFlow<ConnectionState>(ConnectionState.Connecting(null))
@@ -42,8 +44,10 @@ class ChatSessionRefusalTest {
         val release = CompletableDeferred<Unit>()
 
         override suspend fun connect(listener: InboxListener) {
-            mutableState.value = ConnectionState.Failed("bad user name or password")
+            mutableState.value = ConnectionState.Connecting(lastFailure = null)
             release.await()
+            mutableState.value = ConnectionState.Failed("bad user name or password")
+            delay(100) // MqttMessenger disconnects between the two
             throw MessagingException("cannot connect to tcp://broker as alice: bad user name or password")
         }
 
@@ -55,16 +59,16 @@ class ChatSessionRefusalTest {
     }
 
     @Test
-    fun inputEndingBeforeConnectThrows_stillEndsWithTheRefusal() {
+    fun inputEndingBeforeTheFirstAttemptSettles_stillEndsWithTheRefusal() {
         val messenger = SlowlyRefusingMessenger()
         val err = ByteArrayOutputStream()
         val session = ChatSession(
             messenger, "bob", PrintStream(ByteArrayOutputStream()), PrintStream(err, true),
-            gate = InboxGate(BoundedDeduplicator(), VibrationRateLimiter(Clock.MONOTONIC)),
+            gate = InboxGate(BoundedDeduplicator(), VibrationRateLimiter(Clock.MONOTONIC)), drainTimeoutMillis = 30_000,
         )
         var thrown: Throwable? = null
         var returned = false
-        // Empty input: the end arrives while connect() still waits to throw.
+        // Empty input: it ends before the first attempt settles, and again before connect() throws.
         val run = thread {
             try {
                 runBlocking { session.run(BufferedReader(StringReader(""))) }
@@ -73,7 +77,7 @@ class ChatSessionRefusalTest {
                 thrown = e
             }
         }
-        // Long enough for the session to see the end of its input; the old code returned (exit 0) meanwhile.
+        // Long enough for the session to see the end of its input; without the wait it returned (exit 0) meanwhile.
         run.join(500)
         assertTrue("the chat ended before the refusal reached it", run.isAlive)
         messenger.release.complete(Unit)
@@ -81,5 +85,29 @@ class ChatSessionRefusalTest {
         if (returned) fail("the chat ended normally after a refusal")
         assertTrue("expected the refusal, got $thrown", thrown is MessagingException || thrown is UsageException)
         assertEquals("cannot connect to tcp://broker as alice: bad user name or password", thrown!!.message)
+    }
+
+    /** Already failing to reach the broker ("still trying"): the end of the input does not wait for the next attempt. */
+    private class UnreachableMessenger : Messenger {
+        override val user = "alice"
+        override val state: StateFlow<ConnectionState> = MutableStateFlow(ConnectionState.Connecting(lastFailure = "connection refused"))
+        override suspend fun connect(listener: InboxListener) = CompletableDeferred<Unit>().await()
+        override suspend fun disconnect() = Unit
+        override suspend fun send(recipient: String, message: ChatMessage) = throw MessagingException("not connected")
+        override suspend fun send(recipient: String, receipt: Receipt) = throw MessagingException("not connected")
+        override suspend fun send(recipient: String, pose: HandPose) = throw MessagingException("not connected")
+        override suspend fun publishCapabilities(capabilities: Capabilities) = throw MessagingException("not connected")
+    }
+
+    @Test
+    fun inputEndingWhileTheBrokerIsUnreachable_endsWithoutWaitingForTheDrainTimeout() {
+        val session = ChatSession(
+            UnreachableMessenger(), "bob", PrintStream(ByteArrayOutputStream()), PrintStream(ByteArrayOutputStream()),
+            gate = InboxGate(BoundedDeduplicator(), VibrationRateLimiter(Clock.MONOTONIC)), drainTimeoutMillis = 60_000,
+        )
+        var returned = false
+        val run = thread { runBlocking { session.run(BufferedReader(StringReader(""))) }; returned = true }
+        run.join(TimeUnit.SECONDS.toMillis(20))
+        assertTrue("the chat waited for an unreachable broker after its input ended", returned)
     }
 }
