@@ -118,7 +118,8 @@ object BenchReport {
 
     private fun safepoints(r: GrainLatencyResult): String =
         if (r.safepoints < 0) "safepoints not logged"
-        else String.format(Locale.ROOT, "%d safepoints, longest %.1f", r.safepoints, if (r.safepoints == 0) 0.0 else r.longestSafepointMicros)
+        else if (r.safepoints == 0) "0 safepoints"
+        else String.format(Locale.ROOT, "%d safepoints, longest %.1f (%s)", r.safepoints, r.longestSafepointMicros, r.longestSafepoint)
 
     private fun readerCpu(r: GrainLatencyResult): String =
         if (r.readerCpuMicrosPerSample.isNaN()) "not measured"

@@ -55,7 +55,8 @@ import kotlin.math.ceil
  * [over1msWithGc], [over1msBySafepoint] (its time inside a JVM safepoint, from HotSpot's safepoint log),
  * [over1msBySteal] (hypervisor steal on the reader's CPU near it, /proc/stat's 10 ms ticks),
  * [over1msByWaitAndSafepoint] (the two together, neither alone) and [over1msUnexplained]. [safepoints] ran
- * during the measured samples (-1: no log), the longest [longestSafepointMicros]; [safepointMicrosAtMax] and
+ * during the measured samples (-1: no log), the longest [longestSafepointMicros] (the VM operation
+ * [longestSafepoint]); [safepointMicrosAtMax] and
  * [stealTicksAtMax] are the worst grain's (-1: unknown, or the worst grain was not over 1 ms for steal);
  * [stealShare] is steal over all CPUs' time during the measured samples (NaN off Linux).
  */
@@ -81,6 +82,7 @@ data class GrainLatencyResult(
     val over1msUnexplained: Int = 0,
     val safepoints: Int = -1,
     val longestSafepointMicros: Double = Double.NaN,
+    val longestSafepoint: String = "",
     val safepointMicrosAtMax: Double = Double.NaN,
     val stealTicksAtMax: Long = -1L,
     val stealShare: Double = Double.NaN,
@@ -266,6 +268,7 @@ class GrainLatency(
             over1msUnexplained = causes.unexplained,
             safepoints = safepoints?.size ?: -1,
             longestSafepointMicros = safepoints?.maxOfOrNull { it.endNanos - it.startNanos }?.div(1e3) ?: Double.NaN,
+            longestSafepoint = safepoints?.maxByOrNull { it.endNanos - it.startNanos }?.operation.orEmpty(),
             safepointMicrosAtMax = if (safepoints == null) Double.NaN else safepointNanos(worst) / 1e3,
             stealTicksAtMax = stealOf[worst] ?: -1L,
             stealShare = steal.runShare(),
