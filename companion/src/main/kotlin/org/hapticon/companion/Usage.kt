@@ -20,7 +20,8 @@ val USAGE: String = """
     |      (default 65.4:523.3, MIDI notes 36-72).
     |  hapticon plot ICON --out FILE.png [--model paper|processing] [--rate HZ]
     |      Draw ICON's envelope over its carrier waveform.
-    |  hapticon bench [--json] [--quick] [--messaging | --analysis | --grain [--runs N] [--interval-us N] [--spin-us N]]
+    |  hapticon bench [--json] [--quick] [--messaging | --analysis | --grain [--runs N] [--interval-us N] [--spin-us N]
+    |                 [--cpu-latency-us N] [--reader-nice N]]
     |      Measure render speed, FAST-mode error, first-block latency and allocation, and the sensor
     |      path: decoding speed, grain and handshake cost per sample, fake-port sample-to-grain latency
     |      through GrainEngine (p50/p99/max beside the re-created arithmetic, same run);
@@ -30,6 +31,10 @@ val USAGE: String = """
     |      --grain runs only the sample-to-grain latency, --runs times (3) with the load average beside
     |      each: p50/p99/max, run-queue wait, reader CPU; --interval-us paces samples (1000 = the board's
     |      1 kHz; default back to back), --spin-us keeps the reader spinning that long after each sample.
+    |      Each grain over 1 ms is put down to its run-queue wait, a JVM safepoint, a GC or hypervisor steal
+    |      on the reader's CPU (10 ms ticks), or counted unexplained. --cpu-latency-us N holds a PM QoS request
+    |      on /dev/cpu_dma_latency for the runs (0..100000; root only, a refusal is one line and the runs go
+    |      on); --reader-nice N (-20..19) renices the reader thread with `renice` before its first read.
     |  hapticon demo --out DIR [--apk PATH]
     |      Render and plot the presets into DIR, plus envelope-models.png; report the APK if given.
     |      Also a sensor demo: a synthetic FSR press as a framed stream, decoded, and its grains; a handshake.

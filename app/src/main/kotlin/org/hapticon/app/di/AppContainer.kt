@@ -13,6 +13,7 @@ import org.hapticon.app.playback.VibratorVibrationOutput
 import org.hapticon.app.sensors.AndroidUsbDevices
 import org.hapticon.app.sensors.CalibrationStore
 import org.hapticon.app.sensors.SharedPreferencesCalibrationStore
+import org.hapticon.app.sensors.ReaderThreadPriority
 import org.hapticon.app.study.StudyComponent
 import org.hapticon.app.sync.ChatComponent
 import org.hapticon.sensor.glove.HubGloveSource
@@ -68,7 +69,8 @@ class AppContainer(
             vibration: VibrationOutput = VibratorVibrationOutput.create(context),
             calibrations: CalibrationStore = SharedPreferencesCalibrationStore(context),
         ): AppContainer {
-            val hub = SensorSession(usbDevices)
+            // The reader thread decides the grains: raised to urgent-audio priority before its first read.
+            val hub = SensorSession(usbDevices, readerThreadSetup = ReaderThreadPriority::applyToCurrentThread)
             val grains = GrainEngine(vibration).also { hub.addFrameListener(it) }
             // One database for chat and study: two Room instances on one file would not see each other's writes.
             val db = HapticonDatabase.create(context)

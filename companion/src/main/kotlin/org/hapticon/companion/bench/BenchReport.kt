@@ -98,16 +98,28 @@ object BenchReport {
     }
 
     /**
-     * One run of `bench --grain` on one line: p50, p99, max, the worst grain's run-queue wait, the worst grain
-     * without its own wait, the grains over 1 ms, allocation and the reader's CPU.
+     * One run of `bench --grain` on one line: p50, p99, max; the worst grain's run-queue wait, time in a
+     * safepoint and steal; the worst grain without its own wait; the grains over 1 ms by cause (a grain may have
+     * several) and how many no cause explains; the run's safepoints and steal; allocation and the reader's CPU.
      */
     fun grainLine(r: GrainLatencyResult): String = String.format(
         Locale.ROOT,
-        "p50 %.1f, p99 %.1f, max %.1f (%d grains); worst waited %.1f in the run queue%s; max without that wait %.1f;" +
-            " over 1 ms: %d (%d by run-queue wait, %d with a GC); %s bytes/sample frame to command; reader CPU %s",
+        "p50 %.1f, p99 %.1f, max %.1f (%d grains); worst waited %.1f in the run queue%s, %s in a safepoint, steal %s;" +
+            " max without that wait %.1f; over 1 ms: %d (%d by run-queue wait, %d by a safepoint, %d by both together," +
+            " %d with a GC, %d with steal, %d unexplained); %s; steal %s of CPU time; %s bytes/sample frame to command; reader CPU %s",
         r.p50Micros, r.p99Micros, r.maxMicros, r.grains, r.runQueueMicrosAtMax, if (r.gcAtMax) " and saw a GC" else "",
-        r.maxWithoutRunQueueMicros, r.over1ms, r.over1msByRunQueue, r.over1msWithGc, allocation(r.handlerBytesPerSample), readerCpu(r),
+        if (r.safepointMicrosAtMax.isNaN()) "unknown" else String.format(Locale.ROOT, "%.1f", r.safepointMicrosAtMax),
+        if (r.stealTicksAtMax < 0) "n/a" else "${r.stealTicksAtMax} ticks",
+        r.maxWithoutRunQueueMicros, r.over1ms, r.over1msByRunQueue, r.over1msBySafepoint, r.over1msByWaitAndSafepoint,
+        r.over1msWithGc, r.over1msBySteal, r.over1msUnexplained, safepoints(r),
+        if (r.stealShare.isNaN()) "unknown" else String.format(Locale.ROOT, "%.2f %%", r.stealShare * 100),
+        allocation(r.handlerBytesPerSample), readerCpu(r),
     )
+
+    private fun safepoints(r: GrainLatencyResult): String =
+        if (r.safepoints < 0) "safepoints not logged"
+        else if (r.safepoints == 0) "0 safepoints"
+        else String.format(Locale.ROOT, "%d safepoints, longest %.1f (%s)", r.safepoints, r.longestSafepointMicros, r.longestSafepoint)
 
     private fun readerCpu(r: GrainLatencyResult): String =
         if (r.readerCpuMicrosPerSample.isNaN()) "not measured"

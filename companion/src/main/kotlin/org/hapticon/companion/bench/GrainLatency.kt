@@ -50,6 +50,15 @@ import kotlin.math.ceil
  * What the reader costs in CPU (Linux, schedstat field 1, NaN elsewhere): [readerCpuMicrosPerSample], its
  * running time per measured sample, and [readerCpuShare], that time over the measured wall time (1.0 = one
  * core kept busy), which shows what a spinning reader burns.
+ *
+ * Every grain over 1 ms, by cause ([SlowGrainCauses.of]; a grain may have several): [over1msByRunQueue],
+ * [over1msWithGc], [over1msBySafepoint] (its time inside a JVM safepoint, from HotSpot's safepoint log),
+ * [over1msBySteal] (hypervisor steal on the reader's CPU near it, /proc/stat's 10 ms ticks),
+ * [over1msByWaitAndSafepoint] (the two together, neither alone) and [over1msUnexplained]. [safepoints] ran
+ * during the measured samples (-1: no log), the longest [longestSafepointMicros] (the VM operation
+ * [longestSafepoint]); [safepointMicrosAtMax] and
+ * [stealTicksAtMax] are the worst grain's (-1: unknown, or the worst grain was not over 1 ms for steal);
+ * [stealShare] is steal over all CPUs' time during the measured samples (NaN off Linux).
  */
 data class GrainLatencyResult(
     val samples: Int,
@@ -67,6 +76,16 @@ data class GrainLatencyResult(
     val over1msWithGc: Int = 0,
     val readerCpuMicrosPerSample: Double = Double.NaN,
     val readerCpuShare: Double = Double.NaN,
+    val over1msBySafepoint: Int = 0,
+    val over1msBySteal: Int = 0,
+    val over1msByWaitAndSafepoint: Int = 0,
+    val over1msUnexplained: Int = 0,
+    val safepoints: Int = -1,
+    val longestSafepointMicros: Double = Double.NaN,
+    val longestSafepoint: String = "",
+    val safepointMicrosAtMax: Double = Double.NaN,
+    val stealTicksAtMax: Long = -1L,
+    val stealShare: Double = Double.NaN,
 )
 
 /**
@@ -88,6 +107,15 @@ data class GrainLatencyResult(
  * ([Thread.onSpinWait]) watching for the next sample before it blocks in the port's read — the experiment
  * behind the choice in docs/performance.md, not something the app's USB port can do (Android's bulk
  * transfer cannot poll).
+ *
+ * [readerSetup] runs on the reader thread before its first read (the [SensorReader]'s `threadSetup`, as the app
+ * raises its reader's priority there) with the thread's Linux id (-1 where there is no /proc/thread-self).
+ *
+ * Slow grains (over 1 ms) are attributed without touching the reader's path: HotSpot's safepoint log is on for
+ * the run ([SafepointLogging]); the bench thread reads `/proc/stat` (per-CPU steal) at the run's start and end,
+ * at most every 10 ms between samples, and after each slow grain, with the reader's CPU (its stat's field 39):
+ * the steal counter's move from the last reading before the grain to the one after it. All of it between
+ * samples, into preallocated arrays.
  */
 class GrainLatency(
     private val samples: Int,
@@ -95,6 +123,7 @@ class GrainLatency(
     private val route: Route = Route.ENGINE,
     private val intervalMicros: Int = 0,
     private val readerSpinMicros: Int = 0,
+    private val readerSetup: (tid: Long) -> Unit = {},
 ) {
     /** What runs between the decoded frame and the command. */
     enum class Route(val label: String) {
@@ -142,7 +171,21 @@ class GrainLatency(
             is EnginePath -> liveDecoderFor(SensorProtocol.FRAMED, side)
             is ArithmeticPath -> decoderFor(SensorProtocol.FRAMED, side)
         }
-        val reader = SensorReader(port, decoder, { _, cause -> failure = cause }, bufferSize = READ_BYTES)
+        val reader = SensorReader(port, decoder, { _, cause -> failure = cause }, bufferSize = READ_BYTES, threadSetup = {
+            // Before the first read: this thread's /proc directory ("/proc/PID/task/TID"), then the caller's set-up.
+            val task = runCatching { File("/proc/thread-self").canonicalPath }.getOrNull()
+            side.taskDir = task
+            side.schedstat = task?.let { "$it/schedstat" }
+            readerSetup(task?.substringAfterLast('/')?.toLongOrNull() ?: -1L)
+        })
+        // Slow-grain attribution: steal per CPU before and after each slow grain, the reader's CPU, the safepoints.
+        val steal = StealReader()
+        val slow = IntArray(MAX_SLOW_GRAINS)
+        val slowStealTicks = LongArray(MAX_SLOW_GRAINS) { -1L }
+        var slowCount = 0
+        var taskStat: FileChannel? = null
+        val safepointLog = SafepointLogging.start()
+        steal.read()
         reader.start("hapticon-bench-grain-latency")
         var measuredFrom = 0L
         var measuredTo = 0L
@@ -155,7 +198,10 @@ class GrainLatency(
                     due += intervalMicros * 1_000L
                     while (System.nanoTime() < due) LockSupport.parkNanos(due - System.nanoTime())
                 }
-                if (i == warmupSamples) measuredFrom = System.nanoTime()
+                if (i == warmupSamples) {
+                    steal.markRunStart()
+                    measuredFrom = System.nanoTime()
+                }
                 writtenAt[i] = System.nanoTime()
                 port.enqueue(frames.samples[i])
                 awaitHandled(handled, i + 1, reader) { failure }
@@ -165,9 +211,21 @@ class GrainLatency(
                     waitedAfter[i] = runQueue.getLong(WAITED_AT)
                 }
                 collectionsAfter[i] = collectors.sumOf { it.collectionCount }
+                // After the latency was taken: a slow grain gets the steal on the reader's CPU since the last reading.
+                if (taskStat == null) taskStat = side.taskDir?.let { openOrNull("$it/stat") }
+                if (i >= warmupSamples && latencies[i] > ONE_MS_NANOS && slowCount < MAX_SLOW_GRAINS) {
+                    val cpu = taskStat?.let { steal.cpuOf(it) } ?: -1
+                    slow[slowCount] = i
+                    slowStealTicks[slowCount++] = steal.movedSince(cpu)
+                } else if (System.nanoTime() - steal.readAt >= STEAL_REFRESH_NANOS) {
+                    steal.read()
+                }
             }
             measuredTo = System.nanoTime()
+            steal.markRunEnd()
         } finally {
+            taskStat?.close()
+            safepointLog?.close()
             schedstat?.close()
             reader.stop()
             port.close()
@@ -186,6 +244,13 @@ class GrainLatency(
         val ranFrom = if (warmupSamples > 0) ranAfter[warmupSamples - 1] else -1L
         val ran = if (ranFrom < 0 || ranAfter[total - 1] < 0) Double.NaN else (ranAfter[total - 1] - ranFrom).toDouble()
         val over = grainIndices.filter { latencies[it] > ONE_MS_NANOS }
+        val safepoints = safepointLog?.finish()?.filter { it.endNanos > measuredFrom && it.startNanos < measuredTo }
+        fun safepointNanos(i: Int): Long = safepoints?.let { SafepointLog.overlapNanos(it, writtenAt[i], writtenAt[i] + latencies[i]) } ?: -1L
+        val stealOf = (0 until slowCount).associate { slow[it] to slowStealTicks[it] }
+        val causes = SlowGrainCauses.of(
+            over.map { i -> SlowGrain(latencies[i], waited.getValue(i), collected.getValue(i), safepointNanos(i), stealOf[i] ?: -1L) },
+            ONE_MS_NANOS,
+        )
         return GrainLatencyResult(
             samples, measured.size, rank(measured, 0.50) / 1e3, rank(measured, 0.99) / 1e3, measured.last() / 1e3,
             handlerBytesPerSample = side.handlerBytes() / samples,
@@ -194,10 +259,20 @@ class GrainLatency(
             gcAtMax = collected.getValue(worst),
             maxWithoutRunQueueMicros = grainIndices.maxOf { latencies[it] - waited.getValue(it) } / 1e3,
             over1ms = over.size,
-            over1msByRunQueue = over.count { latencies[it] - waited.getValue(it) <= ONE_MS_NANOS },
-            over1msWithGc = over.count { collected.getValue(it) },
+            over1msByRunQueue = causes.runQueue,
+            over1msWithGc = causes.gc,
             readerCpuMicrosPerSample = ran / 1e3 / samples,
             readerCpuShare = ran / (measuredTo - measuredFrom).coerceAtLeast(1L),
+            over1msBySafepoint = causes.safepoint,
+            over1msBySteal = causes.steal,
+            over1msByWaitAndSafepoint = causes.waitAndSafepoint,
+            over1msUnexplained = causes.unexplained,
+            safepoints = safepoints?.size ?: -1,
+            longestSafepointMicros = safepoints?.maxOfOrNull { it.endNanos - it.startNanos }?.div(1e3) ?: Double.NaN,
+            longestSafepoint = safepoints?.maxByOrNull { it.endNanos - it.startNanos }?.operation.orEmpty(),
+            safepointMicrosAtMax = if (safepoints == null) Double.NaN else safepointNanos(worst) / 1e3,
+            stealTicksAtMax = stealOf[worst] ?: -1L,
+            stealShare = steal.runShare(),
         )
     }
 
@@ -237,13 +312,13 @@ class GrainLatency(
         val fullScale = intArrayOf(SafetyLimits.SERVO_MAX)
         var index = 0
 
-        /** This reader thread's schedstat file (Linux), found on the first sample, a warm-up one; null elsewhere. */
+        /** This reader thread's schedstat file and /proc directory (Linux), found before its first read; null elsewhere. */
         @Volatile var schedstat: String? = null
+        @Volatile var taskDir: String? = null
 
         /** Called once per decoded sample on the reader thread: [decide] returns the command's length, 0 for no grain. */
         inline fun measure(decide: () -> Int) {
             val i = index++
-            if (i == 0) schedstat = runCatching { File("/proc/thread-self").canonicalPath + "/schedstat" }.getOrNull()
             val entered = threadBytes()
             if (i == warmupSamples) bytesAtWarmupEnd = entered
             val length = decide()
@@ -355,6 +430,79 @@ class GrainLatency(
         }
     }
 
+    /**
+     * `/proc/stat` read into preallocated buffers ([ProcStat.parse]): [read] keeps the newest per-CPU steal and
+     * [readAt] its time; [movedSince] reads again and gives a CPU's steal ticks since the reading before; the run's
+     * first and last readings give [runShare]. Nothing is allocated per reading; unreadable (off Linux) it says -1/NaN.
+     */
+    private class StealReader {
+        private val channel: FileChannel? = runCatching { FileChannel.open(Path.of("/proc/stat")) }.getOrNull()
+        private val bytes = ByteArray(PROC_STAT_BYTES)
+        private val buffer = ByteBuffer.wrap(bytes)
+        private val aggregate = LongArray(ProcStat.CPU_FIELDS)
+        private var steal = LongArray(MAX_CPUS) { -1L }
+        private var before = LongArray(MAX_CPUS) { -1L }
+        private val atStart = LongArray(ProcStat.CPU_FIELDS)
+        private val atEnd = LongArray(ProcStat.CPU_FIELDS)
+        private val taskBytes = ByteArray(TASK_STAT_BYTES)
+        private val taskBuffer = ByteBuffer.wrap(taskBytes)
+        private var ok = false
+        var readAt = 0L
+            private set
+
+        fun read(): Boolean {
+            val c = channel ?: return false
+            buffer.clear()
+            var n = 0
+            while (buffer.hasRemaining()) {
+                val r = c.read(buffer, n.toLong())
+                if (r <= 0) break
+                n += r
+            }
+            readAt = System.nanoTime()
+            ok = ProcStat.parse(bytes, n, aggregate, steal) > 0
+            return ok
+        }
+
+        /** The CPU the task whose stat [task] is last ran on, or -1. */
+        fun cpuOf(task: FileChannel): Int {
+            taskBuffer.clear()
+            val n = runCatching { task.read(taskBuffer, 0) }.getOrDefault(-1)
+            return if (n <= 0) -1 else ProcStat.processor(taskBytes, n)
+        }
+
+        /** Steal ticks of [cpu] from the previous reading to a new one (-1 unknown); the new one becomes the previous. */
+        fun movedSince(cpu: Int): Long {
+            val swap = before
+            before = steal
+            steal = swap
+            if (!ok) return -1L.also { read() }
+            val moved = if (read() && cpu in 0 until MAX_CPUS && before[cpu] >= 0 && steal[cpu] >= 0) steal[cpu] - before[cpu] else -1L
+            return moved
+        }
+
+        fun markRunStart() { if (read()) aggregate.copyInto(atStart) else atStart.fill(-1L) }
+
+        fun markRunEnd() { if (read()) aggregate.copyInto(atEnd) else atEnd.fill(-1L) }
+
+        /** Steal over all CPUs' time between [markRunStart] and [markRunEnd] (0..1), NaN if unread. */
+        fun runShare(): Double {
+            if (atStart[0] < 0 || atEnd[0] < 0) return Double.NaN
+            var total = 0L
+            for (k in 0 until ProcStat.CPU_FIELDS) if (k != GUEST && k != GUEST_NICE) total += atEnd[k] - atStart[k]
+            return if (total <= 0) Double.NaN else (atEnd[ProcStat.STEAL] - atStart[ProcStat.STEAL]).toDouble() / total
+        }
+
+        private companion object {
+            const val PROC_STAT_BYTES = 65_536
+            const val TASK_STAT_BYTES = 1_024
+            const val MAX_CPUS = 1_024
+            // Guest time is already counted in user and nice (proc(5)).
+            const val GUEST = 8
+            const val GUEST_NICE = 9
+        }
+    }
+
     private fun openOrNull(path: String): FileChannel? = runCatching { FileChannel.open(Path.of(path)) }.getOrNull()
 
     /**
@@ -397,5 +545,7 @@ class GrainLatency(
         const val RUN_QUEUE_BYTES = 128
         const val PARK_SLICE_NANOS = 10_000_000L
         const val ONE_MS_NANOS = 1_000_000L
+        const val MAX_SLOW_GRAINS = 4_096
+        const val STEAL_REFRESH_NANOS = 10_000_000L
     }
 }

@@ -225,6 +225,41 @@ class BenchmarkTest {
     }
 
     @Test
+    fun benchCommand_grainBadCpuLatencyOrNice_exitsTwoWithOneLine() {
+        for ((args, said) in listOf(
+            listOf("--reader-nice", "25") to "hapticon: --reader-nice must be in -20..19, got 25",
+            listOf("--reader-nice", "-21") to "hapticon: --reader-nice must be in -20..19, got -21",
+            listOf("--cpu-latency-us", "-1") to "hapticon: --cpu-latency-us must be in 0..100000, got -1",
+            listOf("--cpu-latency-us", "abc") to "hapticon: --cpu-latency-us must be a whole number, got 'abc'",
+        )) {
+            val result = cli("bench", "--grain", *args.toTypedArray())
+            assertEquals(result.toString(), 2, result.exitCode)
+            assertEquals(listOf(said), result.stderrLines)
+        }
+        val alone = cli("bench", "--cpu-latency-us", "0")
+        assertEquals(listOf("hapticon: --cpu-latency-us goes with --grain"), alone.stderrLines)
+    }
+
+    @Test
+    fun benchCommand_grainCpuLatencyAndReaderNice_sayWhatWasGrantedOnEachRunsLine() {
+        // Nice 5 lowers the reader's priority, which Linux lets any user do to their own thread: always granted.
+        // The CPU latency request needs root (the node is 0600): granted or refused, the runs go on.
+        val root = java.nio.file.Files.isWritable(CpuLatencyRequest.DEVICE)
+        val result = cli("bench", "--grain", "--quick", "--runs", "1", "--cpu-latency-us", "100", "--reader-nice", "5")
+        assertEquals(result.toString(), 0, result.exitCode)
+        val lines = result.stdout.trimEnd().lines()
+        assertEquals(result.stdout, 3, lines.size)
+        if (root) {
+            assertTrue(lines[1], lines[1].startsWith("cpu latency 100 µs granted (limit in force "))
+            assertTrue(lines[2], "; cpu latency 100 µs held; reader nice 5 granted): p50 " in lines[2])
+        } else {
+            assertTrue(lines[1], lines[1].startsWith("cpu latency 100 µs refused (") && lines[1].endsWith("; runs go on without it"))
+            assertTrue(lines[2], "; cpu latency refused; reader nice 5 granted): p50 " in lines[2])
+        }
+        assertTrue(lines[2], "(46 grains)" in lines[2] && " unexplained); " in lines[2])
+    }
+
+    @Test
     fun benchCommand_unknownOption_exitsTwo() {
         val result = cli("bench", "--fast")
         assertEquals(2, result.exitCode)

@@ -43,6 +43,27 @@ class GrainLatencyTest {
     }
 
     @Test
+    fun run_readerSetup_runsOnTheReaderThreadWithItsLinuxId() {
+        assumeTrue("thread ids come from Linux's /proc/thread-self", java.io.File("/proc/thread-self").exists())
+        var seen: Pair<String, Long>? = null
+        val result = GrainLatency(samples = 2_000, warmupSamples = 0, readerSetup = { tid -> seen = Thread.currentThread().name to tid }).run()
+        assertEquals(46, result.grains)
+        val (name, tid) = seen!!
+        assertEquals("hapticon-bench-grain-latency", name)
+        assertTrue("tid $tid", tid > 0 && tid != ProcessHandle.current().pid())
+    }
+
+    @Test
+    fun run_onLinuxHotSpot_sortsSlowGrainsByCauseAndLogsSafepoints() {
+        assumeTrue("steal and the reader's CPU are read from /proc", java.io.File("/proc/stat").exists())
+        val result = GrainLatency(samples = 2_000, warmupSamples = 2_000).run()
+        // The safepoint log was on (HotSpot's VM.log), and the run's steal share was read.
+        assertTrue(result.toString(), result.safepoints >= 0 && result.stealShare in 0.0..1.0)
+        val causes = result.over1msByRunQueue + result.over1msBySafepoint + result.over1msByWaitAndSafepoint + result.over1msWithGc + result.over1msBySteal
+        assertTrue(result.toString(), result.over1msUnexplained <= result.over1ms && (result.over1ms == 0 || causes + result.over1msUnexplained >= result.over1ms))
+    }
+
+    @Test
     fun run_bothRoutes_seeTheSameGrainsOfOnePressCycle() {
         // GrainEngine (counts -> FSR force from the channel's RAW unit and the 12-bit device info) decides as the
         // re-created arithmetic does: the same 46 grains.

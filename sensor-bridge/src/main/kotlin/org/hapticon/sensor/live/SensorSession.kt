@@ -69,12 +69,16 @@ public enum class StopCause {
  *
  * When the stream stops (unplug, end, failure, [disconnect]) everything decoded so far stays until
  * the next [connect]. Per frame nothing is allocated here; the UI copies a [snapshot] at its own rate.
+ *
+ * [readerThreadSetup] runs first on each stream's reading thread ([SensorReader]'s `threadSetup`), before its
+ * first read: the app raises that thread to urgent-audio priority there, since the grains are decided on it.
  */
 public class SensorSession(
     private val usb: UsbDevices,
     private val clock: () -> Long = System::nanoTime,
     public val history: ChannelHistory = ChannelHistory(),
     private val commands: CommandWriter = CommandWriter(),
+    private val readerThreadSetup: () -> Unit = {},
 ) {
     private val connection = MutableStateFlow<ConnectionState>(ConnectionState.Idle)
     private val listeners = CopyOnWriteArrayList<FrameListener>()
@@ -189,7 +193,7 @@ public class SensorSession(
         stopRequested = false
         commands.reset()
         val decoder = CountingDecoder(LiveDecoder(protocol, commands::onAck, ::onFrame))
-        val newReader = SensorReader(port, decoder, { reason, cause -> onStopped(port, device, protocol, reason, cause) })
+        val newReader = SensorReader(port, decoder, { reason, cause -> onStopped(port, device, protocol, reason, cause) }, threadSetup = readerThreadSetup)
         this.port = port
         reader = newReader
         connection.value = ConnectionState.Streaming(device, protocol, baudRate)

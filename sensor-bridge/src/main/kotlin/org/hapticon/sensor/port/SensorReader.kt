@@ -18,6 +18,11 @@ import java.io.IOException
  * (the command line, tests). A reader runs once.
  *
  * @param bufferSize bytes asked for per read: small for latency, large for throughput.
+ * @param threadSetup runs first on the thread that reads (the reader's own thread with [start], the caller's
+ *   with [run]), before the first read: where a platform sets the thread up for its job, e.g. the app raises
+ *   it to Android's urgent-audio priority, since this thread decides the vibration grains as an audio
+ *   thread renders audio (docs/performance.md). Pure Kotlin here; if it throws, the loop ends at once as
+ *   [StopReason.FAILED] with that cause, before any read.
  * @throws IllegalArgumentException if [readTimeoutMillis] or [bufferSize] is not positive.
  */
 public class SensorReader(
@@ -26,6 +31,7 @@ public class SensorReader(
     private val listener: Listener,
     private val readTimeoutMillis: Int = DEFAULT_READ_TIMEOUT_MILLIS,
     bufferSize: Int = DEFAULT_BUFFER_SIZE,
+    private val threadSetup: () -> Unit = {},
 ) {
     /** Why the read loop ended. */
     public enum class StopReason {
@@ -121,6 +127,7 @@ public class SensorReader(
             var reason = StopReason.STOPPED
             var cause: Throwable? = null
             try {
+                threadSetup()
                 while (!stopRequested) {
                     val n = port.read(buffer, 0, buffer.size, readTimeoutMillis)
                     if (n < 0) {

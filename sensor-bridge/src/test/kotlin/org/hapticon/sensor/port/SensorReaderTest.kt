@@ -124,6 +124,32 @@ class SensorReaderTest {
     }
 
     @Test
+    fun start_threadSetup_runsOnTheReaderThreadBeforeTheFirstRead() {
+        val port = FakeSerialPort().enqueue(RecordedStreams.bytes(RecordedStreams.FRAMED_CLEAN).copyOf(58)).enqueueEnd()
+        val setupSaw = Collections.synchronizedList(ArrayList<String>())
+        val reader = SensorReader(port, FramedDecoder(frames), { reason, _ -> log += "stopped $reason on ${Thread.currentThread().name}" }, threadSetup = {
+            setupSaw += "setup on ${Thread.currentThread().name} after ${port.readCount} reads"
+            log += "setup"
+        })
+        reader.start(threadName = "test-reader")
+        assertTrue("did not stop", reader.awaitStop(60_000))
+        assertEquals(listOf("setup on test-reader after 0 reads"), setupSaw)
+        // 58 bytes: 1 + 35 + one 22-byte sample (as in start_unplugWhileWaiting); the setup came before the first frame.
+        assertEquals(listOf("setup", "sample 1", "stopped END_OF_STREAM on test-reader"), log)
+    }
+
+    @Test
+    fun run_threadSetupThrows_failsBeforeAnyRead() {
+        val port = FakeSerialPort().enqueue(RecordedStreams.bytes(RecordedStreams.FRAMED_CLEAN))
+        val refused = SecurityException("priority refused")
+        val reason = SensorReader(port, FramedDecoder(frames), stopped, threadSetup = { throw refused }).run()
+        assertEquals(SensorReader.StopReason.FAILED, reason)
+        assertSame(refused, stopCause)
+        assertEquals(0, port.readCount)
+        assertEquals(listOf("stopped FAILED"), log)
+    }
+
+    @Test
     fun awaitStop_neverStarted_isTrueAtOnce() {
         assertTrue(SensorReader(FakeSerialPort(), FramedDecoder(frames), stopped).awaitStop(0))
     }
