@@ -9,14 +9,16 @@ import kotlinx.serialization.json.JsonElement
 import kotlinx.serialization.json.JsonNull
 import kotlinx.serialization.json.JsonObject
 import kotlinx.serialization.json.JsonPrimitive
-import kotlinx.serialization.json.doubleOrNull
+import org.hapticon.core.HapticIcon
 import org.hapticon.core.IconValidationException
+import org.hapticon.core.io.HapticIconSerializer
 import org.hapticon.core.io.IconJson
 import org.hapticon.core.io.JsonException
 import org.hapticon.core.io.JsonKind
 import org.hapticon.core.io.SchemaJson
 import org.hapticon.core.io.SchemaReport
 import org.hapticon.core.io.ShortDouble
+import org.hapticon.core.io.numberOrNull
 import org.hapticon.core.pattern.EnvelopeEffectInfo
 import org.hapticon.core.pattern.HapticPattern
 import org.hapticon.core.pattern.PatternException
@@ -74,10 +76,10 @@ public object MessageCodec {
 
     /** [message] as UTF-8 JSON. Does not throw: every valid message is encodable and within the payload limit. */
     public fun encode(message: ChatMessage): ByteArray = encode(
-        MessageDocument.serializer(),
+        MESSAGE_WRITER,
         MessageDocument(
             MESSAGE_SCHEMA, if (message.pattern != null) PATTERN_VERSION else VERSION, message.id, message.sender, message.sentAtMillis,
-            message.text, message.sticker, message.icon?.let(IconJson::toJsonElement), message.pattern?.let(PatternJson::toJsonElement),
+            message.text, message.sticker, message.icon, message.pattern?.let(PatternJson::toJsonElement),
         ),
     )
 
@@ -117,7 +119,7 @@ public object MessageCodec {
     public fun decodeInbox(payload: ByteArray): Decoded<InboxPayload> = decodeWith(payload) { json ->
         val (schema, version) = schema(json, MESSAGE_SCHEMA, RECEIPT_SCHEMA, HAND_SCHEMA)
         when (schema) {
-            MESSAGE_SCHEMA -> decodeMessage(SchemaJson.decode(MessageDocument.serializer(), json, WireReport), version)
+            MESSAGE_SCHEMA -> decodeMessage(SchemaJson.decode(MESSAGE_READER, json, WireReport), version)
             HAND_SCHEMA -> SchemaJson.decode(HandDocument.serializer(), json, WireReport).let { HandPose(it.from, it.thumb, it.middle, it.at) }
             else -> decodeReceipt(SchemaJson.decode(ReceiptDocument.serializer(), json, WireReport))
         }
@@ -167,7 +169,7 @@ public object MessageCodec {
         return EnvelopeEffectInfo(points.toInt(), min, max, total)
     }
 
-    private fun decodeMessage(doc: MessageDocument, version: Int): ChatMessage {
+    private fun decodeMessage(doc: MessageDocument<JsonElement>, version: Int): ChatMessage {
         val icon = doc.icon?.takeUnless { it is JsonNull }?.let { value ->
             try {
                 IconJson.fromJsonElement(value)
@@ -225,7 +227,7 @@ public object MessageCodec {
         }
         val version = json["version"]
         val readable = if (name == MESSAGE_SCHEMA) VERSION..PATTERN_VERSION else VERSION..VERSION
-        val number = (version as? JsonPrimitive)?.takeUnless { it.isString || it is JsonNull }?.doubleOrNull
+        val number = (version as? JsonPrimitive)?.takeUnless { it is JsonNull }?.numberOrNull()
         if (number == null || number != Math.rint(number) || number < readable.first || number > readable.last) {
             val versions = if (readable.first == readable.last) "version ${readable.first}" else "versions ${readable.first}–${readable.last}"
             throw InvalidMessageException(
@@ -262,12 +264,22 @@ public object MessageCodec {
         SchemaJson.format.encodeToString(serializer, document).toByteArray(Charsets.UTF_8)
 
     private val RENDERER_FORM = Regex("[a-z0-9-]{1,32}")
+
+    // The two forms of the one message type, made once (a generic class's serializer is built per call otherwise).
+    // Written: the icon goes straight from its document to the text (HapticIconSerializer); the tree IconJson.toJsonElement
+    // built first cost about a quarter of an encode (docs/json.md, "Speed of the chat codec"). Read: the icon is a tree,
+    // so that IconJson checks it with its own wording (icon.attack: …) after the message's members are checked.
+    private val MESSAGE_WRITER = MessageDocument.serializer(HapticIconSerializer)
+    private val MESSAGE_READER = MessageDocument.serializer(JsonElement.serializer())
 }
 
-/** A chat message on the wire (`hapticon.message`, versions 1 and 2); members in wire order. */
+/**
+ * A chat message on the wire (`hapticon.message`, versions 1 and 2); members in wire order. [I] is how the icon is
+ * held: a [HapticIcon] when written, a [JsonElement] when read (see `MESSAGE_WRITER`/`MESSAGE_READER`).
+ */
 @OptIn(ExperimentalSerializationApi::class)
 @Serializable
-internal class MessageDocument(
+internal class MessageDocument<I>(
     val schema: String,
     val version: Int,
     val id: String,
@@ -276,7 +288,7 @@ internal class MessageDocument(
     val text: String,
     val sticker: String? = null,
     // Icon and pattern keep their own formats' checks and wording (IconJson, PatternJson), so they are read as trees.
-    val icon: JsonElement? = null,
+    val icon: I? = null,
     // Absent from version 1 messages, which is what builds before patterns expect.
     @EncodeDefault(EncodeDefault.Mode.NEVER) val pattern: JsonElement? = null,
 )
@@ -325,7 +337,7 @@ internal object WireReport : SchemaReport {
     override fun wrongType(path: String, member: String, expected: JsonKind, value: JsonElement?): Nothing {
         val field = if (path.isEmpty()) member else "$path.$member"
         if (value == null) throw InvalidMessageException(RejectionReason.MISSING_FIELD, field, "missing")
-        val number = (value as? JsonPrimitive)?.takeUnless { it.isString || it is JsonNull }?.doubleOrNull
+        val number = (value as? JsonPrimitive)?.takeUnless { it is JsonNull }?.numberOrNull()
         val wanted = when (expected) {
             JsonKind.STRING -> "a string"
             JsonKind.BOOLEAN -> "true or false"

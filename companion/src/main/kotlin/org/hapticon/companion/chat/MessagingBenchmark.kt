@@ -29,7 +29,7 @@ object MessagingBenchmark {
      * How much work to do.
      *
      * @property codecMessages messages encoded and decoded per measured run.
-     * @property codecRuns measured runs (after as many warm-up runs); the median counts.
+     * @property codecRuns measured runs (after as many warm-up runs); the median counts, and min and max are printed beside it.
      * @property latencyWarmup messages sent before latency is measured.
      * @property latencySamples messages whose latency is measured, one at a time.
      */
@@ -43,19 +43,37 @@ object MessagingBenchmark {
     /**
      * The figures.
      *
-     * @property codecPerSecond median encode + decode throughput, messages per second.
+     * @property codecRates encode + decode throughput of each measured run, messages per second (at least one).
      * @property encodedBytes size of the benchmark message (text and the knock icon).
      * @property latencyP50Micros median send-to-listener latency in µs.
      * @property latencyP99Micros 99th percentile of that latency in µs.
      * @property latencySamples how many latencies were measured.
+     * @property loadAverage the 1, 5 and 15 minute load averages when the codec runs started (`uptime`'s figures), or
+     *   "unknown"; on a shared machine the codec's figure moves with it, so it is printed beside it.
      */
     class Result(
-        val codecPerSecond: Double,
+        val codecRates: List<Double>,
         val encodedBytes: Int,
         val latencyP50Micros: Double,
         val latencyP99Micros: Double,
         val latencySamples: Int,
+        val loadAverage: String,
     ) {
+        init {
+            require(codecRates.isNotEmpty()) { "at least one codec run" }
+        }
+
+        private val sorted = codecRates.sorted()
+
+        /** Median encode + decode throughput over the runs, messages per second; what the target is checked against. */
+        val codecPerSecond: Double get() = sorted[sorted.size / 2]
+
+        /** Slowest run, messages per second. */
+        val codecMinPerSecond: Double get() = sorted.first()
+
+        /** Fastest run, messages per second. */
+        val codecMaxPerSecond: Double get() = sorted.last()
+
         /** Whether the codec meets [CODEC_TARGET_PER_SECOND]. */
         val codecTargetMet: Boolean get() = codecPerSecond >= CODEC_TARGET_PER_SECOND
     }
@@ -65,17 +83,24 @@ object MessagingBenchmark {
         progress("messaging codec: ${config.codecRuns} runs of ${config.codecMessages} messages")
         val message = ChatMessage.compose("alice", "The quick brown fox jumps over the lazy dog", icon = HapticIcon.KNOCK)
         val encodedBytes = MessageCodec.encode(message).size
+        val load = loadAverage()
         repeat(config.codecRuns) { codecRun(message, config.codecMessages) } // warm-up: let the JIT compile
-        val rates = List(config.codecRuns) { config.codecMessages / codecRun(message, config.codecMessages) }.sorted()
+        val rates = List(config.codecRuns) { config.codecMessages / codecRun(message, config.codecMessages) }
         progress("messaging latency: ${config.latencySamples} messages through the embedded broker")
         val latencies = latencyMicros(config).sorted()
-        return Result(rates[rates.size / 2], encodedBytes, percentile(latencies, 0.50), percentile(latencies, 0.99), latencies.size)
+        return Result(rates, encodedBytes, percentile(latencies, 0.50), percentile(latencies, 0.99), latencies.size, load)
     }
 
     /** The section `hapticon bench --messaging` prints. */
     fun table(result: Result): String = buildString {
         appendLine("messaging (one core for the codec; loopback through the embedded broker for latency)")
         appendLine(String.format(Locale.ROOT, "  encode + decode      %12.0f messages/s  (%d-byte message with text and knock icon)", result.codecPerSecond, result.encodedBytes))
+        appendLine(
+            String.format(
+                Locale.ROOT, "  codec runs           min %.0f, median %.0f, max %.0f messages/s over %d runs; load %s at start",
+                result.codecMinPerSecond, result.codecPerSecond, result.codecMaxPerSecond, result.codecRates.size, result.loadAverage,
+            ),
+        )
         appendLine(String.format(Locale.ROOT, "  send → receive p50   %12.1f µs", result.latencyP50Micros))
         appendLine(String.format(Locale.ROOT, "  send → receive p99   %12.1f µs  (%d messages, one at a time, QoS 1)", result.latencyP99Micros, result.latencySamples))
         append(String.format(Locale.ROOT, "  target: codec >= %.0f messages/s: %s", CODEC_TARGET_PER_SECOND, if (result.codecTargetMet) "met" else "NOT MET"))
@@ -86,6 +111,10 @@ object MessagingBenchmark {
         JsonObject(
             linkedMapOf(
                 "codecMessagesPerSecond" to shortNumber(Math.round(result.codecPerSecond).toDouble()),
+                "codecMinPerSecond" to shortNumber(Math.round(result.codecMinPerSecond).toDouble()),
+                "codecMaxPerSecond" to shortNumber(Math.round(result.codecMaxPerSecond).toDouble()),
+                "codecRuns" to shortNumber(result.codecRates.size),
+                "loadAverage" to JsonPrimitive(result.loadAverage),
                 "encodedBytes" to shortNumber(result.encodedBytes),
                 "latencyP50Micros" to shortNumber(result.latencyP50Micros),
                 "latencyP99Micros" to shortNumber(result.latencyP99Micros),
@@ -136,6 +165,10 @@ object MessagingBenchmark {
             store.deleteRecursively()
         }
     }
+
+    // As BenchCommand's --grain runs print it (1 / 5 / 15 minutes).
+    private fun loadAverage(): String =
+        runCatching { java.io.File("/proc/loadavg").readText().split(' ').take(3).joinToString(" / ") }.getOrDefault("unknown")
 
     private fun percentile(sorted: List<Double>, p: Double): Double = sorted[((sorted.size - 1) * p).let(Math::round).toInt()]
 }

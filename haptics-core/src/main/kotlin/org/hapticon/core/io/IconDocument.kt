@@ -2,14 +2,17 @@ package org.hapticon.core.io
 
 import kotlinx.serialization.KSerializer
 import kotlinx.serialization.Serializable
+import kotlinx.serialization.SerializationException
 import kotlinx.serialization.descriptors.PrimitiveKind
 import kotlinx.serialization.descriptors.PrimitiveSerialDescriptor
 import kotlinx.serialization.descriptors.SerialDescriptor
 import kotlinx.serialization.encoding.Decoder
 import kotlinx.serialization.encoding.Encoder
+import kotlinx.serialization.json.JsonDecoder
 import kotlinx.serialization.json.JsonElement
 import kotlinx.serialization.json.JsonPrimitive
 import kotlinx.serialization.json.doubleOrNull
+import org.hapticon.core.HapticIcon
 import org.hapticon.core.IconValidationException
 
 /** An icon, schema `hapticon.icon` ([IconJson]); members in schema order. */
@@ -26,6 +29,27 @@ internal class IconDocument(
     @Serializable(with = ShortDouble::class) val period: Double = 0.0,
     val count: Long = 1,
 )
+
+/**
+ * A [HapticIcon] as its `hapticon.icon` document, for formats that embed an icon (the chat message): written
+ * straight to the output, member by member as [IconJson.encode] writes it, instead of building the tree of
+ * [IconJson.toJsonElement] first and writing that (about a quarter of a chat message's encoding, docs/json.md
+ * "Speed of the chat codec"). Read as a tree and checked by [IconJson.fromJsonElement], with its wording, so it
+ * reads JSON only; an invalid icon throws [IconValidationException] (kotlinx's string decoder hands it on as the
+ * cause of a `JsonDecodingException` naming the path; the chat codec reads its icon from its own tree instead).
+ */
+public object HapticIconSerializer : KSerializer<HapticIcon> {
+    override val descriptor: SerialDescriptor get() = IconDocument.serializer().descriptor
+
+    override fun serialize(encoder: Encoder, value: HapticIcon) {
+        encoder.encodeSerializableValue(IconDocument.serializer(), IconJson.document(value))
+    }
+
+    override fun deserialize(decoder: Decoder): HapticIcon {
+        val json = decoder as? JsonDecoder ?: throw SerializationException("a hapticon.icon is read from JSON only")
+        return IconJson.fromJsonElement(json.decodeJsonElement())
+    }
+}
 
 /**
  * A double written as an integer when it is one within ±2^53 (`57`, not `57.0`), as icons have always been

@@ -76,7 +76,7 @@ public object IconJson {
         }
     }
 
-    private fun document(icon: HapticIcon) = IconDocument(
+    internal fun document(icon: HapticIcon): IconDocument = IconDocument(
         SCHEMA, VERSION.toLong(), icon.name, icon.attack, icon.sustain, icon.level, icon.release, icon.note, icon.period, icon.count.toLong(),
     )
 

@@ -1,10 +1,12 @@
 package org.hapticon.core.io
 
+import kotlinx.serialization.SerializationException
 import kotlinx.serialization.json.JsonObject
 import kotlinx.serialization.json.JsonPrimitive
 import org.hapticon.core.HapticIcon
 import org.hapticon.core.IconValidationException
 import org.junit.Assert.assertEquals
+import org.junit.Assert.assertThrows
 import org.junit.Assert.fail
 import org.junit.Test
 
@@ -227,5 +229,23 @@ class IconJsonTest {
         } catch (e: IconValidationException) {
             assertEquals("icons[1].icon: expected an object, got 3", e.message)
         }
+    }
+
+    @Test
+    fun hapticIconSerializer_writesWhatEncodeWrites_andReadsWithIconJsonsWording() {
+        val text = SchemaJson.format.encodeToString(HapticIconSerializer, HapticIcon.KNOCK)
+        assertEquals(
+            """{"schema":"hapticon.icon","version":1,"name":"knock","attack":0.005,"sustain":0.01,"level":0.5,"release":0.005,"note":57,"period":0.27,"count":3}""",
+            text,
+        )
+        assertEquals(IconJson.encode(HapticIcon.KNOCK), text)
+        assertEquals(HapticIcon.KNOCK, SchemaJson.format.decodeFromString(HapticIconSerializer, text))
+        // kotlinx 1.12's string decoder wraps what a serializer throws (with the path); the cause is IconJson's own.
+        val wrapped = assertThrows(SerializationException::class.java) {
+            SchemaJson.format.decodeFromString(HapticIconSerializer, text.replace("\"attack\":0.005", "\"attack\":\"x\""))
+        }
+        val e = wrapped.cause as IconValidationException
+        assertEquals("attack", e.field)
+        assertEquals("attack: expected a number, got \"x\"", e.message)
     }
 }

@@ -7,6 +7,7 @@ import kotlinx.serialization.json.JsonPrimitive
 import kotlinx.serialization.json.double
 import kotlinx.serialization.json.jsonPrimitive
 import org.junit.Assert.assertEquals
+import org.junit.Assert.assertThrows
 import org.junit.Assert.assertFalse
 import org.junit.Assert.assertTrue
 import org.junit.Assert.fail
@@ -273,6 +274,20 @@ class JsonTest {
     @Test
     fun decodeUtf8_validBytes_decode() {
         assertEquals(JsonObject(mapOf("é" to JsonPrimitive("😀"))), Json.decodeUtf8("{\"é\":\"😀\"}".toByteArray()))
+    }
+
+    @Test
+    fun decodeUtf8_replacementCharacterInTheInput_isKept() {
+        // U+FFFD is also what lenient decoding puts in place of malformed bytes; written in the input, it is text.
+        assertEquals(JsonPrimitive("a\uFFFDb"), Json.decodeUtf8("\"a\uFFFDb\"".toByteArray()))
+    }
+
+    @Test
+    fun decodeUtf8_malformedSequenceAfterAReplacementCharacter_isRejectedAtItsByteOffset() {
+        val bytes = "\"\uFFFD".toByteArray() + byteArrayOf(0xE2.toByte(), 0x28, '"'.code.toByte())
+        val e = assertThrows(JsonException::class.java) { Json.decodeUtf8(bytes) }
+        assertEquals(4, e.offset)
+        assertEquals("malformed UTF-8 at offset 4", e.message)
     }
 
     @Test

@@ -1,8 +1,16 @@
 package org.hapticon.core.io
 
 import kotlinx.serialization.Serializable
+import kotlinx.serialization.ExperimentalSerializationApi
 import kotlinx.serialization.json.JsonElement
+import kotlinx.serialization.json.JsonNull
+import kotlinx.serialization.json.JsonObject
+import kotlinx.serialization.json.JsonPrimitive
+import kotlinx.serialization.json.JsonUnquotedLiteral
 import org.junit.Assert.assertEquals
+import org.junit.Assert.assertNotSame
+import org.junit.Assert.assertNull
+import org.junit.Assert.assertSame
 import org.junit.Assert.assertThrows
 import org.junit.Test
 
@@ -125,5 +133,64 @@ class SchemaJsonTest {
     fun strictReaderThenKotlinxWriter_keepsOrderAndIntegralForm() {
         val text = """{"z":1,"a":[2.5,-0.0,true,null,"s"],"m":{}}"""
         assertEquals(text, SchemaJson.encodeElement(Json.decode(text)))
+    }
+
+    @Test
+    fun check_documentAlreadyInNormalForm_isReturnedItself() {
+        val element = Json.decode("""{"schema":"s","count":3,"big":-9007199254740992,"note":null,"flags":[true],"items":[{"name":"a","weight":0.5}]}""")
+        assertSame(element, SchemaJson.check(element, Doc.serializer().descriptor, "", TestReport()))
+    }
+
+    @Test
+    fun check_membersToNormalise_giveACopyWithOnlyThoseChanged() {
+        val element = Json.decode("""{"schema":"s","count":3.0,"items":[{"name":"a","weight":null},{"name":"b"}],"future":1}""")
+        val checked = SchemaJson.check(element, Doc.serializer().descriptor, "", TestReport())
+        assertNotSame(element, checked)
+        assertEquals(
+            Json.decode("""{"schema":"s","count":3,"items":[{"name":"a"},{"name":"b"}],"future":1}"""),
+            checked,
+        )
+        // The input tree is left as it was.
+        assertEquals(Json.decode("""{"schema":"s","count":3.0,"items":[{"name":"a","weight":null},{"name":"b"}],"future":1}"""), element)
+    }
+
+    @OptIn(ExperimentalSerializationApi::class)
+    @Test
+    fun check_integersOutsideTheExactRangeOrSpelledOtherwise_areNormalisedAsBefore() {
+        fun checkedBig(value: JsonPrimitive): JsonElement? {
+            val doc = JsonObject(mapOf("schema" to JsonPrimitive("s"), "count" to JsonPrimitive(1), "big" to value))
+            return (SchemaJson.check(doc, Doc.serializer().descriptor, "", TestReport()) as JsonObject)["big"]
+        }
+        // ±2^53 are kept; one beyond reads as the double it rounds to, as the double path always read it.
+        assertEquals(JsonPrimitive(9007199254740992L), checkedBig(JsonPrimitive(9007199254740992L)))
+        assertEquals(JsonPrimitive(-9007199254740992L), checkedBig(JsonPrimitive(-9007199254740993L)))
+        assertEquals(-9007199254740992L, decodeBig(JsonPrimitive(-9007199254740993L)))
+        // Spellings the normal form changes: sign of zero, '+', exponent.
+        assertEquals("0", checkedBig(JsonUnquotedLiteral("-0"))!!.let { (it as JsonPrimitive).content })
+        assertEquals("5", checkedBig(JsonUnquotedLiteral("+5"))!!.let { (it as JsonPrimitive).content })
+        assertEquals("100", checkedBig(JsonUnquotedLiteral("1e2"))!!.let { (it as JsonPrimitive).content })
+        // Int limits on the kept path too.
+        assertEquals("wrongType(, count, INT, 2147483648)", problem("""{"schema":"s","count":2147483648}"""))
+        assertEquals("wrongType(, count, INT, -2147483649)", problem("""{"schema":"s","count":-2147483649}"""))
+        assertEquals("wrongType(, count, INT, \"3\")", problem("""{"schema":"s","count":"3"}"""))
+    }
+
+    private fun decodeBig(value: JsonPrimitive): Long =
+        SchemaJson.decode(Doc.serializer(), JsonObject(mapOf("schema" to JsonPrimitive("s"), "count" to JsonPrimitive(1), "big" to value)), TestReport()).big
+
+    @OptIn(ExperimentalSerializationApi::class)
+    @Test
+    fun numberOrNull_readsNumbersAsDoubleOrNullDoes_andNothingElse() {
+        assertEquals(3.0, JsonPrimitive(3).numberOrNull()!!, 0.0)
+        assertEquals(0.27, JsonPrimitive(0.27).numberOrNull()!!, 0.0)
+        assertEquals(1.2345678901234567E19, JsonUnquotedLiteral("12345678901234567890").numberOrNull()!!, 0.0)
+        assertEquals(Double.POSITIVE_INFINITY, JsonUnquotedLiteral("1e400").numberOrNull()!!, 0.0)
+        val negativeZero = JsonUnquotedLiteral("-0").numberOrNull()!!
+        assertEquals(0.0, negativeZero, 0.0)
+        assertEquals(-1.0 / 0.0, 1.0 / negativeZero, 0.0) // -0.0, as "-0".toDouble() gives
+        assertNull(JsonPrimitive(true).numberOrNull())
+        assertNull(JsonNull.numberOrNull())
+        assertNull(JsonPrimitive("3").numberOrNull())
+        assertNull(JsonUnquotedLiteral("1-2").numberOrNull())
     }
 }
