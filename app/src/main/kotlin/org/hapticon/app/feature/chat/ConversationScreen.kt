@@ -414,8 +414,9 @@ const val PEER_FEEL_TAG: String = "peer-feel"
  * Under the composer, how the chosen icon or pattern [name] will feel on [peer]'s phone: the renderer line, then the
  * pitch and the envelope's control points (one line each). With details, the lines collapse to the renderer line,
  * cut to ONE line, and a chevron; a tap (or TalkBack's double-tap, "collapsed, button, double-tap to show details")
- * shows them all. At font scale 2.0 the three wrapped lines took half the screen, pushing the messages away; a
- * summary that expands is Material's expandable list item. The whole row is the control, at least 48 dp high.
+ * shows them all. At font scale 2.0 the three wrapped lines took half the screen, pushing the messages away. The whole
+ * row is the control, at least 48 dp high; besides the click it offers Compose's expand/collapse semantics actions
+ * (`AccessibilityNodeInfo.ACTION_EXPAND` / `ACTION_COLLAPSE` in TalkBack's actions menu).
  */
 @Composable
 private fun PeerFeelLines(name: String, peer: String, feel: PeerFeel?) {
