@@ -13,9 +13,7 @@ import androidx.compose.ui.test.hasClickAction
 import androidx.compose.ui.test.hasText
 import androidx.compose.ui.test.junit4.createAndroidComposeRule
 import androidx.compose.ui.test.longClick
-import androidx.compose.ui.test.onAllNodesWithContentDescription
 import androidx.compose.ui.test.onAllNodesWithText
-import androidx.compose.ui.test.onNodeWithContentDescription
 import androidx.compose.ui.test.onNodeWithText
 import androidx.compose.ui.test.performClick
 import androidx.compose.ui.test.performTouchInput
@@ -160,20 +158,20 @@ class MainThreadStrictModeTest {
             }
             step(1) {
                 rule.onNodeWithText("bob").performClick()
-                rule.waitUntil(10_000) { rule.onAllNodesWithContentDescription("Play haptic icon knock").fetchSemanticsNodes().isNotEmpty() }
+                rule.waitUntil(10_000) { rule.onAllNodes(org.hapticon.app.feature.chat.feelChip("knock")).fetchSemanticsNodes().isNotEmpty() }
             }
             step(2) {
-                rule.onNodeWithContentDescription("Play haptic icon knock").performClick()
+                rule.onNode(org.hapticon.app.feature.chat.feelChip("knock")).performClick()
                 rule.waitUntil(10_000) { lastVibration(vibrator) != null }
                 assertEquals(PROCESSING_KNOCK, lastVibration(vibrator))
             }
             step(3) {
-                rule.onNodeWithContentDescription("Icon hit").performClick()
+                rule.onNode(org.hapticon.app.feature.chat.composerIconChip("hit")).performClick()
                 val line = "How hit will feel there: ${RendererKind.AMPLITUDE_WAVEFORM.label}, $figure% fidelity"
                 rule.waitUntil(10_000) { rule.onAllNodesWithText(line).fetchSemanticsNodes().isNotEmpty() }
             }
             step(4) {
-                rule.onNodeWithContentDescription("Icon hit").performTouchInput { longClick() }
+                rule.onNode(org.hapticon.app.feature.chat.composerIconChip("hit")).performTouchInput { longClick() }
                 rule.waitUntil(10_000) { lastVibration(vibrator) != PROCESSING_KNOCK }
             }
             assertNoViolations()

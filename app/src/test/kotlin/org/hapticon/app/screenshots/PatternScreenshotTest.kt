@@ -11,7 +11,9 @@ import org.hapticon.app.feature.chat.ConversationActions
 import org.hapticon.app.feature.chat.ConversationScreen
 import org.hapticon.app.feature.chat.ConversationUiState
 import org.hapticon.app.feature.chat.COMPOSER_ICONS_TAG
+import org.hapticon.app.feature.chat.PEER_FEEL_TAG
 import org.hapticon.app.feature.chat.PeerFeel
+import androidx.compose.ui.test.performClick
 import org.hapticon.core.pattern.PitchFit
 import androidx.compose.ui.test.onNodeWithTag
 import androidx.compose.ui.test.assertIsDisplayed
@@ -114,7 +116,23 @@ class PatternScreenshotTest : ScreenshotTest() {
         variants = listOf(Variant.LargestFont),
         prepare = {
             compose.onNodeWithTag(COMPOSER_ICONS_TAG).performScrollToKey("pattern:boing")
-            // Three wrapped "how it will feel there" lines must not push the field or Send off the screen.
+            // The "how it will feel there" lines, collapsed to one, leave the field and Send on the screen.
+            compose.onNodeWithContentDescription("Message").assertIsDisplayed()
+            compose.onNodeWithContentDescription("Send").assertIsDisplayed()
+        },
+    ) { patternConversation() }
+
+    /**
+     * The same at the largest font with the "how it will feel there" lines opened by a tap: every line whole (numbers
+     * with their units), and still the field and Send on the screen; the message list gives way.
+     */
+    @Test
+    fun conversation_patternChosen_largestFont_feelLinesExpanded() = screen(
+        "chats-conversation-pattern-expanded",
+        variants = listOf(Variant.LargestFont),
+        prepare = {
+            compose.onNodeWithTag(COMPOSER_ICONS_TAG).performScrollToKey("pattern:boing")
+            compose.onNodeWithTag(PEER_FEEL_TAG).performClick()
             compose.onNodeWithContentDescription("Message").assertIsDisplayed()
             compose.onNodeWithContentDescription("Send").assertIsDisplayed()
         },

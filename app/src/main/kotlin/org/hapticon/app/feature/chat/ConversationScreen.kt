@@ -13,6 +13,7 @@ import androidx.compose.foundation.layout.Row
 import androidx.compose.foundation.layout.fillMaxSize
 import androidx.compose.foundation.layout.fillMaxWidth
 import androidx.compose.foundation.layout.height
+import androidx.compose.foundation.layout.heightIn
 import androidx.compose.foundation.layout.imePadding
 import androidx.compose.foundation.layout.padding
 import androidx.compose.foundation.layout.size
@@ -64,6 +65,8 @@ import androidx.compose.ui.graphics.vector.ImageVector
 import androidx.compose.ui.res.painterResource
 import androidx.compose.ui.semantics.Role
 import androidx.compose.ui.semantics.clearAndSetSemantics
+import androidx.compose.ui.semantics.collapse
+import androidx.compose.ui.semantics.expand
 import androidx.compose.ui.semantics.contentDescription
 import androidx.compose.ui.semantics.semantics
 import androidx.compose.ui.semantics.stateDescription
@@ -78,6 +81,7 @@ import androidx.compose.ui.input.key.onPreviewKeyEvent
 import androidx.compose.ui.input.key.type
 import androidx.compose.ui.text.input.ImeAction
 import androidx.compose.ui.text.input.KeyboardCapitalization
+import androidx.compose.ui.text.style.TextOverflow
 import androidx.compose.ui.unit.dp
 import kotlinx.coroutines.launch
 import org.hapticon.app.data.database.MessageState
@@ -256,27 +260,14 @@ private fun MessageBubble(message: StoredMessage, time: String, actions: Convers
                 } ?: message.sticker?.let { Text("[$it]") }
                 if (message.text.isNotEmpty()) Text(message.text, style = MaterialTheme.typography.bodyLarge)
                 message.icon?.let { icon ->
-                    // TalkBack names the chip by its description alone: the visible label and the thumbnail's own
-                    // description ("Envelope of hug") are cleared, else it said "Feel hug, Envelope of hug, Play haptic
-                    // icon hug" (TalkBackNodeTreeTest).
-                    AssistChip(
-                        onClick = { actions.onFeel(message) },
-                        label = { Text("Feel ${icon.name}", Modifier.clearAndSetSemantics {}) },
-                        leadingIcon = { EnvelopeThumbnail(icon, Modifier.clearAndSetSemantics {}.width(32.dp).height(16.dp)) },
-                        colors = AssistChipDefaults.assistChipColors(labelColor = content),
-                        modifier = Modifier.semantics { contentDescription = "Play haptic icon ${icon.name}" },
-                    )
+                    FeelChip("Feel ${icon.name}", onClick = { actions.onFeel(message) }, labelColor = content) {
+                        EnvelopeThumbnail(icon, Modifier.clearAndSetSemantics {}.width(32.dp).height(16.dp))
+                    }
                 }
                 message.pattern?.let { pattern ->
-                    AssistChip(
-                        onClick = { actions.onFeel(message) },
-                        label = { Text("Feel ${pattern.name}", Modifier.clearAndSetSemantics {}) },
-                        leadingIcon = {
-                            PatternThumbnail(pattern, Modifier.clearAndSetSemantics {}.width(32.dp).height(16.dp), showFrequency = false)
-                        },
-                        colors = AssistChipDefaults.assistChipColors(labelColor = content),
-                        modifier = Modifier.semantics { contentDescription = "Play haptic pattern ${pattern.name}" },
-                    )
+                    FeelChip("Feel ${pattern.name}", onClick = { actions.onFeel(message) }, labelColor = content) {
+                        PatternThumbnail(pattern, Modifier.clearAndSetSemantics {}.width(32.dp).height(16.dp), showFrequency = false)
+                    }
                 }
             }
         }
@@ -289,6 +280,23 @@ private fun MessageBubble(message: StoredMessage, time: String, actions: Convers
             if (own) StateIcon(message.state)
         }
     }
+}
+
+/**
+ * A message's "Feel …" chip. TalkBack names it by its visible [label] alone ("Feel hug, button"), so a voice-control
+ * user who says what they see reaches it (WCAG 2.5.3 Label in Name; it used to be "Play haptic icon hug"). No
+ * description is added: Compose reads a merging node's description BEFORE its children's text (its fake description
+ * node comes first, TalkBackNodeTreeTest), so any addition would push the label off the start of the name. The
+ * [thumbnail] is for sight only and must clear its own description.
+ */
+@Composable
+private fun FeelChip(label: String, onClick: () -> Unit, labelColor: Color, thumbnail: @Composable () -> Unit) {
+    AssistChip(
+        onClick = onClick,
+        label = { Text(label) },
+        leadingIcon = thumbnail,
+        colors = AssistChipDefaults.assistChipColors(labelColor = labelColor),
+    )
 }
 
 /** The icon of an own message's state; its description is what a screen reader says. */
@@ -366,21 +374,7 @@ private fun Composer(uiState: ConversationUiState.Success, actions: Conversation
                 }
             }
             (uiState.selectedIcon?.name ?: uiState.selectedPattern?.name)?.let { name ->
-                val feel = uiState.peerFeel
-                Text(
-                    if (feel == null) "How $name will feel there: unknown until ${uiState.peer} connects"
-                    else "How $name will feel there: ${feel.renderer.label}" + (feel.alternative?.let { " or ${it.label}" } ?: "") +
-                        (feel.fidelityPercent?.let { ", $it% fidelity" } ?: ""),
-                    style = MaterialTheme.typography.bodySmall, color = MaterialTheme.colorScheme.onSurfaceVariant,
-                    modifier = Modifier.padding(horizontal = 4.dp),
-                )
-                // The pitch, then the envelope's control points within the peer's limits: one line each.
-                listOfNotNull(feel?.pitch, feel?.envelope).forEach { line ->
-                    Text(
-                        keepUnitsWithNumbers(line), style = MaterialTheme.typography.bodySmall, color = MaterialTheme.colorScheme.onSurfaceVariant,
-                        modifier = Modifier.padding(horizontal = 4.dp),
-                    )
-                }
+                PeerFeelLines(name, uiState.peer, uiState.peerFeel)
             }
             uiState.error?.let { Text(it, color = MaterialTheme.colorScheme.error, modifier = Modifier.padding(horizontal = 4.dp)) }
             Row(verticalAlignment = Alignment.CenterVertically) {
@@ -413,13 +407,63 @@ private fun Composer(uiState: ConversationUiState.Success, actions: Conversation
     }
 }
 
+/** The test tag of the composer's "how it will feel there" control (present when it has details to expand). */
+const val PEER_FEEL_TAG: String = "peer-feel"
+
+/**
+ * Under the composer, how the chosen icon or pattern [name] will feel on [peer]'s phone: the renderer line, then the
+ * pitch and the envelope's control points (one line each). With details, the lines collapse to the renderer line,
+ * cut to ONE line, and a chevron; a tap (or TalkBack's double-tap, "collapsed, button, double-tap to show details")
+ * shows them all. At font scale 2.0 the three wrapped lines took half the screen, pushing the messages away. The whole
+ * row is the control, at least 48 dp high; besides the click it offers Compose's expand/collapse semantics actions
+ * (`AccessibilityNodeInfo.ACTION_EXPAND` / `ACTION_COLLAPSE` in TalkBack's actions menu).
+ */
+@Composable
+private fun PeerFeelLines(name: String, peer: String, feel: PeerFeel?) {
+    val summary = if (feel == null) "How $name will feel there: unknown until $peer connects"
+    else "How $name will feel there: ${feel.renderer.label}" + (feel.alternative?.let { " or ${it.label}" } ?: "") +
+        (feel.fidelityPercent?.let { ", $it% fidelity" } ?: "")
+    val details = listOfNotNull(feel?.pitch, feel?.envelope).map(::keepUnitsWithNumbers)
+    val style = MaterialTheme.typography.bodySmall
+    val color = MaterialTheme.colorScheme.onSurfaceVariant
+    if (details.isEmpty()) {
+        Text(summary, style = style, color = color, modifier = Modifier.padding(horizontal = 4.dp))
+        return
+    }
+    // Collapsed whenever a new choice brings the lines back (they leave the composition with the choice).
+    var expanded by rememberSaveable { mutableStateOf(false) }
+    Row(
+        Modifier.fillMaxWidth().heightIn(min = 48.dp).clip(RoundedCornerShape(8.dp))
+            .clickable(role = Role.Button, onClickLabel = if (expanded) "Hide details" else "Show details") { expanded = !expanded }
+            .semantics {
+                stateDescription = if (expanded) "expanded" else "collapsed"
+                if (expanded) collapse { expanded = false; true } else expand { expanded = true; true }
+            }
+            .testTag(PEER_FEEL_TAG)
+            .padding(horizontal = 4.dp, vertical = 4.dp),
+        verticalAlignment = Alignment.CenterVertically,
+    ) {
+        Column(Modifier.weight(1f), verticalArrangement = Arrangement.spacedBy(4.dp)) {
+            Text(
+                summary, style = style, color = color,
+                maxLines = if (expanded) Int.MAX_VALUE else 1, overflow = TextOverflow.Ellipsis,
+            )
+            if (expanded) details.forEach { Text(it, style = style, color = color) }
+        }
+        Icon(
+            if (expanded) HapticonIcons.ExpandLess else HapticonIcons.ExpandMore, contentDescription = null, tint = color,
+            modifier = Modifier.padding(start = 8.dp),
+        )
+    }
+}
+
 /** A composer icon: a tap chooses it for the next message, a long press previews it on this phone. */
 @Composable
 private fun IconChip(icon: HapticIcon, selected: Boolean, actions: ConversationActions) =
     ComposerChip(
-        "Icon ${icon.name}", icon.name, selected,
+        icon.name, selected,
         onPreview = { actions.onPreview(icon) }, onToggle = { actions.onSelectIcon(if (selected) null else icon) },
-    ) { EnvelopeThumbnail(icon, Modifier.width(36.dp).height(18.dp)) }
+    ) { EnvelopeThumbnail(icon, Modifier.clearAndSetSemantics {}.width(36.dp).height(18.dp)) }
 
 /**
  * A composer pattern, after the icons: the same chip, told apart by its thumbnail's frequency line and a
@@ -428,16 +472,20 @@ private fun IconChip(icon: HapticIcon, selected: Boolean, actions: ConversationA
 @Composable
 private fun PatternChip(pattern: HapticPattern, selected: Boolean, actions: ConversationActions) =
     ComposerChip(
-        "Pattern ${pattern.name}", pattern.name, selected,
+        pattern.name, selected,
         onPreview = { actions.onPreviewPattern(pattern) }, onToggle = { actions.onSelectPattern(if (selected) null else pattern) },
         tag = "pattern",
-    ) { PatternThumbnail(pattern, Modifier.width(36.dp).height(18.dp)) }
+    ) { PatternThumbnail(pattern, Modifier.clearAndSetSemantics {}.width(36.dp).height(18.dp)) }
 
-/** The chip of the composer's icon row: [thumbnail], [name] and an optional small [tag]. */
+/**
+ * The chip of the composer's icon row: [thumbnail] (for sight only: it must clear its own description), [name] and an
+ * optional small [tag]. TalkBack names it by the visible words ("knock"; "ramp, pattern"), then its state and the
+ * hints "add to message" and "feel knock here": WCAG 2.5.3 Label in Name (TalkBackNodeTreeTest). It used to be
+ * "Icon knock", which a voice-control user saying "knock" did not match from the start.
+ */
 @OptIn(ExperimentalFoundationApi::class)
 @Composable
 private fun ComposerChip(
-    description: String,
     name: String,
     selected: Boolean,
     onPreview: () -> Unit,
@@ -453,8 +501,8 @@ private fun ComposerChip(
         modifier = Modifier
             .border(1.dp, if (selected) colors.secondaryContainer else colors.outlineVariant, RoundedCornerShape(8.dp))
             .clip(RoundedCornerShape(8.dp))
-            // A button to TalkBack ("Icon knock, not selected, button, double-tap to add to message"): without the
-            // role it announced no control type at all.
+            // A button to TalkBack ("knock, not selected, button, double-tap to add to message"): without the role it
+            // announced no control type at all.
             .combinedClickable(
                 role = Role.Button,
                 onClickLabel = if (selected) "Remove from message" else "Add to message",
@@ -463,14 +511,11 @@ private fun ComposerChip(
                 onClick = onToggle,
             )
             .semantics {
-                contentDescription = description
                 stateDescription = if (selected) "selected" else "not selected"
             },
     ) {
-        // The chip's description names it ("Icon knock"); what it draws is for sight only, else TalkBack said
-        // "Icon knock, Envelope of knock, knock" (TalkBackNodeTreeTest).
         Row(
-            Modifier.clearAndSetSemantics {}.padding(horizontal = 10.dp, vertical = 6.dp),
+            Modifier.padding(horizontal = 10.dp, vertical = 6.dp),
             verticalAlignment = Alignment.CenterVertically,
         ) {
             thumbnail()

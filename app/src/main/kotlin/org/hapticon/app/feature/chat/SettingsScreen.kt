@@ -26,6 +26,8 @@ import androidx.compose.runtime.setValue
 import androidx.compose.ui.Modifier
 import androidx.compose.ui.semantics.contentDescription
 import androidx.compose.ui.semantics.semantics
+import androidx.compose.ui.platform.testTag
+import androidx.compose.ui.text.style.TextOverflow
 import androidx.compose.ui.unit.dp
 import org.hapticon.app.data.ChatPreferences
 import org.hapticon.app.data.ClientCertificateStatus
@@ -93,7 +95,7 @@ fun SettingsScreen(
             }
             Section("Account", first = true)
             EditableField("User name", prefs.userName ?: "", actions.onUserName, "Others start a chat with you by this name.")
-            EditableField("Broker", prefs.brokerUrl, actions.onBroker, "Connection: ${uiState.connection}")
+            EditableField("Broker", prefs.brokerUrl, actions.onBroker, "Connection: ${uiState.connection}", url = true)
             EditableField(
                 "Broker password", if (prefs.brokerPassword == null) "" else "••••••••", actions.onPassword,
                 "The password `hapticon broker adduser` set for you.", secret = true,
@@ -195,9 +197,22 @@ private fun Section(title: String, first: Boolean = false) {
     Text(title, style = MaterialTheme.typography.titleSmall, color = MaterialTheme.colorScheme.primary, modifier = Modifier.padding(top = 8.dp))
 }
 
-/** A value shown as text with a "Change" button that turns it into a field; saving may be refused with a reason. */
+/**
+ * A value shown as text with a "Change" button that turns it into a field; saving may be refused with a reason.
+ *
+ * A [url] stays on one line, cut in the middle when it does not fit (`TextOverflow.MiddleEllipsis`): wrapped, a large
+ * font broke it at ":" and split the host from its port. Cut in the middle, the scheme and the port stay in sight; the
+ * whole address is in the field "Change" opens, and TalkBack reads it whole (the cut is only drawn).
+ */
 @Composable
-private fun EditableField(label: String, value: String, onSave: (String) -> String?, supporting: String, secret: Boolean = false) {
+private fun EditableField(
+    label: String,
+    value: String,
+    onSave: (String) -> String?,
+    supporting: String,
+    secret: Boolean = false,
+    url: Boolean = false,
+) {
     var editing by rememberSaveable { mutableStateOf(false) }
     // A secret starts empty: the stored one is never put back on screen.
     var text by rememberSaveable(value) { mutableStateOf(if (secret) "" else value) }
@@ -217,7 +232,11 @@ private fun EditableField(label: String, value: String, onSave: (String) -> Stri
         androidx.compose.foundation.layout.Row(verticalAlignment = androidx.compose.ui.Alignment.CenterVertically) {
             Column(Modifier.weight(1f)) {
                 Text(label, style = MaterialTheme.typography.labelMedium, color = MaterialTheme.colorScheme.onSurfaceVariant)
-                Text(value.ifEmpty { "not set" }, style = MaterialTheme.typography.bodyLarge)
+                Text(
+                    value.ifEmpty { "not set" }, style = MaterialTheme.typography.bodyLarge,
+                    maxLines = if (url) 1 else Int.MAX_VALUE, overflow = if (url) TextOverflow.MiddleEllipsis else TextOverflow.Clip,
+                    modifier = if (url) Modifier.testTag(BROKER_URL_TAG) else Modifier,
+                )
                 Text(supporting, style = MaterialTheme.typography.bodySmall, color = MaterialTheme.colorScheme.onSurfaceVariant)
             }
             TextButton(onClick = { editing = true }) { Text("Change") }
@@ -274,6 +293,9 @@ private fun ClientCertificateField(status: ClientCertificateStatus, import: Cert
         }
     }
 }
+
+/** The test tag of the broker address as Settings shows it (one line). */
+const val BROKER_URL_TAG: String = "broker-url"
 
 /** What Settings says while Android shows no notifications of this app. */
 const val NOTIFICATIONS_OFF: String =

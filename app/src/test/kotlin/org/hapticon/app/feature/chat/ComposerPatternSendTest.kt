@@ -1,7 +1,7 @@
 package org.hapticon.app.feature.chat
 
 import androidx.compose.ui.semantics.SemanticsProperties
-import androidx.compose.ui.test.hasContentDescription
+import androidx.compose.ui.test.SemanticsMatcher
 import androidx.compose.ui.test.hasSetTextAction
 import androidx.compose.ui.test.junit4.createComposeRule
 import androidx.compose.ui.test.longClick
@@ -109,26 +109,26 @@ class ComposerPatternSendTest {
 
     private fun <T> await(flow: Flow<T>, predicate: (T) -> Boolean): T = runBlocking { withTimeout(5_000) { flow.first(predicate) } }
 
-    private fun stateOf(description: String) =
-        compose.onNodeWithContentDescription(description).fetchSemanticsNode().config[SemanticsProperties.StateDescription]
+    private fun stateOf(chip: SemanticsMatcher) =
+        compose.onNode(chip).fetchSemanticsNode().config[SemanticsProperties.StateDescription]
 
     @Test
     fun pattern_longPressPreviewsTapReplacesTheIconAndSendTravelsAsVersion2() {
         await(messenger.state) { it == ConnectionState.Connected }
-        compose.onNodeWithContentDescription("Pattern ramp").performTouchInput { longClick() }
+        compose.onNode(composerPatternChip("ramp")).performTouchInput { longClick() }
         compose.waitUntil(5_000) { lastVibration(vibrator) != null }
         // The preview is the pattern's own steps on this amplitude phone (API 35): 0.25, 0.75, then full.
         assertEquals(RecordedVibration(listOf(10L, 10L, 20L), listOf(64, 191, 255)), lastVibration(vibrator))
-        assertEquals("not selected", stateOf("Pattern ramp"))
+        assertEquals("not selected", stateOf(composerPatternChip("ramp")))
 
         // A message carries an icon or a pattern: choosing the pattern drops the icon chosen before.
         compose.onNodeWithTag(COMPOSER_ICONS_TAG).performScrollToKey("hug")
-        compose.onNodeWithContentDescription("Icon hug").performClick()
+        compose.onNode(composerIconChip("hug")).performClick()
         compose.onNodeWithTag(COMPOSER_ICONS_TAG).performScrollToKey("pattern:ramp")
-        compose.onNodeWithContentDescription("Pattern ramp").performClick()
-        assertEquals("selected", stateOf("Pattern ramp"))
+        compose.onNode(composerPatternChip("ramp")).performClick()
+        assertEquals("selected", stateOf(composerPatternChip("ramp")))
         compose.onNodeWithTag(COMPOSER_ICONS_TAG).performScrollToKey("hug")
-        assertEquals("not selected", stateOf("Icon hug"))
+        assertEquals("not selected", stateOf(composerIconChip("hug")))
         compose.onNode(hasSetTextAction()).performTextInput("feel this")
         compose.onNodeWithContentDescription("Send").performClick()
 
@@ -168,16 +168,16 @@ class ComposerPatternSendTest {
 
         // The sent bubble offers the pattern like a received one, and the composer is cleared.
         compose.waitUntil(5_000) {
-            compose.onAllNodes(hasContentDescription("Play haptic pattern ramp"), useUnmergedTree = true).fetchSemanticsNodes().isNotEmpty()
+            compose.onAllNodes(feelChip("ramp")).fetchSemanticsNodes().isNotEmpty()
         }
         compose.onNodeWithTag(COMPOSER_ICONS_TAG).performScrollToKey("pattern:ramp")
-        assertEquals("not selected", stateOf("Pattern ramp"))
+        assertEquals("not selected", stateOf(composerPatternChip("ramp")))
     }
 
     @Test
     fun pattern_tappedTwice_notAttached() {
-        compose.onNodeWithContentDescription("Pattern ramp").performClick()
-        compose.onNodeWithContentDescription("Pattern ramp").performClick()
+        compose.onNode(composerPatternChip("ramp")).performClick()
+        compose.onNode(composerPatternChip("ramp")).performClick()
         compose.onNode(hasSetTextAction()).performTextInput("plain")
         compose.onNodeWithContentDescription("Send").performClick()
 

@@ -50,14 +50,14 @@ class ComposerSendTest {
 
     @Test
     fun textWithIcon_longPressPreviewsTapChoosesAndSendStoresBothAndQueuesIt() {
-        compose.onNodeWithContentDescription("Icon knock").performTouchInput { longClick() }
+        compose.onNode(composerIconChip("knock")).performTouchInput { longClick() }
         compose.waitUntil(5_000) { lastVibration(fixture.vibrator) != null } // rendered off the main thread, then played
         // A long press previews: the knock went to the vibrator, and nothing was chosen.
         // The processing knock (the default model): 10 ms at 175, 10 ms at 111, then 250 ms off, three times.
         assertEquals(RecordedVibration(listOf(10L, 10L, 250L, 10L, 10L, 250L, 10L, 10L), listOf(175, 111, 0, 175, 111, 0, 175, 111)), lastVibration(fixture.vibrator))
-        compose.onNodeWithContentDescription("Icon knock").assertStateDescription("not selected")
-        compose.onNodeWithContentDescription("Icon knock").performClick()
-        compose.onNodeWithContentDescription("Icon knock").assertStateDescription("selected")
+        compose.onNode(composerIconChip("knock")).assertStateDescription("not selected")
+        compose.onNode(composerIconChip("knock")).performClick()
+        compose.onNode(composerIconChip("knock")).assertStateDescription("selected")
         compose.onNode(hasSetTextAction()).performTextInput("feel this")
         compose.onNodeWithContentDescription("Send").performClick()
         compose.waitUntil(5_000) { stored().isNotEmpty() }
@@ -79,7 +79,7 @@ class ComposerSendTest {
     @Test
     fun stickerWithIcon_sendStoresTheStickerAndTheIcon() {
         compose.onNodeWithContentDescription("Sticker Hug").performClick()
-        compose.onNodeWithContentDescription("Icon hug").performClick()
+        compose.onNode(composerIconChip("hug")).performClick()
         compose.onNodeWithContentDescription("Send").performClick()
         compose.waitUntil(5_000) { stored().isNotEmpty() }
 

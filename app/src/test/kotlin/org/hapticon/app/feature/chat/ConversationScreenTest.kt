@@ -58,7 +58,7 @@ class ConversationScreenTest {
             )
         }
 
-        compose.onNodeWithContentDescription("Play haptic icon knock").performClick()
+        compose.onNode(feelChip("knock")).performClick()
 
         assertEquals(RecordedVibration(listOf(10L, 10L, 250L, 10L, 10L, 250L, 10L, 10L), listOf(175, 111, 0, 175, 111, 0, 175, 111)), lastVibration(vibrator))
     }
@@ -150,6 +150,7 @@ class ConversationScreenTest {
             envelope = "bob's envelope: 4 control points (7 merged into 4 by its limits: 4 points, 50 ms–1 s each, 4 s in all)",
         )
         compose.setContent { ConversationScreen(state(emptyList(), HapticIcon.HUG, feel), ConversationActions()) }
+        compose.onNodeWithTag(PEER_FEEL_TAG).performClick() // collapsed to the first line by default (ComposerFeelLinesTest)
         compose.onNodeWithText("bob's phone (120–240\u00A0Hz): 147\u00A0Hz → plays 147\u00A0Hz").assertExists()
         compose.onNodeWithText("bob's envelope: 4 control points (7 merged into 4 by its limits: 4 points, 50\u00A0ms–1\u00A0s each, 4\u00A0s in all)").assertExists()
     }
@@ -167,6 +168,7 @@ class ConversationScreenTest {
             val icon by selected.collectAsState()
             ConversationScreen(state(emptyList(), icon, f), ConversationActions())
         }
+        compose.onNodeWithTag(PEER_FEEL_TAG).performClick() // stays open while the peer's capabilities change
         compose.onNodeWithText("bob's phone (120–240\u00A0Hz): 349\u00A0Hz → plays 175\u00A0Hz, shifted down one octave").assertExists()
         // The peer switched to clamping: its next capabilities change the line.
         feel.value = PeerFeel.ofIcon(bob.copy(pitchFit = PitchFit.CLAMP), HapticIcon.STROKE)

@@ -10,11 +10,15 @@ import android.view.accessibility.AccessibilityNodeInfo
 import android.view.accessibility.AccessibilityNodeProvider
 import androidx.activity.ComponentActivity
 import androidx.compose.ui.test.junit4.createAndroidComposeRule
+import kotlinx.coroutines.flow.flowOf
 import kotlinx.coroutines.runBlocking
 import org.hapticon.app.data.database.MessageState
 import org.hapticon.app.playback.RecordedVibration
 import org.hapticon.app.playback.lastVibration
 import org.hapticon.core.HapticIcon
+import org.hapticon.core.pattern.AmplitudeKey
+import org.hapticon.core.pattern.FrequencyKey
+import org.hapticon.core.pattern.HapticPattern
 import org.hapticon.core.render.VibrationWaveform
 import org.hapticon.messaging.ChatMessage
 import org.junit.After
@@ -71,7 +75,7 @@ class TalkBackNodeTreeTest {
         shadowOf(manager).setTouchExplorationEnabled(true)
         shadowOf(manager).setEnabled(true)
         // The activity's own ComposeView (ComponentActivity.setContent), created after TalkBack is "on".
-        fixture.show(onFelt = { peer, id -> felt += peer to id })
+        fixture.show(onFelt = { peer, id -> felt += peer to id }, patterns = flowOf(listOf(RAMP)))
         compose.waitUntil(5_000) { focusStops().any { it.info.isEditable } }
     }
 
@@ -100,6 +104,15 @@ class TalkBackNodeTreeTest {
                     children.filter { it.info.isVisibleToUser && !it.isFocusStop }.map { it.spoken })
                     .filter { it.isNotEmpty() }.joinToString(", ")
             }
+
+        /**
+         * The words drawn inside this node: its own text and its visible children's that are not focus stops, in the
+         * order TalkBack reads them, joined as TalkBack joins them. A description is not drawn and so not included.
+         */
+        val visibleText: String
+            get() = (listOf(info.text?.toString().orEmpty()) +
+                children.filter { it.info.isVisibleToUser && !it.isFocusStop }.map { it.visibleText })
+                .filter { it.isNotEmpty() }.joinToString(", ")
 
         fun all(): List<Node> = listOf(this) + children.flatMap { it.all() }
 
@@ -166,7 +179,7 @@ class TalkBackNodeTreeTest {
     @Test
     fun chooseTypeAndSend_throughTheNodeProvider_storeAndQueueTheMessage() {
         val field = control("Message")
-        val knock = control("Icon knock")
+        val knock = control("knock")
         val send = control("Send")
         assertEquals("android.widget.EditText", field.info.className)
         assertTrue(field.info.isEditable)
@@ -179,8 +192,8 @@ class TalkBackNodeTreeTest {
 
         // Double-tap: the knock goes with the message.
         perform(knock, AccessibilityNodeInfo.ACTION_CLICK)
-        compose.waitUntil(5_000) { control("Icon knock").info.stateDescription?.toString() == "selected" }
-        assertEquals("Remove from message", control("Icon knock").actionLabel(AccessibilityNodeInfo.ACTION_CLICK))
+        compose.waitUntil(5_000) { control("knock").info.stateDescription?.toString() == "selected" }
+        assertEquals("Remove from message", control("knock").actionLabel(AccessibilityNodeInfo.ACTION_CLICK))
 
         // TalkBack's "paste"/braille/voice typing: the text field's ACTION_SET_TEXT.
         perform(field, AccessibilityNodeInfo.ACTION_SET_TEXT, Bundle().apply {
@@ -198,7 +211,7 @@ class TalkBackNodeTreeTest {
         assertEquals(MessageState.SENDING, message.state)
         assertEquals(listOf(message.id), runBlocking { fixture.db.outboxDao().pending() }.map { it.messageId })
         // The composer is emptied for the next message: the field speaks its name again, the knock is not chosen.
-        compose.waitUntil(5_000) { control("Icon knock").info.stateDescription?.toString() == "not selected" }
+        compose.waitUntil(5_000) { control("knock").info.stateDescription?.toString() == "not selected" }
         assertEquals("", control("Message").info.text?.toString())
         // Choosing and sending played nothing on this phone.
         assertNull(lastVibration(fixture.vibrator))
@@ -206,20 +219,20 @@ class TalkBackNodeTreeTest {
 
     @Test
     fun knockLongClicked_throughTheNodeProvider_isFeltHereWithItsOwnWaveform() {
-        perform(control("Icon knock"), AccessibilityNodeInfo.ACTION_LONG_CLICK)
+        perform(control("knock"), AccessibilityNodeInfo.ACTION_LONG_CLICK)
         compose.waitUntil(5_000) { lastVibration(fixture.vibrator) != null }
         val knock = VibrationWaveform.render(HapticIcon.KNOCK)
         assertEquals(RecordedVibration(knock.timings().toList(), knock.amplitudes().toList()), lastVibration(fixture.vibrator))
         // A preview chooses nothing.
-        assertEquals("not selected", control("Icon knock").info.stateDescription?.toString())
+        assertEquals("not selected", control("knock").info.stateDescription?.toString())
     }
 
     @Test
     fun receivedIcon_clickedThroughTheNodeProvider_playsItsWaveformAndTellsTheSender() {
         val hug = ChatMessage("0b7e7c1e-3f7b-4a57-9d3e-2f1c5a6b7c8d", "bob", 1_767_225_500_000, "hug", icon = HapticIcon.HUG)
         runBlocking { fixture.repository.receive(hug) }
-        compose.waitUntil(5_000) { focusStops().any { it.spoken == "Play haptic icon hug" } }
-        val chip = control("Play haptic icon hug")
+        compose.waitUntil(5_000) { focusStops().any { it.spoken == "Feel hug" } }
+        val chip = control("Feel hug")
         assertTalkBackTarget(chip)
         assertTrue(chip.info.isClickable)
         assertNull(lastVibration(fixture.vibrator))
@@ -232,8 +245,54 @@ class TalkBackNodeTreeTest {
         assertEquals(listOf("bob" to hug.id), felt.toList())
     }
 
+    /**
+     * WCAG 2.5.3 Label in Name: a voice-control user says what they see ("Feel hug"), so every chip's spoken name must
+     * start with its visible words. Checked on every clickable focus stop with drawn words, for chips of each kind: the
+     * composer's icons and pattern, a received icon and pattern, and an icon sent from here.
+     */
+    @Test
+    fun everyChip_spokenNameStartsWithItsVisibleLabel() {
+        runBlocking {
+            fixture.repository.receive(ChatMessage("0b7e7c1e-3f7b-4a57-9d3e-2f1c5a6b7c8d", "bob", 1_767_225_500_000, "hug", icon = HapticIcon.HUG))
+            fixture.repository.receive(ChatMessage("0b7e7c1e-3f7b-4a57-9d3e-2f1c5a6b7c8e", "bob", 1_767_225_510_000, "ramp", pattern = RAMP))
+        }
+        perform(control("knock"), AccessibilityNodeInfo.ACTION_CLICK)
+        perform(control("Message"), AccessibilityNodeInfo.ACTION_SET_TEXT, Bundle().apply {
+            putCharSequence(AccessibilityNodeInfo.ACTION_ARGUMENT_SET_TEXT_CHARSEQUENCE, "for you")
+        })
+        perform(control("Send"), AccessibilityNodeInfo.ACTION_CLICK)
+        compose.waitUntil(5_000) { focusStops().any { it.spoken == "Feel knock" } }
+
+        val checked = mutableMapOf<String, String>()
+        fun checkVisibleChips() {
+            for (stop in focusStops().filter { it.info.isClickable && it.visibleText.isNotEmpty() }) {
+                assertTrue("$stop: spoken \"${stop.spoken}\" does not start with its visible words \"${stop.visibleText}\"", stop.spoken.startsWith(stop.visibleText))
+                checked[stop.spoken] = stop.visibleText
+            }
+        }
+        checkVisibleChips()
+        // The pattern follows the four icons, past the 400 dp screen's edge: TalkBack's scroll action on the icon row.
+        val row = tree().all().filter { node -> node.info.isScrollable && node.all().any { it.spoken == "knock" } }.minBy { it.all().size }
+        while (focusStops().none { it.spoken == "ramp, pattern" }) perform(row, AccessibilityNodeInfo.ACTION_SCROLL_FORWARD)
+        checkVisibleChips()
+
+        // Each kind of chip was found by its drawn words, and TalkBack names it by them alone.
+        val expected = mapOf(
+            "Feel hug" to "Feel hug", "Feel ramp" to "Feel ramp", "Feel knock" to "Feel knock",
+            "knock" to "knock", "hug" to "hug", "ramp, pattern" to "ramp, pattern",
+        )
+        assertEquals(expected, checked.filterKeys { it in expected })
+    }
+
     private companion object {
         const val REAL_ANI = "robolectric.useRealAni"
+
+        /** Up to full in 20 ms, held 20 ms, the carrier sweeping 100 → 200 Hz ([ComposerPatternSendTest]'s ramp). */
+        val RAMP = HapticPattern(
+            "ramp",
+            listOf(AmplitudeKey(0.0, 0.0), AmplitudeKey(0.02, 1.0), AmplitudeKey(0.04, 1.0)),
+            listOf(FrequencyKey(0.0, 100.0), FrequencyKey(0.04, 200.0)),
+        )
 
         /** `AccessibilityNodeInfo.getChildId(int)`: hidden, the id the platform itself follows to a child. */
         val GET_CHILD_ID = AccessibilityNodeInfo::class.java.getMethod("getChildId", Int::class.javaPrimitiveType)

@@ -51,9 +51,9 @@ class TalkBackSendTest {
 
     private fun stored() = fixture.stored()
 
-    /** The one control TalkBack reads as [description] with [role]: it must be a focusable merged node. */
-    private fun control(description: String, role: Role) =
-        compose.onNode(hasContentDescription(description) and SemanticsMatcher.expectValue(SemanticsProperties.Role, role))
+    /** The one control TalkBack names as [name] matches, with [role]: it must be a focusable merged node. */
+    private fun control(name: SemanticsMatcher, role: Role) =
+        compose.onNode(name and SemanticsMatcher.expectValue(SemanticsProperties.Role, role))
 
     private fun SemanticsNodeInteraction.clickLabel(): String? =
         fetchSemanticsNode().config.getOrNull(SemanticsActions.OnClick)?.label
@@ -66,20 +66,20 @@ class TalkBackSendTest {
 
     @Test
     fun iconChoiceAndSend_throughAccessibilityActions_storeAndQueueTheMessage() {
-        val knock = control("Icon knock", Role.Button)
-        // What TalkBack announces: "Icon knock, not selected, button, double-tap to add to message, double-tap and hold to feel knock here".
+        val knock = control(composerIconChip("knock"), Role.Button)
+        // What TalkBack announces: "knock, not selected, button, double-tap to add to message, double-tap and hold to feel knock here".
         assertEquals("Add to message", knock.clickLabel())
         assertEquals("Feel knock here", knock.longClickLabel())
         assertEquals("not selected", knock.state())
 
         knock.performSemanticsAction(SemanticsActions.OnClick)
         compose.waitForIdle()
-        assertEquals("selected", control("Icon knock", Role.Button).state())
-        assertEquals("Remove from message", control("Icon knock", Role.Button).clickLabel())
+        assertEquals("selected", control(composerIconChip("knock"), Role.Button).state())
+        assertEquals("Remove from message", control(composerIconChip("knock"), Role.Button).clickLabel())
 
         compose.onNode(hasContentDescription("Message") and hasSetTextAction())
             .performSemanticsAction(SemanticsActions.SetText) { it(AnnotatedString("feel this")) }
-        control("Send", Role.Button).performSemanticsAction(SemanticsActions.OnClick)
+        control(hasContentDescription("Send"), Role.Button).performSemanticsAction(SemanticsActions.OnClick)
         compose.waitUntil(5_000) { stored().isNotEmpty() }
 
         val message = stored().single()
@@ -88,7 +88,7 @@ class TalkBackSendTest {
         assertEquals(MessageState.SENDING, message.state)
         assertEquals(listOf(message.id), runBlocking { fixture.db.outboxDao().pending() }.map { it.messageId })
         // The composer is cleared for the next message: nothing chosen any more.
-        compose.waitUntil(5_000) { control("Icon knock", Role.Button).state() == "not selected" }
+        compose.waitUntil(5_000) { control(composerIconChip("knock"), Role.Button).state() == "not selected" }
         // Choosing and sending played nothing on this phone.
         assertNull(lastVibration(fixture.vibrator))
     }
@@ -98,11 +98,11 @@ class TalkBackSendTest {
         val hug = ChatMessage("0b7e7c1e-3f7b-4a57-9d3e-2f1c5a6b7c8d", "bob", 1_767_225_500_000, "hug", icon = HapticIcon.HUG)
         runBlocking { fixture.repository.receive(hug) }
         compose.waitUntil(5_000) {
-            compose.onAllNodes(hasContentDescription("Play haptic icon hug")).fetchSemanticsNodes().isNotEmpty()
+            compose.onAllNodes(feelChip("hug")).fetchSemanticsNodes().isNotEmpty()
         }
         assertNull(lastVibration(fixture.vibrator))
 
-        control("Play haptic icon hug", Role.Button).performSemanticsAction(SemanticsActions.OnClick)
+        control(feelChip("hug"), Role.Button).performSemanticsAction(SemanticsActions.OnClick)
         compose.waitUntil(5_000) { lastVibration(fixture.vibrator) != null }
         // The hug's own step waveform, as the player renders it for an amplitude-controlled vibrator.
         assertEquals(VibrationWaveform.render(HapticIcon.HUG).timings().toList(), lastVibration(fixture.vibrator)!!.timings)
