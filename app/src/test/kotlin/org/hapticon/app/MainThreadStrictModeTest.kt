@@ -167,7 +167,8 @@ class MainThreadStrictModeTest {
             }
             step(3) {
                 rule.onNode(org.hapticon.app.feature.chat.composerIconChip("hit")).performClick()
-                val line = "How hit will feel there: ${RendererKind.AMPLITUDE_WAVEFORM.label}, $figure% fidelity"
+                // Collapsed (bob's phone publishes its frequency profile, so there is a pitch line): renderer first.
+                val line = "${RendererKind.AMPLITUDE_WAVEFORM.label.replaceFirstChar(Char::uppercaseChar)} on bob's phone, $figure% fidelity"
                 rule.waitUntil(10_000) { rule.onAllNodesWithText(line).fetchSemanticsNodes().isNotEmpty() }
             }
             step(4) {

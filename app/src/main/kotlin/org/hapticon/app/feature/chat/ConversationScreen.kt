@@ -412,8 +412,8 @@ const val PEER_FEEL_TAG: String = "peer-feel"
 
 /**
  * Under the composer, how the chosen icon or pattern [name] will feel on [peer]'s phone: the renderer line, then the
- * pitch and the envelope's control points (one line each). With details, the lines collapse to the renderer line,
- * cut to ONE line, and a chevron; a tap (or TalkBack's double-tap, "collapsed, button, double-tap to show details")
+ * pitch and the envelope's control points (one line each). With details, the lines collapse to ONE line that names
+ * the renderer first ("Envelope effect on bob's phone"), and a chevron; a tap (or TalkBack's double-tap, "collapsed, button, double-tap to show details")
  * shows them all. At font scale 2.0 the three wrapped lines took half the screen, pushing the messages away. The whole
  * row is the control, at least 48 dp high; besides the click it offers Compose's expand/collapse semantics actions
  * (`AccessibilityNodeInfo.ACTION_EXPAND` / `ACTION_COLLAPSE` in TalkBack's actions menu).
@@ -424,6 +424,11 @@ private fun PeerFeelLines(name: String, peer: String, feel: PeerFeel?) {
     else "How $name will feel there: ${feel.renderer.label}" + (feel.alternative?.let { " or ${it.label}" } ?: "") +
         (feel.fidelityPercent?.let { ", $it% fidelity" } ?: "")
     val details = listOfNotNull(feel?.pitch, feel?.envelope).map(::keepUnitsWithNumbers)
+    // Collapsed, the renderer comes first: cut to one line at font 2.0, "How boing will feel there: am…" lost it.
+    val collapsedSummary = feel?.let {
+        it.renderer.label.replaceFirstChar(Char::uppercaseChar) + (it.alternative?.let { alt -> " or ${alt.label}" } ?: "") +
+            " on $peer's phone" + (it.fidelityPercent?.let { percent -> ", $percent% fidelity" } ?: "")
+    } ?: summary
     val style = MaterialTheme.typography.bodySmall
     val color = MaterialTheme.colorScheme.onSurfaceVariant
     if (details.isEmpty()) {
@@ -445,7 +450,7 @@ private fun PeerFeelLines(name: String, peer: String, feel: PeerFeel?) {
     ) {
         Column(Modifier.weight(1f), verticalArrangement = Arrangement.spacedBy(4.dp)) {
             Text(
-                summary, style = style, color = color,
+                if (expanded) summary else collapsedSummary, style = style, color = color,
                 maxLines = if (expanded) Int.MAX_VALUE else 1, overflow = TextOverflow.Ellipsis,
             )
             if (expanded) details.forEach { Text(it, style = style, color = color) }
