@@ -37,7 +37,16 @@ import kotlin.concurrent.thread
  */
 class ChatSessionRefusalTest {
     /** Stays connecting until the test [releases][release] it, then turns Failed and throws from [connect] a moment later. */
-    private class SlowlyRefusingMessenger : Messenger {
+    /** A messenger that never gets connected: every publish fails as MqttMessenger's does then. */
+    private abstract class NeverConnectedMessenger : Messenger {
+        override suspend fun disconnect() = Unit
+        override suspend fun send(recipient: String, message: ChatMessage) = throw MessagingException("not connected")
+        override suspend fun send(recipient: String, receipt: Receipt) = throw MessagingException("not connected")
+        override suspend fun send(recipient: String, pose: HandPose) = throw MessagingException("not connected")
+        override suspend fun publishCapabilities(capabilities: Capabilities) = throw MessagingException("not connected")
+    }
+
+    private class SlowlyRefusingMessenger : NeverConnectedMessenger() {
         override val user = "alice"
         private val mutableState = MutableStateFlow<ConnectionState>(ConnectionState.Connecting(null))
         override val state: StateFlow<ConnectionState> = mutableState
@@ -51,11 +60,6 @@ class ChatSessionRefusalTest {
             throw MessagingException("cannot connect to tcp://broker as alice: bad user name or password")
         }
 
-        override suspend fun disconnect() = Unit
-        override suspend fun send(recipient: String, message: ChatMessage) = throw MessagingException("not connected")
-        override suspend fun send(recipient: String, receipt: Receipt) = throw MessagingException("not connected")
-        override suspend fun send(recipient: String, pose: HandPose) = throw MessagingException("not connected")
-        override suspend fun publishCapabilities(capabilities: Capabilities) = throw MessagingException("not connected")
     }
 
     @Test
@@ -88,15 +92,10 @@ class ChatSessionRefusalTest {
     }
 
     /** Already failing to reach the broker ("still trying"): the end of the input does not wait for the next attempt. */
-    private class UnreachableMessenger : Messenger {
+    private class UnreachableMessenger : NeverConnectedMessenger() {
         override val user = "alice"
         override val state: StateFlow<ConnectionState> = MutableStateFlow(ConnectionState.Connecting(lastFailure = "connection refused"))
         override suspend fun connect(listener: InboxListener) = CompletableDeferred<Unit>().await()
-        override suspend fun disconnect() = Unit
-        override suspend fun send(recipient: String, message: ChatMessage) = throw MessagingException("not connected")
-        override suspend fun send(recipient: String, receipt: Receipt) = throw MessagingException("not connected")
-        override suspend fun send(recipient: String, pose: HandPose) = throw MessagingException("not connected")
-        override suspend fun publishCapabilities(capabilities: Capabilities) = throw MessagingException("not connected")
     }
 
     @Test
