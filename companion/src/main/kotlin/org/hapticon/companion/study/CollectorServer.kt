@@ -173,11 +173,16 @@ class CollectorServer(
             if (request.headers.getLongField(HttpHeader.CONTENT_LENGTH) > limits.maxBodyBytes) return@guarded tooLarge()
             null
         }
-        if (refused != null) return send(response, callback, refused)
+        // Refused before its body was read: say the connection closes (RFC 9112 §9.6). Jetty closes it anyway when
+        // the unread body has not arrived, but the reply is already sent without that header then, so a client
+        // (the JDK's HttpClient) pooled the connection and its next POST failed with "received no bytes".
+        if (refused != null) return send(response, callback, refused, closeConnection = true)
         // Read the whole body without holding a thread, then parse and store it on the pool: a client that
         // stalls mid-body costs one connection until the idle timeout, and nothing is stored from a partial body.
         Content.Source.asByteArrayAsync(request, limits.maxBodyBytes).whenCompleteAsync({ bytes, failure ->
-            send(response, callback, if (failure != null) bodyFailed(failure) else guarded { store(bytes, studyId) })
+            // A body that failed (cut short, stalled, too large) leaves the connection in an unknown state: close it.
+            if (failure != null) send(response, callback, bodyFailed(failure), closeConnection = true)
+            else send(response, callback, guarded { store(bytes, studyId) })
         }, pool)
     }
 
@@ -248,9 +253,10 @@ class CollectorServer(
         error(500, "internal error: ${e.javaClass.simpleName}")
     }
 
-    private fun send(response: Response, callback: Callback, reply: Reply?) {
+    private fun send(response: Response, callback: Callback, reply: Reply?, closeConnection: Boolean = false) {
         val r = reply ?: error(500, "internal error: no reply")
         response.status = r.status
+        if (closeConnection) response.headers.put(HttpHeader.CONNECTION, "close")
         response.headers.put(HttpHeader.CONTENT_TYPE, r.contentType)
         if (r.status == 401) response.headers.put(HttpHeader.WWW_AUTHENTICATE, "Bearer")
         response.write(true, ByteBuffer.wrap(r.body), callback) // a client that went away fails the callback; nothing to tell it

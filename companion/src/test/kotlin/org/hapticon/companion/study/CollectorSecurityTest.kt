@@ -206,6 +206,26 @@ class CollectorSecurityTest {
         }
     }
 
+    /**
+     * A refusal sent before the body arrived says `Connection: close` and closes: without the header the JDK's
+     * HttpClient pooled the connection Jetty was closing, and its next POST failed with "HTTP/1.1 header parser
+     * received no bytes" (seen once in CI, on the token test above).
+     */
+    @Test fun upload_refusedBeforeItsBodyArrives_saysTheConnectionCloses() {
+        val store = sqlite()
+        CollectorHarness(store, CollectorAccess.Tokens(CollectorTokens(store))).use { h ->
+            connect(h.server.port).use { s ->
+                s.getOutputStream().write(headers(upload.toByteArray().size).toByteArray()) // no token, no body yet
+                s.getOutputStream().flush()
+                val response = s.getInputStream().readBytes().toString(Charsets.UTF_8) // to the server's close
+                assertTrue(response, response.startsWith("HTTP/1.1 401 "))
+                assertTrue(response, response.contains("\r\nConnection: close\r\n", ignoreCase = true))
+            }
+            assertEquals(401, h.upload(upload).statusCode()) // and the pooled client goes on
+            assertEquals(401, h.upload(upload).statusCode())
+        }
+    }
+
     @Test fun upload_overTheSizeLimit_413_declaredOrChunked() {
         CollectorHarness(sqlite(), limits = CollectorLimits(maxBodyBytes = 1_000)).use { h ->
             val declared = h.upload(upload) // Content-Length 3,000-odd
