@@ -231,16 +231,9 @@ class OfflineFirstChatRepository(
     }
 }
 
+/** The row for [this] message; positional, in [MessageEntity]'s column order, as `MessageEntity.asChatMessage` reads it back. */
 internal fun ChatMessage.asEntity(conversation: String, outgoing: Boolean, state: MessageState) = MessageEntity(
-    id = id,
-    conversation = conversation,
-    sender = sender,
-    sentAtMillis = sentAtMillis,
-    text = text,
-    sticker = sticker,
-    iconJson = icon?.let { IconJson.encode(it) },
-    outgoing = outgoing,
-    state = state.name,
+    id, conversation, sender, sentAtMillis, text, sticker, icon?.let { IconJson.encode(it) }, outgoing, state.name,
     patternJson = pattern?.let(::patternToJson),
 )
 
