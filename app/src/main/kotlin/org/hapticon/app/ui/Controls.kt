@@ -36,6 +36,7 @@ import androidx.compose.material3.SingleChoiceSegmentedButtonRow
 import androidx.compose.material3.Switch
 import androidx.compose.material3.Text
 import androidx.compose.runtime.Composable
+import androidx.compose.runtime.Immutable
 import androidx.compose.runtime.getValue
 import androidx.compose.runtime.mutableStateOf
 import androidx.compose.runtime.remember
@@ -54,15 +55,24 @@ import androidx.compose.ui.unit.dp
 import org.hapticon.app.designsystem.HapticonIcons
 
 /**
- * A labelled drop-down: a button showing [label] and the selected option; choosing an option calls
+ * What a single-choice control shows: the [options] in order, the [selected] one, and the text [optionLabel]
+ * gives each. [DropdownField] and [SegmentedChoice] both take one.
+ *
+ * [selected] need not be one of [options]: a value kept from before (a stored channel the board no longer
+ * reports, a participant number past the list) is still shown as the current choice, and the user can pick
+ * one of [options] instead. So nothing here requires it, and a screen never crashes on such a value.
+ */
+@Immutable
+class SingleChoice<T>(val options: List<T>, val selected: T, val optionLabel: (T) -> String)
+
+/**
+ * A labelled drop-down: a button showing [label] and [choice]'s selected option; choosing an option calls
  * [onSelect]. Read by screen readers as "[label], [selected option]".
  */
 @Composable
 fun <T> DropdownField(
     label: String,
-    options: List<T>,
-    selected: T,
-    optionLabel: (T) -> String,
+    choice: SingleChoice<T>,
     onSelect: (T) -> Unit,
     modifier: Modifier = Modifier,
     enabled: Boolean = true,
@@ -77,18 +87,18 @@ fun <T> DropdownField(
                 shape = WrappingButtonShape,
                 modifier = Modifier.semantics {
                     contentDescription = label
-                    stateDescription = optionLabel(selected)
+                    stateDescription = choice.optionLabel(choice.selected)
                 },
             ) {
                 // Weighted so a label too long for one line wraps and still leaves room for the arrow.
-                Text(optionLabel(selected), Modifier.weight(1f, fill = false))
+                Text(choice.optionLabel(choice.selected), Modifier.weight(1f, fill = false))
                 Spacer(Modifier.width(4.dp))
                 Icon(HapticonIcons.ArrowDropDown, contentDescription = null, modifier = Modifier.size(18.dp))
             }
             DropdownMenu(expanded = expanded, onDismissRequest = { expanded = false }) {
-                for (option in options) {
+                for (option in choice.options) {
                     DropdownMenuItem(
-                        text = { Text(optionLabel(option)) },
+                        text = { Text(choice.optionLabel(option)) },
                         onClick = {
                             expanded = false
                             onSelect(option)
@@ -101,53 +111,46 @@ fun <T> DropdownField(
 }
 
 /**
- * One choice among a few [options]: Material's segmented buttons while every label fits its segment on one
+ * One choice among a few options ([choice]): Material's segmented buttons while every label fits its segment on one
  * line, otherwise (the largest font sizes, a narrow screen) the same choice as a column of radio rows, so a
  * label never breaks inside a word or spills over its neighbour. Material 3 gives segmented buttons short
  * labels of equal width; radio buttons are its single-choice control for labels that need the room.
  */
 @Composable
-fun <T> SegmentedChoice(
-    options: List<T>,
-    selected: T,
-    optionLabel: (T) -> String,
-    onSelect: (T) -> Unit,
-    modifier: Modifier = Modifier,
-    enabled: Boolean = true,
-) {
+fun <T> SegmentedChoice(choice: SingleChoice<T>, onSelect: (T) -> Unit, modifier: Modifier = Modifier, enabled: Boolean = true) {
     val measurer = rememberTextMeasurer()
     val style = MaterialTheme.typography.labelLarge
     val density = LocalDensity.current
     BoxWithConstraints(modifier.fillMaxWidth()) {
-        val segment = maxWidth / options.size
-        val fits = options.all { option ->
-            val text = with(density) { measurer.measure(optionLabel(option), style, maxLines = 1, softWrap = false).size.width.toDp() }
-            text + segmentChrome(option == selected) <= segment
+        val segment = maxWidth / choice.options.size
+        val fits = choice.options.all { option ->
+            val text = with(density) { measurer.measure(choice.optionLabel(option), style, maxLines = 1, softWrap = false).size.width.toDp() }
+            text + segmentChrome(option == choice.selected) <= segment
         }
         if (fits) {
             SingleChoiceSegmentedButtonRow(Modifier.fillMaxWidth()) {
-                options.forEachIndexed { i, option ->
+                choice.options.forEachIndexed { i, option ->
                     SegmentedButton(
-                        selected = option == selected,
+                        selected = option == choice.selected,
                         onClick = { onSelect(option) },
                         enabled = enabled,
-                        shape = SegmentedButtonDefaults.itemShape(i, options.size),
-                        label = { Text(optionLabel(option), maxLines = 1) },
+                        shape = SegmentedButtonDefaults.itemShape(i, choice.options.size),
+                        label = { Text(choice.optionLabel(option), maxLines = 1) },
                     )
                 }
             }
         } else {
             Column(Modifier.fillMaxWidth().selectableGroup()) {
-                for (option in options) {
+                for (option in choice.options) {
                     Row(
                         Modifier.fillMaxWidth().heightIn(min = 48.dp)
-                            .selectable(option == selected, enabled = enabled, role = Role.RadioButton, onClick = { onSelect(option) }),
+                            .selectable(option == choice.selected, enabled = enabled, role = Role.RadioButton, onClick = { onSelect(option) }),
                         verticalAlignment = Alignment.CenterVertically,
                     ) {
-                        RadioButton(selected = option == selected, onClick = null, enabled = enabled)
+                        RadioButton(selected = option == choice.selected, onClick = null, enabled = enabled)
                         // Disabled (the protocol while a board streams): Material's 38 % of onSurface, as on the radio.
                         Text(
-                            optionLabel(option), style = MaterialTheme.typography.bodyLarge, modifier = Modifier.padding(start = 12.dp),
+                            choice.optionLabel(option), style = MaterialTheme.typography.bodyLarge, modifier = Modifier.padding(start = 12.dp),
                             color = if (enabled) Color.Unspecified else MaterialTheme.colorScheme.onSurface.copy(alpha = 0.38f),
                         )
                     }

@@ -11,6 +11,7 @@ import androidx.compose.ui.semantics.Role
 import androidx.compose.ui.semantics.SemanticsProperties
 import androidx.compose.ui.test.SemanticsMatcher
 import androidx.compose.ui.test.assert
+import androidx.compose.ui.test.assertIsNotSelected
 import androidx.compose.ui.test.assertIsSelected
 import androidx.compose.ui.test.getBoundsInRoot
 import androidx.compose.ui.test.junit4.createComposeRule
@@ -28,7 +29,7 @@ import org.robolectric.RobolectricTestRunner
 import org.robolectric.annotation.Config
 import org.robolectric.annotation.GraphicsMode
 
-/** The Sensors screen's protocol choice at the default and the largest font scale, on a 411 dp wide phone. */
+/** The Sensors screen's protocol choice at the default and the largest font scale, on a 411 dp wide phone; and one whose selected value is not among its options. */
 // Native graphics: the choice measures its labels, and only Robolectric's native text rendering measures real glyphs.
 @RunWith(RobolectricTestRunner::class)
 @GraphicsMode(GraphicsMode.Mode.NATIVE)
@@ -44,7 +45,7 @@ class SegmentedChoiceTest {
         val density = LocalDensity.current
         CompositionLocalProvider(LocalDensity provides Density(density.density, fontScale)) {
             HapticonTheme(dynamicColor = false) {
-                SegmentedChoice(options, selected, { it }, { selected = it }, Modifier.width(379.dp))
+                SegmentedChoice(SingleChoice(options, selected) { it }, { selected = it }, Modifier.width(379.dp))
             }
         }
     }
@@ -82,5 +83,17 @@ class SegmentedChoiceTest {
         compose.onNodeWithText("LucidGloves").performClick()
         assertEquals("LucidGloves", selected)
         compose.onNodeWithText("LucidGloves").assertIsSelected()
+    }
+
+    /** A selected value that is not among the options (allowed by [SingleChoice]) marks no segment, and a tap picks one. */
+    @Test
+    fun selectedOutsideOptions_noSegmentSelected_aTapSelectsOne() {
+        selected = "USB"
+        show(1f)
+        for (label in options) compose.onNodeWithText(label).assertIsNotSelected()
+        compose.onNodeWithText("CSV").performClick()
+        assertEquals("CSV", selected)
+        compose.onNodeWithText("CSV").assertIsSelected()
+        compose.onNodeWithText("Framed").assertIsNotSelected()
     }
 }

@@ -34,6 +34,7 @@ import org.hapticon.app.data.ClientCertificateStatus
 import org.hapticon.app.designsystem.HapticonIcons
 import org.hapticon.app.playback.label
 import org.hapticon.app.ui.DropdownField
+import org.hapticon.app.ui.SingleChoice
 import org.hapticon.app.ui.SwitchRow
 import org.hapticon.core.pattern.PitchFit
 import org.hapticon.messaging.RendererKind
@@ -108,16 +109,12 @@ fun SettingsScreen(
             val selected = uiState.renderers.firstOrNull { it.name == prefs.rendererOverride }
             DropdownField(
                 label = "Renderer",
-                options = listOf<RendererKind?>(null) + uiState.renderers,
-                selected = selected,
-                optionLabel = { it?.label ?: "Automatic (best for this phone)" },
+                choice = SingleChoice(listOf<RendererKind?>(null) + uiState.renderers, selected) { it?.label ?: "Automatic (best for this phone)" },
                 onSelect = { r -> actions.update { it.copy(rendererOverride = r?.name) } },
             )
             DropdownField(
                 label = "Notes this phone cannot play",
-                options = PitchFit.entries,
-                selected = prefs.pitchFit,
-                optionLabel = { it.label },
+                choice = SingleChoice(PitchFit.entries, prefs.pitchFit) { it.label },
                 onSelect = { fit -> actions.update { it.copy(pitchFit = fit) } },
             )
             Text(

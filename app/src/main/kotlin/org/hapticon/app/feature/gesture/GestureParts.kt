@@ -26,6 +26,7 @@ import org.hapticon.app.feature.sensors.LivePlot
 import org.hapticon.app.gesture.GestureSourceKind
 import org.hapticon.app.gesture.TouchGestureSource
 import org.hapticon.app.ui.DropdownField
+import org.hapticon.app.ui.SingleChoice
 
 /** A pad to touch while the touchscreen records: every event goes to [source]. */
 @OptIn(ExperimentalComposeUiApi::class)
@@ -48,7 +49,7 @@ fun TouchPad(source: TouchGestureSource, modifier: Modifier = Modifier) {
 
 @Composable
 internal fun SourcePicker(selected: GestureSourceKind, enabled: Boolean, onSelect: (GestureSourceKind) -> Unit) {
-    DropdownField("Source", GestureSourceKind.entries, selected, { it.label }, onSelect, enabled = enabled)
+    DropdownField("Source", SingleChoice(GestureSourceKind.entries, selected) { it.label }, onSelect, enabled = enabled)
 }
 
 @Composable

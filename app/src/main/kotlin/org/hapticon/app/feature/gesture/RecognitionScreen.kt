@@ -21,6 +21,7 @@ import androidx.lifecycle.compose.collectAsStateWithLifecycle
 import org.hapticon.app.gesture.TouchGestureSource
 import org.hapticon.app.gesture.GestureSourceKind
 import org.hapticon.app.ui.DropdownField
+import org.hapticon.app.ui.SingleChoice
 import org.hapticon.app.ui.SwitchRow
 import java.util.Locale
 
@@ -83,7 +84,7 @@ private fun RecognitionContent(state: RecognitionUiState.Ready, touch: TouchGest
             Text("Start a conversation in Chats to send recognised gestures", style = MaterialTheme.typography.bodySmall)
         } else {
             val peer = state.peer ?: state.peers.first()
-            DropdownField("Conversation", state.peers, peer, { it }, { actions.onSelectPeer(it) })
+            DropdownField("Conversation", SingleChoice(state.peers, peer) { it }, { actions.onSelectPeer(it) })
             SwitchRow("Send recognised gestures to $peer", state.sendEnabled, { actions.onSetSendEnabled(it) })
         }
         for (sent in state.sent) {

@@ -36,6 +36,7 @@ import org.hapticon.app.feature.sensors.LivePlot
 import org.hapticon.app.gesture.TouchGestureSource
 import org.hapticon.app.gesture.GestureSourceKind
 import org.hapticon.app.ui.DropdownField
+import org.hapticon.app.ui.SingleChoice
 import org.hapticon.app.ui.EnvelopeThumbnail
 import org.hapticon.app.ui.LabeledValue
 import org.hapticon.gesture.Recording
@@ -166,14 +167,14 @@ private fun TrimAndFit(state: RecorderUiState.Ready, take: Recording, actions: R
     val labelOptions = listOf(-1) + GestureLabel.ALL.indices
     OutlinedTextField(recordingName, { recordingName = it }, label = { Text("Recording name") }, singleLine = true, modifier = Modifier.fillMaxWidth())
     FlowRow(horizontalArrangement = Arrangement.spacedBy(12.dp), verticalArrangement = Arrangement.spacedBy(8.dp)) {
-        DropdownField("Label", labelOptions, labelIndex, { if (it < 0) "no label" else GestureLabel.ALL[it].id }, { labelIndex = it })
+        DropdownField("Label", SingleChoice(labelOptions, labelIndex) { if (it < 0) "no label" else GestureLabel.ALL[it].id }, { labelIndex = it })
         OutlinedButton(
             onClick = { actions.onSaveRecording(recordingName, GestureLabel.ALL.getOrNull(labelIndex)) },
             enabled = recordingName.isNotBlank(),
         ) { Text("Save recording") }
     }
     Text("Make an icon", style = MaterialTheme.typography.titleMedium)
-    DropdownField("Fit channel", take.channels.map { it.name }, state.fitChannel ?: take.channels.first().name, { it }, { actions.onSelectFitChannel(it) })
+    DropdownField("Fit channel", SingleChoice(take.channels.map { it.name }, state.fitChannel ?: take.channels.first().name) { it }, { actions.onSelectFitChannel(it) })
     OutlinedTextField(state.iconName, { actions.onSetIconName(it) }, label = { Text("Icon name") }, singleLine = true, modifier = Modifier.fillMaxWidth())
     Button(onClick = { actions.onMakeIcon() }, enabled = !state.fitting) { Text(if (state.fitting) "Fitting…" else "Make icon") }
     state.fit?.let { fit ->

@@ -33,6 +33,7 @@ import androidx.compose.ui.unit.IntSize
 import androidx.compose.ui.unit.dp
 import androidx.lifecycle.compose.collectAsStateWithLifecycle
 import org.hapticon.app.ui.DropdownField
+import org.hapticon.app.ui.SingleChoice
 import org.hapticon.app.ui.SwitchRow
 import org.hapticon.gesture.social.ContactFrame
 import java.util.Locale
@@ -117,7 +118,7 @@ private fun SocialTouchContent(state: SocialTouchUiState.Ready, actions: SocialT
         TeachSection(state, actions)
         if (state.peers.isNotEmpty()) {
             val peer = state.peer ?: state.peers.first()
-            DropdownField("Conversation", state.peers, peer, { it }, actions.onSelectPeer)
+            DropdownField("Conversation", SingleChoice(state.peers, peer) { it }, actions.onSelectPeer)
             SwitchRow("Send recognised touches to $peer as their icon", state.sendEnabled, actions.onSetSendEnabled)
         }
         for (result in state.results.drop(1)) {

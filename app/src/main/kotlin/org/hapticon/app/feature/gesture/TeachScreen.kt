@@ -23,6 +23,7 @@ import androidx.lifecycle.compose.collectAsStateWithLifecycle
 import org.hapticon.app.gesture.TouchGestureSource
 import org.hapticon.app.gesture.GestureSourceKind
 import org.hapticon.app.ui.DropdownField
+import org.hapticon.app.ui.SingleChoice
 import org.hapticon.app.ui.LabeledValue
 import org.hapticon.gesture.recognition.GestureLabel
 import java.util.Locale
@@ -84,7 +85,7 @@ private fun TeachContent(state: TeachUiState.Ready, plot: PlotSource, touch: Tou
                 FilterChip(selected = label in state.labels, onClick = { actions.onToggleLabel(label) }, label = { Text(label.id) }, enabled = !label.isNone)
             }
         }
-        DropdownField("Takes per gesture", (1..TeachViewModel.MAX_TAKES).toList(), state.takesPerLabel, { it.toString() }, { actions.onSetTakesPerLabel(it) })
+        DropdownField("Takes per gesture", SingleChoice((1..TeachViewModel.MAX_TAKES).toList(), state.takesPerLabel) { it.toString() }, { actions.onSetTakesPerLabel(it) })
         if (state.sourceKind == GestureSourceKind.TOUCH && touch != null) TouchPad(touch)
         val (done, wanted) = state.progress
         val next = state.next

@@ -2,6 +2,7 @@ package org.hapticon.app.feature.glove
 
 import androidx.compose.foundation.layout.Arrangement
 import org.hapticon.app.ui.SegmentedChoice
+import org.hapticon.app.ui.SingleChoice
 import androidx.compose.foundation.layout.Box
 import androidx.compose.foundation.layout.Column
 import androidx.compose.foundation.layout.Row
@@ -114,7 +115,7 @@ fun CalibrationScreen(uiState: CalibrationUiState, actions: CalibrationActions) 
                     supportingText = { Text("Calibrations are saved per participant") },
                     modifier = Modifier.fillMaxWidth(),
                 )
-                SegmentedChoice(GloveFinger.entries, uiState.finger, ::fingerName, actions.onSelectFinger)
+                SegmentedChoice(SingleChoice(GloveFinger.entries, uiState.finger, ::fingerName), actions.onSelectFinger)
                 if (!uiState.connected) {
                     Card(colors = CardDefaults.cardColors(containerColor = MaterialTheme.colorScheme.surfaceVariant)) {
                         Text(

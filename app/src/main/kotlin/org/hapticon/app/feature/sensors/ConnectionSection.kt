@@ -2,6 +2,7 @@ package org.hapticon.app.feature.sensors
 
 import org.hapticon.sensor.live.ConnectionState
 import org.hapticon.app.ui.SegmentedChoice
+import org.hapticon.app.ui.SingleChoice
 import org.hapticon.sensor.live.StopCause
 import org.hapticon.sensor.protocol.BAUD_RATES
 import org.hapticon.sensor.protocol.SensorProtocol
@@ -39,13 +40,11 @@ internal fun ConnectionSection(state: SensorsUiState.Ready, actions: SensorsActi
     Column(verticalArrangement = Arrangement.spacedBy(8.dp)) {
         SectionTitle("Connection")
         Text("Protocol", style = MaterialTheme.typography.labelMedium)
-        SegmentedChoice(SensorProtocol.entries, state.protocol, { it.label }, actions.onSelectProtocol, enabled = !locked)
+        SegmentedChoice(SingleChoice(SensorProtocol.entries, state.protocol) { it.label }, actions.onSelectProtocol, enabled = !locked)
         FlowRow(horizontalArrangement = Arrangement.spacedBy(12.dp), verticalArrangement = Arrangement.spacedBy(8.dp)) {
             DropdownField(
                 label = "Baud rate",
-                options = BAUD_RATES,
-                selected = state.baudRate,
-                optionLabel = { "$it baud" },
+                choice = SingleChoice(BAUD_RATES, state.baudRate) { "$it baud" },
                 onSelect = actions.onSelectBaudRate,
                 enabled = !locked,
             )

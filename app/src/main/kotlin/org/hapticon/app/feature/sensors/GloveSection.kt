@@ -15,6 +15,7 @@ import androidx.compose.runtime.Composable
 import androidx.compose.ui.Modifier
 import androidx.compose.ui.unit.dp
 import org.hapticon.app.ui.DropdownField
+import org.hapticon.app.ui.SingleChoice
 import org.hapticon.app.ui.ButtonRow
 
 /** The Sensors screen's flex-sensor glove section: finger channels, calibration and handshake. */
@@ -28,10 +29,10 @@ internal fun GloveSection(glove: GloveUi, actions: SensorsActions) {
             val name = { c: Int -> glove.channelNames.getOrNull(c) ?: "ch$c" }
             val current = GloveChannels(glove.thumbChannel, glove.middleChannel, glove.adcBits.takeIf { glove.adcBitsFromDevice == null })
             FlowRow(horizontalArrangement = Arrangement.spacedBy(12.dp), verticalArrangement = Arrangement.spacedBy(8.dp)) {
-                DropdownField("Thumb channel", channels, glove.thumbChannel, name, { actions.onGloveChannels(current.copy(thumb = it)) })
-                DropdownField("Middle-finger channel", channels, glove.middleChannel, name, { actions.onGloveChannels(current.copy(middle = it)) })
+                DropdownField("Thumb channel", SingleChoice(channels, glove.thumbChannel, name), { actions.onGloveChannels(current.copy(thumb = it)) })
+                DropdownField("Middle-finger channel", SingleChoice(channels, glove.middleChannel, name), { actions.onGloveChannels(current.copy(middle = it)) })
                 if (glove.adcBitsFromDevice == null) {
-                    DropdownField("ADC resolution", listOf(10, 12), glove.adcBits, { "$it bit" }, { actions.onGloveChannels(current.copy(adcBits = it)) })
+                    DropdownField("ADC resolution", SingleChoice(listOf(10, 12), glove.adcBits) { "$it bit" }, { actions.onGloveChannels(current.copy(adcBits = it)) })
                 }
             }
             ButtonRow {

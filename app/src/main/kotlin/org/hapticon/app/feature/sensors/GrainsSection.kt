@@ -2,6 +2,7 @@ package org.hapticon.app.feature.sensors
 
 import org.hapticon.sensor.grains.ForceInput
 import org.hapticon.app.ui.SegmentedChoice
+import org.hapticon.app.ui.SingleChoice
 import androidx.compose.foundation.layout.Arrangement
 import androidx.compose.foundation.layout.Column
 import androidx.compose.foundation.layout.ExperimentalLayoutApi
@@ -40,24 +41,18 @@ internal fun GrainsSection(grains: GrainUi, actions: SensorsActions) {
                 val channels = grains.channelNames.indices.toList().ifEmpty { listOf(grains.channel) }
                 DropdownField(
                     label = "Force channel",
-                    options = channels,
-                    selected = grains.channel,
-                    optionLabel = { grains.channelNames.getOrNull(it) ?: "ch$it" },
+                    choice = SingleChoice(channels, grains.channel) { grains.channelNames.getOrNull(it) ?: "ch$it" },
                     onSelect = actions.onGrainChannel,
                 )
                 DropdownField(
                     label = "Force reads as",
-                    options = listOf<ForceInput?>(null) + ForceInput.entries,
-                    selected = grains.input,
-                    optionLabel = { it?.label ?: "Automatic" },
+                    choice = SingleChoice(listOf<ForceInput?>(null) + ForceInput.entries, grains.input) { it?.label ?: "Automatic" },
                     onSelect = actions.onForceInput,
                 )
                 if (grains.deviceSampleRateHz == null) {
                     DropdownField(
                         label = "Sample rate",
-                        options = SAMPLE_RATES,
-                        selected = grains.fallbackSampleRateHz,
-                        optionLabel = { "$it Hz" },
+                        choice = SingleChoice(SAMPLE_RATES, grains.fallbackSampleRateHz) { "$it Hz" },
                         onSelect = actions.onFallbackSampleRate,
                     )
                 }
@@ -77,8 +72,8 @@ internal fun GrainsSection(grains: GrainUi, actions: SensorsActions) {
             )
             Text("Distribution", style = MaterialTheme.typography.labelMedium)
             SegmentedChoice(
-                BinDistribution.entries, grains.distribution,
-                { d -> d.name.lowercase().replaceFirstChar { it.titlecase(Locale.ROOT) } }, actions.onDistribution,
+                SingleChoice(BinDistribution.entries, grains.distribution) { d -> d.name.lowercase().replaceFirstChar { it.titlecase(Locale.ROOT) } },
+                actions.onDistribution,
             )
             Text("Burst strength: ${(grains.amplitude * 100 / 255)} %", style = MaterialTheme.typography.labelMedium)
             Slider(

@@ -31,6 +31,7 @@ import androidx.compose.ui.text.input.KeyboardType
 import androidx.compose.ui.unit.dp
 import androidx.lifecycle.compose.collectAsStateWithLifecycle
 import org.hapticon.app.ui.DropdownField
+import org.hapticon.app.ui.SingleChoice
 import org.hapticon.app.ui.LabeledValue
 import org.hapticon.sensor.electrotactile.AmplitudeSteps
 import org.hapticon.study.compliance.ComplianceProtocol
@@ -98,8 +99,8 @@ private fun SetupContent(state: ComplianceUiState.Setup, actions: ComplianceActi
     )
     OutlinedTextField(state.participant, actions.onParticipant, label = { Text("Participant") }, singleLine = true, modifier = Modifier.fillMaxWidth())
     ButtonRow {
-        DropdownField("Participant number", (0 until 40).toList(), state.participantIndex, { (it + 1).toString() }, actions.onParticipantIndex)
-        DropdownField("Repetitions", (1..ComplianceProtocol.MAX_REPETITIONS).toList(), protocol.repetitions, { it.toString() }, actions.onRepetitions)
+        DropdownField("Participant number", SingleChoice((0 until 40).toList(), state.participantIndex) { (it + 1).toString() }, actions.onParticipantIndex)
+        DropdownField("Repetitions", SingleChoice((1..ComplianceProtocol.MAX_REPETITIONS).toList(), protocol.repetitions) { it.toString() }, actions.onRepetitions)
     }
     Text(
         state.levels?.let { steps ->

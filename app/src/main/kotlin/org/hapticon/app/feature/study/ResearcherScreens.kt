@@ -49,6 +49,7 @@ import org.hapticon.app.study.NoiseColor
 import org.hapticon.app.study.NoiseFiles
 import org.hapticon.app.study.StudyExporter
 import org.hapticon.app.ui.DropdownField
+import org.hapticon.app.ui.SingleChoice
 import org.hapticon.study.Stimulus
 import org.hapticon.study.StudyTask
 import org.hapticon.app.study.StoredProtocol
@@ -108,9 +109,9 @@ private fun ResearcherContent(state: ResearcherUiState.Success, actions: Researc
                 if (selected != null) {
                     DropdownField(
                         label = "Protocol",
-                        options = state.protocols,
-                        selected = selected,
-                        optionLabel = { "${it.protocol.title} (${it.protocol.id} r${it.protocol.revision})" + if (it.readOnly) " · default" else "" },
+                        choice = SingleChoice(state.protocols, selected) {
+                            "${it.protocol.title} (${it.protocol.id} r${it.protocol.revision})" + if (it.readOnly) " · default" else ""
+                        },
                         onSelect = { actions.onSelect(it.protocol.id) },
                     )
                     val masking = selected.masking
@@ -249,10 +250,10 @@ fun ProtocolEditorScreen(state: ProtocolEditorUiState, actions: ProtocolEditorAc
             Column(verticalArrangement = Arrangement.spacedBy(8.dp)) {
                 Text("${draft.id} · revision ${draft.revision}", style = MaterialTheme.typography.labelLarge)
                 TextRow("Title", draft.title) { v -> actions.onEdit { it.copy(title = v) } }
-                DropdownField("Scale points", (2..LikertScale.MAX_POINTS).toList(), draft.points, { "$it" }, actions.onSetPoints)
-                DropdownField("Task order", OrderScheme.entries, draft.taskOrder, { it.jsonName }, { v -> actions.onEdit { it.copy(taskOrder = v) } })
+                DropdownField("Scale points", SingleChoice((2..LikertScale.MAX_POINTS).toList(), draft.points) { "$it" }, actions.onSetPoints)
+                DropdownField("Task order", SingleChoice(OrderScheme.entries, draft.taskOrder) { it.jsonName }, { v -> actions.onEdit { it.copy(taskOrder = v) } })
                 TextRow("Seed", draft.seed.toString(), KeyboardType.Number) { v -> v.toLongOrNull()?.let { s -> actions.onEdit { it.copy(seed = s) } } }
-                DropdownField("Masking noise", NoiseColor.entries, draft.masking.color, { it.label }, { v ->
+                DropdownField("Masking noise", SingleChoice(NoiseColor.entries, draft.masking.color) { it.label }, { v ->
                     actions.onEdit { it.copy(masking = it.masking.copy(color = v)) }
                 })
                 if (draft.masking.isOn) MaskingLevel(draft.masking) { level -> actions.onEdit { it.copy(masking = it.masking.copy(levelDbfs = level)) } }
@@ -265,21 +266,21 @@ fun ProtocolEditorScreen(state: ProtocolEditorUiState, actions: ProtocolEditorAc
                     TextRow("Task ${t + 1} title", task.title) { v -> actions.onEditTask(t) { it.copy(title = v) } }
                     TextRow("Task ${t + 1} instructions", task.instructions) { v -> actions.onEditTask(t) { it.copy(instructions = v) } }
                     TextRow("Task ${t + 1} question", task.question) { v -> actions.onEditTask(t) { it.copy(question = v) } }
-                    DropdownField("Task ${t + 1} stimulus order", OrderScheme.entries, task.stimulusOrder, { it.jsonName }, { v ->
+                    DropdownField("Task ${t + 1} stimulus order", SingleChoice(OrderScheme.entries, task.stimulusOrder) { it.jsonName }, { v ->
                         actions.onEditTask(t) { it.copy(stimulusOrder = v) }
                     })
                     task.stimuli.forEachIndexed { s, stimulus ->
                         HorizontalDivider()
                         Text("Stimulus ${s + 1}: ${stimulus.id}", style = MaterialTheme.typography.labelLarge)
                         val icons = if (editing.icons.any { it == stimulus.icon }) editing.icons else listOf(stimulus.icon) + editing.icons
-                        DropdownField("Task ${t + 1} stimulus ${s + 1} icon", icons, stimulus.icon, { it.name }, { icon ->
+                        DropdownField("Task ${t + 1} stimulus ${s + 1} icon", SingleChoice(icons, stimulus.icon) { it.name }, { icon ->
                             actions.onEditStimulus(t, s) { it.copy(icon = icon) }
                         })
                         TextRow("Task ${t + 1} stimulus ${s + 1} text", stimulus.text.orEmpty()) { v ->
                             actions.onEditStimulus(t, s) { it.copy(text = v.ifEmpty { null }) }
                         }
                         val stickers = listOf<String?>(null) + Sticker.entries.map { "sticker_${it.wireName}" }
-                        DropdownField("Task ${t + 1} stimulus ${s + 1} sticker", (stickers + stimulus.sticker).distinct(), stimulus.sticker, { it ?: "none" }, { v ->
+                        DropdownField("Task ${t + 1} stimulus ${s + 1} sticker", SingleChoice((stickers + stimulus.sticker).distinct(), stimulus.sticker) { it ?: "none" }, { v ->
                             actions.onEditStimulus(t, s) { it.copy(sticker = v) }
                         })
                     }
