@@ -1,7 +1,8 @@
 // Sensor protocols, models, safety limits and the live session: pure Kotlin, testable on the JVM. The Android USB
 // transport lives in :sensor-bridge:usb and only moves bytes.
 plugins {
-    alias(libs.plugins.hapticon.kotlin.library)
+    // @Serializable: the electrotactile calibration file (electrotactile/CalibrationFile.kt, docs/json.md).
+    alias(libs.plugins.hapticon.kotlin.library.serialization)
 }
 
 dependencies {

@@ -1,5 +1,5 @@
 // The convention of the pure-Kotlin library modules whose types are @Serializable documents (haptics-core,
-// messaging, study, gesture; docs/json.md): hapticon.kotlin-library, plus the Kotlin serialization plugin and
+// sensor-bridge, messaging, study, gesture; docs/json.md): hapticon.kotlin-library, plus the Kotlin serialization plugin and
 // its runtime, kotlinx-serialization-json, at the catalog's versions (the plugin generates the serializers, the
 // runtime runs them). Read by the offline build like hapticon.kotlin-library.gradle.kts (docs/build.md).
 plugins {

@@ -55,22 +55,28 @@ val USAGE: String = """
     |  hapticon board info --port DEV [--baud N]
     |      Ask a Hapticon framed board (hapticon_ref.ino) for its device info: name, firmware, ADC bits, rate,
     |      channels, and the raw force range its stand-alone grains span. --baud defaults to 115200.
-    |  hapticon board set --port DEV --grains N [--shape SHAPE | --electrodes ROWS] (--ma MA | --steps S)
+    |  hapticon board set --port DEV --grains N [--shape SHAPE | --electrodes ROWS]
+    |                    (--ma MA | --steps S | --calibration FILE)
     |                    [--distribution linear|convex|concave] [--range MIN:MAX] [--baud N]
     |      Send the board's grain parameters (SET_GRAINS) and print its answer in one line: acknowledged,
     |      refused with the firmware's reason, or no answer within 500 ms (exit 2 unless acknowledged).
     |      N grains per full press (0..99; bins = grains + 1). SHAPE: large_square (default), small_square,
     |      horizontal_line, vertical_line, triangle; or ROWS such as XXX/X.X/XXX (at least 4 electrodes).
     |      --ma: one current for all nine electrodes or nine comma-separated, in 0..2.7 mA (the hardware's
-    |      next step up, 200 steps of 0.0135 mA); --steps: the same as steps 0..200. Past 2.7 mA, NaN or any
-    |      other bad value is refused before the port is opened. The force range is the board's own (device
-    |      info) unless --range gives it (a channel in physical units announces none).
-    |  hapticon board calibrate --port DEV [--range MIN:MAX] [--baud N]
+    |      next step up, 200 steps of 0.0135 mA); --steps: the same as steps 0..200; --calibration: the
+    |      nine steps of a file saved by board calibrate --save (read strictly: a wrong schema or version,
+    |      an unknown member, a step past 200 or an mA that is not its step's is refused, naming the file
+    |      and the member). Past 2.7 mA, NaN or any other bad value is refused before the port is opened.
+    |      The force range is the board's own (device info) unless --range gives it (a channel in physical
+    |      units announces none).
+    |  hapticon board calibrate --port DEV [--save FILE [--participant ID] [--force]] [--range MIN:MAX] [--baud N]
     |      Shaping Compliance's calibration on the terminal: each electrode alone, a 200 ms stimulus from
     |      0.8 mA (step 60, 0.81 mA); keys u/+/space one step up (not yet), d/- one step down (too strong),
     |      r again, y/Enter clear and pain-free (next electrode); then all nine with 39 grains while you
     |      press: y/Enter done, d/- all one step down. q stops. Never past 2.7 mA (step 200). Prints the
-    |      calibrated steps for board set --steps.
+    |      calibrated steps for board set --steps; --save writes them (with their mA, the time and the
+    |      participant) to FILE for board set --calibration: whole or not at all, nothing when stopped with
+    |      q, and an existing FILE is refused before the port opens unless --force.
     |  hapticon chat --broker URL --user NAME --password-file FILE [--to PEER] [--wav-dir DIR] [--e2e [--keys-dir DIR]]
     |      Chat over MQTT (tcp://HOST:PORT, or ssl://HOST:PORT for TLS) with the app or another chat: lines
     |      are sent to PEER; /icon ICON [TEXT], /sticker NAME [TEXT], /to PEER, /help, /quit. Received icons

@@ -3,13 +3,19 @@ package org.hapticon.companion.board
 import java.io.Closeable
 import java.io.IOException
 import java.io.InputStream
+import java.nio.file.InvalidPathException
+import java.nio.file.Path
+import java.time.Instant
+import java.time.temporal.ChronoUnit
 import java.util.concurrent.TimeUnit
 import org.hapticon.companion.cli.Arguments
 import org.hapticon.companion.cli.Console
 import org.hapticon.companion.cli.UsageException
 import org.hapticon.sensor.electrotactile.AmplitudeSteps
+import org.hapticon.sensor.electrotactile.CalibrationFile
 import org.hapticon.sensor.electrotactile.ElectrodeMask
 import org.hapticon.sensor.electrotactile.ElectrodePattern
+import org.hapticon.sensor.electrotactile.StoredCalibration
 import org.hapticon.sensor.grains.BinDistribution
 import org.hapticon.sensor.grains.FirmwareForceRange
 import org.hapticon.sensor.grains.FirmwareGrainParams
@@ -19,7 +25,8 @@ import org.hapticon.sensor.safety.SafetyLimitException
 
 /**
  * What `hapticon board` reaches outside the process, so tests can put a board double and scripted keys in its place:
- * how ports are listed and opened (jSerialComm on a desktop), where keys come from, and how long device info may take.
+ * how ports are listed and opened (jSerialComm on a desktop), where keys come from, how long device info may take,
+ * and the clock that dates a saved calibration.
  */
 class BoardIo(
     /** Lists the serial ports. */
@@ -30,6 +37,8 @@ class BoardIo(
     val keys: () -> TerminalKeys,
     /** How long to wait for the board's device info. */
     val infoTimeoutMillis: Long = BoardLink.INFO_TIMEOUT_MILLIS,
+    /** The time written into a saved calibration (`calibratedAt`). */
+    val clock: () -> Instant = Instant::now,
 ) {
     companion object {
         /** The real machine: jSerialComm's ports and the terminal's keys. */
@@ -107,7 +116,7 @@ private fun info(args: List<String>, console: Console, io: BoardIo) {
 private fun set(args: List<String>, console: Console, io: BoardIo) {
     val arguments = Arguments.parse(
         "board set", args,
-        valueOptions = setOf("port", "baud", "grains", "shape", "electrodes", "distribution", "ma", "steps", "range"),
+        valueOptions = setOf("port", "baud", "grains", "shape", "electrodes", "distribution", "ma", "steps", "calibration", "range"),
     )
     arguments.requireNoPositionals()
     val portName = arguments.required("port")
@@ -116,12 +125,17 @@ private fun set(args: List<String>, console: Console, io: BoardIo) {
     val grains = arguments.value("grains")?.let { it.toIntOrNull() ?: throw UsageException("--grains must be a whole number, got '$it'") }
         ?: throw UsageException("board set needs --grains N (0..99; bins = grains + 1)")
     val pattern = pattern(arguments)
-    val steps = steps(arguments)
+    val stored = arguments.value("calibration")?.let { file ->
+        if (arguments.value("ma") != null || arguments.value("steps") != null) throw UsageException("give --calibration FILE or --ma/--steps, not both")
+        CalibrationFiles.read(path("calibration", file))
+    }
+    val steps = stored?.result?.steps ?: steps(arguments)
     val distribution = arguments.choice("distribution", DISTRIBUTIONS, BinDistribution.LINEAR)
     val range = arguments.value("range")?.let(::parseRange)
     // The range is the board's own (its device info) unless given; the full 16-bit span stands in until then, so
     // every other field is checked now, as the firmware will check it.
     val checked = validated { FirmwareGrainParams(grains, distribution, 0, 0xFFFF, pattern, steps) }
+    if (stored != null) console.out.println("calibration ${arguments.value("calibration")}: ${describe(stored)}")
     connect(io, portName, baud).use { link ->
         val boardRange = range ?: run {
             link.requestInfo(io.infoTimeoutMillis) ?: throw noInfo(portName, io)
@@ -135,16 +149,42 @@ private fun set(args: List<String>, console: Console, io: BoardIo) {
 }
 
 private fun calibrate(args: List<String>, console: Console, io: BoardIo) {
-    val arguments = Arguments.parse("board calibrate", args, valueOptions = setOf("port", "baud", "range"))
+    val arguments = Arguments.parse(
+        "board calibrate", args,
+        valueOptions = setOf("port", "baud", "range", "save", "participant"), flagOptions = setOf("force"),
+    )
     arguments.requireNoPositionals()
     val portName = arguments.required("port")
     val baud = baud(arguments)
     val range = arguments.value("range")?.let(::parseRange)
+    val save = arguments.value("save")?.let { path("save", it) }
+    val force = arguments.flag("force")
+    val participant = arguments.value("participant")
+    if (save == null && (force || participant != null)) throw UsageException("--${if (force) "force" else "participant"} only goes with --save FILE")
+    participant?.let { CalibrationFile.participantProblem(it) }?.let { throw UsageException("--participant: $it") }
+    // Refused before the port is opened: a participant never sits through a calibration that cannot be saved.
+    save?.let { CalibrationFiles.checkCanSave(it, force) }
     connect(io, portName, baud).use { link ->
         if (range == null) link.requestInfo(io.infoTimeoutMillis) ?: throw noInfo(portName, io)
         val result = io.keys().use { keys -> CalibrationWalk(link, keys, console.out, range).run() }
-        if (result == null) throw UsageException("calibration stopped before the end")
+            ?: throw UsageException("calibration stopped before the end" + (save?.let { ": nothing written to $it" } ?: ""))
+        if (save != null) {
+            val stored = StoredCalibration(result, io.clock().truncatedTo(ChronoUnit.SECONDS), participant)
+            CalibrationFiles.save(save, stored, force)
+            console.out.println("saved $save: ${describe(stored)}")
+            console.out.println("use it: hapticon board set --port $portName --grains N --shape SHAPE --calibration $save")
+        }
     }
+}
+
+/** One line about a stored calibration: who, when, and its steps. */
+private fun describe(stored: StoredCalibration): String =
+    (stored.participant?.let { "participant $it, " } ?: "") + "calibrated ${stored.calibratedAt}, steps ${stored.result.steps.joinToString(",")}"
+
+private fun path(option: String, text: String): Path = try {
+    Path.of(text)
+} catch (e: InvalidPathException) {
+    throw UsageException("--$option: not a file name: ${e.message}")
 }
 
 private fun connect(io: BoardIo, portName: String, baud: Int): BoardLink {
@@ -179,7 +219,7 @@ private fun pattern(arguments: Arguments): ElectrodePattern {
 private fun steps(arguments: Arguments): List<Int> {
     val ma = arguments.value("ma")
     val steps = arguments.value("steps")
-    if ((ma == null) == (steps == null)) throw UsageException("board set needs --ma MILLIAMPS or --steps STEPS (one value for all nine electrodes, or nine)")
+    if ((ma == null) == (steps == null)) throw UsageException("board set needs --ma MILLIAMPS or --steps STEPS (one value for all nine electrodes, or nine), or --calibration FILE")
     val values = (ma ?: steps)!!.split(',').map { it.trim() }
     if (values.size != 1 && values.size != NINE) throw UsageException("--${if (ma != null) "ma" else "steps"} needs 1 or 9 values, got ${values.size}")
     val parsed = values.map { text ->

@@ -131,7 +131,7 @@ class BoardCommandTest {
             listOf("--grains", "9", "--electrodes", "XX./..,/...", "--ma", "1") to "hapticon: refused, nothing sent: row 1: ',' is neither X nor .",
             listOf("--grains", "9", "--electrodes", "XX./.../...", "--ma", "1") to "hapticon: refused, nothing sent: a compliance grain needs at least 4 electrodes, XX./.../... has 2",
             listOf("--grains", "9", "--ma", "1,1") to "hapticon: --ma needs 1 or 9 values, got 2",
-            listOf("--grains", "9") to "hapticon: board set needs --ma MILLIAMPS or --steps STEPS (one value for all nine electrodes, or nine)",
+            listOf("--grains", "9") to "hapticon: board set needs --ma MILLIAMPS or --steps STEPS (one value for all nine electrodes, or nine), or --calibration FILE",
             listOf("--grains", "9", "--ma", "1", "--range", "5:5") to "hapticon: refused, nothing sent: need 0 <= min < max <= 65535, were 5 and 5",
         )
         for ((options, line) in cases) {
