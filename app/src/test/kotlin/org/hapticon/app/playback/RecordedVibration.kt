@@ -21,12 +21,36 @@ val PROCESSING_KNOCK = RecordedVibration(listOf(10L, 10L, 250L, 10L, 10L, 250L, 
  * Reads what [vibrator] was last asked to play. Robolectric 4.17 records waveform effects as the
  * platform's step segments in a protected field without a getter, and the segment class is hidden
  * from the public android.jar, so both are read reflectively.
+ *
+ * The app vibrates from its render thread (`playOffMain`) while a test polls from its own, and ShadowVibrator
+ * keeps the segments in a plain static ArrayList that each `vibrate` clears and refills: a read can meet it
+ * half-written (a ConcurrentModificationException, or segments and pattern of different lengths). Such a read is
+ * taken again, up to [TORN_READ_RETRIES] times, 1 ms apart; a record still torn after that is an error.
  */
 fun lastVibration(vibrator: Vibrator): RecordedVibration? {
+    var torn: Throwable? = null
+    repeat(TORN_READ_RETRIES) {
+        try {
+            return readLastVibration(vibrator)
+        } catch (e: ConcurrentModificationException) {
+            torn = e
+        } catch (e: TornRecord) {
+            torn = e
+        }
+        Thread.sleep(1)
+    }
+    throw AssertionError("the vibrator's record stayed half-written over $TORN_READ_RETRIES reads", torn)
+}
+
+private const val TORN_READ_RETRIES = 200
+
+private class TornRecord(message: String) : RuntimeException(message)
+
+private fun readLastVibration(vibrator: Vibrator): RecordedVibration? {
     val timingsOnly = shadowOf(vibrator).pattern ?: return null
     val field = ShadowVibrator::class.java.getDeclaredField("vibrationEffectSegments").apply { isAccessible = true }
-    val segments = field.get(null) as List<*>
-    check(segments.size == timingsOnly.size) { "segments and pattern disagree: ${segments.size} vs ${timingsOnly.size}" }
+    val segments = (field.get(null) as List<*>).toList()
+    if (segments.size != timingsOnly.size) throw TornRecord("segments and pattern disagree: ${segments.size} vs ${timingsOnly.size}")
     val timings = segments.map { it!!.javaClass.getMethod("getDuration").invoke(it) as Long }
     val amplitudes = segments.map { segment ->
         val amplitude = segment!!.javaClass.getMethod("getAmplitude").invoke(segment) as Float
