@@ -172,6 +172,18 @@ class BenchmarkTest {
         val latency = sensors["grainLatency"] as JsonObject
         assertEquals(JsonPrimitive(1200), latency["p99Micros"])
         assertEquals(JsonPrimitive(2200), latency["grains"])
+        // Every slow grain by cause, beside the safepoint and steal figures the one-line table prints.
+        assertEquals(JsonPrimitive(7), latency["over1ms"])
+        assertEquals(JsonPrimitive(1), latency["over1msBySafepoint"])
+        assertEquals(JsonPrimitive(1), latency["over1msByWaitAndSafepoint"])
+        assertEquals(JsonPrimitive(0), latency["over1msBySteal"])
+        assertEquals(JsonPrimitive(2), latency["over1msUnexplained"])
+        assertEquals(JsonPrimitive(12), latency["safepoints"])
+        assertEquals(JsonPrimitive(812.3), latency["longestSafepointMicros"])
+        assertEquals(JsonPrimitive("G1CollectForAllocation"), latency["longestSafepoint"])
+        assertEquals(JsonPrimitive(0), latency["safepointMicrosAtMax"])
+        assertEquals(null, latency["stealTicksAtMax"]) // -1: the worst grain was not slow by steal, so left out
+        assertEquals(JsonPrimitive(1.23), latency["stealPercent"])
         val baseline = sensors["grainLatencyBaseline"] as JsonObject
         assertEquals(JsonPrimitive(3956), baseline["maxMicros"])
         assertEquals(JsonPrimitive(12.4), baseline["p99Micros"])
@@ -303,7 +315,12 @@ class BenchmarkTest {
                     SensorBenchmarkResult("grainDecider", 8.5, 8.0, 0.0, 65_536, 900),
                     SensorBenchmarkResult("handshakePressure", 70.0, 66.0, -1.0, 65_536, 200),
                 ),
-                latency = GrainLatencyResult(samples = 100_000, grains = 2_200, p50Micros = 3.5, p99Micros = 1200.0, maxMicros = 5000.0),
+                latency = GrainLatencyResult(
+                    samples = 100_000, grains = 2_200, p50Micros = 3.5, p99Micros = 1200.0, maxMicros = 5000.0,
+                    over1ms = 7, over1msByRunQueue = 3, over1msBySafepoint = 1, over1msByWaitAndSafepoint = 1, over1msBySteal = 0,
+                    over1msUnexplained = 2, safepoints = 12, longestSafepointMicros = 812.34, longestSafepoint = "G1CollectForAllocation",
+                    safepointMicrosAtMax = 0.0, stealTicksAtMax = -1, stealShare = 0.0123,
+                ),
                 latencyBaseline = GrainLatencyResult(
                     samples = 100_000, grains = 2_200, p50Micros = 3.1, p99Micros = 12.4, maxMicros = 3956.0,
                     handlerBytesPerSample = 0.0, maxWithoutRunQueueMicros = 120.5,
