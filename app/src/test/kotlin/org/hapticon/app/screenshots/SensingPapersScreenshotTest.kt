@@ -6,11 +6,14 @@ import org.hapticon.app.feature.gesture.SocialTouchScreen
 import org.hapticon.app.feature.gesture.SocialTouchUiState
 import org.hapticon.app.feature.sensors.ElectrotactileActions
 import org.hapticon.app.feature.sensors.ElectrotactileCalibrationScreen
+import org.hapticon.app.feature.sensors.ElectrotactileCalibrationViewModel
 import org.hapticon.app.feature.sensors.ElectrotactileUiState
 import org.hapticon.app.feature.study.ComplianceActions
 import org.hapticon.app.feature.study.ComplianceScreen
 import org.hapticon.app.feature.study.ComplianceUiState
 import org.hapticon.sensor.electrotactile.AmplitudeSteps
+import org.hapticon.sensor.electrotactile.ElectrotactileCalibrationResult
+import org.hapticon.sensor.electrotactile.StoredCalibration
 import org.hapticon.sensor.grains.FirmwareCommands
 import org.hapticon.sensor.grains.FirmwareStimulus
 import org.hapticon.sensor.live.CommandState
@@ -18,6 +21,7 @@ import org.hapticon.sensor.live.CommandWriter
 import org.hapticon.sensor.live.describeProblem
 import org.hapticon.sensor.protocol.framed.FramedEncoder
 import org.hapticon.study.compliance.ComplianceStudy
+import java.time.Instant
 import org.junit.Test
 
 /** Issue 15's sensing-paper screens: electrotactile calibration (Sensors), social touch (Gestures), the compliance study (Study). */
@@ -35,6 +39,23 @@ class SensingPapersScreenshotTest : ScreenshotTest() {
     fun electrotactile_wholeArrayCheck() = screen("sensors-electrotactile-check") {
         ElectrotactileCalibrationScreen(
             ElectrotactileUiState.WholeArrayCheck(sent = true, steps = listOf(66, 72, 61, 80, 63, 70, 64, 68, 75), boardReady = true, message = "Sent: press the sensor and feel the grains"),
+            ElectrotactileActions(),
+        )
+    }
+
+    /**
+     * A participant's calibration file from the laptop (`hapticon board calibrate --save`) just imported, before this
+     * phone's own calibration began: the stored calibration is the file's, the grid still this session's first electrode.
+     */
+    @Test
+    fun electrotactile_imported() = screen("sensors-electrotactile-imported") {
+        val stored = StoredCalibration(ElectrotactileCalibrationResult(listOf(61, 62, 63, 64, 65, 66, 67, 68, 90)), Instant.parse("2026-11-20T09:30:00Z"), "P07")
+        ElectrotactileCalibrationScreen(
+            ElectrotactileUiState.Electrode(
+                0, 60, AmplitudeSteps.milliampsOf(60), atCap = false, steps = List(9) { 60 }, boardReady = true,
+                message = "Imported ${ElectrotactileCalibrationViewModel.describe(stored)}: the compliance study now stimulates at these levels",
+                stored = stored,
+            ),
             ElectrotactileActions(),
         )
     }

@@ -1,5 +1,7 @@
 package org.hapticon.app.feature.sensors
 
+import androidx.activity.compose.rememberLauncherForActivityResult
+import androidx.activity.result.contract.ActivityResultContracts
 import androidx.compose.foundation.border
 import androidx.compose.foundation.background
 import androidx.compose.foundation.layout.Arrangement
@@ -37,6 +39,7 @@ import androidx.compose.ui.semantics.contentDescription
 import androidx.compose.ui.semantics.heading
 import androidx.compose.ui.semantics.liveRegion
 import androidx.compose.ui.semantics.semantics
+import androidx.compose.ui.platform.LocalContext
 import androidx.compose.ui.unit.dp
 import androidx.lifecycle.compose.collectAsStateWithLifecycle
 import java.util.Locale
@@ -44,12 +47,25 @@ import org.hapticon.app.designsystem.HapticonIcons
 import org.hapticon.sensor.electrotactile.AmplitudeSteps
 import org.hapticon.sensor.electrotactile.ElectrodePattern
 import org.hapticon.sensor.electrotactile.ElectrotactileCalibration
+import org.hapticon.sensor.electrotactile.StoredCalibration
 
-/** The electrotactile calibration wired to [viewModel]; [onBack] returns to the Sensors screen. */
+/**
+ * The electrotactile calibration wired to [viewModel]; [onBack] returns to the Sensors screen. Export and import go
+ * through the system's document picker (Storage Access Framework: ACTION_CREATE_DOCUMENT / ACTION_OPEN_DOCUMENT), so
+ * the file can live in Downloads, a USB stick or a cloud folder and the app needs no storage permission.
+ */
 @Composable
 fun ElectrotactileCalibrationRoute(viewModel: ElectrotactileCalibrationViewModel, onBack: () -> Unit) {
     val uiState by viewModel.uiState.collectAsStateWithLifecycle()
-    val actions = remember(viewModel, onBack) {
+    val resolver = LocalContext.current.contentResolver
+    val exportFile = rememberLauncherForActivityResult(ActivityResultContracts.CreateDocument(CALIBRATION_MIME_TYPE)) { uri ->
+        if (uri != null) viewModel.exportTo { resolver.openOutputStream(uri, "wt") }
+    }
+    // Any type: a file shared from a laptop or a chat often arrives as text/plain or application/octet-stream.
+    val importFile = rememberLauncherForActivityResult(ActivityResultContracts.OpenDocument()) { uri ->
+        if (uri != null) viewModel.importFrom { resolver.openInputStream(uri) }
+    }
+    val actions = remember(viewModel, onBack, exportFile, importFile) {
         ElectrotactileActions(
             onGiveStimulus = viewModel::giveStimulus,
             onNotYet = viewModel::notYet,
@@ -59,10 +75,18 @@ fun ElectrotactileCalibrationRoute(viewModel: ElectrotactileCalibrationViewModel
             onWholeArrayOk = viewModel::wholeArrayOk,
             onRestart = viewModel::restart,
             onBack = onBack,
+            onExport = { exportFile.launch(CALIBRATION_FILE_NAME) },
+            onImport = { importFile.launch(arrayOf("*/*")) },
         )
     }
     ElectrotactileCalibrationScreen(uiState, actions)
 }
+
+/** The type the export declares: the calibration file is JSON. */
+private const val CALIBRATION_MIME_TYPE = "application/json"
+
+/** The name the export suggests, as `hapticon board calibrate --save` examples use. */
+private const val CALIBRATION_FILE_NAME = "electrotactile-calibration.json"
 
 /** What the electrotactile calibration screen can ask for. */
 @Immutable
@@ -75,6 +99,10 @@ class ElectrotactileActions(
     val onWholeArrayOk: () -> Unit = {},
     val onRestart: () -> Unit = {},
     val onBack: () -> Unit = {},
+    /** Save the stored calibration to a file the researcher picks. */
+    val onExport: () -> Unit = {},
+    /** Read a calibration file the researcher picks (from `hapticon board calibrate --save` or another phone). */
+    val onImport: () -> Unit = {},
 )
 
 /**
@@ -133,7 +161,27 @@ fun ElectrotactileCalibrationScreen(uiState: ElectrotactileUiState, actions: Ele
                     }
                 }
             }
+            StoredCalibrationSection(uiState.stored, actions)
         }
+    }
+}
+
+/**
+ * What the compliance study will use, and the way to move it: export to a file, or import one made with
+ * `hapticon board calibrate --save` on a laptop or exported from another phone.
+ */
+@OptIn(ExperimentalLayoutApi::class)
+@Composable
+private fun StoredCalibrationSection(stored: StoredCalibration?, actions: ElectrotactileActions) {
+    Text("Stored calibration", style = MaterialTheme.typography.titleMedium, modifier = Modifier.semantics { heading() })
+    Text(
+        stored?.let { "The compliance study uses ${ElectrotactileCalibrationViewModel.describe(it)}." }
+            ?: "None yet: the compliance study needs a finished calibration, or one imported from a file.",
+        style = MaterialTheme.typography.bodyMedium,
+    )
+    FlowRow(horizontalArrangement = Arrangement.spacedBy(12.dp), verticalArrangement = Arrangement.spacedBy(8.dp)) {
+        OutlinedButton(onClick = actions.onExport, enabled = stored != null) { Text("Export file") }
+        OutlinedButton(onClick = actions.onImport) { Text("Import file") }
     }
 }
 

@@ -2,7 +2,8 @@ package org.hapticon.app.feature.sensors
 
 import androidx.lifecycle.ViewModel
 import androidx.lifecycle.viewModelScope
-import kotlinx.coroutines.flow.Flow
+import kotlinx.coroutines.CoroutineDispatcher
+import kotlinx.coroutines.Dispatchers
 import kotlinx.coroutines.flow.MutableStateFlow
 import kotlinx.coroutines.flow.SharingStarted
 import kotlinx.coroutines.flow.StateFlow
@@ -11,6 +12,15 @@ import kotlinx.coroutines.flow.first
 import kotlinx.coroutines.flow.stateIn
 import kotlinx.coroutines.flow.update
 import kotlinx.coroutines.launch
+import kotlinx.coroutines.withContext
+import java.io.IOException
+import java.io.InputStream
+import java.io.OutputStream
+import java.time.ZoneOffset
+import java.time.format.DateTimeFormatter
+import org.hapticon.sensor.electrotactile.CalibrationFile
+import org.hapticon.sensor.electrotactile.CalibrationFileException
+import org.hapticon.sensor.electrotactile.StoredCalibration
 import org.hapticon.sensor.electrotactile.AmplitudeSteps
 import org.hapticon.sensor.electrotactile.ElectrotactileCalibration
 import org.hapticon.sensor.grains.FirmwareForceRange
@@ -33,8 +43,11 @@ sealed interface ElectrotactileUiState {
     /** A refusal or a confirmation for the researcher. */
     val message: String?
 
-    /** True when [message] says something went wrong on the board (refused, unanswered): shown as an error. */
+    /** True when [message] says something went wrong (the board refused or did not answer, a file was refused): shown as an error. */
     val problem: Boolean
+
+    /** The calibration the compliance study uses (the last finished or imported one), or null when there is none. */
+    val stored: StoredCalibration?
 
     /** Calibrating [electrode] (0..8): the next 200 ms stimulus is [step] ([milliamps]). */
     data class Electrode(
@@ -47,6 +60,7 @@ sealed interface ElectrotactileUiState {
         override val boardReady: Boolean,
         override val message: String?,
         override val problem: Boolean = false,
+        override val stored: StoredCalibration? = null,
     ) : ElectrotactileUiState
 
     /** All nine electrodes at their levels while the person presses, [ElectrotactileCalibration.CHECK_GRAINS] grains per press. */
@@ -57,6 +71,7 @@ sealed interface ElectrotactileUiState {
         override val boardReady: Boolean,
         override val message: String?,
         override val problem: Boolean = false,
+        override val stored: StoredCalibration? = null,
     ) : ElectrotactileUiState
 
     /** Calibration finished: each electrode's current and the person's limit (the highest, at most 2.7 mA). */
@@ -67,6 +82,7 @@ sealed interface ElectrotactileUiState {
         override val boardReady: Boolean,
         override val message: String?,
         override val problem: Boolean = false,
+        override val stored: StoredCalibration? = null,
     ) : ElectrotactileUiState
 }
 
@@ -77,21 +93,33 @@ sealed interface ElectrotactileUiState {
  * the state machine never raises past step 200, [AmplitudeSteps.requireStep] refuses anything else, and
  * [FirmwareGrainParams] and [FirmwareStimulus] check every step before a command exists. Each electrode's 200 ms
  * stimulus ([giveStimulus]) and the check go to the board through [link], and a NACK (with the firmware's reason) or a
- * missing ack replaces the message with a one-line error; [onCalibrated] gets the finished steps (kept for the compliance study).
- * Not thread-safe: call from the main thread.
+ * missing ack replaces the message with a one-line error.
+ *
+ * The finished steps go to [store] (the calibration file the compliance study reads); [exportTo] writes the stored
+ * calibration to a file the researcher picked and [importFrom] reads one (from `hapticon board calibrate --save` or
+ * another phone), refusing a bad file with one line that names the member at fault and keeping what was stored.
+ * File work runs on [io], never on the main thread. Not thread-safe: call from the main thread.
  */
 class ElectrotactileCalibrationViewModel(
     private val link: StimulatorLink,
-    private val onCalibrated: (List<Int>) -> Unit = {},
+    private val store: ElectrodeLevelsStore? = null,
+    private val io: CoroutineDispatcher = Dispatchers.IO,
 ) : ViewModel() {
     private var calibration = ElectrotactileCalibration()
 
     /** Bumped after every change to [calibration] (it is mutable, so the flow needs a new value). */
     private val progress = MutableStateFlow(Progress(0, sent = false, message = null, problem = false))
 
+    /** The stored calibration, read from [store] off the main thread. */
+    private val stored = MutableStateFlow<StoredCalibration?>(null)
+
     /** What the screen shows. */
-    val uiState: StateFlow<ElectrotactileUiState> = combine(progress, link.ready) { p, ready -> snapshot(p, ready) }
-        .stateIn(viewModelScope, SharingStarted.Eagerly, snapshot(progress.value, ready = false))
+    val uiState: StateFlow<ElectrotactileUiState> = combine(progress, link.ready, stored) { p, ready, kept -> snapshot(p, ready, kept) }
+        .stateIn(viewModelScope, SharingStarted.Eagerly, snapshot(progress.value, ready = false, kept = null))
+
+    init {
+        store?.let { store -> viewModelScope.launch { stored.value = withContext(io) { store.stored() } } }
+    }
 
     /** Not clear yet: the next stimulus of this electrode is one step stronger, never past 2.7 mA. */
     fun notYet() = change {
@@ -115,11 +143,80 @@ class ElectrotactileCalibrationViewModel(
     }
 
     /** The whole-array check felt right: calibration is done. */
-    fun wholeArrayOk() = change {
-        if (!calibration.isCheckingWholeArray) return@change null
-        calibration.wholeArrayOk()
-        onCalibrated(calibration.result().steps)
-        "Saved: the compliance study stimulates at these levels"
+    fun wholeArrayOk() {
+        if (!calibration.isCheckingWholeArray) return
+        change {
+            calibration.wholeArrayOk()
+            null
+        }
+        save(calibration.result().steps)
+    }
+
+    /** Stores [steps] off the main thread; says so when done, or why it failed. */
+    private fun save(steps: List<Int>) {
+        val store = store ?: return progress.update { it.copy(message = NO_STORE, problem = true) }
+        viewModelScope.launch {
+            val outcome = withContext(io) { runCatching { store.save(steps); store.stored() } }
+            outcome.onSuccess { stored.value = it }
+            progress.update {
+                if (outcome.isSuccess) it.copy(message = "Saved: the compliance study stimulates at these levels", problem = false)
+                else it.copy(message = "Not saved: ${oneLine(outcome.exceptionOrNull())}", problem = true)
+            }
+        }
+    }
+
+    /**
+     * Writes the stored calibration, as a `hapticon.electrotactile-calibration` file, to the stream [open] gives
+     * (the file the researcher picked; null when it could not be opened).
+     */
+    fun exportTo(open: () -> OutputStream?) {
+        val store = store ?: return progress.update { it.copy(message = NO_STORE, problem = true) }
+        viewModelScope.launch {
+            val outcome = withContext(io) {
+                runCatching {
+                    val text = store.export() ?: return@runCatching null
+                    val out = open() ?: throw IOException("the file could not be opened")
+                    out.use { it.write(text.toByteArray(Charsets.UTF_8)) }
+                    store.stored()
+                }
+            }
+            progress.update {
+                val exported = outcome.getOrNull()
+                when {
+                    outcome.isFailure -> it.copy(message = "Not exported: ${oneLine(outcome.exceptionOrNull())}", problem = true)
+                    exported == null -> it.copy(message = "Nothing to export: finish a calibration or import one first", problem = true)
+                    else -> it.copy(message = "Exported ${describe(exported)}", problem = false)
+                }
+            }
+        }
+    }
+
+    /**
+     * Reads a calibration file from the stream [open] gives (null when it could not be opened) and, when it is valid,
+     * stores it for the compliance study; a bad file is refused with one line naming the member at fault, and the
+     * stored calibration stays as it was.
+     */
+    fun importFrom(open: () -> InputStream?) {
+        val store = store ?: return progress.update { it.copy(message = NO_STORE, problem = true) }
+        viewModelScope.launch {
+            val outcome = withContext(io) {
+                runCatching {
+                    val input = open() ?: throw IOException("the file could not be opened")
+                    // One byte past the limit is enough to refuse a file that is too large without reading it all.
+                    val bytes = input.use { it.readNBytes(CalibrationFile.MAX_BYTES + 1) }
+                    store.import(bytes)
+                }
+            }
+            outcome.onSuccess { stored.value = it }
+            progress.update {
+                val imported = outcome.getOrNull()
+                if (imported != null) {
+                    it.copy(message = "Imported ${describe(imported)}: the compliance study now stimulates at these levels", problem = false)
+                } else {
+                    it.copy(message = "Not imported: ${oneLine(outcome.exceptionOrNull())}", problem = true)
+                }
+            }
+        }
     }
 
     /**
@@ -193,22 +290,47 @@ class ElectrotactileCalibrationViewModel(
         progress.update { Progress(it.revision + 1, sent = false, message = message, problem = false) }
     }
 
-    private fun snapshot(p: Progress, ready: Boolean): ElectrotactileUiState {
+    private fun snapshot(p: Progress, ready: Boolean, kept: StoredCalibration?): ElectrotactileUiState {
         val steps = calibration.steps()
         val electrode = calibration.currentElectrode
         return when {
             electrode != null -> {
                 val step = steps[electrode]
-                ElectrotactileUiState.Electrode(electrode, step, AmplitudeSteps.milliampsOf(step), step == AmplitudeSteps.STEPS, steps, ready, p.message, p.problem)
+                ElectrotactileUiState.Electrode(electrode, step, AmplitudeSteps.milliampsOf(step), step == AmplitudeSteps.STEPS, steps, ready, p.message, p.problem, kept)
             }
-            calibration.isCheckingWholeArray -> ElectrotactileUiState.WholeArrayCheck(p.sent, steps, ready, p.message, p.problem)
+            calibration.isCheckingWholeArray -> ElectrotactileUiState.WholeArrayCheck(p.sent, steps, ready, p.message, p.problem, kept)
             else -> {
                 val result = calibration.result()
                 val limit = if (result.steps.all { it == 0 }) null else result.userLimit().maxMilliamps
-                ElectrotactileUiState.Done(limit, steps, ready, p.message, p.problem)
+                ElectrotactileUiState.Done(limit, steps, ready, p.message, p.problem, kept)
             }
         }
     }
 
     private data class Progress(val revision: Int, val sent: Boolean, val message: String?, val problem: Boolean)
+
+    companion object {
+        /** Shown when the view model was made without a store (a preview or a test). */
+        const val NO_STORE: String = "No calibration store on this screen"
+
+        /**
+         * "P07's calibration of 2026-11-27 00:12 UTC (0.810–1.215 mA)", or "the calibration of …" without a participant:
+         * whose, when, and its range of currents.
+         */
+        fun describe(calibration: StoredCalibration): String {
+            val at = DateTimeFormatter.ofPattern("yyyy-MM-dd HH:mm", Locale.ROOT).withZone(ZoneOffset.UTC).format(calibration.calibratedAt)
+            val milliamps = calibration.result.milliamps
+            val (low, high) = milliamps.min() to milliamps.max()
+            val range = if (low == high) String.format(Locale.ROOT, "%.3f mA", low) else String.format(Locale.ROOT, "%.3f–%.3f mA", low, high)
+            val whose = calibration.participant?.let { "$it's calibration" } ?: "the calibration"
+            return "$whose of $at UTC ($range)"
+        }
+
+        // A file's problem on one line: CalibrationFileException's message already names the member at fault.
+        private fun oneLine(error: Throwable?): String = when (error) {
+            is CalibrationFileException -> error.message.orEmpty()
+            null -> "unknown error"
+            else -> (error.message ?: error.javaClass.simpleName).lineSequence().first()
+        }
+    }
 }

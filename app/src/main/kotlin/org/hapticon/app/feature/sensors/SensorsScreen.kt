@@ -37,7 +37,6 @@ import androidx.lifecycle.compose.collectAsStateWithLifecycle
 import androidx.lifecycle.viewmodel.compose.viewModel
 import androidx.lifecycle.viewmodel.initializer
 import androidx.lifecycle.viewmodel.viewModelFactory
-import java.io.File
 import org.hapticon.app.di.AppContainer
 import org.hapticon.app.designsystem.HapticonIcons
 import org.hapticon.app.feature.glove.CalibrationRoute
@@ -69,10 +68,10 @@ fun SensorsRoute(container: AppContainer) {
         SensorsPane.CALIBRATION -> CalibrationRoute(container, onBack = { pane = SensorsPane.STREAM })
         SensorsPane.HANDSHAKE -> HandshakeRoute(container, onBack = { pane = SensorsPane.STREAM })
         SensorsPane.ELECTROTACTILE -> {
-            val levels = ElectrodeLevelsStore(File(LocalContext.current.filesDir, ElectrodeLevelsStore.FILE_NAME))
+            val levels = ElectrodeLevelsStore.inFolder(LocalContext.current.filesDir)
             val viewModel: ElectrotactileCalibrationViewModel = viewModel(
                 factory = viewModelFactory {
-                    initializer { ElectrotactileCalibrationViewModel(container.stimulator, onCalibrated = levels::save) }
+                    initializer { ElectrotactileCalibrationViewModel(container.stimulator, levels) }
                 },
             )
             ElectrotactileCalibrationRoute(viewModel, onBack = { pane = SensorsPane.STREAM })

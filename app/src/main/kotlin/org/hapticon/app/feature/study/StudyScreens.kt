@@ -110,7 +110,7 @@ fun StudyRoute(container: AppContainer) {
             val runner: ComplianceViewModel = viewModel(
                 factory = viewModelFactory {
                     initializer {
-                        val levels = ElectrodeLevelsStore(File(files, ElectrodeLevelsStore.FILE_NAME))
+                        val levels = ElectrodeLevelsStore.inFolder(files)
                         ComplianceViewModel(container.stimulator, levels::load, File(files, "compliance"))
                     }
                 },
