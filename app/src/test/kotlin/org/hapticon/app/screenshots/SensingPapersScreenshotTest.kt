@@ -54,9 +54,9 @@ class SensingPapersScreenshotTest : ScreenshotTest() {
             ElectrotactileUiState.Electrode(
                 0, 60, AmplitudeSteps.milliampsOf(60), atCap = false, steps = List(9) { 60 }, boardReady = true,
                 message = "Imported ${ElectrotactileCalibrationViewModel.describe(stored)}: the compliance study now stimulates at these levels",
-                stored = stored,
             ),
             ElectrotactileActions(),
+            stored,
         )
     }
 

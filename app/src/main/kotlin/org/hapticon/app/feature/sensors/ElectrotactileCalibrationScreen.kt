@@ -57,6 +57,7 @@ import org.hapticon.sensor.electrotactile.StoredCalibration
 @Composable
 fun ElectrotactileCalibrationRoute(viewModel: ElectrotactileCalibrationViewModel, onBack: () -> Unit) {
     val uiState by viewModel.uiState.collectAsStateWithLifecycle()
+    val stored by viewModel.storedCalibration.collectAsStateWithLifecycle()
     val resolver = LocalContext.current.contentResolver
     val exportFile = rememberLauncherForActivityResult(ActivityResultContracts.CreateDocument(CALIBRATION_MIME_TYPE)) { uri ->
         if (uri != null) viewModel.exportTo { resolver.openOutputStream(uri, "wt") }
@@ -79,7 +80,7 @@ fun ElectrotactileCalibrationRoute(viewModel: ElectrotactileCalibrationViewModel
             onImport = { importFile.launch(arrayOf("*/*")) },
         )
     }
-    ElectrotactileCalibrationScreen(uiState, actions)
+    ElectrotactileCalibrationScreen(uiState, actions, stored)
 }
 
 /** The type the export declares: the calibration file is JSON. */
@@ -111,7 +112,7 @@ class ElectrotactileActions(
  */
 @OptIn(ExperimentalMaterial3Api::class)
 @Composable
-fun ElectrotactileCalibrationScreen(uiState: ElectrotactileUiState, actions: ElectrotactileActions) {
+fun ElectrotactileCalibrationScreen(uiState: ElectrotactileUiState, actions: ElectrotactileActions, stored: StoredCalibration? = null) {
     Scaffold(
         topBar = {
             TopAppBar(
@@ -161,7 +162,7 @@ fun ElectrotactileCalibrationScreen(uiState: ElectrotactileUiState, actions: Ele
                     }
                 }
             }
-            StoredCalibrationSection(uiState.stored, actions)
+            StoredCalibrationSection(stored, actions)
         }
     }
 }

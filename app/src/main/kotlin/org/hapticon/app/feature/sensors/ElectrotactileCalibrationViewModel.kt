@@ -46,9 +46,6 @@ sealed interface ElectrotactileUiState {
     /** True when [message] says something went wrong (the board refused or did not answer, a file was refused): shown as an error. */
     val problem: Boolean
 
-    /** The calibration the compliance study uses (the last finished or imported one), or null when there is none. */
-    val stored: StoredCalibration?
-
     /** Calibrating [electrode] (0..8): the next 200 ms stimulus is [step] ([milliamps]). */
     data class Electrode(
         val electrode: Int,
@@ -60,7 +57,6 @@ sealed interface ElectrotactileUiState {
         override val boardReady: Boolean,
         override val message: String?,
         override val problem: Boolean = false,
-        override val stored: StoredCalibration? = null,
     ) : ElectrotactileUiState
 
     /** All nine electrodes at their levels while the person presses, [ElectrotactileCalibration.CHECK_GRAINS] grains per press. */
@@ -71,7 +67,6 @@ sealed interface ElectrotactileUiState {
         override val boardReady: Boolean,
         override val message: String?,
         override val problem: Boolean = false,
-        override val stored: StoredCalibration? = null,
     ) : ElectrotactileUiState
 
     /** Calibration finished: each electrode's current and the person's limit (the highest, at most 2.7 mA). */
@@ -82,7 +77,6 @@ sealed interface ElectrotactileUiState {
         override val boardReady: Boolean,
         override val message: String?,
         override val problem: Boolean = false,
-        override val stored: StoredCalibration? = null,
     ) : ElectrotactileUiState
 }
 
@@ -110,12 +104,18 @@ class ElectrotactileCalibrationViewModel(
     /** Bumped after every change to [calibration] (it is mutable, so the flow needs a new value). */
     private val progress = MutableStateFlow(Progress(0, sent = false, message = null, problem = false))
 
-    /** The stored calibration, read from [store] off the main thread. */
     private val stored = MutableStateFlow<StoredCalibration?>(null)
 
+    /**
+     * The calibration the compliance study uses (the last finished or imported one), or null when there is none: read
+     * from [store] off the main thread. Apart from [uiState] because it does not follow the calibration's steps: an
+     * import replaces it in the middle of a calibration, and a new calibration leaves it until it is finished.
+     */
+    val storedCalibration: StateFlow<StoredCalibration?> = stored
+
     /** What the screen shows. */
-    val uiState: StateFlow<ElectrotactileUiState> = combine(progress, link.ready, stored) { p, ready, kept -> snapshot(p, ready, kept) }
-        .stateIn(viewModelScope, SharingStarted.Eagerly, snapshot(progress.value, ready = false, kept = null))
+    val uiState: StateFlow<ElectrotactileUiState> = combine(progress, link.ready) { p, ready -> snapshot(p, ready) }
+        .stateIn(viewModelScope, SharingStarted.Eagerly, snapshot(progress.value, ready = false))
 
     init {
         store?.let { store -> viewModelScope.launch { stored.value = withContext(io) { store.stored() } } }
@@ -290,19 +290,19 @@ class ElectrotactileCalibrationViewModel(
         progress.update { Progress(it.revision + 1, sent = false, message = message, problem = false) }
     }
 
-    private fun snapshot(p: Progress, ready: Boolean, kept: StoredCalibration?): ElectrotactileUiState {
+    private fun snapshot(p: Progress, ready: Boolean): ElectrotactileUiState {
         val steps = calibration.steps()
         val electrode = calibration.currentElectrode
         return when {
             electrode != null -> {
                 val step = steps[electrode]
-                ElectrotactileUiState.Electrode(electrode, step, AmplitudeSteps.milliampsOf(step), step == AmplitudeSteps.STEPS, steps, ready, p.message, p.problem, kept)
+                ElectrotactileUiState.Electrode(electrode, step, AmplitudeSteps.milliampsOf(step), step == AmplitudeSteps.STEPS, steps, ready, p.message, p.problem)
             }
-            calibration.isCheckingWholeArray -> ElectrotactileUiState.WholeArrayCheck(p.sent, steps, ready, p.message, p.problem, kept)
+            calibration.isCheckingWholeArray -> ElectrotactileUiState.WholeArrayCheck(p.sent, steps, ready, p.message, p.problem)
             else -> {
                 val result = calibration.result()
                 val limit = if (result.steps.all { it == 0 }) null else result.userLimit().maxMilliamps
-                ElectrotactileUiState.Done(limit, steps, ready, p.message, p.problem, kept)
+                ElectrotactileUiState.Done(limit, steps, ready, p.message, p.problem)
             }
         }
     }

@@ -42,6 +42,11 @@ class ElectrotactileCalibrationFileTest {
         return uiState.value
     }
 
+    private fun ElectrotactileCalibrationViewModel.stored(): StoredCalibration? {
+        main.dispatcher.scheduler.advanceUntilIdle()
+        return storedCalibration.value
+    }
+
     private fun viewModel(store: ElectrodeLevelsStore) = ElectrotactileCalibrationViewModel(TestStimulatorLink(ready = true), store, io = main.dispatcher)
 
     /** What `hapticon board calibrate --save --participant P07` writes for these steps. */
@@ -51,13 +56,13 @@ class ElectrotactileCalibrationFileTest {
     fun finishedCalibration_isStoredInTheCliFormat_andExportedByteForByte() {
         val store = store()
         val viewModel = viewModel(store)
-        assertNull(viewModel.state().stored)
+        assertNull(viewModel.stored())
         repeat(9) { viewModel.clearAndPainFree() }
         viewModel.wholeArrayOk()
         val done = viewModel.state() as ElectrotactileUiState.Done
         assertEquals("Saved: the compliance study stimulates at these levels", done.message)
         assertFalse(done.problem)
-        assertEquals(List(9) { 60 }, done.stored!!.result.steps)
+        assertEquals(List(9) { 60 }, viewModel.stored()!!.result.steps)
 
         val file = File(folder.root, "electrotactile-calibration.json")
         val text = file.readText()
@@ -82,7 +87,7 @@ class ElectrotactileCalibrationFileTest {
             state.message,
         )
         assertFalse(state.problem)
-        assertEquals(fromTheCli, state.stored)
+        assertEquals(fromTheCli, viewModel.stored())
         assertEquals(fromTheCli, store.stored())
         // The calibration in progress on the screen is untouched: the import replaces only what the study uses.
         assertEquals(0, (state as ElectrotactileUiState.Electrode).electrode)
@@ -106,7 +111,7 @@ class ElectrotactileCalibrationFileTest {
             assertTrue("${state.message} should start with $expected", state.message!!.startsWith(expected))
             assertFalse(state.message, state.message!!.contains('\n'))
             assertTrue(state.problem)
-            assertEquals(List(9) { 70 }, state.stored!!.result.steps)
+            assertEquals(List(9) { 70 }, viewModel.stored()!!.result.steps)
             assertArrayEquals(before, File(folder.root, ElectrodeLevelsStore.FILE_NAME).readBytes())
         }
         viewModel.importFrom { null }
@@ -133,7 +138,7 @@ class ElectrotactileCalibrationFileTest {
         File(folder.root, ElectrodeLevelsStore.LEGACY_FILE_NAME).writeText("61,62,63,64,65,66,67,68,69")
         val store = store()
         assertEquals((61..69).toList(), store.load())
-        assertEquals((61..69).toList(), viewModel(store).state().stored!!.result.steps)
+        assertEquals((61..69).toList(), viewModel(store).stored()!!.result.steps)
         File(folder.root, ElectrodeLevelsStore.LEGACY_FILE_NAME).writeText("61,62,63,64,65,66,67,68,201")
         assertNull("past the cap in the old file reads as none", store.load())
         store.save(List(9) { 60 })
