@@ -5,7 +5,8 @@ import org.hapticon.core.io.HapticFormats
 /**
  * Every schema name and version of the chat wire family, in one place: what [MessageCodec] writes and reads
  * and the sealed envelope of [org.hapticon.messaging.e2e.EndToEnd]. Icons and patterns travel inside messages
- * in their own file formats, whose versions live in [HapticFormats] (docs/json.md lists every family).
+ * in their own file formats, whose versions live in [HapticFormats]; the study, gesture and sensor families keep
+ * theirs in `StudyFormats`, `GestureFormats` and `SensorFormats` (docs/json.md lists every family).
  *
  * A build reads the versions it writes; a message carries the lowest version that can hold it, so a build
  * that predates patterns still reads every message without one (docs/messaging.md).

@@ -5,8 +5,8 @@ package org.hapticon.core.io
  * ([IconJson], [org.hapticon.core.pattern.PatternJson]) and the two foreign pattern formats this build reads and
  * writes ([org.hapticon.core.pattern.Ahap], [org.hapticon.core.pattern.MetaHaptic]). The chat wire family
  * (which embeds icons and patterns) keeps its own in `org.hapticon.messaging.WireFormats`, the study family in
- * `org.hapticon.study.StudyFormats`, the gesture models in `org.hapticon.gesture.GestureFormats`; docs/json.md
- * lists every family.
+ * `org.hapticon.study.StudyFormats`, the gesture models in `org.hapticon.gesture.GestureFormats`, the
+ * electrotactile calibration file in `org.hapticon.sensor.SensorFormats`; docs/json.md lists every family.
  *
  * A version is what this build writes and the newest it reads; raising one is a format change that older
  * builds will refuse (docs/json.md, "Versions").
