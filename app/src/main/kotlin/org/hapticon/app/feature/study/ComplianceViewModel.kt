@@ -2,12 +2,16 @@ package org.hapticon.app.feature.study
 
 import androidx.lifecycle.ViewModel
 import androidx.lifecycle.viewModelScope
+import kotlinx.coroutines.CoroutineDispatcher
+import kotlinx.coroutines.Dispatchers
 import kotlinx.coroutines.flow.MutableStateFlow
 import kotlinx.coroutines.flow.SharingStarted
 import kotlinx.coroutines.flow.StateFlow
 import kotlinx.coroutines.flow.combine
 import kotlinx.coroutines.flow.stateIn
 import kotlinx.coroutines.flow.update
+import kotlinx.coroutines.launch
+import kotlinx.coroutines.withContext
 import org.hapticon.app.sensors.StimulatorLink
 import org.hapticon.study.compliance.ComplianceCondition
 import org.hapticon.study.compliance.ComplianceProtocol
@@ -67,14 +71,26 @@ sealed interface ComplianceUiState {
  * electrode at the person's calibrated step from [levels]; the reference firmware renders the grains stand-alone while
  * the participant presses), and the participant's number is appended to `<participant>.csv` in [answersDir] (and
  * synced) before the next trial, so an answered trial is never lost. No calibration, no session.
+ *
+ * Disk work (reading the calibration through [levels], appending and syncing an answer) runs on [io], never on the
+ * main thread (debug builds' StrictMode would flag it); the next trial starts only once the answer is synced, and a
+ * failed write leaves the trial where it was, saying so, for the answer to be given again. A session keeps the levels
+ * read when it started: a calibration finished meanwhile applies to the next session, not half-way through this one.
  */
 class ComplianceViewModel(
     private val link: StimulatorLink,
     private val levels: () -> List<Int>?,
     private val answersDir: File,
     private val protocol: ComplianceProtocol = ComplianceStudy.PROTOCOL,
+    private val io: CoroutineDispatcher = Dispatchers.IO,
 ) : ViewModel() {
     private val local = MutableStateFlow<ComplianceUiState>(setup("", 0, null))
+
+    /** The levels the running session stimulates at, read once when it started. */
+    private var sessionSteps: List<Int>? = null
+
+    /** True while an answer is being written: a second answer (a double tap) is ignored until it is synced. */
+    private var saving = false
 
     /** What the screen shows, with the board's state kept current. */
     val uiState: StateFlow<ComplianceUiState> = combine(local, link.ready) { state, ready -> withBoard(state, ready) }
@@ -82,6 +98,10 @@ class ComplianceViewModel(
 
     private var trials: List<ComplianceTrial> = emptyList()
     private val answered = ArrayList<MagnitudeEstimate>()
+
+    init {
+        refreshLevels()
+    }
 
     /** Names the participant (their answers file). */
     fun setParticipant(name: String) = updateSetup { it.copy(participant = name, message = null) }
@@ -96,19 +116,31 @@ class ComplianceViewModel(
 
     /** Starts the session: needs a participant name and a finished calibration; sends the first condition. */
     fun start() {
-        val setup = local.value as? ComplianceUiState.Setup ?: return
-        val name = setup.participant.trim()
-        if (!NAME.matches(name)) return updateSetup { it.copy(message = "Name the participant with letters, digits, - or _") }
-        val steps = levels() ?: return updateSetup { it.copy(message = "Calibrate the electrodes first: Sensors → Electrotactile array") }
-        trials = setup.protocol.trials(setup.participantIndex)
-        answered.clear()
-        local.value = ComplianceUiState.Trial(name, trials.first(), trials.size, setup.protocol.instructions, sent = false, boardReady = false, message = null)
-        sendCondition(steps)
+        if (local.value !is ComplianceUiState.Setup) return
+        viewModelScope.launch {
+            val steps = withContext(io) { levels() }
+            // The set-up as it is now (a second tap meanwhile already started the session: nothing to do).
+            val setup = local.value as? ComplianceUiState.Setup ?: return@launch
+            val name = setup.participant.trim()
+            if (!NAME.matches(name)) {
+                local.value = setup.copy(levels = steps, message = "Name the participant with letters, digits, - or _")
+                return@launch
+            }
+            if (steps == null) {
+                local.value = setup.copy(levels = null, message = "Calibrate the electrodes first: Sensors → Electrotactile array")
+                return@launch
+            }
+            sessionSteps = steps
+            trials = setup.protocol.trials(setup.participantIndex)
+            answered.clear()
+            local.value = ComplianceUiState.Trial(name, trials.first(), trials.size, setup.protocol.instructions, sent = false, boardReady = false, message = null)
+            sendCondition(steps)
+        }
     }
 
     /** Sends the current trial's condition to the board (again). */
     fun sendCondition() {
-        sendCondition(levels() ?: return)
+        sendCondition(sessionSteps ?: return)
     }
 
     private fun sendCondition(steps: List<Int>) {
@@ -129,30 +161,52 @@ class ComplianceViewModel(
         } catch (e: IllegalArgumentException) {
             return run { local.value = trial.copy(message = "Type a positive number, e.g. 10") }
         }
+        if (saving) return
+        saving = true
         val file = File(answersDir, "${trial.participant}.csv")
-        append(file, trial, value)
-        answered += MagnitudeEstimate(trial.participant, trial.trial.condition.id, value)
-        val next = trials.getOrNull(trial.trial.index + 1)
-        if (next == null) {
-            local.value = ComplianceUiState.Done(
-                trial.participant, answered.size, MagnitudeEstimation.conditionMeans(answered), file.path, boardReady = false, message = null,
-            )
-        } else {
-            local.value = trial.copy(trial = next, sent = false, message = null)
-            sendCondition()
+        viewModelScope.launch {
+            val written = withContext(io) { runCatching { append(file, trial, value) } }
+            saving = false
+            written.exceptionOrNull()?.let { e ->
+                // Not acknowledged, so nothing is lost: the trial stays and its answer can be given again.
+                local.value = trial.copy(message = "Not saved (${e.message ?: e.javaClass.simpleName}): give the answer again")
+                return@launch
+            }
+            answered += MagnitudeEstimate(trial.participant, trial.trial.condition.id, value)
+            val next = trials.getOrNull(trial.trial.index + 1)
+            if (next == null) {
+                local.value = ComplianceUiState.Done(
+                    trial.participant, answered.size, MagnitudeEstimation.conditionMeans(answered), file.path, boardReady = false, message = null,
+                )
+            } else {
+                local.value = trial.copy(trial = next, sent = false, message = null)
+                sendCondition()
+            }
         }
     }
 
     /** Back to the set-up (the answers given so far stay in the file). */
     fun finish() {
+        sessionSteps = null
         local.value = setup("", 0, null)
+        refreshLevels()
     }
 
     private fun setup(participant: String, index: Int, message: String?) =
-        ComplianceUiState.Setup(protocol, participant, index, levels(), boardReady = false, message = message)
+        ComplianceUiState.Setup(protocol, participant, index, levels = null, boardReady = false, message = message)
 
     private fun updateSetup(change: (ComplianceUiState.Setup) -> ComplianceUiState.Setup) {
-        local.update { state -> if (state is ComplianceUiState.Setup) change(state.copy(levels = levels())) else state }
+        local.update { state -> if (state is ComplianceUiState.Setup) change(state) else state }
+        // Read again on every set-up change, so a calibration finished meanwhile shows up before the session starts.
+        refreshLevels()
+    }
+
+    /** Reads the stored calibration off the main thread into the set-up. */
+    private fun refreshLevels() {
+        viewModelScope.launch {
+            val read = withContext(io) { levels() }
+            local.update { state -> if (state is ComplianceUiState.Setup) state.copy(levels = read) else state }
+        }
     }
 
     private fun append(file: File, trial: ComplianceUiState.Trial, value: Double) {

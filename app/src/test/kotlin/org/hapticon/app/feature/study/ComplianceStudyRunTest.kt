@@ -56,7 +56,7 @@ class ComplianceStudyRunTest {
     fun session_everyConditionOnceOnTheBoard_answersSyncedToCsv_meansAtTheEnd() {
         val link = TestStimulatorLink(ready = true)
         val dir = File(folder.root, "compliance")
-        val viewModel = ComplianceViewModel(link, { levels }, dir)
+        val viewModel = ComplianceViewModel(link, { levels }, dir, io = main.dispatcher)
         viewModel.setParticipant("p7")
         viewModel.setParticipantIndex(2)
         viewModel.setRepetitions(1)
@@ -91,7 +91,7 @@ class ComplianceStudyRunTest {
     fun answer_notANumberZeroOrUnsent_isRefusedAndNothingIsWritten() {
         val link = TestStimulatorLink(ready = false)
         val dir = File(folder.root, "compliance")
-        val viewModel = ComplianceViewModel(link, { levels }, dir)
+        val viewModel = ComplianceViewModel(link, { levels }, dir, io = main.dispatcher)
         viewModel.setParticipant("p1")
         viewModel.start()
         assertEquals("Connect the board (Framed protocol) to render the condition", viewModel.state().message)
@@ -111,7 +111,7 @@ class ComplianceStudyRunTest {
     @Test
     fun start_withoutCalibrationOrName_isRefused() {
         val store = ElectrodeLevelsStore(File(folder.root, ElectrodeLevelsStore.FILE_NAME))
-        val viewModel = ComplianceViewModel(TestStimulatorLink(ready = true), store::load, folder.root)
+        val viewModel = ComplianceViewModel(TestStimulatorLink(ready = true), store::load, folder.root, io = main.dispatcher)
         viewModel.start()
         assertEquals("Name the participant with letters, digits, - or _", viewModel.state().message)
         viewModel.setParticipant("p2")
@@ -141,11 +141,46 @@ class ComplianceStudyRunTest {
     }
 
     @Test
+    fun answer_isSyncedOffMain_aDoubleTapWritesOnce_aFailedWriteKeepsTheTrial() {
+        val link = TestStimulatorLink(ready = true)
+        val dir = File(folder.root, "compliance")
+        var stored: List<Int> = levels
+        val viewModel = ComplianceViewModel(link, { stored }, dir, io = main.dispatcher)
+        viewModel.setParticipant("p5")
+        viewModel.start()
+        val first = viewModel.state() as ComplianceUiState.Trial
+        // Two taps before the first answer is synced: one line, one step forward.
+        viewModel.answer("10")
+        viewModel.answer("12")
+        val second = viewModel.state() as ComplianceUiState.Trial
+        assertEquals(first.trial.index + 1, second.trial.index)
+        assertEquals(listOf(ComplianceViewModel.CSV_HEADER), File(dir, "p5.csv").readLines().take(1))
+        assertEquals(2, File(dir, "p5.csv").readLines().size)
+        assertTrue(File(dir, "p5.csv").readLines()[1].endsWith(",10.0"))
+        // A calibration stored mid-session applies to the next session, not to this one's remaining trials.
+        stored = List(9) { 90 }
+        viewModel.sendCondition()
+        assertEquals(levels, link.sent.last().steps)
+
+        // The answers folder cannot be written (a file stands where it should be): the trial stays, and says so.
+        val blocked = folder.newFile("blocked")
+        val failing = ComplianceViewModel(link, { levels }, blocked, io = main.dispatcher)
+        failing.setParticipant("p6")
+        failing.start()
+        val trial = failing.state() as ComplianceUiState.Trial
+        failing.answer("10")
+        val after = failing.state() as ComplianceUiState.Trial
+        assertEquals(trial.trial, after.trial)
+        assertTrue(after.message, after.message!!.startsWith("Not saved (") && after.message!!.endsWith("): give the answer again"))
+    }
+
+    @Test
     fun condition_usesTheBoardsAnnouncedRange_andNoRangeSendsNothing() {
         val link = TestStimulatorLink(ready = true, range = FirmwareForceRange.ofAdcBits(12))
-        val viewModel = ComplianceViewModel(link, { levels }, File(folder.root, "compliance"))
+        val viewModel = ComplianceViewModel(link, { levels }, File(folder.root, "compliance"), io = main.dispatcher)
         viewModel.setParticipant("p3")
         viewModel.start()
+        viewModel.state() // the calibration is read off the main thread, then the first condition goes out
         val first = link.sent.single()
         assertEquals(0 to 4095, first.minForce to first.maxForce)
 
@@ -171,12 +206,16 @@ class ComplianceStudyRunTest {
             while (hub.currentInfo()?.adcBits != 12 && System.nanoTime() < deadline) Thread.sleep(5)
             assertEquals(12, hub.currentInfo()?.adcBits)
 
-            val viewModel = ComplianceViewModel(HubStimulatorLink(hub), { levels }, File(folder.root, "compliance"))
+            val viewModel = ComplianceViewModel(HubStimulatorLink(hub), { levels }, File(folder.root, "compliance"), io = main.dispatcher)
             viewModel.setParticipant("p4")
             viewModel.setRepetitions(1)
             viewModel.start()
+            viewModel.state()
             val order = ComplianceStudy.PROTOCOL.copy(repetitions = 1).trials(0)
-            repeat(order.size - 1) { viewModel.answer("10") }
+            repeat(order.size - 1) {
+                viewModel.answer("10")
+                viewModel.state() // synced off the main thread, then the next condition goes out
+            }
 
             val frames = splitFrames(port.writtenBytes())
             assertEquals(order.size, frames.size)
