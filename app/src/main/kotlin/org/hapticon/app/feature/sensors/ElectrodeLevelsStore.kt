@@ -1,10 +1,8 @@
 package org.hapticon.app.feature.sensors
 
 import org.hapticon.app.gesture.replaceFile
-import org.hapticon.sensor.electrotactile.AmplitudeSteps
 import org.hapticon.sensor.electrotactile.CalibrationFile
 import org.hapticon.sensor.electrotactile.CalibrationFileException
-import org.hapticon.sensor.electrotactile.ElectrotactileCalibration
 import org.hapticon.sensor.electrotactile.ElectrotactileCalibrationResult
 import org.hapticon.sensor.electrotactile.StoredCalibration
 import java.io.File
@@ -14,7 +12,7 @@ import java.time.Instant
  * The last finished electrotactile calibration, so the compliance study stimulates at the person's levels. It is kept
  * in [file] in the calibration file format `hapticon.electrotactile-calibration` v1 ([CalibrationFile], sensor-bridge):
  * the same file `hapticon board calibrate --save` writes and `board set --calibration` reads, so a calibration moves
- * between the phone and the laptop unchanged ([export], [import]).
+ * between the phone and the laptop unchanged ([stored] is what an export writes, [import] reads one in).
  *
  * Every step is checked against 0..200 (2.7 mA) on the way in and on the way out: a damaged file reads as no
  * calibration, never as a stronger one. [legacyFile] is the app's earlier one-line `s0,s1,…,s8` file, read (with the
@@ -40,14 +38,11 @@ class ElectrodeLevelsStore(
     }
 
     /**
-     * Stores [steps], calibrated now, replacing the previous calibration.
-     * @throws org.hapticon.sensor.safety.SafetyLimitException for a step outside 0..200.
+     * Stores [steps], calibrated now, replacing the previous calibration; returns what was stored.
+     * @throws org.hapticon.sensor.safety.SafetyLimitException for a step outside 0..200 ([ElectrotactileCalibrationResult]
+     *   checks the count and every step).
      */
-    fun save(steps: List<Int>) {
-        require(steps.size == ElectrotactileCalibration.ELECTRODES) { "need ${ElectrotactileCalibration.ELECTRODES} steps, got ${steps.size}" }
-        steps.forEach { AmplitudeSteps.requireStep(it) }
-        write(StoredCalibration(ElectrotactileCalibrationResult(steps), clock()))
-    }
+    fun save(steps: List<Int>): StoredCalibration = StoredCalibration(ElectrotactileCalibrationResult(steps), clock()).also(::write)
 
     /**
      * Reads a calibration file's [bytes] (from the CLI or another phone) and, when it is valid, stores it as is (its
@@ -56,16 +51,18 @@ class ElectrodeLevelsStore(
      */
     fun import(bytes: ByteArray): StoredCalibration = CalibrationFile.decode(bytes).also(::write)
 
-    /** The stored calibration as the file's text, to share, or null when there is none. */
-    fun export(): String? = stored()?.let(CalibrationFile::encode)
-
     private fun write(calibration: StoredCalibration) = replaceFile(file, CalibrationFile.encode(calibration))
 
     private fun legacy(): StoredCalibration? {
         val old = legacyFile?.takeIf { it.isFile && it.length() < 1024 } ?: return null
         val steps = old.readText().trim().split(',').map { it.trim().toIntOrNull() ?: return null }
-        if (steps.size != ElectrotactileCalibration.ELECTRODES || steps.any { it !in 0..AmplitudeSteps.STEPS }) return null
-        return StoredCalibration(ElectrotactileCalibrationResult(steps), Instant.ofEpochMilli(old.lastModified()))
+        // Not nine steps in 0..200 (ElectrotactileCalibrationResult's own checks): read as none.
+        val result = try {
+            ElectrotactileCalibrationResult(steps)
+        } catch (e: IllegalArgumentException) {
+            return null
+        }
+        return StoredCalibration(result, Instant.ofEpochMilli(old.lastModified()))
     }
 
     companion object {

@@ -19,7 +19,6 @@ import java.io.OutputStream
 import java.time.ZoneOffset
 import java.time.format.DateTimeFormatter
 import org.hapticon.sensor.electrotactile.CalibrationFile
-import org.hapticon.sensor.electrotactile.CalibrationFileException
 import org.hapticon.sensor.electrotactile.StoredCalibration
 import org.hapticon.sensor.electrotactile.AmplitudeSteps
 import org.hapticon.sensor.electrotactile.ElectrotactileCalibration
@@ -153,71 +152,69 @@ class ElectrotactileCalibrationViewModel(
     }
 
     /** Stores [steps] off the main thread; says so when done, or why it failed. */
-    private fun save(steps: List<Int>) {
-        val store = store ?: return progress.update { it.copy(message = NO_STORE, problem = true) }
-        viewModelScope.launch {
-            val outcome = withContext(io) { runCatching { store.save(steps); store.stored() } }
-            outcome.onSuccess { stored.value = it }
-            progress.update {
-                if (outcome.isSuccess) it.copy(message = "Saved: the compliance study stimulates at these levels", problem = false)
-                else it.copy(message = "Not saved: ${oneLine(outcome.exceptionOrNull())}", problem = true)
-            }
-        }
-    }
+    private fun save(steps: List<Int>) = fileWork(
+        work = { store -> store.save(steps) },
+        report = { saved, error ->
+            if (saved != null) "Saved: the compliance study stimulates at these levels" else "Not saved: ${oneLine(error)}"
+        },
+    )
 
     /**
      * Writes the stored calibration, as a `hapticon.electrotactile-calibration` file, to the stream [open] gives
      * (the file the researcher picked; null when it could not be opened).
      */
-    fun exportTo(open: () -> OutputStream?) {
-        val store = store ?: return progress.update { it.copy(message = NO_STORE, problem = true) }
-        viewModelScope.launch {
-            val outcome = withContext(io) {
-                runCatching {
-                    val text = store.export() ?: return@runCatching null
-                    val out = open() ?: throw IOException("the file could not be opened")
-                    out.use { it.write(text.toByteArray(Charsets.UTF_8)) }
-                    store.stored()
-                }
+    fun exportTo(open: () -> OutputStream?) = fileWork(
+        work = { store ->
+            store.stored()?.also { kept ->
+                val out = open() ?: throw IOException("the file could not be opened")
+                out.use { it.write(CalibrationFile.encode(kept).toByteArray(Charsets.UTF_8)) }
+            } ?: throw NothingToExport()
+        },
+        report = { exported, error ->
+            when {
+                exported != null -> "Exported ${describe(exported)}"
+                error is NothingToExport -> "Nothing to export: finish a calibration or import one first"
+                else -> "Not exported: ${oneLine(error)}"
             }
-            progress.update {
-                val exported = outcome.getOrNull()
-                when {
-                    outcome.isFailure -> it.copy(message = "Not exported: ${oneLine(outcome.exceptionOrNull())}", problem = true)
-                    exported == null -> it.copy(message = "Nothing to export: finish a calibration or import one first", problem = true)
-                    else -> it.copy(message = "Exported ${describe(exported)}", problem = false)
-                }
-            }
-        }
-    }
+        },
+    )
 
     /**
      * Reads a calibration file from the stream [open] gives (null when it could not be opened) and, when it is valid,
      * stores it for the compliance study; a bad file is refused with one line naming the member at fault, and the
      * stored calibration stays as it was.
      */
-    fun importFrom(open: () -> InputStream?) {
+    fun importFrom(open: () -> InputStream?) = fileWork(
+        work = { store ->
+            val input = open() ?: throw IOException("the file could not be opened")
+            // One byte past the limit is enough to refuse a file that is too large without reading it all.
+            store.import(input.use { it.readNBytes(CalibrationFile.MAX_BYTES + 1) })
+        },
+        report = { imported, error ->
+            if (imported != null) "Imported ${describe(imported)}: the compliance study now stimulates at these levels" else "Not imported: ${oneLine(error)}"
+        },
+    )
+
+    /**
+     * The one way this screen touches files: [work] on [store] off the main thread, then its outcome as the message
+     * ([report] gets the calibration, or null and the error; an error is shown as a problem). The calibration [work]
+     * returns is what the store holds now (saved, imported, or the one exported), so it becomes [storedCalibration].
+     */
+    private fun fileWork(
+        work: (ElectrodeLevelsStore) -> StoredCalibration,
+        report: (StoredCalibration?, Throwable?) -> String,
+    ) {
         val store = store ?: return progress.update { it.copy(message = NO_STORE, problem = true) }
         viewModelScope.launch {
-            val outcome = withContext(io) {
-                runCatching {
-                    val input = open() ?: throw IOException("the file could not be opened")
-                    // One byte past the limit is enough to refuse a file that is too large without reading it all.
-                    val bytes = input.use { it.readNBytes(CalibrationFile.MAX_BYTES + 1) }
-                    store.import(bytes)
-                }
-            }
+            val outcome = withContext(io) { runCatching { work(store) } }
             outcome.onSuccess { stored.value = it }
-            progress.update {
-                val imported = outcome.getOrNull()
-                if (imported != null) {
-                    it.copy(message = "Imported ${describe(imported)}: the compliance study now stimulates at these levels", problem = false)
-                } else {
-                    it.copy(message = "Not imported: ${oneLine(outcome.exceptionOrNull())}", problem = true)
-                }
-            }
+            val message = report(outcome.getOrNull(), outcome.exceptionOrNull())
+            progress.update { it.copy(message = message, problem = outcome.isFailure) }
         }
     }
+
+    /** There is no stored calibration to export. */
+    private class NothingToExport : Exception()
 
     /**
      * Gives the current electrode's next stimulus on the board: STIMULATE with that electrode alone at its step for
@@ -326,11 +323,8 @@ class ElectrotactileCalibrationViewModel(
             return "$whose of $at UTC ($range)"
         }
 
-        // A file's problem on one line: CalibrationFileException's message already names the member at fault.
-        private fun oneLine(error: Throwable?): String = when (error) {
-            is CalibrationFileException -> error.message.orEmpty()
-            null -> "unknown error"
-            else -> (error.message ?: error.javaClass.simpleName).lineSequence().first()
-        }
+        // A file's problem on one line (a CalibrationFileException's message is one already, naming the member at fault).
+        private fun oneLine(error: Throwable?): String =
+            (error?.message ?: error?.javaClass?.simpleName ?: "unknown error").lineSequence().first()
     }
 }
