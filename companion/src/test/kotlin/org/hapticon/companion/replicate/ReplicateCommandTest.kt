@@ -128,21 +128,6 @@ class ReplicateCommandTest {
     }
 
     @Test
-    fun socialTouch_onTwoSimulatedPeople_printsAllThreeClassSetsBesideThePapersColumn() {
-        val bytes = ByteArrayOutputStream()
-        SocialTouchReplication(people = 2, takesPerClass = 2).run(PrintStream(bytes, true, "UTF-8"))
-        val text = bytes.toString("UTF-8")
-        // 2 people × 2 takes × 6 classes = 24 messages per six-class set; 13 classes make 52.
-        val row = Regex("""  (6 emotions|6 social messages|13 classes \(incl. no touch\))\s+n/t\s+(\d+\.\d) %\s+(\d+\.\d) %\s+\(chance (\d+\.\d) %, (\d+) messages\)""")
-        val rows = row.findAll(text).map { it.groupValues }.toList()
-        assertEquals(text, listOf("6 emotions", "6 social messages", "13 classes (incl. no touch)"), rows.map { it[1] })
-        assertEquals(listOf("24", "24", "52"), rows.map { it[5] })
-        assertEquals(listOf("16.7", "16.7", "7.7"), rows.map { it[4] })
-        for (r in rows) assertTrue(text, r[2].toDouble() in 0.0..100.0 && r[3].toDouble() in 0.0..100.0)
-        assertTrue(text, text.contains("anger disgust fear happiness sadness sympathy"))
-    }
-
-    @Test
     fun replicate_withoutId_listsTheReplications() {
         val result = cli("replicate")
         assertEquals(result.toString(), EXIT_OK, result.exitCode)
