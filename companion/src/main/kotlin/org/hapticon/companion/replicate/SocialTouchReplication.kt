@@ -9,14 +9,15 @@ import java.io.PrintStream
 import java.util.Locale
 
 /**
- * 003: the EIT-skin paper's social-touch recognition — the 13 message features and LogitBoost over stumps, scored
+ * 001: the EIT-skin paper's social-touch recognition — the 13 message features and LogitBoost over stumps, scored
  * the paper's way (10 × 10-fold cross-validation) and ours (leave one person out), on the six emotions, the six
  * social messages, and all thirteen classes with no touch. The paper's recordings are not published, so this runs
  * on [SocialTouchSyntheticPeople] ([people] people, [takesPerClass] messages per class each): the numbers show the
  * pipeline and how much pooling a person's messages into the training folds flatters, not the paper's skin.
  */
 class SocialTouchReplication(private val people: Int = 8, private val takesPerClass: Int = 10, private val seed: Long = 1L) : Replication {
-    override val id: String = "003"
+    override val id: String = "001"
+    override val names: List<String> = listOf("eit-skin")
     override val title: String = "EIT-skin social touch: 13 features, LogitBoost, 10x10-fold CV vs leave-one-person-out"
 
     override fun run(out: PrintStream) {

@@ -12,7 +12,7 @@ public class SocialTouchMessage(public val person: String, public val label: Str
 
 /**
  * Deterministic simulated people giving the [SocialTouchClasses] on a contact surface sampled at [SAMPLE_RATE]
- * (a touchscreen's rate), for `hapticon replicate 003` and the tests. **Simulated, not the paper's data:** the
+ * (a touchscreen's rate), for `hapticon replicate 001` and the tests. **Simulated, not the paper's data:** the
  * EIT-skin paper's recordings are not published; these people stand in so the pipeline (13 features, LogitBoost,
  * both evaluations) runs end to end, and the accuracies they give say how separable *these* prototypes are, not
  * how well the paper's participants could be told apart.
