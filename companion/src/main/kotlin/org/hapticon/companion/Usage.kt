@@ -151,8 +151,8 @@ val USAGE: String = """
     |      Parameter recovery of the fit on random synthetic icons at SNR 10-40 dB, per envelope method.
     |  hapticon replicate [ID]
     |      Reproduce a published result and print ours beside the paper's figures; without ID, list them
-    |      (000 haptic icons, 001 compliance grains, 002 NAO touch gestures, 003 EIT-skin social touch,
-    |      004 tele-handshake calibration). docs/replication.md.
+    |      by seed-file number or short name: 000 haptic-icons, 001 eit-skin (social touch), 002 handshake|glove,
+    |      003 shaping-compliance (electrotactile grains), 004 nao (touch gestures). docs/replication.md.
     |  hapticon help
     |      Print this text.
     |

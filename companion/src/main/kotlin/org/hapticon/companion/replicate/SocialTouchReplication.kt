@@ -22,6 +22,7 @@ class SocialTouchReplication(
     private val runs: Int = 10,
 ) : Replication {
     override val id: String = "001"
+    override val names: List<String> = listOf("eit-skin")
     override val title: String = "EIT-skin social touch: Table 1's 13 features, WEKA's LogitBoost, Experiments 1 and 2"
 
     override fun run(out: PrintStream) {
