@@ -21,6 +21,18 @@ class SocialTouchCommandsTest {
         }
     })
 
+    /** Trains on [dir] into [name]; the one line on stderr: 24 messages of two people, both evaluations 100 %. */
+    private fun trainPerfectly(dir: File, name: String, labels: String): File {
+        val model = File(temp.root, name)
+        val train = cli("train", "--classifier", "logitboost", "--in", dir.path, "--out", model.path)
+        assertEquals(train.toString(), 0, train.exitCode)
+        assertEquals(
+            listOf("train: 24 messages from 2 people, labels $labels, LogitBoost 10 rounds; 10x10-fold CV 100.0 %, leave-one-transmitter-out 100.0 %; wrote $model"),
+            train.stderrLines,
+        )
+        return model
+    }
+
     @Test
     fun trainLogitboost_thenClassify_recognisesAMessage() {
         val dir = temp.newFolder("messages")
@@ -28,13 +40,7 @@ class SocialTouchCommandsTest {
             message(File(dir, "$person-pat-$n.csv"), 1.0 + 0.05 * n, 5 + n % 3, 1.0)
             message(File(dir, "$person-squeeze-$n.csv"), 5.0 + 0.1 * n, 50 + n, 6.0)
         }
-        val model = File(temp.root, "social.json")
-        val train = cli("train", "--classifier", "logitboost", "--in", dir.path, "--out", model.path)
-        assertEquals(train.toString(), 0, train.exitCode)
-        assertEquals(
-            listOf("train: 24 messages from 2 people, labels pat squeeze, LogitBoost 10 rounds; 10x10-fold CV 100.0 %, leave-one-transmitter-out 100.0 %; wrote $model"),
-            train.stderrLines,
-        )
+        val model = trainPerfectly(dir, "social.json", "pat squeeze")
         val probe = temp.newFile("probe.csv").also { message(it, 5.5, 55, 5.0) }
         val classify = cli("classify", "--model", model.path, "--in", probe.path)
         assertEquals(classify.toString(), 0, classify.exitCode)
@@ -60,13 +66,7 @@ class SocialTouchCommandsTest {
             skin(File(dir, "$person-rejection-$n.csv"), 0.5 + 0.01 * n, 10, at = 0, push = 0.4)
             skin(File(dir, "$person-greeting-$n.csv"), 0.5 + 0.01 * n, 10, at = 2, push = -0.4)
         }
-        val model = File(temp.root, "skin.json")
-        val train = cli("train", "--classifier", "logitboost", "--in", dir.path, "--out", model.path)
-        assertEquals(train.toString(), 0, train.exitCode)
-        assertEquals(
-            listOf("train: 24 messages from 2 people, labels greeting rejection, LogitBoost 10 rounds; 10x10-fold CV 100.0 %, leave-one-transmitter-out 100.0 %; wrote $model"),
-            train.stderrLines,
-        )
+        val model = trainPerfectly(dir, "skin.json", "greeting rejection")
         val probe = temp.newFile("probe-skin.csv").also { skin(it, 0.45, 12, at = 2, push = -0.3) }
         val classify = cli("classify", "--model", model.path, "--in", probe.path)
         assertEquals("greeting", classify.stdout.lines()[1].substringBefore(','))

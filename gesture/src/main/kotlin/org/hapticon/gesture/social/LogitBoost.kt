@@ -39,7 +39,8 @@ public class Stump(public val feature: Int, public val threshold: Double, public
  * Not implemented (the paper names no WEKA option, so its defaults apply): resampling (-Q, which WEKA uses only for a
  * base learner that cannot take weights; DecisionStump can), estimated priors (-use-estimated-priors, off by default)
  * and, from WEKA 3.7, internal cross-validation to choose the number of rounds (-F, 0 = off by default). Tested against
- * WEKA itself (`LogitBoostWekaOracleTest`): the same predictions and probabilities on the same data and settings.
+ * WEKA itself (`LogitBoostWekaOracleTest`): the same predictions and, to the last bit, probabilities on the same data
+ * and settings.
  *
  * [predict] reuses scratch arrays: one instance per thread.
  *

@@ -28,10 +28,11 @@ public class SocialTouchMessage(public val person: String, public val label: Str
  * x from wrist −1 through the elbow 0 to shoulder +1, y from the inner −1 to the outer side +1: the paper gives its
  * dimensions only in Fig. 2a), the image of a touch (a blob of the contact's radius whose surround dips below zero by
  * 30 % of a blob twice as wide, as a smoothed difference image does), every number in [PROTOTYPES], and the
- * variation: per transmitter and class a style (intensity and push ×0.6–1.4, duration ×0.6–1.6, place ±0.3 along and
- * ±0.2 around the arm, one touch more or fewer half the time) — the paper's hypothesis that gestures are "consistent
- * during repetitions from a single individual but quite variable across a range of individuals" (:156) — and per
- * message intensity ±15 %, duration ±20 %, place ±0.08, one touch more or fewer in 15 % of messages.
+ * variation: per transmitter and class a style — the way of a look-alike class ([LOOK_ALIKES]) [BORROW] of the time,
+ * intensity and push ×0.5–1.5, duration ×0.5–1.8, place ±0.5 along and ±0.3 around the arm, one touch more or fewer
+ * half the time — after the paper's hypothesis that gestures are "consistent during repetitions from a single
+ * individual but quite variable across a range of individuals" (:156), and per message intensity ±25 %, duration
+ * ±30 %, place ±0.12, one touch more or fewer in 20 % of messages.
  */
 public object SocialTouchSyntheticPeople {
     /** Frames per second: "approximately 40 Hz" (001_e790093bbd2e3cd3.txt:91). */
@@ -77,7 +78,7 @@ public object SocialTouchSyntheticPeople {
         // Squeezing and pushing (:301, :303), the highest pressures (:286), short (:289) yet longer than disgust (:303).
         "anger" to Prototype(2, 0.5, 0.3, 0.95, 0.25, 0.2, 0.5, push = 0.6),
         // Squeezing (:301), high pressure (:286), the largest displacements (:287).
-        "fear" to Prototype(1, 1.5, 0.0, 0.85, 0.3, -0.2, 0.5, travel = 0.6, shakeHz = 6.0, shakeDepth = 0.2),
+        "fear" to Prototype(1, 1.5, 0.0, 0.85, 0.3, -0.2, 0.5, travel = 0.8, shakeHz = 6.0, shakeDepth = 0.2),
         // Stroking and scratching (:301).
         "happiness" to Prototype(3, 0.6, 0.2, 0.4, 0.15, 0.0, 0.6, travel = 0.3, shakeHz = 8.0, shakeDepth = 0.3),
         // Stroking (:301), the largest displacements (:287), a light touch of moderate duration (:35).
@@ -137,19 +138,38 @@ public object SocialTouchSyntheticPeople {
         return names.flatMap { person(it, labels, takes, random.split()) }
     }
 
+    /**
+     * Classes a transmitter may give the way another gives a look-alike, from the confusions the paper reports: anger,
+     * fear and disgust (:240; anger and disgust both pushed, anger and fear both squeezed, :301, :303), rejection and
+     * animosity (:240), acceptance and greeting (Participant B, :174), and the stroked happiness, sadness and affection
+     * (:301).
+     */
+    public val LOOK_ALIKES: List<Set<String>> = listOf(
+        setOf("anger", "fear", "disgust"),
+        setOf("rejection", "animosity"),
+        setOf("acceptance", "greeting"),
+        setOf("happiness", "sadness", "affection"),
+    )
+
+    /** How often a transmitter gives a class the way of one of its [LOOK_ALIKES] (ours). */
+    public const val BORROW: Double = 0.35
+
     /** One transmitter's way of giving a class (ours: see the class KDoc). */
-    private class Style(val intensity: Double, val seconds: Double, val dx: Double, val dy: Double, val touches: Int, val push: Double)
+    private class Style(val prototype: Prototype?, val intensity: Double, val seconds: Double, val dx: Double, val dy: Double, val touches: Int, val push: Double)
 
     private fun person(name: String, labels: List<String>, takes: Int, random: SplittableRandom): List<SocialTouchMessage> {
         val styles = labels.associateWith { label ->
-            val p = PROTOTYPES[label]
+            val alike = LOOK_ALIKES.firstOrNull { label in it }?.minus(label)?.sorted().orEmpty()
+            val borrowed = if (alike.isNotEmpty() && random.nextDouble() < BORROW) alike[random.nextInt(alike.size)] else label
+            val p = PROTOTYPES[borrowed]
             Style(
-                intensity = between(random, 0.6, 1.4),
-                seconds = between(random, 0.6, 1.6),
-                dx = between(random, -0.3, 0.3),
-                dy = between(random, -0.2, 0.2),
+                prototype = p,
+                intensity = between(random, 0.5, 1.5),
+                seconds = between(random, 0.5, 1.8),
+                dx = between(random, -0.5, 0.5),
+                dy = between(random, -0.3, 0.3),
                 touches = if (p != null && random.nextDouble() < 0.5) maxOf(1, p.touches + if (random.nextBoolean()) 1 else -1) else p?.touches ?: 1,
-                push = between(random, 0.6, 1.4),
+                push = between(random, 0.5, 1.5),
             )
         }
         val order = (0 until takes).flatMap { labels }.toMutableList()
@@ -159,9 +179,9 @@ public object SocialTouchSyntheticPeople {
         }
         return order.map { label ->
             val messageSeed = random.nextLong()
-            val prototype = PROTOTYPES[label]
             val style = styles.getValue(label)
             SocialTouchMessage(name, label) {
+                val prototype = style.prototype
                 if (prototype == null) faint(SplittableRandom(messageSeed)) else message(prototype, style, SplittableRandom(messageSeed))
             }
         }
@@ -179,12 +199,12 @@ public object SocialTouchSyntheticPeople {
     }
 
     private fun message(p: Prototype, style: Style, random: SplittableRandom): Sequence<SkinFrame> {
-        val count = maxOf(1, style.touches + if (random.nextDouble() < 0.15) (if (random.nextBoolean()) 1 else -1) else 0)
-        val intensity = (p.intensity * style.intensity * between(random, 0.85, 1.15)).coerceAtMost(1.0)
-        val seconds = p.seconds * style.seconds * between(random, 0.8, 1.2)
-        val gap = p.gapSeconds * style.seconds * between(random, 0.8, 1.2)
-        val x = (p.x + style.dx + between(random, -0.08, 0.08)).coerceIn(-1.0, 1.0)
-        val y = (p.y + style.dy + between(random, -0.08, 0.08)).coerceIn(-1.0, 1.0)
+        val count = maxOf(1, style.touches + if (random.nextDouble() < 0.2) (if (random.nextBoolean()) 1 else -1) else 0)
+        val intensity = (p.intensity * style.intensity * between(random, 0.75, 1.25)).coerceAtMost(1.0)
+        val seconds = p.seconds * style.seconds * between(random, 0.7, 1.3)
+        val gap = p.gapSeconds * style.seconds * between(random, 0.7, 1.3)
+        val x = (p.x + style.dx + between(random, -0.12, 0.12)).coerceIn(-1.0, 1.0)
+        val y = (p.y + style.dy + between(random, -0.12, 0.12)).coerceIn(-1.0, 1.0)
         var t = QUIET_SECONDS
         val touches = List(count) {
             Touch(t, seconds, intensity, p.radius, x, y, p.travel, p.push * style.push, p.shakeHz, p.shakeDepth).also { t += seconds + maxOf(gap, 2 / SAMPLE_RATE) }
