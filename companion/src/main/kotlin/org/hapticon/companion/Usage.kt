@@ -134,9 +134,10 @@ val USAGE: String = """
     |      Train a gesture model from labelled CSV (header time_s,<channels..>[,label]; without a label
     |      column the file name holds the label, e.g. p1-knock-gentle-3.csv). Defaults: 1 s, 30 trees.
     |  hapticon train --classifier logitboost --in DIR_OR_CSV [MORE..] --out MODEL.json [--iterations N]
-    |      Social-touch model: one message per contact CSV (header time_s,intensity,x,y,area) named
-    |      PERSON-LABEL[-N].csv; LogitBoost over stumps on 13 message features (default 10 rounds); prints
-    |      10x10-fold CV and leave-one-person-out accuracy.
+    |      Social-touch model: one message per CSV named PERSON-LABEL[-N].csv, a skin recording (header
+    |      time_s,joint,e:X:Y,..) or a pointer stream (header time_s,intensity,x,y,area); LogitBoost over
+    |      decision stumps as WEKA runs it on the EIT-skin paper's 13 features (default 10 rounds); prints
+    |      ten 10-fold CVs and leave-one-transmitter-out accuracy.
     |  hapticon classify --model MODEL.json --in REC.csv
     |      Classify a recording (same channels and rate as the model) live: CSV time_s,label,probability,event
     |      per decision, event 1 where a gesture is reported. With a social-touch model: label,probability
@@ -150,8 +151,8 @@ val USAGE: String = """
     |      Parameter recovery of the fit on random synthetic icons at SNR 10-40 dB, per envelope method.
     |  hapticon replicate [ID]
     |      Reproduce a published result and print ours beside the paper's figures; without ID, list them
-    |      (000 haptic icons, 001 compliance grains, 002 NAO touch gestures, 003 EIT-skin social touch,
-    |      004 tele-handshake calibration). docs/replication.md.
+    |      by seed-file number or short name: 000 haptic-icons, 001 eit-skin (social touch), 002 handshake|glove,
+    |      003 shaping-compliance (electrotactile grains), 004 nao (touch gestures). docs/replication.md.
     |  hapticon help
     |      Print this text.
     |

@@ -15,11 +15,12 @@ import java.io.PrintStream
 import java.util.Locale
 
 /**
- * 001: Shaping Compliance's published rules (the electrotactile compliance illusion, CHI 2024) against ours: grains
+ * 003: Shaping Compliance's published rules (the electrotactile compliance illusion, CHI 2024) against ours: grains
  * per full press (grains = bins − 1), the electrode conditions, calibration and the pulses.
  */
 object ComplianceGrainsReplication : Replication {
-    override val id: String = "001"
+    override val id: String = "003"
+    override val names: List<String> = listOf("shaping-compliance")
     override val title: String = "Shaping Compliance: electrotactile grains, electrodes and calibration"
 
     /** Grains a 20 s linear press over the default 0–10 N range at 1 kHz fires with [grains] requested. */

@@ -13,13 +13,14 @@ import java.util.SplittableRandom
 import kotlin.math.sqrt
 
 /**
- * 004: the tele-handshake paper's glove calibration: each pose taken twice and averaged ([SOURCE]; only its abstract
+ * 002: the tele-handshake paper's glove calibration: each pose taken twice and averaged ([SOURCE]; only its abstract
  * could be reached, so the paper column rests on the project's summary of it: docs/replication.md). Simulated people whose
  * thumb follows the paper's calibration (α = 0.016/°, β = 16.17 kΩ) hold each pose with a random error
  * (SD [POSE_SD_DEGREES]°); the fitted α and β are compared with one take per pose and with the paper's two.
  */
 object HandshakeCalibrationReplication : Replication {
-    override val id: String = "004"
+    override val id: String = "002"
+    override val names: List<String> = listOf("handshake", "glove")
     override val title: String = "Tele-handshake glove: calibration with each pose taken twice and averaged"
 
     /**

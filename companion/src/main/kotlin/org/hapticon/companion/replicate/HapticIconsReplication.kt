@@ -18,6 +18,7 @@ import kotlin.math.abs
  */
 object HapticIconsReplication : Replication {
     override val id: String = "000"
+    override val names: List<String> = listOf("haptic-icons")
     override val title: String = "Haptic icons (Wei et al.): Table 3 stimuli and the study procedure"
 
     /** The rate the study's Processing sketch played at. */

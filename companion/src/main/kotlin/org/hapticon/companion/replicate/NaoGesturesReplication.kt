@@ -7,12 +7,13 @@ import java.io.PrintStream
 import java.util.Locale
 
 /**
- * 002: the NAO fabric-sensor paper's touch-gesture pipeline ([NaoPreset]) scored the paper's way (a random 70/30
+ * 004: the NAO fabric-sensor paper's touch-gesture pipeline ([NaoPreset]) scored the paper's way (a random 70/30
  * split of windows) and ours (leave one person out). The paper's data set is not shipped, so this runs on simulated
  * people ([sessions]); the numbers show how much the random split flatters, not the paper's sensor.
  */
 class NaoGesturesReplication(private val sessions: () -> List<NaoRecording>) : Replication {
-    override val id: String = "002"
+    override val id: String = "004"
+    override val names: List<String> = listOf("nao")
     override val title: String = "NAO fabric sensor: touch gestures × intensity, random split vs leave-one-person-out"
 
     override fun run(out: PrintStream) {

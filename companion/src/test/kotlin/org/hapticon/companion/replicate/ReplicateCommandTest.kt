@@ -18,7 +18,7 @@ import java.io.PrintStream
 
 class ReplicateCommandTest {
     /** A replication that prints a fixed line, to test the dispatch alone. */
-    private class TestReplication(override val id: String) : Replication {
+    private class TestReplication(override val id: String, override val names: List<String> = emptyList()) : Replication {
         override val title: String = "test $id"
         override fun run(out: PrintStream) = out.println("ran $id")
     }
@@ -26,7 +26,7 @@ class ReplicateCommandTest {
     private fun run(vararg args: String): String {
         val bytes = ByteArrayOutputStream()
         val out = PrintStream(bytes, true, "UTF-8")
-        runReplicate(args.toList(), Console(out, out), listOf(TestReplication("001"), TestReplication("002")))
+        runReplicate(args.toList(), Console(out, out), listOf(TestReplication("001"), TestReplication("002", listOf("glove", "handshake"))))
         return bytes.toString("UTF-8")
     }
 
@@ -36,8 +36,14 @@ class ReplicateCommandTest {
     }
 
     @Test
-    fun replicate_noId_listsThem() {
-        assertEquals("001  test 001\n002  test 002\n", run())
+    fun replicate_byShortName_runsThatOne() {
+        assertEquals("002 test 002\nran 002\n", run("handshake"))
+        assertEquals("002 test 002\nran 002\n", run("Glove"))
+    }
+
+    @Test
+    fun replicate_noId_listsThemWithTheirNames() {
+        assertEquals("001  test 001\n002  test 002 (glove, handshake)\n", run())
     }
 
     @Test
@@ -46,21 +52,34 @@ class ReplicateCommandTest {
             run("009")
             fail("accepted")
         } catch (e: UsageException) {
-            assertEquals("no replication '009'; try 001, 002", e.message)
+            assertEquals("no replication '009'; try 001, 002|glove|handshake", e.message)
         }
         val result = cli("replicate", "009")
         assertEquals(2, result.exitCode)
-        assertEquals(listOf("hapticon: no replication '009'; try 000, 001, 002, 003, 004"), result.stderrLines)
+        assertEquals(listOf("hapticon: no replication '009'; try 000|haptic-icons, 001|eit-skin, 002|handshake|glove, 003|shaping-compliance, 004|nao"), result.stderrLines)
     }
 
     @Test
-    fun allReplications_areInIdOrder() {
+    fun allReplications_areTheSeedFilesNumbersInOrder() {
         assertEquals(listOf("000", "001", "002", "003", "004"), allReplications.map { it.id })
+        assertEquals(
+            listOf(HapticIconsReplication::class, SocialTouchReplication::class, HandshakeCalibrationReplication::class, ComplianceGrainsReplication::class, NaoGesturesReplication::class),
+            allReplications.map { it::class },
+        )
+        assertEquals(listOf("haptic-icons", "eit-skin", "handshake", "shaping-compliance", "nao"), allReplications.map { it.names.first() })
     }
 
     @Test
-    fun replicate001_printsOursBesideThePapers() {
-        val result = cli("replicate", "001")
+    fun replicate_shortName_isTheSameAsTheId() {
+        val byName = cli("replicate", "shaping-compliance")
+        assertEquals(byName.toString(), EXIT_OK, byName.exitCode)
+        assertEquals(cli("replicate", "003").stdout, byName.stdout)
+        assertTrue(byName.stdout, byName.stdout.startsWith("003 Shaping Compliance"))
+    }
+
+    @Test
+    fun replicate003_printsOursBesideThePapers() {
+        val result = cli("replicate", "003")
         assertEquals(result.toString(), 0, result.exitCode)
         // requested, paper bins, our bins, paper grains, our grains.
         for (g in listOf(9, 19, 39)) {
@@ -128,26 +147,12 @@ class ReplicateCommandTest {
     }
 
     @Test
-    fun socialTouch_onTwoSimulatedPeople_printsAllThreeClassSetsBesideThePapersColumn() {
-        val bytes = ByteArrayOutputStream()
-        SocialTouchReplication(people = 2, takesPerClass = 2).run(PrintStream(bytes, true, "UTF-8"))
-        val text = bytes.toString("UTF-8")
-        // 2 people × 2 takes × 6 classes = 24 messages per six-class set; 13 classes make 52.
-        val row = Regex("""  (6 emotions|6 social messages|13 classes \(incl. no touch\))\s+n/t\s+(\d+\.\d) %\s+(\d+\.\d) %\s+\(chance (\d+\.\d) %, (\d+) messages\)""")
-        val rows = row.findAll(text).map { it.groupValues }.toList()
-        assertEquals(text, listOf("6 emotions", "6 social messages", "13 classes (incl. no touch)"), rows.map { it[1] })
-        assertEquals(listOf("24", "24", "52"), rows.map { it[5] })
-        assertEquals(listOf("16.7", "16.7", "7.7"), rows.map { it[4] })
-        for (r in rows) assertTrue(text, r[2].toDouble() in 0.0..100.0 && r[3].toDouble() in 0.0..100.0)
-        assertTrue(text, text.contains("anger disgust fear happiness sadness sympathy"))
-    }
-
-    @Test
     fun replicate_withoutId_listsTheReplications() {
         val result = cli("replicate")
         assertEquals(result.toString(), EXIT_OK, result.exitCode)
         assertTrue(result.stdout, result.stdout.startsWith("000  Haptic icons (Wei et al.)"))
-        assertTrue(result.stdout, result.stdout.contains("\n001  Shaping Compliance"))
+        assertTrue(result.stdout, result.stdout.contains("\n003  Shaping Compliance"))
+        assertTrue(result.stdout, result.stdout.contains("\n001  EIT-skin social touch"))
     }
 
     @Test

@@ -66,7 +66,7 @@ public sealed interface CalibrationState {
  * The poses are walked [takesPerPose] times (the tele-handshake paper took each pose twice and averaged; the paper
  * is "Tele Haptic Handshake Using Distributed Pressure Presentation Device and Mutual Interaction Pressure Model",
  * Electronics 14(3):537, 2025, doi:10.3390/electronics14030537; the two takes and the poses are the project's summary
- * of it, not re-checked against its Methods, which could not be reached: docs/replication.md, 004):
+ * of it, not re-checked against its Methods, which could not be reached: docs/replication.md, 002):
  * round 1 through every pose, then round 2, so the hand leaves each pose before it is taken again. A pose's
  * [CalibrationPoint] is the mean resistance of its takes. After the last take of the last pose it fits
  * ([FlexCalibration.fit]) and ends in [CalibrationState.Calibrated] or [CalibrationState.Failed].

@@ -62,7 +62,7 @@ public data class FlexDivider(
     public companion object {
         /**
          * The study's supply voltage, 5 V, as the project summarised the tele-handshake paper (Electronics
-         * 14(3):537, 2025); its circuit section could not be reached to re-check it (docs/replication.md, 004).
+         * 14(3):537, 2025); its circuit section could not be reached to re-check it (docs/replication.md, 002).
          */
         public const val DEFAULT_SUPPLY_VOLTS: Double = 5.0
 

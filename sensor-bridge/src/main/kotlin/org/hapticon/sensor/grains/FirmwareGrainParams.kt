@@ -61,7 +61,7 @@ public data class FirmwareGrainParams(
 
     /**
      * The settings under which sensor-bridge's [GrainDecider] decides as the board does (grains.cpp is its twin): the
-     * same bins over the same range in the channel's units, filter and grain length. `replicate 001` runs a slow
+     * same bins over the same range in the channel's units, filter and grain length. `replicate 003` runs a slow
      * press through it to show what the board fires.
      */
     public fun deciderSettings(): GrainSettings =
