@@ -124,7 +124,7 @@ class ChatOverBrokerTest {
         assertNull(probe("alice-secret"))
         // Closed: the account's session ends (a clean disconnect; the broker keeps the session and queues).
         chat.settings.update { it.copy(userName = null) }
-        withTimeout(10_000) { chat.sync.connection.first { it != ConnectionState.Connected } }
+        awaitTrue("alice's session kept but disconnected") { broker.sessions() == mapOf("alice" to false) }
         val bobInbox = CopyOnWriteArrayList<InboxEvent>()
         val bob = MqttMessenger(MqttSettings(address, "bob", "bob-secret")).also { bob = it }
         bob.connect(InboxListener { bobInbox += it })

@@ -198,8 +198,7 @@ class FirstLaunchOfferTest {
         compose.onNodeWithContentDescription("Your user name").performTextInput("alice")
 
         compose.onNodeWithText("Scan invite code").performClick()
-        compose.waitForIdle()
-        val camera = shadowOf(compose.activity).nextStartedActivityForResult.intent
+        val camera = awaitCameraRequest()
         assertEquals(android.provider.MediaStore.ACTION_IMAGE_CAPTURE, camera.action)
         val output = checkNotNull(camera.getParcelableExtra(android.provider.MediaStore.EXTRA_OUTPUT, android.net.Uri::class.java))
         assertEquals("${app.packageName}.exports", output.authority)
@@ -225,8 +224,7 @@ class FirstLaunchOfferTest {
         compose.setContent { ChatsRoute(chat) }
         awaitText("Scan invite code")
         compose.onNodeWithText("Scan invite code").performClick()
-        compose.waitForIdle()
-        val camera = shadowOf(compose.activity).nextStartedActivityForResult.intent
+        val camera = awaitCameraRequest()
         val output = checkNotNull(camera.getParcelableExtra(android.provider.MediaStore.EXTRA_OUTPUT, android.net.Uri::class.java))
         val blank = android.graphics.Bitmap.createBitmap(800, 600, android.graphics.Bitmap.Config.ARGB_8888).apply { eraseColor(android.graphics.Color.LTGRAY) }
         app.contentResolver.openOutputStream(output)!!.use { blank.compress(android.graphics.Bitmap.CompressFormat.JPEG, 85, it) }
@@ -252,6 +250,12 @@ class FirstLaunchOfferTest {
             if (matrix[x, y]) canvas.drawRect(left + (x + 4) * module, top + (y + 4) * module, left + (x + 5) * module, top + (y + 5) * module, paint)
         }
         return photo
+    }
+
+    /** The camera app's request, once the scanner has made its file (off the main thread) and started it. */
+    private fun awaitCameraRequest(): android.content.Intent {
+        compose.waitUntil(10_000) { shadowOf(compose.activity).peekNextStartedActivityForResult() != null }
+        return shadowOf(compose.activity).nextStartedActivityForResult.intent
     }
 
     /**
