@@ -45,6 +45,15 @@ public interface Messenger {
     public fun reconnectNow() {}
 
     /**
+     * Sends one round trip to the broker now and suspends until it is answered: true when it was within
+     * [timeoutMillis], false when not connected or no answer came (the connection is dead though not yet
+     * noticed). For a phone that wakes from sleep only now and then: the client's own keep-alive timer counts
+     * only awake time, so the broker would otherwise hear nothing. Does not throw. The default answers from
+     * [state], for messengers without a round trip of their own.
+     */
+    public suspend fun ping(timeoutMillis: Long): Boolean = state.value == ConnectionState.Connected
+
+    /**
      * Publishes [message] into [recipient]'s inbox and suspends until the broker has acknowledged it
      * (PUBACK). Throws [MessagingException] when not connected or the publish fails; the message may or may
      * not have reached the broker then, which is why receivers deduplicate. Throws

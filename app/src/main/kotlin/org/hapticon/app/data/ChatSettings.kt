@@ -25,6 +25,11 @@ data class ChatPreferences(
     val stayReachable: Boolean = false,
     /** Start the "Stay reachable" service again after the phone restarts. */
     val reachableAfterBoot: Boolean = false,
+    /**
+     * First launch saved the account and still owes the user the offer of "Stay reachable" and autoplay (asked
+     * once, before the chat list; answered, it is false for good).
+     */
+    val reachableOfferPending: Boolean = false,
     /** Conversations moved out of the chat list (still stored, back on a new message). */
     val archived: Set<String> = emptySet(),
     /**
@@ -53,7 +58,7 @@ data class ChatPreferences(
     override fun toString(): String =
         "ChatPreferences(userName=$userName, brokerUrl=$brokerUrl, autoPlay=$autoPlay, rendererOverride=$rendererOverride, " +
             "dynamicColor=$dynamicColor, sendFeltReceipts=$sendFeltReceipts, stayReachable=$stayReachable, " +
-            "reachableAfterBoot=$reachableAfterBoot, archived=$archived, enterSends=$enterSends, endToEnd=$endToEnd, pitchFit=$pitchFit, brokerPassword=${if (brokerPassword == null) "none" else "***"})"
+            "reachableAfterBoot=$reachableAfterBoot, reachableOfferPending=$reachableOfferPending, archived=$archived, enterSends=$enterSends, endToEnd=$endToEnd, pitchFit=$pitchFit, brokerPassword=${if (brokerPassword == null) "none" else "***"})"
 }
 
 /** Reads and writes [ChatPreferences]. */
@@ -91,6 +96,7 @@ class SharedPreferencesChatSettings(
             .putBoolean(FELT_RECEIPTS, next.sendFeltReceipts)
             .putBoolean(STAY_REACHABLE, next.stayReachable)
             .putBoolean(AFTER_BOOT, next.reachableAfterBoot)
+            .putBoolean(OFFER_PENDING, next.reachableOfferPending)
             .putStringSet(ARCHIVED, next.archived)
             .putBoolean(ENTER_SENDS, next.enterSends)
             .putBoolean(END_TO_END, next.endToEnd)
@@ -130,6 +136,7 @@ class SharedPreferencesChatSettings(
         sendFeltReceipts = prefs.getBoolean(FELT_RECEIPTS, true),
         stayReachable = prefs.getBoolean(STAY_REACHABLE, false),
         reachableAfterBoot = prefs.getBoolean(AFTER_BOOT, false),
+        reachableOfferPending = prefs.getBoolean(OFFER_PENDING, false),
         archived = prefs.getStringSet(ARCHIVED, null)?.toSet() ?: emptySet(),
         enterSends = prefs.getBoolean(ENTER_SENDS, false),
         endToEnd = prefs.getBoolean(END_TO_END, false),
@@ -149,6 +156,7 @@ class SharedPreferencesChatSettings(
         const val FELT_RECEIPTS = "felt_receipts"
         const val STAY_REACHABLE = "stay_reachable"
         const val AFTER_BOOT = "reachable_after_boot"
+        const val OFFER_PENDING = "reachable_offer_pending"
         const val ARCHIVED = "archived"
         const val ENTER_SENDS = "enter_sends"
         const val END_TO_END = "end_to_end"

@@ -143,7 +143,8 @@ class ChatComponent(
         )
 
         /**
-         * How the messenger of [user] connects to [broker]: with [credentials] on an `ssl://` broker, the client
+         * How the messenger of [user] connects to [broker], with the keep-alive the keep-alive alarm is timed for
+         * ([KeepAlive.MQTT_KEEP_ALIVE_SECONDS]): with [credentials] on an `ssl://` broker, the client
          * certificate logs in and the study CA in its chain is what the broker's certificate must chain to
          * (docs/security.md, "Client certificates"); a `tcp://` broker cannot carry one, so there the password
          * alone logs in. Throws [IllegalArgumentException] for an invalid address, or a certificate of another user.
@@ -151,7 +152,10 @@ class ChatComponent(
         internal fun mqttSettings(user: String, broker: String, password: String?, credentials: ClientCredentials?): MqttSettings {
             val address = BrokerAddress.parse(broker)
             val tls = credentials?.takeIf { address.tls }
-            return MqttSettings(address, user, password, clientCertificate = tls?.certificate, trustedCertificates = tls?.trusted.orEmpty())
+            return MqttSettings(
+                address, user, password, keepAliveSeconds = KeepAlive.MQTT_KEEP_ALIVE_SECONDS,
+                clientCertificate = tls?.certificate, trustedCertificates = tls?.trusted.orEmpty(),
+            )
         }
 
         /**
@@ -171,11 +175,14 @@ class ChatComponent(
         }
 
         /**
-         * Tests [broker] for [user] through the real session: the settings are switched to it, and the answer is
-         * the first Connected or Failed state of that session within [PROBE_TIMEOUT_MILLIS]. On failure the
-         * previous settings come back, so nothing is saved. A separate probe client would be unsafe: the broker
-         * binds the client id to the user name, so a second connection as [user] would take over (and with a
-         * clean session erase) the user's queued messages; through the real session whatever arrives is stored.
+         * Tests [broker] for [user] through the real session, without saving anything first: the session runs as
+         * the candidate ([ChatSync.trySession]) while the settings keep the previous account, so no screen shows an
+         * account that is not yet there (first launch stays on its form, with what was typed). The answer is the
+         * first Connected or Failed state of that session within [timeoutMillis]; Connected saves the account (the
+         * session goes on as it is), anything else leaves the settings as they were. A separate probe client would
+         * be unsafe: the broker binds the client id to the user name, so a second connection as [user] would take
+         * over (and with a clean session erase) the user's queued messages; through the real session whatever
+         * arrives is stored.
          */
         internal suspend fun probeBroker(
             settings: ChatSettingsRepository,
@@ -185,17 +192,26 @@ class ChatComponent(
             password: String?,
             timeoutMillis: Long = PROBE_TIMEOUT_MILLIS,
         ): String? {
-            val previous = settings.preferences.value
             val target = ChatSync.SessionTarget(user, broker.toString(), password)
-            settings.update { it.copy(userName = user, brokerUrl = broker.toString(), brokerPassword = password) }
-            val state = kotlinx.coroutines.withTimeoutOrNull(timeoutMillis) { sync.settledStateOf(target) }
-            if (state == org.hapticon.messaging.ConnectionState.Connected) return null
-            val lastFailure = (sync.connection.value as? org.hapticon.messaging.ConnectionState.Connecting)?.lastFailure
-            settings.update { previous }
-            return when (state) {
-                is org.hapticon.messaging.ConnectionState.Failed -> "The broker at $broker refused the connection: ${state.reason}"
-                else -> "No answer from $broker within ${timeoutMillis / 1000} s. Is `hapticon broker --host ADDRESS` running, " +
-                    "and is this phone on the same network?" + (lastFailure?.let { " ($it)" } ?: "")
+            return sync.trySession(target) {
+                val state = kotlinx.coroutines.withTimeoutOrNull(timeoutMillis) { sync.settledStateOf(target) }
+                if (state == org.hapticon.messaging.ConnectionState.Connected) {
+                    // A first account (none before) owes the user the offer of Stay reachable, saved in the same
+                    // write: no screen ever sees the account without it (the chat list would flash by).
+                    settings.update {
+                        it.copy(
+                            userName = user, brokerUrl = broker.toString(), brokerPassword = password,
+                            reachableOfferPending = it.reachableOfferPending || it.userName == null,
+                        )
+                    }
+                    return@trySession null
+                }
+                val lastFailure = (sync.connection.value as? org.hapticon.messaging.ConnectionState.Connecting)?.lastFailure
+                when (state) {
+                    is org.hapticon.messaging.ConnectionState.Failed -> "The broker at $broker refused the connection: ${state.reason}"
+                    else -> "No answer from $broker within ${timeoutMillis / 1000} s. Is the broker running on the study computer, " +
+                        "and is this phone on the same network?" + (lastFailure?.let { " ($it)" } ?: "")
+                }
             }
         }
 

@@ -77,6 +77,9 @@ class ChatSync(
     private val connectionState = MutableStateFlow<ConnectionState>(ConnectionState.Disconnected)
     // The user, broker and password that connectionState belongs to; null before the first session.
     private val sessionTarget = MutableStateFlow<SessionTarget?>(null)
+    // An account being tested (first launch, a new broker in Settings): the session runs as it, while the saved
+    // settings stay as they were until it answers (see [trySession]).
+    private val candidate = MutableStateFlow<SessionTarget?>(null)
     private val peers = MutableStateFlow<Map<String, Capabilities>>(emptyMap())
     private val openConversations = MutableStateFlow<Set<String>>(emptySet())
     private val hands = java.util.concurrent.ConcurrentHashMap<String, NetworkPartnerHand>()
@@ -125,14 +128,30 @@ class ChatSync(
         kotlinx.coroutines.flow.combine(sessionTarget, connectionState) { current, state -> if (current == target) state else null }
             .first { it == ConnectionState.Connected || it is ConnectionState.Failed }!!
 
+    /**
+     * Runs the session as [target] without saving it, until [block] returns: the settings (and every screen
+     * that shows them) keep the saved account meanwhile. [block] saves the account when it answered; the
+     * session then goes on unchanged. Not saved, the session returns to the saved account.
+     */
+    suspend fun <T> trySession(target: SessionTarget, block: suspend () -> T): T {
+        candidate.value = target
+        try {
+            return block()
+        } finally {
+            candidate.value = null
+        }
+    }
+
     /** Starts syncing; reconnects with a new messenger whenever the user name, broker or password changes. Idempotent. */
     fun start() {
         if (job != null) return
         job = scope.launch {
-            val accounts = settings.preferences
-                // endToEnd too: switching it makes a new (sealing or plain) messenger.
-                .map { Triple(it.userName, it.brokerUrl, it.brokerPassword) to it.endToEnd }
-                .distinctUntilChanged()
+            // endToEnd too: switching it makes a new (sealing or plain) messenger. A candidate under test
+            // replaces the saved account; saving it afterwards maps to the same account, so the session goes on.
+            val accounts = kotlinx.coroutines.flow.combine(settings.preferences, candidate) { prefs, tried ->
+                val account = tried?.let { Triple(it.user, it.brokerUrl, it.password) } ?: Triple(prefs.userName, prefs.brokerUrl, prefs.brokerPassword)
+                account to prefs.endToEnd
+            }.distinctUntilChanged()
             kotlinx.coroutines.flow.combine(accounts, restarts) { account, _ -> account }
                 .collectLatest { (target, _) ->
                     val (user, broker, password) = target
@@ -170,7 +189,7 @@ class ChatSync(
      * connectivity callback, see [NetworkWatcher]). A session waiting out its reconnection backoff tries
      * at once: the user is reachable again within a round trip, not after up to 30 s. A session that
      * reads Connected but was made over another network is started afresh: its socket went with the old
-     * network, and keep-alive would notice only after up to 1.5 × 30 s. The session is persistent
+     * network, and keep-alive would notice only after up to 1.5 × 60 s. The session is persistent
      * (cleanSession=false) and the outbox keeps what is unsent, so a restart loses nothing.
      */
     fun networkAvailable(network: String) {
@@ -184,6 +203,30 @@ class ChatSync(
                 restarts.update { it + 1 }
             }
             else -> Unit
+        }
+    }
+
+    /**
+     * The keep-alive alarm woke the phone ([KeepAlive]): the MQTT client's own timers count only awake time, so
+     * after a sleep its keep-alive is late and a reconnection backoff may still be waiting. Connected, one round
+     * trip tells the broker the client lives and shows whether the connection does; none within
+     * [KeepAlive.ROUND_TRIP_TIMEOUT_MILLIS] starts a fresh session (persistent, and the outbox keeps what is
+     * unsent, so nothing is lost). Waiting to reconnect, it reconnects now. True when the broker answered.
+     */
+    suspend fun keepAlive(): Boolean {
+        val messenger = session?.messenger ?: return false
+        return when (messenger.state.value) {
+            ConnectionState.Connected -> messenger.ping(KeepAlive.ROUND_TRIP_TIMEOUT_MILLIS).also { alive ->
+                if (!alive && session?.messenger === messenger) {
+                    Log.i(TAG, "no answer to the keep-alive: starting a fresh session")
+                    restarts.update { it + 1 }
+                }
+            }
+            is ConnectionState.Connecting -> {
+                messenger.reconnectNow()
+                false
+            }
+            else -> false
         }
     }
 

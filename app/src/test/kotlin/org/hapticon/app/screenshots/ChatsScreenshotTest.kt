@@ -101,8 +101,9 @@ class ChatsScreenshotTest : ScreenshotTest() {
     @Test
     fun firstLaunch_failedTest_saysWhy() = screen("chats-first-launch") {
         FirstLaunchScreen(
-            "", AccountCheck.Failed("No answer from tcp://192.168.1.20:1883 within 5 s. Is `hapticon broker` running, and is this phone on the same network?"),
-        ) { _, _, _ -> }
+            "", AccountCheck.Failed("No answer from tcp://192.168.1.20:1883 within 5 s. Is the broker running on the study computer, and is this phone on the same network?"),
+            onSave = { _, _, _ -> },
+        )
     }
 
     @Test

@@ -115,6 +115,36 @@ class ChatOverBrokerTest {
     }
 
     /**
+     * The honest tick: while alice's app is closed (no session; the broker keeps her persistent one and queues),
+     * bob's message gets no delivered receipt, however long he waits: his phone shows one tick. When alice's app
+     * runs again the queued message is stored, and only then does bob get "delivered" for it.
+     */
+    @Test
+    fun closedReceiver_noDeliveredReceiptUntilTheMessageIsStored() = runBlocking {
+        assertNull(probe("alice-secret"))
+        // Closed: the account's session ends (a clean disconnect; the broker keeps the session and queues).
+        chat.settings.update { it.copy(userName = null) }
+        awaitTrue("alice's session kept but disconnected") { broker.sessions() == mapOf("alice" to false) }
+        val bobInbox = CopyOnWriteArrayList<InboxEvent>()
+        val bob = MqttMessenger(MqttSettings(address, "bob", "bob-secret")).also { bob = it }
+        bob.connect(InboxListener { bobInbox += it })
+        val message = ChatMessage.compose("bob", "are you there?", null, HapticIcon.KNOCK, Clock.SYSTEM)
+        bob.send("alice", message)
+
+        delay(3_000)
+        // (Capabilities arrive, retained; receipts do not.)
+        assertEquals(emptyList<InboxEvent>(), bobInbox.filterIsInstance<InboxEvent.ReceiptReceived>())
+        assertEquals(emptyList<String>(), chat.repository.messages("bob").first().map { it.text })
+
+        // Open again: the queued message arrives, is stored, and bob hears "delivered" for exactly that message.
+        chat.settings.update { it.copy(userName = "alice") }
+        awaitTrue("bob's delivered receipt") { bobInbox.any { it is InboxEvent.ReceiptReceived } }
+        val receipt = bobInbox.filterIsInstance<InboxEvent.ReceiptReceived>().first().receipt
+        assertEquals(listOf(message.id, "alice", "DELIVERED"), listOf(receipt.messageId, receipt.from, receipt.state.name))
+        assertEquals(listOf("are you there?"), chat.repository.messages("bob").first().map { it.text })
+    }
+
+    /**
      * bob's message arrives while no screen is open and is announced; the user answers in the
      * notification (the posted action's own PendingIntent, filled in as the system fills it) and bob
      * receives the reply through the broker.

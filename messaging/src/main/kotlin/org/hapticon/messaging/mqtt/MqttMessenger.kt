@@ -20,6 +20,7 @@ import kotlinx.coroutines.flow.asStateFlow
 import kotlinx.coroutines.flow.first
 import kotlinx.coroutines.future.await
 import kotlinx.coroutines.withContext
+import kotlinx.coroutines.withTimeoutOrNull
 import org.hapticon.messaging.Capabilities
 import org.hapticon.messaging.ChatMessage
 import org.hapticon.messaging.ConnectionState
@@ -127,6 +128,30 @@ public class MqttMessenger(
     override fun reconnectNow() {
         val waiting = nextAttempt ?: return
         if (!closing && waiting.complete(Unit)) LOG.log(Level.FINE, "${settings.clientId}: reconnecting now, the network is back")
+    }
+
+    /**
+     * One UNSUBSCRIBE/UNSUBACK round trip. MQTT 3.1.1 has PINGREQ for this, but the HiveMQ client sends it only
+     * from its own keep-alive timer; any control packet resets the broker's keep-alive count (§3.1.2.10), and an
+     * UNSUBSCRIBE of a filter this client never subscribed changes nothing: the broker compares filters
+     * character by character (§3.10.4) and answers UNSUBACK all the same. The filter is the user's inbox topic
+     * from itself, one the ACL lets the user read, so no broker has reason to refuse it. Unlike a publish it
+     * reaches nobody else.
+     */
+    override suspend fun ping(timeoutMillis: Long): Boolean {
+        val client = client ?: return false
+        if (state.value != ConnectionState.Connected) return false
+        return try {
+            withTimeoutOrNull(timeoutMillis) {
+                client.unsubscribeWith().topicFilter(Topics.inbox(user, user)).send().await()
+                true
+            } ?: false
+        } catch (e: CancellationException) {
+            throw e
+        } catch (e: Exception) {
+            LOG.log(Level.FINE, "keep-alive round trip of ${settings.clientId} failed", e)
+            false
+        }
     }
 
     override suspend fun send(recipient: String, message: ChatMessage) {

@@ -111,6 +111,18 @@ class MosquittoIntegrationTest {
     }
 
     @Test
+    fun ping_mosquittoAnswersTheKeepAliveRoundTrip_andTheInboxStaysSubscribed() = runBlocking {
+        val alice = connected("alice", CollectingListener())
+        val bobInbox = CollectingListener()
+        val bob = connected("bob", bobInbox)
+        // Whatever Mosquitto checks for an UNSUBSCRIBE, the filter is one the ACL lets bob read.
+        assertEquals(true, bob.ping(5_000))
+        val message = ChatMessage.compose("alice", "still there?")
+        alice.send("bob", message)
+        assertEquals(InboxEvent.MessageReceived(message), bobInbox.awaitEvent())
+    }
+
+    @Test
     fun wrongPassword_connectFailsForGood() {
         val impostor = messenger("alice", password = "guess")
         val e = assertThrows(MessagingException::class.java) { runBlocking { impostor.connect(CollectingListener()) } }

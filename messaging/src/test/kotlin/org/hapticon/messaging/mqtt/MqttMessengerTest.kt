@@ -281,6 +281,31 @@ class MqttMessengerTest {
     }
 
     @Test
+    fun ping_connected_brokerAnswers_andTheInboxStaysSubscribed() = runBlocking {
+        val aliceMessenger = fixture.connected(alice, CollectingListener())
+        val bobInbox = CollectingListener()
+        val bobMessenger = fixture.connected(bob, bobInbox)
+        assertTrue(bobMessenger.ping(5_000))
+        assertTrue(bobMessenger.ping(5_000))
+        // The round trip's UNSUBSCRIBE named a filter bob never subscribed: his inbox still receives.
+        aliceMessenger.send(bob, hello)
+        assertEquals(InboxEvent.MessageReceived(hello), bobInbox.awaitEvent())
+    }
+
+    @Test
+    fun ping_notConnectedOrBrokerGone_false() = runBlocking {
+        assertEquals(false, fixture.messenger(alice).ping(1_000))
+        val bobMessenger = fixture.connected(bob, CollectingListener())
+        fixture.broker.stop()
+        try {
+            withTimeout(10_000) { bobMessenger.state.first { it is ConnectionState.Connecting } }
+            assertEquals(false, bobMessenger.ping(1_000))
+        } finally {
+            fixture.broker.start()
+        }
+    }
+
+    @Test
     fun send_whenNotConnected_throwsMessagingException() {
         val aliceMessenger = fixture.messenger(alice)
         val e = assertThrows(MessagingException::class.java) { runBlocking { aliceMessenger.send(bob, hello) } }

@@ -73,6 +73,8 @@ data class ChatListActions(
     val onDelete: (String) -> Unit = {},
     val onSettings: () -> Unit = {},
     val onInvite: () -> Unit = {},
+    /** The button of the note on reaching this user with the app closed ([ReachableNoteRow]). */
+    val onReachableNote: (ReachableNote) -> Unit = {},
 )
 
 /**
@@ -152,22 +154,25 @@ fun ChatListScreen(
         },
         snackbarHost = { SnackbarHost(snackbar) },
     ) { padding ->
-        if (visible.isEmpty() && !showArchived) {
-            EmptyChats(uiState.user, Modifier.fillMaxSize().padding(padding), onInvite = actions.onInvite, onNewChat = { newChat = true })
-        } else {
-            LazyColumn(Modifier.fillMaxSize().padding(padding), contentPadding = PaddingValues(bottom = 88.dp)) {
-                items(visible, key = { it.peer }) { summary ->
-                    ConversationRow(
-                        summary, clock.relative(summary.lastAtMillis ?: 0, nowMillis).takeIf { summary.lastAtMillis != null },
-                        archived = showArchived, onOpen = actions.onOpen,
-                        onArchive = { if (showArchived) actions.onUnarchive(it) else archive(it) }, onDelete = ::delete,
-                    )
-                }
-                if (!showArchived && archivedCount > 0) {
-                    item {
-                        TextButton(onClick = { showArchived = true }, modifier = Modifier.padding(horizontal = 8.dp)) {
-                            Icon(HapticonIcons.Archive, contentDescription = null)
-                            Text("Archived ($archivedCount)", Modifier.padding(start = 8.dp))
+        Column(Modifier.fillMaxSize().padding(padding)) {
+            uiState.reachableNote?.let { ReachableNoteRow(it, actions.onReachableNote) }
+            if (visible.isEmpty() && !showArchived) {
+                EmptyChats(uiState.user, Modifier.fillMaxWidth().weight(1f), onInvite = actions.onInvite, onNewChat = { newChat = true })
+            } else {
+                LazyColumn(Modifier.fillMaxWidth().weight(1f), contentPadding = PaddingValues(bottom = 88.dp)) {
+                    items(visible, key = { it.peer }) { summary ->
+                        ConversationRow(
+                            summary, clock.relative(summary.lastAtMillis ?: 0, nowMillis).takeIf { summary.lastAtMillis != null },
+                            archived = showArchived, onOpen = actions.onOpen,
+                            onArchive = { if (showArchived) actions.onUnarchive(it) else archive(it) }, onDelete = ::delete,
+                        )
+                    }
+                    if (!showArchived && archivedCount > 0) {
+                        item {
+                            TextButton(onClick = { showArchived = true }, modifier = Modifier.padding(horizontal = 8.dp)) {
+                                Icon(HapticonIcons.Archive, contentDescription = null)
+                                Text("Archived ($archivedCount)", Modifier.padding(start = 8.dp))
+                            }
                         }
                     }
                 }

@@ -44,10 +44,18 @@ sealed interface ChatListUiState {
     /** First launch: [brokerUrl] is what an opened invite filled in (empty otherwise). */
     data class NeedsAccount(val brokerUrl: String) : ChatListUiState
 
+    /** First launch, right after the account was saved: "Stay reachable" and autoplay are offered once ([ReachableOfferScreen]). */
+    data class OfferReachable(val user: String) : ChatListUiState
+
     data class Success(
         val user: String,
         val conversations: List<ConversationSummary>,
         val archived: Set<String> = emptySet(),
+        /**
+         * What the chat list says about reaching this user with the app closed ([reachableNote]); null when
+         * nothing needs saying (Stay reachable on and Android lets it run).
+         */
+        val reachableNote: ReachableNote? = null,
     ) : ChatListUiState
 }
 
@@ -55,11 +63,35 @@ class ChatListViewModel(
     private val repository: ChatRepository,
     private val settings: ChatSettingsRepository,
     private val probe: BrokerProbe,
+    /**
+     * Whether Android exempts this app from battery optimisation (PowerManager.isIgnoringBatteryOptimizations),
+     * asked again on every resume ([refreshBatteryExemption]): the user can change it in Android's settings.
+     */
+    private val batteryExempt: () -> Boolean = { true },
 ) : ViewModel() {
-    val uiState: StateFlow<ChatListUiState> = combine(settings.preferences, repository.conversations()) { prefs, conversations ->
+    private val exempt = MutableStateFlow(batteryExempt())
+
+    val uiState: StateFlow<ChatListUiState> = combine(settings.preferences, repository.conversations(), exempt) { prefs, conversations, exempt ->
         val user = prefs.userName
-        if (user == null) ChatListUiState.NeedsAccount(prefs.brokerUrl) else ChatListUiState.Success(user, conversations, prefs.archived)
+        when {
+            user == null -> ChatListUiState.NeedsAccount(prefs.brokerUrl)
+            prefs.reachableOfferPending -> ChatListUiState.OfferReachable(user)
+            else -> ChatListUiState.Success(user, conversations, prefs.archived, reachableNote(prefs.stayReachable, exempt))
+        }
     }.stateIn(viewModelScope, SharingStarted.WhileSubscribed(5_000), ChatListUiState.Loading)
+
+    /** Asks Android again whether the app is exempt from battery optimisation (the screen came back). */
+    fun refreshBatteryExemption() {
+        exempt.value = batteryExempt()
+    }
+
+    /**
+     * The first-launch offer's answer: "Stay reachable" (with restarts: a participant who said yes expects it
+     * after a reboot too) and autoplay as chosen; the offer is not shown again. Both stay in Settings.
+     */
+    fun answerReachableOffer(stayReachable: Boolean, autoPlay: Boolean) = settings.update {
+        it.copy(stayReachable = stayReachable, reachableAfterBoot = stayReachable, autoPlay = autoPlay, reachableOfferPending = false)
+    }
 
     /** The first-launch form's progress: null idle, else testing or the last failure. */
     val accountCheck = MutableStateFlow<AccountCheck>(AccountCheck.Idle)
@@ -87,11 +119,15 @@ class ChatListViewModel(
             if (problem != null) {
                 accountCheck.value = AccountCheck.Failed(problem)
             } else {
-                settings.update { it.copy(userName = name, brokerUrl = address.toString(), brokerPassword = secret) }
+                // In the same main-thread turn as the probe's own save: the list never shows between form and offer.
+                settings.update { it.copy(userName = name, brokerUrl = address.toString(), brokerPassword = secret, reachableOfferPending = true) }
                 accountCheck.value = AccountCheck.Saved
             }
         }
     }
+
+    /** The chat list's note asked for "Stay reachable": on, with restarts, as the first-launch offer sets it. */
+    fun turnOnStayReachable() = settings.update { it.copy(stayReachable = true, reachableAfterBoot = true) }
 
     /** Starts a conversation; returns why not when [peer] is not a valid user name. */
     fun startConversation(peer: String, onStarted: (String) -> Unit): String? {
@@ -127,7 +163,7 @@ sealed interface AccountCheck {
     data class Testing(val broker: String) : AccountCheck
     data class Failed(val reason: String) : AccountCheck
 
-    /** The account was just saved: from now on messages can arrive, so this is when to ask for notifications. */
+    /** The account was just saved; the offer of "Stay reachable" follows. */
     data object Saved : AccountCheck
 }
 
