@@ -137,7 +137,8 @@ class MainThreadStrictModeTest {
         try {
             // alice's account through the settings (the sync connects, off the main thread); bob on his own client
             // publishes what his phone can do and sends alice a knock.
-            chat.settings.update { it.copy(userName = "alice", brokerUrl = address.toString(), brokerPassword = "alice-secret") }
+            // bob's client speaks plaintext, so alice chooses it too (end to end is the default; this test is about threads).
+            chat.settings.update { it.copy(userName = "alice", brokerUrl = address.toString(), brokerPassword = "alice-secret", endToEnd = false) }
             awaitTrue("alice connected") { chat.sync.connection.value == ConnectionState.Connected }
             runBlocking {
                 bob.connect(InboxListener { })

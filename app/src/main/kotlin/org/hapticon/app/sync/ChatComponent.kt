@@ -53,7 +53,15 @@ class ChatComponent(
     val patterns: org.hapticon.app.data.RoomPatternRepository? = null,
     /** The user's client certificate for mutual TLS; null in containers built without one. */
     val certificates: org.hapticon.app.data.ClientCertificateRepository? = null,
+    /** Whether a peer has published end-to-end keys ([peerKeys]); reads key files, so never on the main thread. */
+    private val keysOf: (peer: String) -> PeerKeys = { PeerKeys.NOT_NEEDED },
 ) {
+    /**
+     * Whether messages to [peer] can be sealed: [PeerKeys.NONE_PUBLISHED] when [peer] never published end-to-end keys
+     * (unknown on this broker, or an old client without encryption), which a "New chat" should say. Reads files.
+     */
+    suspend fun peerKeys(peer: String): PeerKeys = kotlinx.coroutines.withContext(Dispatchers.IO) { keysOf(peer) }
+
     /** An invite link opened from outside, waiting for the Chats screen to apply it. */
     val pendingInvite: MutableStateFlow<String?> = MutableStateFlow(null)
 
@@ -92,7 +100,10 @@ class ChatComponent(
                 outbox = repository,
                 settings = settings,
                 messengerFactory = { user, broker, password ->
-                    mqttMessenger(user, broker, password, keys.takeIf { settings.preferences.value.endToEnd }, certificates.credentials())
+                    val sealed = settings.preferences.value.endToEnd
+                    // The user's explicit choice in Settings; logged at every session so it is never silent.
+                    if (!sealed) android.util.Log.w("ChatComponent", "end-to-end encryption is OFF for $user (chosen in Settings): the broker's operator can read and forge this account's messages")
+                    mqttMessenger(user, broker, password, keys.takeIf { sealed }, certificates.credentials())
                 },
                 player = player,
                 rateLimiter = VibrationRateLimiter(Clock.MONOTONIC),
@@ -110,7 +121,8 @@ class ChatComponent(
                 (user != null && keys.trust(user, peer)).also { trusted -> if (trusted) sync.keyTrusted(peer) }
             }
             val patterns = org.hapticon.app.data.RoomPatternRepository(db.patternDao())
-            return ChatComponent(repository, RoomIconRepository(db.iconDao()), settings, sync, player, device, probe, notifier, trustKey, patterns, certificates)
+            val keysOf = { peer: String -> peerKeysOf(peer, settings.preferences.value, sync.connection.value, keys) }
+            return ChatComponent(repository, RoomIconRepository(db.iconDao()), settings, sync, player, device, probe, notifier, trustKey, patterns, certificates, keysOf)
         }
 
         /**
@@ -217,10 +229,48 @@ class ChatComponent(
 
         private const val PROBE_TIMEOUT_MILLIS = 5_000L
 
+        /**
+         * What is known of [peer]'s end-to-end keys for the account of [prefs]: with encryption off nothing is needed; a
+         * pinned key means published; without one, a session that is [connection] Connected has read every retained key
+         * (`hapticon/v1/keys/+`), so [peer] published none; before that it is not known yet.
+         */
+        internal fun peerKeysOf(peer: String, prefs: org.hapticon.app.data.ChatPreferences, connection: org.hapticon.messaging.ConnectionState, keys: AppKeys): PeerKeys {
+            if (!prefs.endToEnd) return PeerKeys.NOT_NEEDED
+            if (!org.hapticon.messaging.Topics.isValidUserName(peer)) return PeerKeys.NONE_PUBLISHED // nobody can publish under it
+            val user = prefs.userName ?: return PeerKeys.NOT_KNOWN_YET
+            val known = try {
+                keys.endToEnd(user).hasKeyOf(peer)
+            } catch (e: java.security.GeneralSecurityException) {
+                return PeerKeys.NOT_KNOWN_YET // no keys of our own (the Keystore key is gone): the session does not run either
+            } catch (e: IllegalStateException) {
+                return PeerKeys.NOT_KNOWN_YET // a damaged pin file: the messenger refuses to guess too
+            }
+            return when {
+                known -> PeerKeys.PUBLISHED
+                connection == org.hapticon.messaging.ConnectionState.Connected -> PeerKeys.NONE_PUBLISHED
+                else -> PeerKeys.NOT_KNOWN_YET
+            }
+        }
+
         /** Do-not-disturb is on when the interruption filter lets less than everything through. */
         private fun doNotDisturb(context: Context): Boolean {
             val manager = context.getSystemService(android.app.NotificationManager::class.java) ?: return false
             return manager.currentInterruptionFilter > android.app.NotificationManager.INTERRUPTION_FILTER_ALL
         }
     }
+}
+
+/** What [ChatComponent.peerKeys] knows of a peer's end-to-end keys. */
+enum class PeerKeys {
+    /** Encryption is off (the user's choice): no keys are needed. */
+    NOT_NEEDED,
+
+    /** The peer published keys: messages to it are sealed. */
+    PUBLISHED,
+
+    /** Connected, and the broker holds no keys of the peer: nothing can be sent until it connects with encryption on. */
+    NONE_PUBLISHED,
+
+    /** Not connected since the app started: the retained keys have not been read yet. */
+    NOT_KNOWN_YET,
 }

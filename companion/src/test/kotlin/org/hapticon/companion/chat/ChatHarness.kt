@@ -13,6 +13,7 @@ import org.hapticon.messaging.broker.PasswordFile
 import org.hapticon.messaging.BrokerAddress
 import org.hapticon.messaging.mqtt.MqttMessenger
 import org.hapticon.messaging.mqtt.MqttSettings
+import org.hapticon.messaging.e2e.EndToEnd
 import org.junit.rules.ExternalResource
 import org.junit.rules.TemporaryFolder
 import java.io.ByteArrayOutputStream
@@ -87,8 +88,12 @@ class Captured {
     fun awaitLine(line: String): String = awaitLine { it == line }
 }
 
-/** `hapticon chat` running in-process on its own thread, with typed input and captured output. */
-class ChatRun(args: List<String>) {
+/**
+ * `hapticon chat` running in-process on its own thread, with typed input and captured output. Without `--data-dir`
+ * (and `--keys-dir`, unless `--plaintext`) it gets fresh temporary ones: no test writes into `~/.hapticon`.
+ */
+class ChatRun(givenArgs: List<String>) {
+    private val args = givenArgs + scratchDirs(givenArgs)
     val input = TypedInput()
     val out = Captured()
     val err = Captured()
@@ -108,6 +113,17 @@ class ChatRun(args: List<String>) {
         thread.join(TimeUnit.SECONDS.toMillis(WAIT_SECONDS))
         return exitCode ?: throw AssertionError("chat did not end within $WAIT_SECONDS s\n--- out\n${out.text}--- err\n${err.text}")
     }
+}
+
+private val scratch: File by lazy {
+    Files.createTempDirectory("hapticon-chat-test-dirs").toFile().also { dir -> Runtime.getRuntime().addShutdownHook(Thread { dir.deleteRecursively() }) }
+}
+
+private fun scratchDirs(args: List<String>): List<String> {
+    val extra = mutableListOf<String>()
+    if ("--data-dir" !in args) extra += listOf("--data-dir", Files.createTempDirectory(scratch.toPath(), "data").toString())
+    if ("--keys-dir" !in args && "--plaintext" !in args) extra += listOf("--keys-dir", Files.createTempDirectory(scratch.toPath(), "keys").toString())
+    return extra
 }
 
 /**
@@ -130,10 +146,10 @@ class ChatFixture : ExternalResource() {
         temp.delete()
     }
 
-    /** A connected messenger for [user] whose events land in the returned queue. */
-    fun phone(user: String): Pair<MqttMessenger, LinkedBlockingQueue<InboxEvent>> {
+    /** A connected messenger for [user] (sealing end to end with [e2e]) whose events land in the returned queue. */
+    fun phone(user: String, e2e: EndToEnd? = null): Pair<MqttMessenger, LinkedBlockingQueue<InboxEvent>> {
         val events = LinkedBlockingQueue<InboxEvent>()
-        val messenger = MqttMessenger(MqttSettings(BrokerAddress.parse(url), user, register(user)))
+        val messenger = MqttMessenger(MqttSettings(BrokerAddress.parse(url), user, register(user)), e2e)
         messengers += messenger
         runBlocking { messenger.connect(InboxListener { events.put(it) }) }
         return messenger to events

@@ -81,7 +81,7 @@ class ClientCertificateCommandTest {
                 MqttSettings(BrokerAddress.parse(url), "bob", null, clientCertificate = bobCertificate, trustedCertificates = CertificateAuthority.readCertificates(File(ca, "ca.crt"))),
             )
             runBlocking { bob.connect { received.put(it) } }
-            val chat = ChatRun(listOf("--broker", url, "--user", "alice", "--to", "bob", "--client-cert", alice.path, "--client-cert-password-file", pw.path, "--ca", File(ca, "ca.crt").path))
+            val chat = ChatRun(listOf("--broker", url, "--user", "alice", "--to", "bob", "--client-cert", alice.path, "--client-cert-password-file", pw.path, "--ca", File(ca, "ca.crt").path, "--plaintext"))
             chat.err.awaitLine("chat: connected as alice, talking to bob; /help lists commands")
             chat.input.type("hello over mutual TLS")
             chatExit = chat.quit()
