@@ -74,7 +74,7 @@ class NaoGesturesReplication(private val simulated: () -> List<NaoRecording>) : 
             listOf(
                 RuleRow("sensors", "4 fabric sensors: hand, lower arm, upper arm, shoulder", p.at("5, 105"), "4 channels in that order (NaoPreset.LOCATIONS)", "same"),
                 RuleRow("sample rate", "40 Hz", p.at("156"), "${fmt(NaoPreset.SAMPLE_RATE, 0)} Hz", "same"),
-                RuleRow("participants", "15 (P2-P16)", p.at("127"), "the data's; simulated: ${NaoSyntheticPeople.PAPER_PARTICIPANTS} by default in NaoSyntheticPeople", "same protocol; simulated people are not the paper's"),
+                RuleRow("participants", "15 (P2-P16)", p.at("127"), "--data: the data's; simulated: $SIMULATED_PEOPLE by default", "the data's are the paper's; simulated people are not (4 keep the run short)"),
                 RuleRow("protocol", "one sensor at a time; 5 gestures in random order, 5 s each with 5 s breaks; 3 of each; each intensity a half", p.at("152"), "NaoSyntheticPeople: the same, ${NaoSyntheticPeople.PERFORMANCES} performances a person", "same; whether the order is redrawn each round: paper silent, ours redraws"),
                 RuleRow("performances", "1800 recorded, 117 with electrical shorts discarded: 1683", p.at("166"), "NaoDataset reads however many each index file lists", "same"),
                 RuleRow("data layout", "raw resistances + start/end indices + the pre-generated order", p.at("121, 162, 166"), "PERSON-raw.csv + PERSON-indices.csv (NaoDataset)", "paper silent on the files' columns: ours, documented in NaoDataset"),
