@@ -77,7 +77,8 @@ class HandshakeLoopTest {
         assertEquals(0, sample(20.0, 25.0, 0))
         assertFalse(loop.active)
         assertEquals(0.0, loop.pressureVolts(HandRegion.PALM), 0.0)
-        assertEquals(emptyList<List<Int>>(), servoCommands)
+        // The glove's first command is a release: no finger is held.
+        assertEquals(listOf(listOf(0, 0, 0, 0, 0)), servoCommands)
     }
 
     @Test
