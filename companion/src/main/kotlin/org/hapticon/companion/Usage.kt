@@ -149,10 +149,11 @@ val USAGE: String = """
     |      icon JSON and print the icon and its fit report (--json: one JSON object). See docs/gesture-extraction.md.
     |  hapticon fit-bench [--trials N] [--seed S]
     |      Parameter recovery of the fit on random synthetic icons at SNR 10-40 dB, per envelope method.
-    |  hapticon replicate [ID]
+    |  hapticon replicate [ID] [--data DIR]
     |      Reproduce a published result and print ours beside the paper's figures; without ID, list them
     |      by seed-file number or short name: 000 haptic-icons, 001 eit-skin (social touch), 002 handshake|glove,
-    |      003 shaping-compliance (electrotactile grains), 004 nao (touch gestures). docs/replication.md.
+    |      003 shaping-compliance (electrotactile grains), 004 nao (touch gestures). `replicate nao --data DIR`
+    |      scores the NAO study's recordings (PERSON-raw.csv, PERSON-indices.csv). docs/replication.md.
     |  hapticon help
     |      Print this text.
     |

@@ -8,5 +8,5 @@ val allReplications: List<Replication> = listOf(
     SocialTouchReplication(),
     HandshakeCalibrationReplication,
     ComplianceGrainsReplication,
-    NaoGesturesReplication { NaoSyntheticPeople.sessions(count = 8, takesPerClass = 3) },
+    NaoGesturesReplication { NaoSyntheticPeople.sessions(count = NaoGesturesReplication.SIMULATED_PEOPLE) },
 )
