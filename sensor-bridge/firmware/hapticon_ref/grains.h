@@ -16,7 +16,7 @@ namespace hgr {
 
 const uint8_t MAX_GRAINS = 99;            // 100 bins, as GrainBins.MAX_COUNT
 const uint8_t ELECTRODES = 9;             // the 3x3 array, index 3*row + column
-const uint8_t MIN_ELECTRODES = 4;         // fewer felt too weak (Shaping Compliance's pilot)
+const uint8_t MIN_ELECTRODES = 4;         // fewer felt too weak (Shaping Compliance's pilot, :107)
 const uint8_t AMPLITUDE_STEPS = 200;      // step 200 = 2.7 mA, the absolute cap
 const uint16_t PULSE_MICROS = 200;
 const uint16_t GAP_MICROS = 50;
@@ -70,7 +70,7 @@ ParamError validate(const GrainParams& p, uint32_t sampleRateHz);
 // Parses a SET_GRAINS payload; false when its length is wrong.
 bool parseParams(const uint8_t* payload, size_t length, GrainParams& out);
 
-// One calibration stimulus (Shaping Compliance: each electrode alone, 200 ms, rising from 0.8 mA until clear
+// One calibration stimulus (Shaping Compliance, :152: each electrode alone, 200 ms, rising from 0.8 mA until clear
 // and pain-free): the grain's pulses (200 us, anodic) every 8 ms (125 Hz) for millis on one electrode. One
 // electrode is the point of it, so the 4-electrode minimum of grains does not apply; the 2.7 mA cap does.
 struct Stimulus {

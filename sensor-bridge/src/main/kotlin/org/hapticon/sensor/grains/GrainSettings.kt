@@ -29,7 +29,7 @@ public data class GrainSettings(
         require(grainCount in MIN_GRAIN_COUNT..MAX_GRAIN_COUNT) { "grain count must be in $MIN_GRAIN_COUNT..$MAX_GRAIN_COUNT, was $grainCount" }
     }
 
-    /** Number of force bins: [grainCount] + 1 (grains = bins − 1, Shaping Compliance). */
+    /** Number of force bins: [grainCount] + 1 (grains = bins − 1, Shaping Compliance, 003_8ca1dc8f53472543.txt:95). */
     val binCount: Int get() = grainCount + 1
 
     /** The [binCount] bins; throws from the constructor like [GrainBins] when the range is invalid. */

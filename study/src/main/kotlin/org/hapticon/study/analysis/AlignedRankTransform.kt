@@ -140,7 +140,7 @@ public class AlignedRankTransform(
             val means = cellMeans(subset.map { effect[it] })
             for (i in rows.indices) aligned[i] += sign * means[i]
         }
-        return averageRanks(DoubleArray(rows.size) { Math.rint(aligned[it] * RANK_SCALE) / RANK_SCALE })
+        return averageRanks(List(rows.size) { Math.rint(aligned[it] * RANK_SCALE) / RANK_SCALE })
     }
 
     /** Each row's mean of y over the rows sharing its levels of [factorSet] (the grand mean for none). */
@@ -241,21 +241,6 @@ public class AlignedRankTransform(
         /** The [size]-element subsets of 0 until [n], in lexicographic order. */
         fun subsets(n: Int, size: Int, from: Int = 0): List<List<Int>> =
             if (size == 0) listOf(emptyList()) else (from until n).flatMap { first -> subsets(n, size - 1, first + 1).map { listOf(first) + it } }
-
-        /** 1-based ranks of [values], ties given their average rank (R's `rank` default). */
-        fun averageRanks(values: DoubleArray): DoubleArray {
-            val order = values.indices.sortedBy { values[it] }
-            val ranks = DoubleArray(values.size)
-            var i = 0
-            while (i < order.size) {
-                var j = i
-                while (j + 1 < order.size && values[order[j + 1]] == values[order[i]]) j++
-                val rank = (i + j) / 2.0 + 1.0
-                for (k in i..j) ranks[order[k]] = rank
-                i = j + 1
-            }
-            return ranks
-        }
 
         /** P(F > [f]) for an F([df1], [df2]) variable: I_{df2/(df2 + df1·f)}(df2/2, df1/2). */
         fun fUpperTail(f: Double, df1: Double, df2: Double): Double {
