@@ -16,7 +16,7 @@ fun interface KeyInput {
 }
 
 /**
- * Shaping Compliance's per-person calibration (the electrotactile compliance illusion paper, CHI 2024) walked on the
+ * Shaping Compliance's per-person calibration (003_8ca1dc8f53472543.txt:152) walked on the
  * terminal, one key per answer, through the same state machine the app uses ([ElectrotactileCalibration]): each
  * electrode of the 3×3 array gets a 200 ms stimulus starting at 0.8 mA (step 60, 0.81 mA) and rising one hardware
  * step (13.5 µA) per "not yet" until the person calls it clear and pain-free; then the whole-array check, 39 grains

@@ -21,7 +21,7 @@ import java.io.PrintStream
 import java.util.Locale
 
 /**
- * Shaping Compliance (Jingu et al., CHI 2024; the seed text `003_8ca1dc8f53472543.txt`): every published rule the
+ * Shaping Compliance (CHI 2024; the seed text `003_8ca1dc8f53472543.txt`): every published rule the
  * project implements, the paper's value with its line beside ours, then the paper's results beside nothing of ours (no
  * study of our own was run) and, in a table of their own, the analysis run on simulated people.
  */
@@ -83,7 +83,7 @@ object ComplianceGrainsReplication : Replication {
 
         out.println()
         out.println("electrode conditions on the 3x3 array (1.5 mm electrodes, 3 mm apart, centre over the FSR: :115, :117):")
-        out.println("  shape            paper (text)                                   ours         members (0-8 row by row)")
+        out.println("  shape            " + "paper (text)".padEnd(50) + "ours         members (0-8 row by row)")
         val paper = mapOf(
             ElectrodeMask.LARGE_SQUARE to "3x3, 9 electrodes (:144, :107)",
             ElectrodeMask.SMALL_SQUARE to "2x2, 4 (:144, :107); corner: Figure 5 only",
@@ -92,12 +92,13 @@ object ComplianceGrainsReplication : Replication {
             ElectrodeMask.TRIANGLE to "6, \"diagonal\" (:107, :171); cells: Figure 5 only",
         )
         for ((mask, text) in paper) {
-            out.println(String.format(Locale.ROOT, "  %-15s  %-45s  %-11s  %s", ComplianceCondition.shapeName(mask), text, mask.pattern, mask.pattern.electrodes().joinToString(",")))
+            out.println(String.format(Locale.ROOT, "  %-15s  %-48s  %-11s  %s", ComplianceCondition.shapeName(mask), text, mask.pattern, mask.pattern.electrodes().joinToString(",")))
         }
         out.println("  fewer than 4 electrodes: too weak in the paper's pilot (:107); ours refused for grains (ElectrodePattern.isStrongEnoughForCompliance)")
 
         out.println()
-        out.println("calibration, pulses and circuit:  paper                                   ours")
+        out.println("calibration, pulses and circuit:")
+        row(out, "", "paper", "ours")
         val stimulus = FirmwareStimulus(0, ElectrotactileCalibration.START_STEP)
         row(out, "per electrode", "each of 9 in order, 200 ms (:152)", "electrodes 1-9 in order, ${stimulus.durationMillis} ms (STIMULATE, ${stimulus.pulseCount} pulses)")
         row(out, "starting current", "0.8 mA, raised gradually (:152)", String.format(Locale.ROOT, "%.2f mA (step %d), +1 step (%.4f mA)", AmplitudeSteps.milliampsOf(ElectrotactileCalibration.START_STEP), ElectrotactileCalibration.START_STEP, AmplitudeSteps.MILLIAMPS_PER_STEP))
@@ -112,7 +113,8 @@ object ComplianceGrainsReplication : Replication {
         row(out, "sensor to stimulus", "< 25 ms, stand-alone (:125)", "firmware: first pulse at the crossing sample (grains_test)")
 
         out.println()
-        out.println("protocol:                         paper                                   ours (default = as published)")
+        out.println("protocol:")
+        row(out, "", "paper", "ours (default = as published)")
         val task1 = ComplianceStudy.PROTOCOL
         val first = task1.trials(0)
         row(out, "Task 1 trials", "3 grains x 4 shapes x 3 reps = 36 (:144, :150)", "${task1.conditions.size} x ${task1.repetitions} = ${first.size} (${task1.id})")

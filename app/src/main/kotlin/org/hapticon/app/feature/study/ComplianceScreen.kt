@@ -203,10 +203,9 @@ private fun CalibrateContent(state: ComplianceUiState.Calibrate, actions: Compli
 private fun TrialContent(state: ComplianceUiState.Trial, actions: ComplianceActions) {
     val trial = state.trial
     LinearProgressIndicator(progress = { trial.index.toFloat() / state.total }, modifier = Modifier.fillMaxWidth())
-    Text(
-        "${state.participant} · repetition ${trial.repetition + 1} of ${state.protocol.repetitions} · trial ${trial.index + 1} of ${state.total}",
-        style = MaterialTheme.typography.titleMedium,
-    )
+    // A repetition is a block only in Task 1; in a shuffled list it says nothing to the participant.
+    val block = if (state.protocol.repetitionOrder == RepetitionOrder.BLOCKS) " · repetition ${trial.repetition + 1} of ${state.protocol.repetitions}" else ""
+    Text("${state.participant}$block · trial ${trial.index + 1} of ${state.total}", style = MaterialTheme.typography.titleMedium)
     Text(state.protocol.instructions, style = MaterialTheme.typography.bodyLarge)
     // The participant holds the phone: the condition itself stays in the answers file, not on screen.
     Text(if (state.sent) "Ready: press now" else "Waiting for the board…", style = MaterialTheme.typography.bodyMedium)
