@@ -73,7 +73,8 @@ val USAGE: String = """
     |      Shaping Compliance's calibration on the terminal: each electrode alone, a 200 ms stimulus from
     |      0.8 mA (step 60, 0.81 mA); keys u/+/space one step up (not yet), d/- one step down (too strong),
     |      r again, y/Enter clear and pain-free (next electrode); then all nine with 39 grains while you
-    |      press: y/Enter done, d/- all one step down. q stops. Never past 2.7 mA (step 200). Prints the
+    |      press, until uniform: y/Enter done, d/- all one step down, 1-9 then w/s one electrode a step
+    |      weaker/stronger. q stops. Never past 2.7 mA (step 200). Prints the
     |      calibrated steps for board set --steps; --save writes them (with their mA, the time and the
     |      participant) to FILE for board set --calibration: whole or not at all, nothing when stopped with
     |      q, and an existing FILE is refused before the port opens unless --force.
@@ -104,9 +105,15 @@ val USAGE: String = """
     |  hapticon schedule --participants N --design paper|williams|full|random|fixed [--seed S] [--protocol FILE]
     |      Counterbalanced orders of a study (default: the originating study) as CSV participant,position,task,
     |      a blank line, then participant,task,position,stimulus; participant is the pseudonymous id (P000-A).
-    |  hapticon compliance-schedule --participants N [--repetitions R] [--seed S]
-    |      The Shaping Compliance study's trials (grains 0/9/19/39 x five electrode shapes, magnitude
-    |      estimation) per participant as CSV participant,trial,condition,grains,shape,electrodes,repetition.
+    |  hapticon compliance-schedule --participants N [--protocol ID] [--repetitions R] [--seed S]
+    |      A compliance protocol's trials per participant as CSV participant,trial,condition,grains,shape,
+    |      electrodes,repetition,before (before: calibrate, break+calibrate or nothing). ID: shaping-compliance
+    |      (default: Task 1 as published, 9/19/39 grains x 4 shapes x 3 counterbalanced blocks, calibrated
+    |      before each), shaping-compliance-shapes (Task 2, drawing) or shaping-compliance-extended (ours, 60).
+    |  hapticon compliance-analysis ANSWERS.csv... [--out DIR]
+    |      Shaping Compliance's analysis of the app's compliance answer files: Task 1 scores / SD per
+    |      participant and repetition, reference rows at 0, ART ANOVA and ART-C (Tukey); Task 2's drawings as
+    |      Figure 5's heatmaps (--out writes one PNG per shape).
     |  hapticon study-protocol [--out FILE]
     |      Print (or write) the default study protocol JSON, to edit and pass to --protocol. See docs/study.md.
     |  hapticon analyze RESULTS.csv [--out DIR] [--holm] [--test t|wilcoxon|both]

@@ -4,7 +4,6 @@ import org.hapticon.companion.cli.Console
 import org.hapticon.companion.cli.UsageException
 import org.hapticon.companion.cli
 import org.hapticon.companion.EXIT_OK
-import org.hapticon.sensor.grains.FirmwareForceRange
 import org.junit.Assert.assertEquals
 import org.junit.Assert.assertTrue
 import org.junit.Assert.fail
@@ -81,39 +80,6 @@ class ReplicateCommandTest {
         assertEquals(byName.toString(), EXIT_OK, byName.exitCode)
         assertEquals(cli("replicate", "003").stdout, byName.stdout)
         assertTrue(byName.stdout, byName.stdout.startsWith("003 Shaping Compliance"))
-    }
-
-    @Test
-    fun replicate003_printsOursBesideThePapers() {
-        val result = cli("replicate", "003")
-        assertEquals(result.toString(), 0, result.exitCode)
-        // requested, paper bins, our bins, paper grains, our grains.
-        for (g in listOf(9, 19, 39)) {
-            assertTrue(result.stdout, Regex("""\s$g\s+${g + 1}\s+${g + 1}\s+$g\s+$g\n""").containsMatchIn(result.stdout))
-        }
-        assertTrue(result.stdout, Regex("""large_square\s+9\s+9\s+XXX/XXX/XXX""").containsMatchIn(result.stdout))
-        assertTrue(result.stdout, result.stdout.contains("0.81 mA (step 60)"))
-        assertTrue(result.stdout, Regex("""triangle\s+6\s+6\s+\.X\./X\.X/XXX\s+1,3,5,6,7,8\s+0x1ea""").containsMatchIn(result.stdout))
-        assertTrue(result.stdout, result.stdout.contains("200 ms, 1 electrode: STIMULATE, 25 pulses"))
-        // A 12-bit board: its own range fires 39 spread to the press's end; the old 0..1023 fired all 39 in the first quarter.
-        assertTrue(result.stdout, Regex("""12-bit\s+0\.\.4095\s+39\s+39\s+9[5-9] %\s+\|\s+39\s+2[0-5] %""").containsMatchIn(result.stdout))
-        assertTrue(result.stdout, Regex("""10-bit\s+0\.\.1023\s+39\s+39\s+9[5-9] %""").containsMatchIn(result.stdout))
-    }
-
-    @Test
-    fun boardGrains_rangeFromTheDevice_firesTheRequestedCountOn10and12Bit() {
-        for (bits in listOf(10, 12)) {
-            for (g in listOf(9, 19, 39)) {
-                assertEquals("$bits-bit $g", g, ComplianceGrainsReplication.boardGrainsPerSlowPress(bits, g, FirmwareForceRange.ofAdcBits(bits)).first)
-            }
-        }
-        // A 10-bit board binned over a 12-bit range fires a quarter of the grains.
-        assertEquals(9, ComplianceGrainsReplication.boardGrainsPerSlowPress(10, 39, FirmwareForceRange.ofAdcBits(12)).first)
-    }
-
-    @Test
-    fun grainsPerSlowPress_isTheRequestedCount() {
-        assertEquals(listOf(0, 9, 19, 39), listOf(0, 9, 19, 39).map { ComplianceGrainsReplication.grainsPerSlowPress(it) })
     }
 
     @Test
