@@ -53,6 +53,8 @@ class ChatComponent(
     val patterns: org.hapticon.app.data.RoomPatternRepository? = null,
     /** The user's client certificate for mutual TLS; null in containers built without one. */
     val certificates: org.hapticon.app.data.ClientCertificateRepository? = null,
+    /** Whether the phone has a network ([NetworkWatcher.online]); null while unknown. */
+    val online: kotlinx.coroutines.flow.StateFlow<Boolean?> = MutableStateFlow(null),
 ) {
     /** An invite link opened from outside, waiting for the Chats screen to apply it. */
     val pendingInvite: MutableStateFlow<String?> = MutableStateFlow(null)
@@ -103,14 +105,17 @@ class ChatComponent(
             val notifier = MessageNotifier(context) { settings.preferences.value.userName }
             sync.onIncoming = { message, _ -> notifier.show(message) }
             // Lives as long as the process, like the sync it nudges.
-            NetworkWatcher(context, sync).start()
+            val network = NetworkWatcher(context, sync).also { it.start() }
             val probe: BrokerProbe = { user, broker, password -> probeBroker(settings, sync, user, broker, password) }
             val trustKey = { peer: String ->
                 val user = settings.preferences.value.userName
                 (user != null && keys.trust(user, peer)).also { trusted -> if (trusted) sync.keyTrusted(peer) }
             }
             val patterns = org.hapticon.app.data.RoomPatternRepository(db.patternDao())
-            return ChatComponent(repository, RoomIconRepository(db.iconDao()), settings, sync, player, device, probe, notifier, trustKey, patterns, certificates)
+            return ChatComponent(
+                repository, RoomIconRepository(db.iconDao()), settings, sync, player, device, probe, notifier, trustKey, patterns, certificates,
+                online = network.online,
+            )
         }
 
         /**
