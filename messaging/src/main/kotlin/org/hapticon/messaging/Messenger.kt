@@ -115,8 +115,13 @@ public sealed interface InboxEvent {
     /** A tele-handshake partner's hand. */
     public data class HandPoseReceived(val pose: HandPose) : InboxEvent
 
-    /** A user's capabilities (retained, so also on every connection). */
-    public data class CapabilitiesReceived(val capabilities: Capabilities) : InboxEvent
+    /**
+     * A user's capabilities. [retained] is the broker's word that it sent the stored copy because this client just
+     * subscribed (MQTT 3.1.1 §3.3.1.3: RETAIN 1 "as a result of a new subscription", 0 for a message published while
+     * subscribed). Every client publishes its own on every connection, so the retained ones are a directory of the
+     * users who ever connected; the copy of this user's own publish arrives with [retained] false after them.
+     */
+    public data class CapabilitiesReceived(val capabilities: Capabilities, val retained: Boolean = false) : InboxEvent
 
     /** A payload that was refused, for the listener to log or count; it has no other effect. */
     public data class Rejected(val topic: String, val rejection: Decoded.Rejected) : InboxEvent

@@ -55,6 +55,8 @@ class ChatComponent(
     val certificates: org.hapticon.app.data.ClientCertificateRepository? = null,
     /** Whether a peer has published end-to-end keys ([peerKeys]); reads key files, so never on the main thread. */
     private val keysOf: (peer: String) -> PeerKeys = { PeerKeys.NOT_NEEDED },
+    /** Whether the phone has a network ([NetworkWatcher.online]); null while unknown. */
+    val online: kotlinx.coroutines.flow.StateFlow<Boolean?> = MutableStateFlow(null),
 ) {
     /**
      * Whether messages to [peer] can be sealed: [PeerKeys.NONE_PUBLISHED] when [peer] never published end-to-end keys
@@ -114,7 +116,7 @@ class ChatComponent(
             val notifier = MessageNotifier(context) { settings.preferences.value.userName }
             sync.onIncoming = { message, _ -> notifier.show(message) }
             // Lives as long as the process, like the sync it nudges.
-            NetworkWatcher(context, sync).start()
+            val network = NetworkWatcher(context, sync).also { it.start() }
             val probe: BrokerProbe = { user, broker, password -> probeBroker(settings, sync, user, broker, password) }
             val trustKey = { peer: String ->
                 val user = settings.preferences.value.userName
@@ -122,7 +124,10 @@ class ChatComponent(
             }
             val patterns = org.hapticon.app.data.RoomPatternRepository(db.patternDao())
             val keysOf = { peer: String -> peerKeysOf(peer, settings.preferences.value, sync.connection.value, keys) }
-            return ChatComponent(repository, RoomIconRepository(db.iconDao()), settings, sync, player, device, probe, notifier, trustKey, patterns, certificates, keysOf)
+            return ChatComponent(
+                repository, RoomIconRepository(db.iconDao()), settings, sync, player, device, probe, notifier, trustKey, patterns, certificates, keysOf,
+                online = network.online,
+            )
         }
 
         /**

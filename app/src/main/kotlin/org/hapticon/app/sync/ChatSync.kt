@@ -118,6 +118,30 @@ class ChatSync(
     /** The latest capabilities each peer published (retained on the broker, so known soon after connecting). */
     val peerCapabilities: StateFlow<Map<String, Capabilities>> = peers.asStateFlow()
 
+    /** The users whose capabilities this session's messenger received, and whether that is all the broker has. */
+    private data class Directory(val users: Set<String> = emptySet(), val complete: Boolean = false)
+
+    @Volatile
+    private var directory = Directory()
+    private val known = MutableStateFlow<Set<String>?>(null)
+
+    /**
+     * Everyone who ever connected to the current broker, or null until that is known. Every client publishes its
+     * retained capabilities on every connection (here at each Connected), so the broker's retained capabilities are a
+     * directory of its users; a new subscription receives them all (RETAIN 1), and the broker queues the live copy of
+     * this phone's own publish behind them, so that copy's arrival completes the directory
+     * ([InboxEvent.CapabilitiesReceived.retained]; MqttMessengerTest). Users who connect later join as they publish.
+     * Null again while a new session subscribes afresh, and for good when the own publish never comes back.
+     */
+    val knownUsers: StateFlow<Set<String>?> = known.asStateFlow()
+
+    private fun learnUser(messenger: Messenger, event: InboxEvent.CapabilitiesReceived) {
+        val user = event.capabilities.user
+        val now = Directory(directory.users + user, directory.complete || (user == messenger.user && !event.retained))
+        directory = now
+        known.value = now.users.takeIf { now.complete }
+    }
+
     /** Whom a session connects as. */
     data class SessionTarget(val user: String, val brokerUrl: String, val password: String?) {
         override fun toString(): String = "SessionTarget($user at $brokerUrl)" // never the password
@@ -271,6 +295,9 @@ class ChatSync(
     private suspend fun runSession(messenger: Messenger) = coroutineScope {
         val sender = OutboxSender(outbox, messenger, retryPolicy, clock)
         session = Session(messenger, sender)
+        // A new messenger subscribes afresh (possibly to another broker): its directory starts empty.
+        directory = Directory()
+        known.value = null
         try {
             launch {
                 // One collector, so every (re)connection the screens see is one that flushes what is owed. The
@@ -323,7 +350,10 @@ class ChatSync(
                     // The receiver has it: the outbox stops sending it again (OutboxSender, end to end).
                     outbox.markDelivered(event.receipt.messageId, event.receipt.from)
                 }
-                is InboxEvent.CapabilitiesReceived -> peers.update { it + (event.capabilities.user to event.capabilities) }
+                is InboxEvent.CapabilitiesReceived -> {
+                    peers.update { it + (event.capabilities.user to event.capabilities) }
+                    learnUser(messenger, event)
+                }
                 is InboxEvent.HandPoseReceived -> hands[event.pose.from]?.offer(event.pose, nanoClock())
                 is InboxEvent.Rejected -> {
                     Log.w(TAG, "rejected payload on ${event.topic}: ${event.rejection.reason} ${event.rejection.field ?: ""} ${event.rejection.detail}")

@@ -18,9 +18,10 @@ internal object InboxDecoding {
     /**
      * With [e2e], inbox payloads must be sealed and open (see [EndToEnd.open]) and key topics are learnt;
      * without it, a sealed payload is named as such rather than rejected as an unknown schema. Returns null
-     * for a key that needs no one's attention (first seen or unchanged).
+     * for a key that needs no one's attention (first seen or unchanged). [retained] is the publish's RETAIN flag,
+     * passed on with capabilities ([InboxEvent.CapabilitiesReceived.retained]).
      */
-    fun decode(user: String, topic: String, payload: ByteArray, e2e: EndToEnd? = null): InboxEvent? {
+    fun decode(user: String, topic: String, payload: ByteArray, e2e: EndToEnd? = null, retained: Boolean = false): InboxEvent? {
         val sender = Topics.inboxSender(user, topic)
         if (sender != null) {
             val plaintext = when {
@@ -71,7 +72,7 @@ internal object InboxDecoding {
             ?: return InboxEvent.Rejected(topic, Decoded.Rejected(RejectionReason.UNEXPECTED_TOPIC, null, "not an inbox or capabilities topic of $user"))
         return when (val decoded = MessageCodec.decodeCapabilities(payload)) {
             is Decoded.Accepted -> if (decoded.value.user == owner) {
-                InboxEvent.CapabilitiesReceived(decoded.value)
+                InboxEvent.CapabilitiesReceived(decoded.value, retained)
             } else {
                 // Only the owner may write its topic (the ACL says so); a mismatch is a forgery or a bug.
                 InboxEvent.Rejected(

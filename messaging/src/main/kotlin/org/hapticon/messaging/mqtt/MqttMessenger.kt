@@ -310,7 +310,7 @@ public class MqttMessenger(
             val event = if (size > MessageLimits.MAX_PAYLOAD_BYTES) {
                 InboxDecoding.oversized(publish.topic.toString(), size)
             } else {
-                InboxDecoding.decode(user, publish.topic.toString(), publish.payloadAsBytes, e2e)
+                InboxDecoding.decode(user, publish.topic.toString(), publish.payloadAsBytes, e2e, publish.isRetain)
             }
             if (event != null) listener.onInboxEvent(event)
         } catch (e: Exception) {

@@ -184,14 +184,39 @@ class MqttMessengerTest {
         val bobInbox = CollectingListener()
         val bobMessenger = fixture.connected(bob, bobInbox)
         bobMessenger.publishCapabilities(bobCapabilities)
-        assertEquals(InboxEvent.CapabilitiesReceived(bobCapabilities), bobInbox.awaitEvent())
+        // Bob was subscribed when he published: his own copy is a live one (RETAIN 0).
+        assertEquals(InboxEvent.CapabilitiesReceived(bobCapabilities, retained = false), bobInbox.awaitEvent())
         val aliceInbox = CollectingListener()
         fixture.connected(alice, aliceInbox)
-        assertEquals(InboxEvent.CapabilitiesReceived(bobCapabilities), aliceInbox.awaitEvent())
+        // Alice gets the stored copy because she just subscribed (RETAIN 1, MQTT 3.1.1 §3.3.1.3).
+        assertEquals(InboxEvent.CapabilitiesReceived(bobCapabilities, retained = true), aliceInbox.awaitEvent())
         // An empty retained message deletes it, so later tests on the shared broker do not receive it. Only bob
         // may write bob's capabilities, and only one client can be bob at a time.
         bobMessenger.disconnect()
         fixture.rawClient(bob).publishQos1(Topics.capabilities(bob), ByteArray(0), retain = true)
+    }
+
+    /**
+     * What the app's "has this user ever connected" rests on: a client that connects gets every stored capabilities
+     * message (RETAIN 1), and the live copy of the capabilities it then publishes itself comes after all of them.
+     */
+    @Test
+    fun connect_retainedDirectoryArrivesBeforeTheLiveCopyOfOwnCapabilities() = runBlocking {
+        val bobCapabilities = Capabilities(bob, RendererKind.AMPLITUDE_WAVEFORM, amplitudeControl = true, apiLevel = 34)
+        val bobMessenger = fixture.connected(bob, CollectingListener())
+        bobMessenger.publishCapabilities(bobCapabilities)
+        bobMessenger.disconnect()
+        val aliceInbox = CollectingListener()
+        val aliceMessenger = fixture.connected(alice, aliceInbox)
+        val aliceCapabilities = Capabilities(alice, RendererKind.ON_OFF, amplitudeControl = false, apiLevel = 35)
+        aliceMessenger.publishCapabilities(aliceCapabilities)
+        // Other tests' users may have left capabilities on the shared broker: read up to alice's own live copy.
+        val own = InboxEvent.CapabilitiesReceived(aliceCapabilities, retained = false)
+        val before = generateSequence { aliceInbox.awaitEvent() }.takeWhile { it != own }.toList()
+        assertTrue(before.contains(InboxEvent.CapabilitiesReceived(bobCapabilities, retained = true)))
+        assertTrue("$before", before.all { it is InboxEvent.CapabilitiesReceived && it.retained })
+        aliceMessenger.disconnect()
+        for (user in listOf(alice, bob)) fixture.rawClient(user).publishQos1(Topics.capabilities(user), ByteArray(0), retain = true)
     }
 
     @Test

@@ -19,6 +19,9 @@ import androidx.compose.runtime.remember
 import androidx.compose.runtime.rememberCoroutineScope
 import androidx.compose.runtime.saveable.rememberSaveable
 import androidx.compose.runtime.setValue
+import androidx.compose.runtime.Stable
+import androidx.compose.runtime.saveable.Saver
+import kotlinx.coroutines.flow.Flow
 import androidx.compose.ui.platform.LocalContext
 import androidx.core.content.ContextCompat
 import androidx.lifecycle.compose.collectAsStateWithLifecycle
@@ -42,7 +45,29 @@ import org.hapticon.messaging.Topics
 import org.hapticon.messaging.BrokerAddress
 
 /** The screens of the Chats destination. */
-private enum class ChatScreen { LIST, CONVERSATION, SETTINGS, INVITE, EDITOR }
+enum class ChatScreen { LIST, CONVERSATION, SETTINGS, INVITE, EDITOR }
+
+/**
+ * Which screen the Chats destination shows, held by the app frame: it shows its tab bar only over the chat list
+ * (and first launch), as Signal does; a conversation and the screens opened from the list take the whole height.
+ */
+@Stable
+class ChatsNavigation(initial: ChatScreen = ChatScreen.LIST) {
+    /** The screen shown. */
+    var screen: ChatScreen by mutableStateOf(initial)
+
+    /** True on the chat list, the one Chats screen under the app's tab bar. */
+    val atTopLevel: Boolean get() = screen == ChatScreen.LIST
+
+    companion object {
+        /** Keeps the screen across configuration changes and process death, by name. */
+        val Saver: Saver<ChatsNavigation, String> = Saver({ it.screen.name }, { ChatsNavigation(ChatScreen.valueOf(it)) })
+    }
+}
+
+/** A [ChatsNavigation] that survives configuration changes and process death. */
+@Composable
+fun rememberChatsNavigation(): ChatsNavigation = rememberSaveable(saver = ChatsNavigation.Saver) { ChatsNavigation() }
 
 /**
  * The Chats destination: first launch, the conversation list, a conversation, settings, the invite and
@@ -51,8 +76,8 @@ private enum class ChatScreen { LIST, CONVERSATION, SETTINGS, INVITE, EDITOR }
  * applied here and its outcome shown in one line.
  */
 @Composable
-fun ChatsRoute(component: ChatComponent, onOpenStudy: () -> Unit = {}) {
-    var screen by rememberSaveable { mutableStateOf(ChatScreen.LIST) }
+fun ChatsRoute(component: ChatComponent, onOpenStudy: () -> Unit = {}, navigation: ChatsNavigation = rememberChatsNavigation()) {
+    var screen by navigation::screen
     var peer by rememberSaveable { mutableStateOf<String?>(null) }
     var inviteMessage by rememberSaveable { mutableStateOf<String?>(null) }
     val pendingInvite by component.pendingInvite.collectAsStateWithLifecycle()
@@ -133,7 +158,10 @@ fun ChatListRoute(
         factory = viewModelFactory {
             initializer {
                 val app = context.applicationContext
-                ChatListViewModel(component.repository, component.settings, component.probe, batteryExempt = { KeepAlive.isBatteryExempt(app) })
+                ChatListViewModel(
+                    component.repository, component.settings, component.probe, batteryExempt = { KeepAlive.isBatteryExempt(app) },
+                    connection = connectionOf(component), knownUsers = component.sync.knownUsers,
+                )
             }
         },
     )
@@ -160,7 +188,7 @@ fun ChatListRoute(
             state,
             ChatListActions(
                 onOpen = onOpen,
-                onNewChat = { viewModel.startConversation(it, onOpen) },
+                onNewChat = { peer, evenIfUnknown -> viewModel.startConversation(peer, evenIfUnknown, onOpen) },
                 onArchive = viewModel::archive,
                 onUnarchive = viewModel::unarchive,
                 onDelete = viewModel::delete,
@@ -190,6 +218,7 @@ fun ConversationRoute(component: ChatComponent, peer: String, onBack: () -> Unit
                     peer, { component.settings.preferences.value.userName }, component.repository, component.icons,
                     component.player, component.sync.peerCapabilities, component.sync::wake, component.sync::felt,
                     component.patterns?.patterns()?.map { stored -> stored.map { it.pattern } } ?: flowOf(emptyList()),
+                    connectionOf(component), component.sync.knownUsers,
                 )
             }
         },
@@ -205,7 +234,7 @@ fun ConversationRoute(component: ChatComponent, peer: String, onBack: () -> Unit
     ConversationScreen(
         uiState,
         ConversationActions(
-            onBack = onBack, onSend = { viewModel.send(it) }, onSelectIcon = viewModel::selectIcon,
+            onBack = onBack, onSend = viewModel::send, onSelectIcon = viewModel::selectIcon,
             onSelectSticker = viewModel::selectSticker, onFeel = viewModel::feel, onPreview = viewModel::play,
             onRetry = viewModel::retry, onEditIcon = onEditIcon,
             onSelectPattern = viewModel::selectPattern, onPreviewPattern = viewModel::play,
@@ -213,6 +242,10 @@ fun ConversationRoute(component: ChatComponent, peer: String, onBack: () -> Unit
         enterSends = prefs.enterSends,
     )
 }
+
+/** Whether [component]'s messages can move now, for the line under the chat screens' top bars. */
+private fun connectionOf(component: ChatComponent): Flow<ChatConnection> =
+    ChatConnection.flow(component.sync.connection, component.online, component.settings.preferences.map { it.brokerUrl })
 
 @Composable
 private fun SettingsRoute(component: ChatComponent, onBack: () -> Unit, onOpenStudy: () -> Unit) {
