@@ -10,10 +10,11 @@ package org.hapticon.messaging.broker
  *   session's queue of [EmbeddedBroker.MAX_QUEUED_MESSAGES] and the rest stays for everyone else. With several
  *   devices a message is held back only when every one of the recipient's sessions holds the sender's full share.
  * @property failedLoginsPerSource wrong passwords one client address may send before it must wait; it regains one
- *   every [failedLoginRefillMillis]. Checked before the password hash is computed.
+ *   every [failedLoginRefillMillis]. Checked before the password hash is computed. A device that already has a
+ *   session of its user (its client id is a secret, OWASP's "device cookie") is never held to these limits, so nobody
+ *   can lock a user's own devices out.
  * @property failedLoginsPerUser the same per user name, so that guessing one user's password from many addresses is
- *   slow too; a device that already has a session of that user (its client id is a secret, OWASP's "device cookie")
- *   is not held to it, so nobody can lock a user's own devices out.
+ *   slow too.
  * @property failedLoginRefillMillis how long it takes to regain one failed login.
  * @property waitingLogins logins (needing a password hash) that may wait for the one hashing thread; more are told
  *   "server unavailable" at once and try again.
@@ -23,9 +24,9 @@ package org.hapticon.messaging.broker
  */
 public data class BrokerLimits(
     val inboxShare: Int = 1_000,
-    val failedLoginsPerSource: Int = 10,
+    val failedLoginsPerSource: Int = 5,
     val failedLoginsPerUser: Int = 10,
-    val failedLoginRefillMillis: Long = 30_000,
+    val failedLoginRefillMillis: Long = 60_000,
     val waitingLogins: Int = 16,
     val retainedPublishes: Int = 20,
     val retainedRefillMillis: Long = 6_000,

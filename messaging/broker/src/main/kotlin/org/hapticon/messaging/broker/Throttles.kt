@@ -10,9 +10,9 @@ internal class Buckets(private val capacity: Int, private val refillNanos: Long,
 
     private val buckets = HashMap<String, Bucket>()
 
-    /** True when [key] has a token left (nothing is spent). */
+    /** The tokens [key] has now, fractions included (nothing is spent). */
     @Synchronized
-    fun hasToken(key: String): Boolean = level(key) >= 1.0
+    fun tokens(key: String): Double = level(key)
 
     /** Spends one of [key]'s tokens; returns false (and spends nothing) when it has none. */
     @Synchronized
@@ -42,17 +42,19 @@ internal class Buckets(private val capacity: Int, private val refillNanos: Long,
 
 /**
  * Decides, before the expensive password hash (210,000 PBKDF2 rounds take a core about a quarter of a second),
- * whether a login may have it computed now: not when its client address or (unless it comes from a known device)
- * its user name has spent its failed logins ([BrokerLimits]), not while another hash for the same address or user
- * name is being computed, and not when [BrokerLimits.waitingLogins] already wait. A refused login costs nothing.
- * Thread-safe.
+ * whether a login may have it computed now: only while its client address and its user name have failed logins left
+ * ([BrokerLimits]) beyond the logins of theirs being hashed right now (each reserves one, given back on success), and
+ * while fewer than [BrokerLimits.waitingLogins] wait. So 32 wrong passwords sent at once from one address cost at most
+ * its 5 hashes, and then one a minute. A refused login costs nothing. A login from a known device (its
+ * client id is an existing session of that user, a secret: OWASP's "device cookie") is never refused, so an attacker who
+ * guesses at a user's password, or shares an address with the user, cannot lock the user's own devices out; it
+ * waits its turn for the hash like every other. Thread-safe.
  */
 internal class LoginThrottle(private val limits: BrokerLimits, nanoTime: () -> Long = System::nanoTime) {
     private val refill = limits.failedLoginRefillMillis * 1_000_000
     private val sources = Buckets(limits.failedLoginsPerSource, refill, nanoTime)
     private val users = Buckets(limits.failedLoginsPerUser, refill, nanoTime)
-    private val busySources = HashSet<String>()
-    private val busyUsers = HashSet<String>()
+    private val hashingFor = HashMap<String, Int>() // "s:ADDRESS" and "u:USER" -> logins being hashed
     private var waiting = 0
 
     /** What [begin] decided. */
@@ -66,40 +68,47 @@ internal class LoginThrottle(private val limits: BrokerLimits, nanoTime: () -> L
     }
 
     /** One login allowed to be hashed; [finish] must be called exactly once with the outcome. */
-    inner class Permit internal constructor(private val source: String, private val user: String?) : Decision {
+    inner class Permit internal constructor(private val source: String?, private val user: String?) : Decision {
         private var finished = false
 
-        /** The hash said [success]; a failure is charged to the address and (unless from a known device) the user name. */
+        /** The hash said [success]; a failure of an unknown device is charged to its address and user name. */
         fun finish(success: Boolean) = synchronized(this@LoginThrottle) {
             check(!finished) { "finished twice" }
             finished = true
+            if (source == null || user == null) return@synchronized
             waiting--
-            busySources -= source
-            user?.let { busyUsers -= it }
+            release("s:$source")
+            release("u:$user")
             if (!success) {
                 sources.take(source)
-                user?.let(users::take)
+                users.take(user)
             }
         }
     }
 
-    /**
-     * A permit for a login of [user] from [source], or why not. [knownDevice]: its client id is one of [user]'s
-     * existing sessions, so the per-user limit does not apply.
-     */
+    /** A permit for a login of [user] from [source], or why not. [knownDevice]: its client id is one of [user]'s existing sessions. */
     @Synchronized
     fun begin(source: String, user: String, knownDevice: Boolean): Decision {
-        val perUser = if (knownDevice) null else user
+        if (knownDevice) return Permit(null, null)
+        val sourceLeft = sources.tokens(source)
+        val userLeft = users.tokens(user)
         return when {
-            !sources.hasToken(source) -> Refusal.SOURCE
-            perUser != null && !users.hasToken(perUser) -> Refusal.USER
-            source in busySources || (perUser != null && perUser in busyUsers) || waiting >= limits.waitingLogins -> Refusal.BUSY
+            sourceLeft < 1.0 -> Refusal.SOURCE
+            userLeft < 1.0 -> Refusal.USER
+            sourceLeft - hashing("s:$source") < 1.0 || userLeft - hashing("u:$user") < 1.0 || waiting >= limits.waitingLogins -> Refusal.BUSY
             else -> {
                 waiting++
-                busySources += source
-                perUser?.let { busyUsers += it }
-                Permit(source, perUser)
+                hashingFor.merge("s:$source", 1, Int::plus)
+                hashingFor.merge("u:$user", 1, Int::plus)
+                Permit(source, user)
             }
         }
+    }
+
+    private fun hashing(key: String): Int = hashingFor[key] ?: 0
+
+    private fun release(key: String) {
+        val left = hashing(key) - 1
+        if (left <= 0) hashingFor.remove(key) else hashingFor[key] = left
     }
 }

@@ -46,7 +46,9 @@ class BrokerLimitsTest {
         val throttle = LoginThrottle(BrokerLimits(failedLoginsPerSource = 3, failedLoginsPerUser = 100, failedLoginRefillMillis = 30_000), clock)
         repeat(3) { (throttle.begin("10.0.0.9", "bob", knownDevice = false) as LoginThrottle.Permit).finish(success = false) }
         assertEquals(LoginThrottle.Refusal.SOURCE, throttle.begin("10.0.0.9", "bob", knownDevice = false))
-        assertEquals(LoginThrottle.Refusal.SOURCE, throttle.begin("10.0.0.9", "carol", knownDevice = true))
+        assertEquals(LoginThrottle.Refusal.SOURCE, throttle.begin("10.0.0.9", "carol", knownDevice = false))
+        // A device of carol's that has a session (a secret client id) is not locked out by what others did from its address.
+        assertTrue(throttle.begin("10.0.0.9", "carol", knownDevice = true) is LoginThrottle.Permit)
         // Another address is not held to this one's failures.
         assertTrue(throttle.begin("10.0.0.7", "bob", knownDevice = false) is LoginThrottle.Permit)
         advanceSeconds(30)
@@ -58,24 +60,29 @@ class BrokerLimitsTest {
         val throttle = LoginThrottle(BrokerLimits(failedLoginsPerSource = 100, failedLoginsPerUser = 3), clock)
         repeat(3) { (throttle.begin("10.0.0.$it", "bob", knownDevice = false) as LoginThrottle.Permit).finish(success = false) }
         assertEquals(LoginThrottle.Refusal.USER, throttle.begin("10.0.0.50", "bob", knownDevice = false))
-        // Bob's own device (a session he made before; its client id is a secret) still gets its password checked.
-        val own = throttle.begin("10.0.0.50", "bob", knownDevice = true) as LoginThrottle.Permit
-        own.finish(success = true)
+        // Bob's own device (a session he made before; its client id is a secret) still gets its password checked,
+        // even while a stranger's hash for bob is being computed, and its failure is charged to nobody.
+        val stranger = throttle.begin("10.0.0.51", "alice", knownDevice = false) as LoginThrottle.Permit
+        val own = throttle.begin("10.0.0.51", "bob", knownDevice = true) as LoginThrottle.Permit
+        own.finish(success = false)
+        stranger.finish(success = true)
         assertTrue(throttle.begin("10.0.0.50", "alice", knownDevice = false) is LoginThrottle.Permit)
     }
 
     @Test
-    fun loginThrottle_oneHashAtATimePerAddressAndUser_andABoundedQueue() {
-        val throttle = LoginThrottle(BrokerLimits(waitingLogins = 2), clock)
-        val first = throttle.begin("10.0.0.1", "bob", knownDevice = false) as LoginThrottle.Permit
-        assertEquals(LoginThrottle.Refusal.BUSY, throttle.begin("10.0.0.1", "alice", knownDevice = false))
-        assertEquals(LoginThrottle.Refusal.BUSY, throttle.begin("10.0.0.2", "bob", knownDevice = false))
-        val second = throttle.begin("10.0.0.2", "alice", knownDevice = false) as LoginThrottle.Permit
-        assertEquals(LoginThrottle.Refusal.BUSY, throttle.begin("10.0.0.3", "carol", knownDevice = false))
-        first.finish(success = true)
-        second.finish(success = true)
-        // Successes cost nothing: the address and user are free again with all their failures left.
-        assertTrue(throttle.begin("10.0.0.1", "bob", knownDevice = false) is LoginThrottle.Permit)
+    fun loginThrottle_loginsBeingHashedReserveAFailureEach_andTheQueueIsBounded() {
+        val throttle = LoginThrottle(BrokerLimits(failedLoginsPerSource = 2, failedLoginsPerUser = 100, waitingLogins = 3), clock)
+        // 32 at once from one address: only as many are hashed as it has failures left.
+        val decisions = List(32) { throttle.begin("10.0.0.1", "bob", knownDevice = false) }
+        assertEquals(2, decisions.count { it is LoginThrottle.Permit })
+        assertEquals(30, decisions.count { it == LoginThrottle.Refusal.BUSY })
+        val other = throttle.begin("10.0.0.2", "alice", knownDevice = false) as LoginThrottle.Permit
+        assertEquals(LoginThrottle.Refusal.BUSY, throttle.begin("10.0.0.3", "carol", knownDevice = false)) // 3 wait
+        decisions.filterIsInstance<LoginThrottle.Permit>().forEach { it.finish(success = false) }
+        other.finish(success = true)
+        assertEquals(LoginThrottle.Refusal.SOURCE, throttle.begin("10.0.0.1", "bob", knownDevice = false))
+        // Successes cost nothing: alice's address has both its failures left.
+        assertEquals(2, List(2) { throttle.begin("10.0.0.2", "alice", knownDevice = false) }.count { it is LoginThrottle.Permit })
     }
 
     @Test
