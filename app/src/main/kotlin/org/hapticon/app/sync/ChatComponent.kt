@@ -26,6 +26,7 @@ import org.hapticon.messaging.Clock
 import org.hapticon.messaging.Messenger
 import org.hapticon.messaging.VibrationRateLimiter
 import org.hapticon.messaging.BrokerAddress
+import org.hapticon.messaging.mqtt.DeviceId
 import org.hapticon.messaging.mqtt.MqttMessenger
 import org.hapticon.messaging.mqtt.MqttSettings
 
@@ -76,6 +77,7 @@ class ChatComponent(
             val settings = SharedPreferencesChatSettings(context)
             val keys = AppKeys(java.io.File(context.filesDir, "e2e"))
             val certificates = org.hapticon.app.data.ClientCertificateStore(java.io.File(context.filesDir, "client-certificate"))
+            val devices = java.io.File(context.filesDir, "mqtt-devices")
             val vibrator = defaultVibrator(context)
             // Audio support does not change while the app runs; asking for it costs an effect-library query.
             val audio = DeviceCapabilities.detect(context, vibrator)
@@ -92,7 +94,7 @@ class ChatComponent(
                 outbox = repository,
                 settings = settings,
                 messengerFactory = { user, broker, password ->
-                    mqttMessenger(user, broker, password, keys.takeIf { settings.preferences.value.endToEnd }, certificates.credentials())
+                    mqttMessenger(user, broker, password, keys.takeIf { settings.preferences.value.endToEnd }, devices, certificates.credentials())
                 },
                 player = player,
                 rateLimiter = VibrationRateLimiter(Clock.MONOTONIC),
@@ -143,25 +145,32 @@ class ChatComponent(
         )
 
         /**
-         * How the messenger of [user] connects to [broker]: with [credentials] on an `ssl://` broker, the client
+         * How the messenger of [user] connects to [broker] as [device]: with [credentials] on an `ssl://` broker, the client
          * certificate logs in and the study CA in its chain is what the broker's certificate must chain to
          * (docs/security.md, "Client certificates"); a `tcp://` broker cannot carry one, so there the password
          * alone logs in. Throws [IllegalArgumentException] for an invalid address, or a certificate of another user.
          */
-        internal fun mqttSettings(user: String, broker: String, password: String?, credentials: ClientCredentials?): MqttSettings {
+        internal fun mqttSettings(user: String, broker: String, password: String?, device: DeviceId, credentials: ClientCredentials?): MqttSettings {
             val address = BrokerAddress.parse(broker)
             val tls = credentials?.takeIf { address.tls }
-            return MqttSettings(address, user, password, clientCertificate = tls?.certificate, trustedCertificates = tls?.trusted.orEmpty())
+            return MqttSettings(address, user, password, device, clientCertificate = tls?.certificate, trustedCertificates = tls?.trusted.orEmpty())
         }
 
         /**
          * The messenger of [user] at [broker]; with [keys], sealed end to end; with [credentials], logged in by
-         * client certificate ([mqttSettings]). The client id is the user name (the broker binds it to the login),
-         * so no per-device id any more. Null, logged, when the address is not valid or the end-to-end keys do not
-         * open (the Keystore key is gone): rather no chat than a plaintext one.
+         * client certificate ([mqttSettings]). Its broker session is this phone's own for [user] (client id
+         * `USER:DEVICE`, the device id kept in [devices]/USER, a secret: docs/security.md), so the user's other
+         * devices keep theirs. Null, logged, when the address is not valid, the device id cannot be kept, or the
+         * end-to-end keys do not open (the Keystore key is gone): rather no chat than a plaintext one.
          */
-        internal fun mqttMessenger(user: String, broker: String, password: String?, keys: AppKeys?, credentials: ClientCredentials? = null): Messenger? = try {
-            MqttMessenger(mqttSettings(user, broker, password, credentials), keys?.endToEnd(user))
+        internal fun mqttMessenger(
+            user: String, broker: String, password: String?, keys: AppKeys?, devices: java.io.File, credentials: ClientCredentials? = null,
+        ): Messenger? = try {
+            val device = DeviceId.loadOrCreate(java.io.File(devices, user))
+            MqttMessenger(mqttSettings(user, broker, password, device, credentials), keys?.endToEnd(user))
+        } catch (e: java.io.IOException) {
+            android.util.Log.w("ChatComponent", "no messenger for $user: this phone's device id cannot be kept (${e.message})")
+            null
         } catch (e: IllegalArgumentException) {
             android.util.Log.w("ChatComponent", "no messenger for $user at $broker: ${e.message}")
             null
@@ -173,9 +182,8 @@ class ChatComponent(
         /**
          * Tests [broker] for [user] through the real session: the settings are switched to it, and the answer is
          * the first Connected or Failed state of that session within [PROBE_TIMEOUT_MILLIS]. On failure the
-         * previous settings come back, so nothing is saved. A separate probe client would be unsafe: the broker
-         * binds the client id to the user name, so a second connection as [user] would take over (and with a
-         * clean session erase) the user's queued messages; through the real session whatever arrives is stored.
+         * previous settings come back, so nothing is saved. Probing through the real session (this phone's own) means
+         * whatever arrives meanwhile is stored; a separate probe client would be a session that nobody reads.
          */
         internal suspend fun probeBroker(
             settings: ChatSettingsRepository,

@@ -23,6 +23,7 @@ import org.hapticon.messaging.InboxListener
 import org.hapticon.messaging.RetryPolicy
 import org.hapticon.messaging.broker.EmbeddedBroker
 import org.hapticon.messaging.BrokerAddress
+import org.hapticon.messaging.mqtt.DeviceId
 import org.hapticon.messaging.mqtt.MqttMessenger
 import org.hapticon.messaging.mqtt.MqttSettings
 import org.junit.After
@@ -70,6 +71,9 @@ class ChatOverBrokerTest {
         broker.stop()
     }
 
+    /** This phone's client id for alice: `alice:` and the device id the app keeps (ChatComponent.mqttMessenger). */
+    private fun phoneSession(): String = "alice:" + DeviceId.loadOrCreate(java.io.File(app.filesDir, "mqtt-devices/alice")).value
+
     private fun awaitTrue(what: String, condition: suspend () -> Boolean) = runBlocking {
         withTimeoutOrNull(20_000) { while (!condition()) delay(20) }
             ?: throw AssertionError("timed out waiting for $what; alice's rows: ${chat.repository.messages("bob").first()}, connection ${chat.sync.connection.value}")
@@ -88,8 +92,8 @@ class ChatOverBrokerTest {
 
         assertNull(problem)
         assertEquals("alice", chat.settings.preferences.value.userName)
-        // The probe was the user's own persistent session (client id = user name), now in use; nothing else.
-        assertEquals(mapOf("alice" to true), broker.sessions())
+        // The probe was this phone's own persistent session of the user, now in use; nothing else.
+        assertEquals(mapOf(phoneSession() to true), broker.sessions())
     }
 
     @Test
@@ -111,7 +115,7 @@ class ChatOverBrokerTest {
         assertEquals(true, problem!!.startsWith("No answer from $nowhere within 5 s."))
         assertEquals(address.toString(), chat.settings.preferences.value.brokerUrl)
         runBlocking { withTimeout(20_000) { chat.sync.connection.first { it == ConnectionState.Connected } } }
-        assertEquals(mapOf("alice" to true), broker.sessions())
+        assertEquals(mapOf(phoneSession() to true), broker.sessions())
     }
 
     /**
@@ -124,7 +128,7 @@ class ChatOverBrokerTest {
         assertNull(probe("alice-secret"))
         val bobInbox = CopyOnWriteArrayList<InboxEvent>()
         val fast = RetryPolicy(initialDelayMillis = 50, maxDelayMillis = 500, jitter = 0.0)
-        val bob = MqttMessenger(MqttSettings(address, "bob", "bob-secret", reconnectPolicy = fast)).also { bob = it }
+        val bob = MqttMessenger(MqttSettings(address, "bob", "bob-secret", DeviceId.generate(), reconnectPolicy = fast)).also { bob = it }
         bob.connect(InboxListener { bobInbox += it })
         bob.send("alice", ChatMessage.compose("bob", "are you coming?", null, HapticIcon.KNOCK, Clock.SYSTEM))
 

@@ -13,6 +13,7 @@ import org.hapticon.messaging.Topics
 import org.hapticon.messaging.VibrationRateLimiter
 import org.hapticon.messaging.BrokerAddress
 import org.hapticon.messaging.mqtt.ClientCertificate
+import org.hapticon.messaging.mqtt.DeviceId
 import org.hapticon.messaging.mqtt.MqttMessenger
 import org.hapticon.messaging.mqtt.MqttSettings
 import org.hapticon.messaging.e2e.EndToEnd
@@ -34,9 +35,15 @@ import java.io.Reader
  * reached it end the command with one line and a non-zero exit. With `--e2e` every payload is sealed
  * end to end (org.hapticon.messaging.e2e.EndToEnd), so the broker's operator can neither read nor forge it.
  * `--client-cert` logs in with a client certificate (mutual TLS, an `ssl://` broker) instead of a password;
- * `--ca` trusts the study's own CA (`ca.crt` of `hapticon broker ca init`) instead of the system's.
+ * `--ca` trusts the study's own CA (`ca.crt` of `hapticon broker ca init`) instead of the system's. Each user has
+ * one broker session per terminal account ([home]`/.hapticon/devices/USER`), beside those of the user's phones.
  */
-fun runChat(args: List<String>, console: Console, input: Reader = InputStreamReader(System.`in`, Charsets.UTF_8)) {
+fun runChat(
+    args: List<String>,
+    console: Console,
+    input: Reader = InputStreamReader(System.`in`, Charsets.UTF_8),
+    home: File = File(System.getProperty("user.home")),
+) {
     val arguments = Arguments.parse(
         "chat", args,
         valueOptions = setOf("broker", "user", "to", "password-file", "wav-dir", "keys-dir", "client-cert", "client-cert-password-file", "ca"),
@@ -67,8 +74,9 @@ fun runChat(args: List<String>, console: Console, input: Reader = InputStreamRea
             throw UsageException("--ca $path: ${e.message}")
         }
     }.orEmpty()
+    val device = deviceOf(user, home)
     val settings = try {
-        MqttSettings(broker, user, password, clientCertificate = certificate, trustedCertificates = trusted)
+        MqttSettings(broker, user, password, device, clientCertificate = certificate, trustedCertificates = trusted)
     } catch (e: IllegalArgumentException) {
         throw UsageException("${if (certificate != null && certificate.user != user) "--client-cert" else "--broker"}: ${e.message}")
     }
@@ -86,6 +94,19 @@ fun runChat(args: List<String>, console: Console, input: Reader = InputStreamRea
         runBlocking { session.run(BufferedReader(input)) }
     } catch (e: MessagingException) {
         throw UsageException(e.message ?: "cannot connect to $broker")
+    }
+}
+
+/**
+ * This terminal's device id for [user] ([DeviceId]: its own broker session, a secret), kept in
+ * `HOME/.hapticon/devices/USER` (mode 600) and made on first use.
+ */
+private fun deviceOf(user: String, home: File): DeviceId {
+    val file = File(home, ".hapticon/devices/$user")
+    return try {
+        DeviceId.loadOrCreate(file)
+    } catch (e: IOException) {
+        throw UsageException("cannot keep this device's session id: ${e.message}")
     }
 }
 

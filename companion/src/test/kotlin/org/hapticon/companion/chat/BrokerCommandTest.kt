@@ -8,6 +8,7 @@ import org.hapticon.messaging.InboxEvent
 import org.hapticon.messaging.broker.AclFile
 import org.hapticon.messaging.BrokerAddress
 import org.hapticon.messaging.mqtt.MqttMessenger
+import org.hapticon.messaging.mqtt.DeviceId
 import org.hapticon.messaging.mqtt.MqttSettings
 import org.junit.Assert.assertEquals
 import org.junit.Rule
@@ -54,9 +55,9 @@ class BrokerCommandTest {
         runBroker(listOf("--port", port.toString(), "--data", data.path), Console(out.stream, Captured().stream)) {
             runBlocking {
                 val address = BrokerAddress("127.0.0.1", port)
-                impostor = runCatching { MqttMessenger(MqttSettings(address, "alice", "guess")).connect { } }.exceptionOrNull()
-                val bob = MqttMessenger(MqttSettings(address, "bob", "bob-secret"))
-                val alice = MqttMessenger(MqttSettings(address, "alice", "alice-secret"))
+                impostor = runCatching { MqttMessenger(MqttSettings(address, "alice", "guess", DeviceId.generate())).connect { } }.exceptionOrNull()
+                val bob = MqttMessenger(MqttSettings(address, "bob", "bob-secret", DeviceId.generate()))
+                val alice = MqttMessenger(MqttSettings(address, "alice", "alice-secret", DeviceId.generate()))
                 bob.connect { received.put(it) }
                 alice.connect { }
                 alice.send("bob", message)
@@ -83,7 +84,7 @@ class BrokerCommandTest {
         var connected = false
         runBroker(listOf("--port", port.toString(), "--data", temp.newFolder().path, "--allow-anonymous"), Console(out.stream, err.stream)) {
             runBlocking {
-                val anyone = MqttMessenger(MqttSettings(BrokerAddress("127.0.0.1", port), "anyone", null))
+                val anyone = MqttMessenger(MqttSettings(BrokerAddress("127.0.0.1", port), "anyone", null, DeviceId.generate()))
                 anyone.connect { }
                 connected = true
                 anyone.disconnect()

@@ -12,6 +12,7 @@ import org.hapticon.messaging.broker.EmbeddedBroker
 import org.hapticon.messaging.broker.PasswordFile
 import org.hapticon.messaging.BrokerAddress
 import org.hapticon.messaging.mqtt.MqttMessenger
+import org.hapticon.messaging.mqtt.DeviceId
 import org.hapticon.messaging.mqtt.MqttSettings
 import org.junit.rules.ExternalResource
 import org.junit.rules.TemporaryFolder
@@ -95,7 +96,7 @@ class ChatRun(args: List<String>) {
     @Volatile var exitCode: Int? = null
     private val thread = Thread {
         exitCode = try {
-            runChat(args, Console(out.stream, err.stream), input)
+            runChat(args, Console(out.stream, err.stream), input, home = ChatFixture.home)
             EXIT_OK
         } catch (e: Throwable) {
             reportFailure(e, err.stream, debug = true)
@@ -133,7 +134,7 @@ class ChatFixture : ExternalResource() {
     /** A connected messenger for [user] whose events land in the returned queue. */
     fun phone(user: String): Pair<MqttMessenger, LinkedBlockingQueue<InboxEvent>> {
         val events = LinkedBlockingQueue<InboxEvent>()
-        val messenger = MqttMessenger(MqttSettings(BrokerAddress.parse(url), user, register(user)))
+        val messenger = MqttMessenger(MqttSettings(BrokerAddress.parse(url), user, register(user), phoneDevice(user)))
         messengers += messenger
         runBlocking { messenger.connect(InboxListener { events.put(it) }) }
         return messenger to events
@@ -159,6 +160,14 @@ class ChatFixture : ExternalResource() {
             if (registered.add(user)) passwords.add(user, "$user-secret".toCharArray(), iterations = 1_000)
             return "$user-secret"
         }
+
+        /** The home directory `hapticon chat` keeps its device ids in (`.hapticon/devices/USER`), not the tester's. */
+        val home: File get() = File(root, "home")
+
+        private val phoneDevices = java.util.concurrent.ConcurrentHashMap<String, DeviceId>()
+
+        /** The device id of [user]'s phone: one per user, another device than the user's `hapticon chat`. */
+        fun phoneDevice(user: String): DeviceId = phoneDevices.computeIfAbsent(user) { DeviceId.generate() }
 
         /** A file holding [user]'s password, for `--password-file`. */
         fun passwordFile(user: String): String = File(root, "$user.pw").apply { writeText(register(user) + "\n") }.path
