@@ -109,6 +109,24 @@ class BrokerCommandTest {
     }
 
     @Test
+    fun brokerAddUser_generate_printsAHundredBitPasswordOnce_andStoresItWithTheRoundsAsked() {
+        val data = temp.newFolder()
+        val out = Captured()
+        runBroker(listOf("adduser", "p01", "--data", data.path, "--generate", "--iterations", "101"), Console(out.stream, Captured().stream), StringReader(""))
+        val password = out.lines.first().removePrefix("broker: password of p01: ").removeSuffix(" (shown once; give it to p01)")
+        assertEquals(true, password.matches(Regex("[a-z2-7]{5}(-[a-z2-7]{5}){3}")))
+        assertEquals("broker: p01 can connect now (users file ${File(data, "passwd")})", out.lines[1])
+        val line = File(data, "passwd").readLines().single()
+        assertEquals(true, line.startsWith("p01:\$7\$101\$"))
+        assertEquals(true, org.hapticon.messaging.broker.PasswordFile(File(data, "passwd")).verify("p01", password.toByteArray()))
+        assertEquals(
+            listOf("hapticon: --generate excludes --password-file"),
+            cli("broker", "adduser", "p02", "--data", data.path, "--generate", "--password-file", "x").stderrLines,
+        )
+        assertEquals(listOf("hapticon: --iterations must be in 1..10000000, got 0"), cli("broker", "adduser", "p02", "--data", data.path, "--iterations", "0").stderrLines)
+    }
+
+    @Test
     fun broker_portTakenOrInvalid_exitsTwoWithOneLine() {
         ServerSocket(0, 1, InetAddress.getByName("127.0.0.1")).use { taken ->
             val result = cli("broker", "--port", taken.localPort.toString(), "--data", temp.newFolder().path)
