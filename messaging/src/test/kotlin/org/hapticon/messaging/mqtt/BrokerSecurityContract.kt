@@ -187,7 +187,8 @@ abstract class BrokerSecurityContract {
             val marker = ChatMessage.compose(alice, "start $start")
             runBlocking { aliceMessenger.send(bob, marker) }
             val events = generateSequence { bobInbox.awaitEvent() }.takeWhile { it != InboxEvent.MessageReceived(marker) }.toList()
-            assertEquals(emptyList<InboxEvent>(), events.filterIsInstance<InboxEvent.MessageReceived>())
+            // (The previous start's marker may come again: its acknowledgement may have been cut off.)
+            assertEquals(emptyList<InboxEvent>(), events.filterIsInstance<InboxEvent.MessageReceived>().filter { it.message.sender == mallory })
             val refused = events.filterIsInstance<InboxEvent.Rejected>().map { it.rejection.reason }
             assertEquals(if (refusesRetainedInboxPublishes) emptyList() else listOf(RejectionReason.RETAINED), refused)
             runBlocking { bobMessenger.disconnect() }
