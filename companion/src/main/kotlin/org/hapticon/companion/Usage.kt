@@ -100,8 +100,9 @@ val USAGE: String = """
     |      Make the study's CA (ca.crt, ca.key mode 600) and the broker's certificate for those hosts.
     |  hapticon broker cert issue USER [--data DIR | --ca-dir DIR] [--out FILE] [--password-file FILE] [--days N]
     |      Write USER.p12 (mode 600): USER's client certificate (CN = USER, default 365 days) and key.
-    |  hapticon broker adduser NAME [--data DIR | --users FILE] [--password-file FILE]
-    |      Add a broker user or change its password (asked on the terminal, or the file's first line).
+    |  hapticon broker adduser NAME [--data DIR | --users FILE] [--password-file FILE | --generate] [--iterations N]
+    |      Add a broker user or change its password (asked on the terminal, the file's first line, or made up
+    |      and printed once with --generate), stored with N PBKDF2 rounds (210000; 101 for Mosquitto).
     |  hapticon schedule --participants N --design paper|williams|full|random|fixed [--seed S] [--protocol FILE]
     |      Counterbalanced orders of a study (default: the originating study) as CSV participant,position,task,
     |      a blank line, then participant,task,position,stimulus; participant is the pseudonymous id (P000-A).

@@ -26,6 +26,7 @@ import org.hapticon.messaging.Clock
 import org.hapticon.messaging.Messenger
 import org.hapticon.messaging.VibrationRateLimiter
 import org.hapticon.messaging.BrokerAddress
+import org.hapticon.messaging.mqtt.DeviceId
 import org.hapticon.messaging.mqtt.MqttMessenger
 import org.hapticon.messaging.mqtt.MqttSettings
 
@@ -86,6 +87,7 @@ class ChatComponent(
             val settings = SharedPreferencesChatSettings(context)
             val keys = AppKeys(java.io.File(context.filesDir, "e2e"))
             val certificates = org.hapticon.app.data.ClientCertificateStore(java.io.File(context.filesDir, "client-certificate"))
+            val devices = java.io.File(context.filesDir, "mqtt-devices")
             val vibrator = defaultVibrator(context)
             // Audio support does not change while the app runs; asking for it costs an effect-library query.
             val audio = DeviceCapabilities.detect(context, vibrator)
@@ -105,7 +107,7 @@ class ChatComponent(
                     val sealed = settings.preferences.value.endToEnd
                     // The user's explicit choice in Settings; logged at every session so it is never silent.
                     if (!sealed) android.util.Log.w("ChatComponent", "end-to-end encryption is OFF for $user (chosen in Settings): the broker's operator can read and forge this account's messages")
-                    mqttMessenger(user, broker, password, keys.takeIf { sealed }, certificates.credentials())
+                    mqttMessenger(user, broker, password, keys.takeIf { sealed }, devices, certificates.credentials())
                 },
                 player = player,
                 rateLimiter = VibrationRateLimiter(Clock.MONOTONIC),
@@ -160,29 +162,36 @@ class ChatComponent(
         )
 
         /**
-         * How the messenger of [user] connects to [broker], with the keep-alive the keep-alive alarm is timed for
+         * How the messenger of [user] connects to [broker] as [device], with the keep-alive the keep-alive alarm is timed for
          * ([KeepAlive.MQTT_KEEP_ALIVE_SECONDS]): with [credentials] on an `ssl://` broker, the client
          * certificate logs in and the study CA in its chain is what the broker's certificate must chain to
          * (docs/security.md, "Client certificates"); a `tcp://` broker cannot carry one, so there the password
          * alone logs in. Throws [IllegalArgumentException] for an invalid address, or a certificate of another user.
          */
-        internal fun mqttSettings(user: String, broker: String, password: String?, credentials: ClientCredentials?): MqttSettings {
+        internal fun mqttSettings(user: String, broker: String, password: String?, device: DeviceId, credentials: ClientCredentials?): MqttSettings {
             val address = BrokerAddress.parse(broker)
             val tls = credentials?.takeIf { address.tls }
             return MqttSettings(
-                address, user, password, keepAliveSeconds = KeepAlive.MQTT_KEEP_ALIVE_SECONDS,
+                address, user, password, device, keepAliveSeconds = KeepAlive.MQTT_KEEP_ALIVE_SECONDS,
                 clientCertificate = tls?.certificate, trustedCertificates = tls?.trusted.orEmpty(),
             )
         }
 
         /**
          * The messenger of [user] at [broker]; with [keys], sealed end to end; with [credentials], logged in by
-         * client certificate ([mqttSettings]). The client id is the user name (the broker binds it to the login),
-         * so no per-device id any more. Null, logged, when the address is not valid or the end-to-end keys do not
-         * open (the Keystore key is gone): rather no chat than a plaintext one.
+         * client certificate ([mqttSettings]). Its broker session is this phone's own for [user] (client id
+         * `USER:DEVICE`, the device id kept in [devices]/USER, a secret: docs/security.md), so the user's other
+         * devices keep theirs. Null, logged, when the address is not valid, the device id cannot be kept, or the
+         * end-to-end keys do not open (the Keystore key is gone): rather no chat than a plaintext one.
          */
-        internal fun mqttMessenger(user: String, broker: String, password: String?, keys: AppKeys?, credentials: ClientCredentials? = null): Messenger? = try {
-            MqttMessenger(mqttSettings(user, broker, password, credentials), keys?.endToEnd(user))
+        internal fun mqttMessenger(
+            user: String, broker: String, password: String?, keys: AppKeys?, devices: java.io.File, credentials: ClientCredentials? = null,
+        ): Messenger? = try {
+            val device = DeviceId.loadOrCreate(java.io.File(devices, user))
+            MqttMessenger(mqttSettings(user, broker, password, device, credentials), keys?.endToEnd(user))
+        } catch (e: java.io.IOException) {
+            android.util.Log.w("ChatComponent", "no messenger for $user: this phone's device id cannot be kept (${e.message})")
+            null
         } catch (e: IllegalArgumentException) {
             android.util.Log.w("ChatComponent", "no messenger for $user at $broker: ${e.message}")
             null

@@ -23,6 +23,7 @@ import org.hapticon.messaging.InboxListener
 import org.hapticon.messaging.RetryPolicy
 import org.hapticon.messaging.broker.EmbeddedBroker
 import org.hapticon.messaging.BrokerAddress
+import org.hapticon.messaging.mqtt.DeviceId
 import org.hapticon.messaging.mqtt.MqttMessenger
 import org.hapticon.messaging.mqtt.MqttSettings
 import org.hapticon.messaging.MessagingException
@@ -81,7 +82,7 @@ class ChatOverBrokerTest {
     /** bob on his own client, sealing end to end with keys of his own. */
     private fun sealingBob(): MqttMessenger {
         val fast = RetryPolicy(initialDelayMillis = 50, maxDelayMillis = 500, jitter = 0.0)
-        return MqttMessenger(MqttSettings(address, "bob", "bob-secret", reconnectPolicy = fast), EndToEnd(Identity.generate("bob"), InMemoryKeyPins())).also { bob = it }
+        return MqttMessenger(MqttSettings(address, "bob", "bob-secret", DeviceId.generate(), reconnectPolicy = fast), EndToEnd(Identity.generate("bob"), InMemoryKeyPins())).also { bob = it }
     }
 
     /** Sends as soon as [from] has the recipient's key (its retained key arrives just after connecting). */
@@ -96,6 +97,9 @@ class ChatOverBrokerTest {
             }
         }
     }
+
+    /** This phone's client id for alice: `alice:` and the device id the app keeps (ChatComponent.mqttMessenger). */
+    private fun phoneSession(): String = "alice:" + DeviceId.loadOrCreate(java.io.File(app.filesDir, "mqtt-devices/alice")).value
 
     private fun awaitTrue(what: String, condition: suspend () -> Boolean) = runBlocking {
         withTimeoutOrNull(20_000) { while (!condition()) delay(20) }
@@ -115,8 +119,8 @@ class ChatOverBrokerTest {
 
         assertNull(problem)
         assertEquals("alice", chat.settings.preferences.value.userName)
-        // The probe was the user's own persistent session (client id = user name), now in use; nothing else.
-        assertEquals(mapOf("alice" to true), broker.sessions())
+        // The probe was this phone's own persistent session of the user, now in use; nothing else.
+        assertEquals(mapOf(phoneSession() to true), broker.sessions())
     }
 
     @Test
@@ -138,7 +142,7 @@ class ChatOverBrokerTest {
         assertEquals(true, problem!!.startsWith("No answer from $nowhere within 5 s."))
         assertEquals(address.toString(), chat.settings.preferences.value.brokerUrl)
         runBlocking { withTimeout(20_000) { chat.sync.connection.first { it == ConnectionState.Connected } } }
-        assertEquals(mapOf("alice" to true), broker.sessions())
+        assertEquals(mapOf(phoneSession() to true), broker.sessions())
     }
 
     /**
@@ -151,9 +155,9 @@ class ChatOverBrokerTest {
         assertNull(probe("alice-secret"))
         // Closed: the account's session ends (a clean disconnect; the broker keeps the session and queues).
         chat.settings.update { it.copy(userName = null) }
-        awaitTrue("alice's session kept but disconnected") { broker.sessions() == mapOf("alice" to false) }
+        awaitTrue("alice's session kept but disconnected") { broker.sessions() == mapOf(phoneSession() to false) }
         val bobInbox = CopyOnWriteArrayList<InboxEvent>()
-        val bob = MqttMessenger(MqttSettings(address, "bob", "bob-secret")).also { bob = it }
+        val bob = MqttMessenger(MqttSettings(address, "bob", "bob-secret", DeviceId.generate())).also { bob = it }
         bob.connect(InboxListener { bobInbox += it })
         val message = ChatMessage.compose("bob", "are you there?", null, HapticIcon.KNOCK, Clock.SYSTEM)
         bob.send("alice", message)

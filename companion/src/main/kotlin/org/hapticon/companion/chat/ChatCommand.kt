@@ -12,6 +12,7 @@ import org.hapticon.messaging.Topics
 import org.hapticon.messaging.VibrationRateLimiter
 import org.hapticon.messaging.BrokerAddress
 import org.hapticon.messaging.mqtt.ClientCertificate
+import org.hapticon.messaging.mqtt.DeviceId
 import org.hapticon.messaging.mqtt.MqttMessenger
 import org.hapticon.messaging.mqtt.MqttSettings
 import org.hapticon.messaging.e2e.EndToEnd
@@ -36,9 +37,15 @@ import java.io.Reader
  * start). `--e2e` is accepted for scripts written when encryption was opt-in. Unconfirmed messages and the ids of
  * the messages shown are kept in `DIR/chat.db` ([ChatStore]; `--data-dir`, default `~/.hapticon/chat/USER`).
  * `--client-cert` logs in with a client certificate (mutual TLS, an `ssl://` broker) instead of a password;
- * `--ca` trusts the study's own CA (`ca.crt` of `hapticon broker ca init`) instead of the system's.
+ * `--ca` trusts the study's own CA (`ca.crt` of `hapticon broker ca init`) instead of the system's. Each user has
+ * one broker session per terminal account ([home]`/.hapticon/devices/USER`), beside those of the user's phones.
  */
-fun runChat(args: List<String>, console: Console, input: Reader = InputStreamReader(System.`in`, Charsets.UTF_8)) {
+fun runChat(
+    args: List<String>,
+    console: Console,
+    input: Reader = InputStreamReader(System.`in`, Charsets.UTF_8),
+    home: File = File(System.getProperty("user.home")),
+) {
     val arguments = Arguments.parse(
         "chat", args,
         valueOptions = setOf("broker", "user", "to", "password-file", "wav-dir", "keys-dir", "data-dir", "client-cert", "client-cert-password-file", "ca"),
@@ -69,8 +76,9 @@ fun runChat(args: List<String>, console: Console, input: Reader = InputStreamRea
             throw UsageException("--ca $path: ${e.message}")
         }
     }.orEmpty()
+    val device = deviceOf(user, home)
     val settings = try {
-        MqttSettings(broker, user, password, clientCertificate = certificate, trustedCertificates = trusted)
+        MqttSettings(broker, user, password, device, clientCertificate = certificate, trustedCertificates = trusted)
     } catch (e: IllegalArgumentException) {
         throw UsageException("${if (certificate != null && certificate.user != user) "--client-cert" else "--broker"}: ${e.message}")
     }
@@ -106,6 +114,19 @@ private fun chatStore(dir: File): ChatStore = try {
     ChatStore.open(File(dir, "chat.db"))
 } catch (e: java.sql.SQLException) {
     throw UsageException("--data-dir: cannot open ${File(dir, "chat.db")} (${e.message?.lineSequence()?.firstOrNull()})")
+}
+
+/**
+ * This terminal's device id for [user] ([DeviceId]: its own broker session, a secret), kept in
+ * `HOME/.hapticon/devices/USER` (mode 600) and made on first use.
+ */
+private fun deviceOf(user: String, home: File): DeviceId {
+    val file = File(home, ".hapticon/devices/$user")
+    return try {
+        DeviceId.loadOrCreate(file)
+    } catch (e: IOException) {
+        throw UsageException("cannot keep this device's session id: ${e.message}")
+    }
 }
 
 /**

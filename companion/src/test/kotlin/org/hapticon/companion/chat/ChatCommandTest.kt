@@ -13,6 +13,7 @@ import org.hapticon.messaging.Receipt
 import org.hapticon.messaging.ReceiptState
 import org.hapticon.messaging.RendererKind
 import org.hapticon.messaging.Topics
+import org.hapticon.messaging.mqtt.DeviceId
 import org.junit.Assert.assertEquals
 import org.junit.Rule
 import org.junit.Test
@@ -130,7 +131,7 @@ class ChatCommandTest {
         chat.err.awaitLine { it.startsWith("chat: connected") }
         val (phone, _) = fixture.phone(bob)
         val malloryName = ChatFixture.unique("mallory")
-        val mallory = MqttClient.builder().useMqttVersion3().identifier(malloryName)
+        val mallory = MqttClient.builder().useMqttVersion3().identifier("$malloryName:${DeviceId.generate().value}")
             .serverHost("127.0.0.1").serverPort(fixture.broker.port)
             .simpleAuth().username(malloryName).password(ChatFixture.register(malloryName).toByteArray()).applySimpleAuth()
             .buildBlocking()

@@ -12,6 +12,7 @@ import org.hapticon.messaging.broker.EmbeddedBroker
 import org.hapticon.messaging.broker.PasswordFile
 import org.hapticon.messaging.BrokerAddress
 import org.hapticon.messaging.mqtt.MqttMessenger
+import org.hapticon.messaging.mqtt.DeviceId
 import org.hapticon.messaging.mqtt.MqttSettings
 import org.hapticon.messaging.e2e.EndToEnd
 import org.junit.rules.ExternalResource
@@ -100,7 +101,7 @@ class ChatRun(givenArgs: List<String>) {
     @Volatile var exitCode: Int? = null
     private val thread = Thread {
         exitCode = try {
-            runChat(args, Console(out.stream, err.stream), input)
+            runChat(args, Console(out.stream, err.stream), input, home = ChatFixture.home)
             EXIT_OK
         } catch (e: Throwable) {
             reportFailure(e, err.stream, debug = true)
@@ -149,7 +150,7 @@ class ChatFixture : ExternalResource() {
     /** A connected messenger for [user] (sealing end to end with [e2e]) whose events land in the returned queue. */
     fun phone(user: String, e2e: EndToEnd? = null): Pair<MqttMessenger, LinkedBlockingQueue<InboxEvent>> {
         val events = LinkedBlockingQueue<InboxEvent>()
-        val messenger = MqttMessenger(MqttSettings(BrokerAddress.parse(url), user, register(user)), e2e)
+        val messenger = MqttMessenger(MqttSettings(BrokerAddress.parse(url), user, register(user), phoneDevice(user)), e2e)
         messengers += messenger
         runBlocking { messenger.connect(InboxListener { events.put(it) }) }
         return messenger to events
@@ -175,6 +176,14 @@ class ChatFixture : ExternalResource() {
             if (registered.add(user)) passwords.add(user, "$user-secret".toCharArray(), iterations = 1_000)
             return "$user-secret"
         }
+
+        /** The home directory `hapticon chat` keeps its device ids in (`.hapticon/devices/USER`), not the tester's. */
+        val home: File get() = File(root, "home")
+
+        private val phoneDevices = java.util.concurrent.ConcurrentHashMap<String, DeviceId>()
+
+        /** The device id of [user]'s phone: one per user, another device than the user's `hapticon chat`. */
+        fun phoneDevice(user: String): DeviceId = phoneDevices.computeIfAbsent(user) { DeviceId.generate() }
 
         /** A file holding [user]'s password, for `--password-file`. */
         fun passwordFile(user: String): String = File(root, "$user.pw").apply { writeText(register(user) + "\n") }.path

@@ -61,7 +61,7 @@ class MosquittoIntegrationTest {
     }
 
     private fun messenger(user: String, password: String = PASSWORDS.getValue(user)) =
-        MqttMessenger(MqttSettings(mosquitto.address, user, password, reconnectPolicy = FAST_RECONNECT)).also { messengers += it }
+        MqttMessenger(MqttSettings(mosquitto.address, user, password, TestDevices.of(user), reconnectPolicy = FAST_RECONNECT)).also { messengers += it }
 
     private fun connected(user: String, listener: CollectingListener) =
         messenger(user).also { runBlocking { it.connect(listener) } }

@@ -271,7 +271,7 @@ class MqttMessengerTest {
     @Test
     fun reconnectNow_brokerBackDuringALongBackoff_connectsAtOnceNotAfterTheBackoff() = runBlocking {
         val twoMinutes = org.hapticon.messaging.RetryPolicy(initialDelayMillis = 120_000, maxDelayMillis = 120_000, jitter = 0.0)
-        val slow = MqttMessenger(MqttSettings(fixture.address, alice, SharedBroker.register(alice), reconnectPolicy = twoMinutes))
+        val slow = MqttMessenger(MqttSettings(fixture.address, alice, SharedBroker.register(alice), TestDevices.of(alice), reconnectPolicy = twoMinutes))
         try {
             slow.connect(CollectingListener())
             fixture.broker.stop()
@@ -294,7 +294,7 @@ class MqttMessengerTest {
     @Test
     fun disconnect_whileWaitingToReconnect_staysDisconnectedEvenWhenNudged() = runBlocking {
         val twoMinutes = org.hapticon.messaging.RetryPolicy(initialDelayMillis = 120_000, maxDelayMillis = 120_000, jitter = 0.0)
-        val slow = MqttMessenger(MqttSettings(fixture.address, bob, SharedBroker.register(bob), reconnectPolicy = twoMinutes))
+        val slow = MqttMessenger(MqttSettings(fixture.address, bob, SharedBroker.register(bob), TestDevices.of(bob), reconnectPolicy = twoMinutes))
         slow.connect(CollectingListener())
         fixture.broker.stop()
         withTimeout(10_000) { slow.state.first { it is ConnectionState.Connecting } }
