@@ -108,6 +108,7 @@ class BrokerLoad(
                     for (m in messengers) scope.launch { m.state.drop(1).collect { if (it != ConnectionState.Connected) drops.incrementAndGet() } }
                     val brokerCpu0 = ProcStat.cpuSeconds(broker.pid)
                     val clientCpu0 = ProcStat.cpuSeconds(ProcessHandle.current().pid())
+                    val machine0 = ProcStat.machineTicks()
                     val start = System.nanoTime()
                     val end = start + durationMillis * 1_000_000
                     val random = Random(seed)
@@ -116,10 +117,9 @@ class BrokerLoad(
                         scope.launch {
                             // Staggered first messages: people do not all start typing at once.
                             var next = start + own.nextLong(0, maxIntervalMillis) * 1_000_000
-                            while (isActive) {
+                            while (isActive && next < end) {
                                 val wait = (next - System.nanoTime()) / 1_000_000
                                 if (wait > 0) delay(wait)
-                                if (System.nanoTime() >= end) break
                                 send(messenger, people[peerOf(i, own)], ledger, burst = false)
                                 next += own.nextLong(minIntervalMillis, maxIntervalMillis + 1) * 1_000_000
                             }
@@ -140,6 +140,7 @@ class BrokerLoad(
                     val loaded = broker.memory()
                     val brokerCpu = ProcStat.cpuSeconds(broker.pid) - brokerCpu0
                     val clientCpu = ProcStat.cpuSeconds(ProcessHandle.current().pid()) - clientCpu0
+                    val machine = ProcStat.machineTicks().let { (busy, all) -> if (all > machine0.second) (busy - machine0.first).toDouble() / (all - machine0.second) else Double.NaN }
                     val loadAtEnd = ProcStat.loadAverage()
                     progress("${broker.name}: sending stopped; waiting up to ${drainMillis / 1000} s for messages on their way")
                     val drainEnd = System.nanoTime() + drainMillis * 1_000_000
@@ -150,7 +151,7 @@ class BrokerLoad(
                         broker = broker.name, users = users, connectSeconds = connectSeconds, connectionsHeld = held, drops = drops.get(),
                         sendingSeconds = sendingSeconds, tally = tally, receiptsSent = receipts.sent.get(), receiptsReceived = receipts.received.get(),
                         baselineMillis = baseline, memoryIdle = idle, memoryLoaded = loaded,
-                        brokerCpuSeconds = brokerCpu, clientCpuSeconds = clientCpu, loadAtStart = loadAtStart, loadAtEnd = loadAtEnd,
+                        brokerCpuSeconds = brokerCpu, clientCpuSeconds = clientCpu, machineBusy = machine, cores = Runtime.getRuntime().availableProcessors(), loadAtStart = loadAtStart, loadAtEnd = loadAtEnd,
                     )
                 } finally {
                     scope.cancel()
@@ -206,7 +207,7 @@ class BrokerLoad(
         fun outstanding(): Int = sending.get() - failed.get() - received.get()
     }
 
-    /** [baselineSamples] messages from [a] to [b], one at a time, after 20 unmeasured ones: the idle broker's latency, ms. */
+    /** [baselineSamples] messages from [a] to [b], one at a time, after 300 unmeasured ones (a fresh broker JVM compiles its hot paths meanwhile): the idle broker's latency, ms. */
     private fun baseline(a: MqttSettings, b: MqttSettings): LatencySummary = runBlocking {
         val arrivals = LinkedBlockingQueue<Long>()
         val sender = MqttMessenger(a)
@@ -229,7 +230,7 @@ class BrokerLoad(
     }
 
     private companion object {
-        const val WARMUP = 20
+        const val WARMUP = 300
         val random = SecureRandom()
 
         fun randomPassword(): String = Base64.getUrlEncoder().withoutPadding().encodeToString(ByteArray(16).also(random::nextBytes))

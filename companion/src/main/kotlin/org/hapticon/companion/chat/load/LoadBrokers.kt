@@ -59,6 +59,17 @@ object ProcStat {
         return (fields[11].toLong() + fields[12].toLong()) / TICKS_PER_SECOND // utime, stime: fields 14 and 15
     }
 
+    /**
+     * The whole machine's CPU ticks so far, busy and in all (the first line of /proc/stat: busy = user, nice, system,
+     * irq, softirq and steal; all adds idle and iowait), summed over every core; zeros off Linux.
+     */
+    fun machineTicks(): Pair<Long, Long> {
+        val line = runCatching { File("/proc/stat").useLines { it.first() } }.getOrNull() ?: return 0L to 0L
+        val t = line.trim().split(Regex("\\s+")).drop(1).take(8).map { it.toLong() }
+        val busy = t[0] + t[1] + t[2] + t[5] + t[6] + t[7]
+        return busy to busy + t[3] + t[4]
+    }
+
     /** The 1, 5 and 15 minute load averages as `uptime` prints them, or "unknown" off Linux. */
     fun loadAverage(): String =
         runCatching { File("/proc/loadavg").readText().split(' ').take(3).joinToString(" / ") }.getOrDefault("unknown")

@@ -21,6 +21,7 @@ import java.util.Locale
  * @property memoryLoaded the broker's memory when sending stopped.
  * @property brokerCpuSeconds CPU time the broker process used while the users sent.
  * @property clientCpuSeconds CPU time this process (every simulated client) used meanwhile.
+ * @property machineBusy the fraction of all [cores]' time the whole machine was busy meanwhile (every process, ours and others').
  */
 data class LoadResult(
     val broker: String,
@@ -37,6 +38,8 @@ data class LoadResult(
     val memoryLoaded: BrokerMemory,
     val brokerCpuSeconds: Double,
     val clientCpuSeconds: Double,
+    val machineBusy: Double,
+    val cores: Int,
     val loadAtStart: String,
     val loadAtEnd: String,
 ) {
@@ -67,7 +70,7 @@ object LoadReport {
     fun table(runs: List<LoadResult>, skips: List<LoadSkip>, setup: String): String = buildString {
         appendLine("broker load: $setup")
         appendLine("  latency = send() called → receiver's listener, one monotonic clock in this process; baseline = 2 users, one message at a time, same broker, before the load")
-        appendLine("  CPU = seconds of CPU used while sending by the broker process and by this process (all simulated clients); 100% = one core")
+        appendLine("  CPU = CPU time used while sending by the broker process and by this process (all simulated clients), 100% = one core; and how busy the whole machine was")
         for (skip in skips) appendLine("  ${skip.broker}: SKIPPED: ${skip.reason}")
         for (r in runs) {
             val t = r.tally
@@ -82,7 +85,12 @@ object LoadReport {
             }
             appendLine("    baseline ms      " + latencyLine(r.baselineMillis))
             appendLine("    broker memory    idle ${memoryLine(r.memoryIdle)}; loaded ${memoryLine(r.memoryLoaded)}")
-            appendLine(String.format(Locale.ROOT, "    CPU              broker %.0f%%, clients %.0f%% of a core", 100 * r.brokerCpuSeconds / r.sendingSeconds, 100 * r.clientCpuSeconds / r.sendingSeconds))
+            appendLine(
+                String.format(
+                    Locale.ROOT, "    CPU              broker %.0f%%, clients %.0f%% of a core; the machine %.0f%% busy (all %d cores, every process)",
+                    100 * r.brokerCpuSeconds / r.sendingSeconds, 100 * r.clientCpuSeconds / r.sendingSeconds, 100 * r.machineBusy, r.cores,
+                ),
+            )
             append(String.format(Locale.ROOT, "    target (p99 ≤ %.0f ms, nothing lost, all connected): %s", LoadResult.TARGET_P99_MILLIS, if (r.targetMet) "met" else "NOT MET"))
             appendLine()
         }
@@ -131,6 +139,8 @@ object LoadReport {
                 "memoryLoaded" to memoryJson(r.memoryLoaded),
                 "brokerCpuSeconds" to rounded(r.brokerCpuSeconds, 100),
                 "clientCpuSeconds" to rounded(r.clientCpuSeconds, 100),
+                "machineBusy" to rounded(r.machineBusy, 1000),
+                "cores" to shortNumber(r.cores),
                 "loadAtStart" to JsonPrimitive(r.loadAtStart),
                 "loadAtEnd" to JsonPrimitive(r.loadAtEnd),
                 "targetMet" to JsonPrimitive(r.targetMet),

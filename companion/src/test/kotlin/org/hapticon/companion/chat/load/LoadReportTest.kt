@@ -20,7 +20,7 @@ class LoadReportTest {
         broker = "mosquitto", users = 1_000, connectSeconds = 12.34, connectionsHeld = 1_000, drops = 0, sendingSeconds = 60.0, tally = tally,
         receiptsSent = 3_000, receiptsReceived = 3_000, baselineMillis = LatencySummary(200, 0.75, 1.5, 2.0),
         memoryIdle = BrokerMemory(4_096, 4_096, null), memoryLoaded = BrokerMemory(20_480, 21_504, null),
-        brokerCpuSeconds = 6.0, clientCpuSeconds = 30.0, loadAtStart = "1.00 / 2.00 / 3.00", loadAtEnd = "1.50 / 2.00 / 3.00",
+        brokerCpuSeconds = 6.0, clientCpuSeconds = 30.0, machineBusy = 0.8125, cores = 2, loadAtStart = "1.00 / 2.00 / 3.00", loadAtEnd = "1.50 / 2.00 / 3.00",
     )
 
     @Test
@@ -30,7 +30,7 @@ class LoadReportTest {
             """
             |broker load: SETUP
             |  latency = send() called → receiver's listener, one monotonic clock in this process; baseline = 2 users, one message at a time, same broker, before the load
-            |  CPU = seconds of CPU used while sending by the broker process and by this process (all simulated clients); 100% = one core
+            |  CPU = CPU time used while sending by the broker process and by this process (all simulated clients), 100% = one core; and how busy the whole machine was
             |  embedded: SKIPPED: 100 users: boom
             |
             |  mosquitto, 1000 users: 1000/1000 connections held (0 drops), connected in 12.3 s; load 1.00 / 2.00 / 3.00 at start, 1.50 / 2.00 / 3.00 at end
@@ -39,7 +39,7 @@ class LoadReportTest {
             |    latency ms       p50    2.50   p99   12.25   max    40.00   (3000)   (all messages)
             |    baseline ms      p50    0.75   p99    1.50   max     2.00   (200)
             |    broker memory    idle RSS 4.0 MiB (peak 4.0); loaded RSS 20.0 MiB (peak 21.0)
-            |    CPU              broker 10%, clients 50% of a core
+            |    CPU              broker 10%, clients 50% of a core; the machine 81% busy (all 2 cores, every process)
             |    target (p99 ≤ 50 ms, nothing lost, all connected): met
             """.trimMargin(),
             text,
@@ -63,7 +63,7 @@ class LoadReportTest {
                 "broker", "users", "connectionsHeld", "drops", "connectSeconds", "sendingSeconds", "sent", "delivered", "lost", "duplicates",
                 "failed", "pending", "unexpected", "misrouted", "allAccountedFor", "receiptsSent", "receiptsReceived", "messagesPerSecond",
                 "publishesPerSecond", "latencyMillis", "steadyLatencyMillis", "burstLatencyMillis", "baselineLatencyMillis", "memoryIdle",
-                "memoryLoaded", "brokerCpuSeconds", "clientCpuSeconds", "loadAtStart", "loadAtEnd", "targetMet",
+                "memoryLoaded", "brokerCpuSeconds", "clientCpuSeconds", "machineBusy", "cores", "loadAtStart", "loadAtEnd", "targetMet",
             ),
             first.keys.toList(),
         )
@@ -75,6 +75,7 @@ class LoadReportTest {
         )
         assertEquals(JsonNull, first["burstLatencyMillis"])
         assertEquals(JsonObject(mapOf("rssKib" to JsonPrimitive(20_480), "peakRssKib" to JsonPrimitive(21_504), "heapUsedKib" to JsonNull)), first["memoryLoaded"])
+        assertEquals(JsonPrimitive(0.813), first["machineBusy"])
         assertEquals(JsonPrimitive(true), first["targetMet"])
         val second = runs[1].jsonObject
         assertEquals(JsonNull, second["memoryLoaded"])
