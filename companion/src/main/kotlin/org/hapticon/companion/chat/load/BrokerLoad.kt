@@ -13,10 +13,12 @@ import kotlinx.coroutines.launch
 import kotlinx.coroutines.runBlocking
 import kotlinx.coroutines.sync.Semaphore
 import kotlinx.coroutines.sync.withPermit
+import kotlinx.coroutines.withTimeoutOrNull
 import org.hapticon.core.HapticIcon
 import org.hapticon.messaging.ChatMessage
 import org.hapticon.messaging.ConnectionState
 import org.hapticon.messaging.InboxEvent
+import org.hapticon.messaging.MessagingException
 import org.hapticon.messaging.Receipt
 import org.hapticon.messaging.ReceiptState
 import org.hapticon.messaging.broker.PasswordFile
@@ -24,6 +26,7 @@ import org.hapticon.messaging.mqtt.DeviceId
 import org.hapticon.messaging.mqtt.MqttMessenger
 import org.hapticon.messaging.mqtt.MqttSettings
 import java.io.File
+import java.io.IOException
 import java.security.SecureRandom
 import java.util.Base64
 import java.util.concurrent.LinkedBlockingQueue
@@ -93,26 +96,39 @@ class BrokerLoad(
                     val connectStart = System.nanoTime()
                     val gate = Semaphore(connectConcurrency)
                     val connected = AtomicInteger()
-                    messengers.map { messenger ->
+                    val refusals = ArrayList<String>()
+                    val live = messengers.map { messenger ->
                         async {
-                            gate.withPermit {
-                                messenger.connect { event -> onInbox(messenger, event, ledger, receipts, scope) }
+                            val ok = gate.withPermit {
+                                try {
+                                    withTimeoutOrNull(CONNECT_TIMEOUT_MILLIS) { messenger.connect { event -> onInbox(messenger, event, ledger, receipts, scope) } } != null
+                                } catch (e: MessagingException) {
+                                    synchronized(refusals) { refusals += e.message.orEmpty() }
+                                    false
+                                }
                             }
                             val n = connected.incrementAndGet()
-                            if (n % 500 == 0) progress("${broker.name}: $n of $users connected")
+                            if (n % 500 == 0) progress("${broker.name}: $n of $users connect attempts done")
+                            ok
                         }
                     }.awaitAll()
                     val connectSeconds = (System.nanoTime() - connectStart) / 1e9
-                    progress("${broker.name}: $users users connected in %.1f s; sending for %d s".format(connectSeconds, durationMillis / 1000))
+                    // Only connected users send and are sent to: a message to a user who never connected has no
+                    // session to wait in, and would be counted lost against the broker.
+                    val senders = messengers.indices.filter { live[it] }
+                    if (senders.size < 2) throw IOException("only ${senders.size} of $users users connected" + (refusals.firstOrNull()?.let { ": $it" } ?: ""))
+                    progress("${broker.name}: ${senders.size} of $users users connected in %.1f s; sending for %d s".format(connectSeconds, durationMillis / 1000))
+                    if (senders.size < users) progress("${broker.name}: ${users - senders.size} did not connect within ${CONNECT_TIMEOUT_MILLIS / 1000} s" + (refusals.firstOrNull()?.let { " (first refusal: $it)" } ?: ""))
                     // Every later change of a connected messenger's state is a dropped connection.
-                    for (m in messengers) scope.launch { m.state.drop(1).collect { if (it != ConnectionState.Connected) drops.incrementAndGet() } }
+                    for (i in senders) scope.launch { messengers[i].state.drop(1).collect { if (it != ConnectionState.Connected) drops.incrementAndGet() } }
                     val brokerCpu0 = ProcStat.cpuSeconds(broker.pid)
                     val clientCpu0 = ProcStat.cpuSeconds(ProcessHandle.current().pid())
                     val machine0 = ProcStat.machineTicks()
                     val start = System.nanoTime()
                     val end = start + durationMillis * 1_000_000
                     val random = Random(seed)
-                    val senders = messengers.mapIndexed { i, messenger ->
+                    val sending = senders.map { i ->
+                        val messenger = messengers[i]
                         val own = Random(random.nextLong())
                         scope.launch {
                             // Staggered first messages: people do not all start typing at once.
@@ -120,7 +136,7 @@ class BrokerLoad(
                             while (isActive && next < end) {
                                 val wait = (next - System.nanoTime()) / 1_000_000
                                 if (wait > 0) delay(wait)
-                                send(messenger, people[peerOf(i, own)], ledger, burst = false)
+                                send(messenger, people[peerOf(i, senders, own)], ledger, burst = false)
                                 next += own.nextLong(minIntervalMillis, maxIntervalMillis + 1) * 1_000_000
                             }
                         }
@@ -129,13 +145,13 @@ class BrokerLoad(
                         scope.launch {
                             delay(durationMillis * k / 3)
                             progress("${broker.name}: burst $k: every user sends $burst messages at once")
-                            messengers.forEachIndexed { i, messenger ->
+                            for (i in senders) {
                                 val own = Random(seed * 31 + i * 7 + k)
-                                repeat(burst) { launch { send(messenger, people[peerOf(i, own)], ledger, burst = true) } }
+                                repeat(burst) { launch { send(messengers[i], people[peerOf(i, senders, own)], ledger, burst = true) } }
                             }
                         }
                     }
-                    (senders + bursts).forEach { it.join() }
+                    (sending + bursts).forEach { it.join() }
                     val sendingSeconds = (System.nanoTime() - start) / 1e9
                     val loaded = broker.memory()
                     val brokerCpu = ProcStat.cpuSeconds(broker.pid) - brokerCpu0
@@ -161,9 +177,10 @@ class BrokerLoad(
         }
     }
 
-    private fun peerOf(self: Int, random: Random): Int {
-        val other = random.nextInt(users - 1)
-        return if (other >= self) other + 1 else other
+    /** A random one of [live] (ascending user indices) other than [self]. */
+    private fun peerOf(self: Int, live: List<Int>, random: Random): Int {
+        val r = random.nextInt(live.size - 1)
+        return if (live[r] >= self) live[r + 1] else live[r]
     }
 
     private suspend fun send(messenger: MqttMessenger, recipient: String, ledger: DeliveryLedger, burst: Boolean) {
@@ -231,6 +248,7 @@ class BrokerLoad(
 
     private companion object {
         const val WARMUP = 300
+        const val CONNECT_TIMEOUT_MILLIS = 120_000L
         val random = SecureRandom()
 
         fun randomPassword(): String = Base64.getUrlEncoder().withoutPadding().encodeToString(ByteArray(16).also(random::nextBytes))

@@ -34,7 +34,7 @@ class BrokerLoadTest {
         assertEquals(5, result.connectionsHeld)
         assertEquals(0, result.drops)
         assertEquals(10, result.baselineMillis.count)
-        assertTrue(progress.toString(), progress.any { it.startsWith("embedded: 5 users connected in ") })
+        assertTrue(progress.toString(), progress.any { it.startsWith("embedded: 5 of 5 users connected in ") })
     }
 
     @Test
