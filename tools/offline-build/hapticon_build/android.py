@@ -119,13 +119,18 @@ class AndroidApp:
             os.replace(z + ".tmp", z)
         procs.clear()
 
-    def _merge_manifest(self, libs: list[dict], out: str) -> str:
+    def _main_manifest(self) -> str:
+        """The module's own manifest, before the libraries' are merged into it."""
         main = os.path.join(self.src, "AndroidManifest.xml")
         if not os.path.exists(main):
             raise BuildError(f"{main} not found")
         text = open(main).read()
         if "<uses-sdk" in text:
             raise BuildError(f"{main}: declare minSdk/targetSdk in build.gradle.kts, not <uses-sdk>")
+        return text
+
+    def _merge_manifest(self, libs: list[dict], out: str) -> str:
+        text = self._main_manifest()
         # AGP injects the namespace as the package; the merger needs it on the main manifest.
         text = re.sub(r"<manifest\b", f'<manifest package="{self.namespace}"', text, count=1)
         os.makedirs(out, exist_ok=True)
@@ -214,8 +219,7 @@ class AndroidApp:
         runtime = self.b.runtime_classpath(self.m, "main")
         project_entries = [e for e in runtime if e.startswith(self.b.out) or os.path.isdir(e)]
         library_jars, consumer_rules = self._library_inputs()
-        rules = [os.path.join(self.m.directory, f) for f in ("proguard-rules.pro", "proguard-debug-rules.pro")]
-        rules += [os.path.join(os.path.dirname(self.res_apk), "aapt2-rules.pro")] + consumer_rules
+        rules = self._debug_rules(consumer_rules)
         stamp = self.apk + ".stamp"
         fp = fingerprint(project_entries, library_jars, self.res_apk, self.r_jar, *rules)
         if os.path.exists(self.apk) and os.path.exists(stamp) and open(stamp).read() == fp:
@@ -239,6 +243,11 @@ class AndroidApp:
         with open(stamp, "w") as f:
             f.write(fp)
         return self.apk
+
+    def _debug_rules(self, consumer_rules: list[str]) -> list[str]:
+        """The keep rules of the debug APK's library shrinking ([_dex])."""
+        rules = [os.path.join(self.m.directory, f) for f in ("proguard-rules.pro", "proguard-debug-rules.pro")]
+        return rules + [os.path.join(os.path.dirname(self.res_apk), "aapt2-rules.pro")] + consumer_rules
 
     # -- release APK -------------------------------------------------------------------------------
     def assemble_release(self, signing: "Signing") -> str:

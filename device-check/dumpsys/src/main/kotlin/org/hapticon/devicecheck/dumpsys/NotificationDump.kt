@@ -5,7 +5,8 @@ package org.hapticon.devicecheck.dumpsys
  * `NotificationRecord.dump` block (AOSP `services/core/java/com/android/server/notification/NotificationRecord.java`):
  * a header `NotificationRecord(0x…: pkg=… user=… id=… tag=… importance=… key=…: Notification(channel=… …))`, then
  * indented `name=value` lines, among them the extras (`android.template=String (android.app.Notification$MessagingStyle)`),
- * `mCreationTimeMs=` (the first post, epoch milliseconds) and `mIntercept=` (Do Not Disturb held it back).
+ * `mCreationTimeMs=` (the first post, epoch milliseconds), `mUpdateTimeMs=` (the latest post: an update of the same
+ * notification is a new record that keeps the first one's creation time) and `mIntercept=` (Do Not Disturb held it back).
  */
 public object NotificationDump {
     private val HEADER = Regex(
@@ -27,6 +28,7 @@ public object NotificationDump {
                 channel = channel,
                 template = Regex("""android\.template=String \(([^)]+)\)""").find(block)?.groupValues?.get(1),
                 creationTimeMillis = Regex("""mCreationTimeMs=(\d+)""").find(block)?.groupValues?.get(1)?.toLong(),
+                updateTimeMillis = Regex("""mUpdateTimeMs=(\d+)""").find(block)?.groupValues?.get(1)?.toLong(),
                 intercepted = Regex("""mIntercept=(true|false)""").find(block)?.groupValues?.get(1)?.toBooleanStrict(),
                 dump = block,
             )
@@ -45,6 +47,8 @@ public data class PostedNotification(
     /** The style class (`android.app.Notification$MessagingStyle`), or null when the extras do not name one. */
     public val template: String?,
     public val creationTimeMillis: Long?,
+    /** When it was last posted (the message that updated it), epoch milliseconds. */
+    public val updateTimeMillis: Long?,
     /** Whether Do Not Disturb intercepts it (no sound, vibration or peek); null when not dumped. */
     public val intercepted: Boolean?,
     public val dump: String,
@@ -53,5 +57,5 @@ public data class PostedNotification(
     public val isMessagingStyle: Boolean get() = template?.endsWith("\$MessagingStyle") == true
 
     override fun toString(): String =
-        "$packageName id=$id tag=$tag channel=$channel template=$template created=$creationTimeMillis intercepted=$intercepted"
+        "$packageName id=$id tag=$tag channel=$channel template=$template created=$creationTimeMillis updated=$updateTimeMillis intercepted=$intercepted"
 }

@@ -9,7 +9,7 @@ class NotificationDumpTest {
     private val dump = requireNotNull(javaClass.getResource("/dumpsys/notification-android15.txt")).readText()
 
     @Test
-    fun parse_eachRecordWithPackageTagChannelTemplateAndPostTime() {
+    fun parse_eachRecordWithPackageTagChannelTemplateAndPostTimes() {
         val records = NotificationDump.parse(dump)
 
         assertEquals(2, records.size)
@@ -27,7 +27,9 @@ class NotificationDumpTest {
         assertEquals("chat-peer-7f3a", message.channel)
         assertEquals("android.app.Notification\$MessagingStyle", message.template)
         assertTrue(message.isMessagingStyle)
-        assertEquals(1764165787386L, message.creationTimeMillis)
+        // First posted for an earlier message; this message's post updated it.
+        assertEquals(1764165781020L, message.creationTimeMillis)
+        assertEquals(1764165787386L, message.updateTimeMillis)
         assertEquals(false, message.intercepted)
         // Its own block only: the message line is in it, the ongoing notification's text is not.
         assertTrue("〰 knock · device check" in message.dump)
