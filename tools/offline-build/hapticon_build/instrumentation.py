@@ -26,7 +26,7 @@ def with_instrumentation(manifest: str, runner: str, target_package: str, label:
     """[manifest] with the `<instrumentation>` element AGP generates for a test APK added as its last child."""
     element = (f'    <instrumentation android:name="{runner}" android:targetPackage="{target_package}"\n'
                f'        android:handleProfiling="false" android:functionalTest="false" android:label="{label}" />\n')
-    if "<instrumentation" in manifest:
+    if re.search(r"<instrumentation\b", re.sub(r"<!--.*?-->", "", manifest, flags=re.S)):
         raise BuildError("a test module's manifest must not declare <instrumentation>: the build writes it from "
                          "testInstrumentationRunner and targetProjectPath")
     closed = re.search(r"<manifest\b[^>]*/>", manifest)

@@ -141,6 +141,12 @@ class ManifestTest(unittest.TestCase):
         with self.assertRaisesRegex(BuildError, "must not declare <instrumentation>"):
             with_instrumentation('<manifest><instrumentation /></manifest>', "r.Runner", "p.q", "Tests")
 
+    def test_withInstrumentation_commentNamingTheElement_notADeclaration(self):
+        manifest = with_instrumentation('<!-- the build adds the <instrumentation> element -->\n'
+                                        '<manifest xmlns:android="http://schemas.android.com/apk/res/android">\n</manifest>\n',
+                                        "r.Runner", "p.q", "Tests")
+        self.assertEqual(1, manifest.count("<instrumentation "))
+
     def test_instrumentationOf_aapt2Xmltree_readsTheElementsAttributes(self):
         element = instrumentation_of(fixture("xmltree.txt"))
         self.assertEqual("androidx.test.runner.AndroidJUnitRunner", element["name"])
