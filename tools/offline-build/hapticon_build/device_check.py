@@ -314,7 +314,7 @@ def _run_on_phone(build, rest: list[str], adb_path: str, app_apk: str, test_apk:
           f"minute each", file=out, flush=True)
     cp = companion_classpath(build)
     broker = Broker(build.tools.java, cp, project.module(":companion").main_class)
-    saved = {}
+    saved: dict[str, str] | None = None  # the app's own account, once read: only then is it put back
     zen = adb.shell("settings get global zen_mode", check=False).strip()
     try:
         for apk in (app_apk, test_apk):
@@ -324,10 +324,12 @@ def _run_on_phone(build, rest: list[str], adb_path: str, app_apk: str, test_apk:
                                  + (" (a Hapticon signed with another key is installed: uninstall it first)"
                                     if "UPDATE_INCOMPATIBLE" in output else ""))
         # The suite replaces the app's chat account with the throwaway one; the phone's own comes back afterwards.
+        account = {}
         for name in ("chat", "chat_credentials"):
             text = adb.shell(f"run-as {APP_PACKAGE} cat shared_prefs/{name}.xml", check=False)
             if text.startswith("<?xml"):
-                saved[name] = text
+                account[name] = text
+        saved = account
         broker.start()
         adb("reverse", f"tcp:{PHONE_PORT}", f"tcp:{broker.port}")
         phone, peer = list(broker.users)
@@ -348,7 +350,7 @@ def _run_on_phone(build, rest: list[str], adb_path: str, app_apk: str, test_apk:
         if zen in ZEN_MODES and adb.shell("settings get global zen_mode", check=False).strip() != zen:
             adb.shell(f"cmd notification set_dnd {ZEN_MODES[zen]}", check=False)
         adb.shell(f"am force-stop {APP_PACKAGE}", check=False)
-        for name in ("chat", "chat_credentials"):
+        for name in ("chat", "chat_credentials") if saved is not None else ():
             if name in saved:
                 adb.shell(f"run-as {APP_PACKAGE} sh -c 'cat > shared_prefs/{name}.xml'", check=False, stdin=saved[name])
             else:  # the phone had no account: none is left behind (the throwaway one's broker is gone)

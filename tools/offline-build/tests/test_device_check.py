@@ -263,6 +263,106 @@ class NoDeviceTest(unittest.TestCase):
         self.assertEqual("devices\nkill-server\n", open(log).read())
 
 
+class PhoneRunTest(unittest.TestCase):
+    """`./build device-check` with a phone, the phone played by a fake adb that logs each call and answers it as a phone
+    with a Hapticon account and Do Not Disturb off would; `am instrument` answers with a recorded run."""
+
+    CHAT_XML = "<?xml version='1.0' ?><map><string name='user'>ana</string></map>"
+    FAKE_ADB = textwrap.dedent("""\
+        #!/bin/sh
+        case "$*" in *"cat >"*) stdin=" <<$(cat | wc -c)" ;; *) stdin="" ;; esac
+        echo "$*$stdin" >> "$FAKE_ADB_LOG"
+        [ "$1" = "-s" ] && shift 2
+        case "$*" in
+            devices) printf 'List of devices attached\\nR58M123\\tdevice\\n\\n' ;;
+            "shell getprop ro.build.version.sdk") echo 35 ;;
+            "shell getprop ro.product.model") echo "Pixel 7" ;;
+            "shell getprop ro.build.version.release") echo 15 ;;
+            "shell settings get global zen_mode")  # as it was before the suite, then as the suite left it
+                if [ -e "$FAKE_ADB_LOG.zen" ]; then echo "$FAKE_ZEN_AFTER"; else echo "$FAKE_ZEN" > "$FAKE_ADB_LOG.zen"; echo "$FAKE_ZEN"; fi ;;
+            "shell run-as org.hapticon.app cat shared_prefs/chat.xml") printf '%%s' "%s" ;;
+            "shell run-as org.hapticon.app cat shared_prefs/chat_credentials.xml") echo "run-as: no such file" ;;
+            install*) printf 'Performing Streamed Install\\nSuccess\\n' ;;
+            "shell am instrument"*) cat "$FAKE_INSTRUMENT" ;;
+        esac
+    """) % CHAT_XML
+
+    def setUp(self):
+        self.root = tempfile.mkdtemp()
+        self.log = os.path.join(self.root, "adb.log")
+        self.adb = os.path.join(self.root, "adb")
+        with open(self.adb, "w") as f:
+            f.write(self.FAKE_ADB)
+        os.chmod(self.adb, 0o755)
+        companion = SimpleNamespace(main_class="org.hapticon.companion.MainKt")
+        self.build = SimpleNamespace(root=self.root, cache=os.path.join(self.root, ".build-cache"),
+                                     tools=SimpleNamespace(java="java"), project=SimpleNamespace(module=lambda path: companion))
+        self.tester = SimpleNamespace(min_sdk="31", application_id="org.hapticon.devicecheck",
+                                      runner="androidx.test.runner.AndroidJUnitRunner")
+        self.apks = (os.path.join(self.root, "hapticon-debug.apk"), os.path.join(self.root, "hapticon-device-check.apk"))
+
+    def run_check(self, zen="0", zen_after="0", rest=()):
+        out = io.StringIO()
+        broker = mock.MagicMock(users={"phone-ab12": "pw1", "peer-ab12": "pw2"}, port=41883)
+        env = {"FAKE_ADB_LOG": self.log, "FAKE_INSTRUMENT": os.path.join(FIXTURES, "am-instrument-r.txt"), "FAKE_ZEN": zen, "FAKE_ZEN_AFTER": zen_after}
+        with mock.patch.dict(os.environ, env), mock.patch.object(device_check, "Broker", return_value=broker), \
+                mock.patch("hapticon_build.__main__.companion_classpath", return_value=["companion.jar"]), \
+                mock.patch.object(device_check, "adb_server_running", return_value=True):
+            os.environ.pop("ANDROID_SERIAL", None)
+            code = device_check.run(self.build, list(rest), *self.apks, self.tester, out, find=lambda cache: (self.adb, ""))
+        return code, out.getvalue(), open(self.log).read().splitlines(), broker
+
+    def test_recordedRun_installsBrokerReverseInstrumentRestore_reportsEachTest_exit1OnAFailure(self):
+        code, output, calls, broker = self.run_check()
+        self.assertEqual(1, code)
+        self.assertEqual([
+            "devices",
+            "-s R58M123 shell getprop ro.build.version.sdk",
+            "-s R58M123 shell getprop ro.product.model",
+            "-s R58M123 shell getprop ro.build.version.release",
+            "-s R58M123 shell settings get global zen_mode",
+            f"-s R58M123 install -r -t -g {self.apks[0]}",
+            f"-s R58M123 install -r -t -g {self.apks[1]}",
+            "-s R58M123 shell run-as org.hapticon.app cat shared_prefs/chat.xml",
+            "-s R58M123 shell run-as org.hapticon.app cat shared_prefs/chat_credentials.xml",
+            "-s R58M123 reverse tcp:1883 tcp:41883",
+            "-s R58M123 shell am instrument -w -r -e broker tcp://127.0.0.1:1883 -e user phone-ab12 -e password pw1 "
+            "-e peer peer-ab12 -e peerPassword pw2 org.hapticon.devicecheck/androidx.test.runner.AndroidJUnitRunner",
+            "-s R58M123 reverse --remove tcp:1883",
+            "-s R58M123 shell settings get global zen_mode",
+            "-s R58M123 shell am force-stop org.hapticon.app",
+            # the phone's own account back as it was: the settings it had, none where it had none
+            f"-s R58M123 shell run-as org.hapticon.app sh -c 'cat > shared_prefs/chat.xml' <<{len(self.CHAT_XML)}",
+            "-s R58M123 shell run-as org.hapticon.app rm -f shared_prefs/chat_credentials.xml",
+        ], calls)
+        broker.start.assert_called_once()
+        broker.stop.assert_called_once()
+        lines = output.splitlines()
+        self.assertEqual("device-check: Pixel 7 (R58M123, Android 15, API 35); installing, then 3 tests of about a minute each",
+                         lines[0])
+        self.assertTrue(lines[1].startswith("PASS ReceivedKnockTest#swipedAwayScreenOff_"))
+        self.assertIn("     note: knock: COMMUNICATION_REQUEST, finished, 560 ms", output)
+        self.assertIn("FAIL ReceivedKnockTest#conversationOpenScreenOff_knockStillFeltAndNotified_noRead", output)
+        self.assertIn("SKIP ReceivedKnockTest#doNotDisturb_knockArrivesButNothingVibrates_noFelt", output)
+        self.assertEqual("device-check: 1 passed, 1 failed, 1 skipped on Pixel 7 (Android 15, API 35)", lines[-1])
+
+    def test_oneTest_passedToTheRunnerAsItsClassArgument(self):
+        _, _, calls, _ = self.run_check(rest=["--tests", "ReceivedKnockTest#doNotDisturb_knockArrivesButNothingVibrates_noFelt"])
+        instrument = next(c for c in calls if " am instrument " in c)
+        self.assertIn("-e class org.hapticon.devicecheck.ReceivedKnockTest#doNotDisturb_knockArrivesButNothingVibrates_noFelt "
+                      "org.hapticon.devicecheck/", instrument)
+
+    def test_suiteEndsWithDoNotDisturbOn_thePhonesOwnModeRestored(self):
+        for before, after, restore in (("0", "2", "off"), ("1", "0", "priority"), ("3", "2", "alarms")):
+            self.setUp()  # a fresh phone
+            _, _, calls, _ = self.run_check(zen=before, zen_after=after)
+            self.assertIn(f"-s R58M123 shell cmd notification set_dnd {restore}", calls)
+
+    def test_modeAsItWas_notTouched(self):
+        _, _, calls, _ = self.run_check(zen="1", zen_after="1")
+        self.assertFalse(any("set_dnd" in c for c in calls))
+
+
 class FindAdbTest(unittest.TestCase):
     def setUp(self):
         self.home = tempfile.mkdtemp()

@@ -74,16 +74,7 @@ class ReceivedKnockTest {
         app.screenOff()
         SystemClock.sleep(SETTLE_MILLIS)
 
-        val (knock, since) = sendKnock()
-        assertNotNull("no \"delivered\" receipt within ${DELIVERY_MILLIS / 1000} s: the app did not receive the knock while " +
-            "swiped away with Stay reachable on", peer.await(knock, ReceiptState.DELIVERED, DELIVERY_MILLIS))
-        val felt = peer.await(knock, ReceiptState.FELT, FELT_MILLIS)
-        val played = appVibrationsSince(since, atLeast = 1)
-        val dump = played.second
-        val vibration = played.first.singleOrNull()
-            ?: failure("expected the knock to vibrate once; the app's vibrations since it was sent: ${played.first.ifEmpty { "none" }}; ${context(dump)}")
-        checkKnock(vibration, dump)
-
+        val (_, since, felt, vibration, dump) = knockPlayedOnce("the app did not receive the knock while swiped away with Stay reachable on")
         val notification = conversationNotification()
         assertNotNull("no notification of the conversation with ${args.peer}: ${app.notifications()}", notification)
         assertTrue("the message notification is not MessagingStyle: $notification", notification!!.isMessagingStyle)
@@ -113,14 +104,7 @@ class ReceivedKnockTest {
         app.screenOff()
         SystemClock.sleep(SETTLE_MILLIS)
 
-        val (knock, since) = sendKnock()
-        assertNotNull("no \"delivered\" receipt within ${DELIVERY_MILLIS / 1000} s: the app, open in the conversation, stopped " +
-            "receiving when the screen went off", peer.await(knock, ReceiptState.DELIVERED, DELIVERY_MILLIS))
-        val felt = peer.await(knock, ReceiptState.FELT, FELT_MILLIS)
-        val (vibrations, dump) = appVibrationsSince(since, atLeast = 1)
-        val vibration = vibrations.singleOrNull()
-            ?: failure("expected the knock to vibrate once; the app's vibrations since it was sent: ${vibrations.ifEmpty { "none" }}; ${context(dump)}")
-        checkKnock(vibration, dump)
+        val (knock, _, felt, vibration, dump) = knockPlayedOnce("the app, open in the conversation, stopped receiving when the screen went off")
         assertNotNull("the knock vibrated but the sender got no \"felt\" within ${FELT_MILLIS / 1000} s", felt)
         assertNull("a \"read\" receipt went out while the screen was off", peer.find(knock, ReceiptState.READ))
         val notification = conversationNotification()
@@ -164,6 +148,31 @@ class ReceivedKnockTest {
         assertNotNull("the app did not answer a text with \"delivered\" within ${ONLINE_MILLIS / 1000} s: it is not connected to " +
             "${args.broker} as ${args.user} (is the broker running and `adb reverse tcp:1883` set?)",
             peer.await(ping, ReceiptState.DELIVERED, ONLINE_MILLIS))
+    }
+
+    /** What a knock did on the phone: the message, when it was sent (phone time), its "felt" if one came, its vibration. */
+    private data class Played(
+        val knock: ChatMessage,
+        val since: LocalDateTime,
+        val felt: Peer.Arrived?,
+        val vibration: VibrationRecord,
+        val dump: VibratorDump,
+    )
+
+    /**
+     * Sends the knock, waits for its "delivered" (failing with [undelivered] without one) and its "felt", and checks that
+     * the app vibrated exactly once for it, as the knock ([checkKnock]).
+     */
+    private fun knockPlayedOnce(undelivered: String): Played {
+        val (knock, since) = sendKnock()
+        assertNotNull("no \"delivered\" receipt within ${DELIVERY_MILLIS / 1000} s: $undelivered",
+            peer.await(knock, ReceiptState.DELIVERED, DELIVERY_MILLIS))
+        val felt = peer.await(knock, ReceiptState.FELT, FELT_MILLIS)
+        val (vibrations, dump) = appVibrationsSince(since, atLeast = 1)
+        val vibration = vibrations.singleOrNull()
+            ?: failure("expected the knock to vibrate once; the app's vibrations since it was sent: ${vibrations.ifEmpty { "none" }}; ${context(dump)}")
+        checkKnock(vibration, dump)
+        return Played(knock, since, felt, vibration, dump)
     }
 
     /** Sends the knock preset; returns it and the phone's local time just before sending. */
