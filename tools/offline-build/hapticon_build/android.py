@@ -333,6 +333,20 @@ class AndroidApp:
         run([self.tools.java, "-Xmx3g", "-cp", self.tools.r8, "com.android.tools.r8.D8", "--release",
              "--min-api", self.min_sdk, "--lib", self.tools.android_jar, "--lib", self.tools.java_home, *args], what)
 
+    def _dex_program(self, program: str, library_jars: list[str], library_dex: list[str], out: str) -> list[str]:
+        """The module's own classes ([program], a jar) dexed by D8 into [out] against the libraries, unshrunk; the two dex
+        sets must not define one class twice (e.g. a global synthetic made for both)."""
+        shutil.rmtree(out, ignore_errors=True)
+        os.makedirs(out)
+        self._d8([*_each("--classpath", library_jars), "--output", out, program], f"D8 of {self.m.path}'s classes")
+        program_dex = sorted((os.path.join(out, f) for f in os.listdir(out)), key=_dex_order)
+        library_types = set().union(*(dex_type_names(open(d, "rb").read()) for d in library_dex))
+        program_types = set().union(*(dex_type_names(open(d, "rb").read()) for d in program_dex))
+        clash = library_types & program_types
+        if clash:
+            raise BuildError(f"classes defined by both {self.m.path} and its libraries: {sorted(clash)[:5]}")
+        return program_dex
+
     def _library_inputs(self) -> tuple[list[str], list[str]]:
         """The libraries' jars (an AAR's classes.jar and libs/*.jar) and the consumer keep rules their AARs ship."""
         library_jars, consumer_rules = [], []
@@ -398,20 +412,7 @@ class AndroidApp:
         if lost:
             raise BuildError(f"the shrunk libraries lack classes the app uses: {', '.join(lost[:5])}")
         info(f"{len(named)} library classes the app uses are in the shrunk libraries")
-        program_out = os.path.join(work, "program")
-        shutil.rmtree(program_out, ignore_errors=True)
-        os.makedirs(program_out)
-        classpath = []
-        for j in library_jars:
-            classpath += ["--classpath", j]
-        self._d8([*classpath, "--output", program_out, program], "D8 of app classes")
-        program_dex = sorted((os.path.join(program_out, f) for f in os.listdir(program_out)), key=_dex_order)
-        # Two dex sets must not define one class twice (e.g. a global synthetic made for both).
-        library_types = set().union(*(dex_type_names(open(d, "rb").read()) for d in library_dex))
-        program_types = set().union(*(dex_type_names(open(d, "rb").read()) for d in program_dex))
-        clash = library_types & program_types
-        if clash:
-            raise BuildError(f"classes defined by both the app and its libraries: {sorted(clash)[:5]}")
+        program_dex = self._dex_program(program, library_jars, library_dex, os.path.join(work, "program"))
         manifest = os.path.join(os.path.dirname(self.res_apk), "AndroidManifest.xml")
         classes, members, _ = smoke_check(library_dex + program_dex, required_classes(program, manifest),
                                           required_members(program, library_jars, os.path.join(self.b.cache, "field-lookups")))

@@ -104,19 +104,7 @@ class InstrumentationApk(AndroidApp):
         with zipfile.ZipFile(program, "w") as z:
             for entry in project_entries + [self.r_jar]:
                 _add_tree(z, entry, classes_only=True)
-        program_out = os.path.join(work, "program")
-        if os.path.isdir(program_out):
-            for f in os.listdir(program_out):
-                os.remove(os.path.join(program_out, f))
-        os.makedirs(program_out, exist_ok=True)
-        classpath = [a for j in library_jars for a in ("--classpath", j)]
-        self._d8([*classpath, "--output", program_out, program], "D8 of the test APK's classes")
-        program_dex = sorted((os.path.join(program_out, f) for f in os.listdir(program_out)), key=_dex_order)
-        library_types = set().union(*(dex_type_names(open(d, "rb").read()) for d in library_dex))
-        program_types = set().union(*(dex_type_names(open(d, "rb").read()) for d in program_dex))
-        clash = library_types & program_types
-        if clash:
-            raise BuildError(f"classes defined by both the test APK and its libraries: {sorted(clash)[:5]}")
+        program_dex = self._dex_program(program, library_jars, library_dex, os.path.join(work, "program"))
         return library_dex + program_dex
 
     def verify(self, apk: str, debuggable: bool = True) -> None:

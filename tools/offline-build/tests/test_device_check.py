@@ -16,6 +16,7 @@ from hapticon_build.device_check import attached, parse_instrumentation, report_
 from hapticon_build.errors import BuildError
 from hapticon_build.instrumentation import instrumentation_of, with_instrumentation
 from hapticon_build.project import load_project
+from tests.test_build_tool import write
 
 REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))))
 ANDROID = "{http://schemas.android.com/apk/res/android}"
@@ -31,13 +32,6 @@ kotlin-stdlib = { module = "org.jetbrains.kotlin:kotlin-stdlib", version.ref = "
 android-application = { id = "com.android.application", version.ref = "agp" }
 android-test = { id = "com.android.test", version.ref = "agp" }
 """
-
-
-def write(root, path, text):
-    full = os.path.join(root, path)
-    os.makedirs(os.path.dirname(full), exist_ok=True)
-    with open(full, "w") as f:
-        f.write(textwrap.dedent(text))
 
 
 def fixture(name):
