@@ -359,14 +359,19 @@ class ChatSyncTest {
     @Test
     fun probe_brokerThatNeverAnswers_restoresThePreviousSettingsAndSaysWhy() = runBlocking {
         scope.coroutineContext[kotlinx.coroutines.Job]!!.children.forEach { it.cancelAndJoin() }
-        // A factory that cannot make a messenger: no session ever settles, as with an unreachable broker.
-        val silent = newSync(factory = { _, _, _ -> null })
+        // A messenger whose broker never answers: no session ever settles, as with an unreachable broker.
+        val silent = newSync(factory = { user, _, _ -> neverAnswering(user) })
         silent.start()
         val before = settings.preferences.value
         val broker = org.hapticon.messaging.BrokerAddress.parse("tcp://10.1.1.1:1883")
         val problem = ChatComponent.probeBroker(settings, silent, "carol", broker, null)
         assertEquals(true, problem!!.startsWith("No answer from tcp://10.1.1.1:1883 within 5 s."))
         assertEquals(before, settings.preferences.value)
+    }
+
+    /** A messenger whose connect waits for ever: neither Connected nor Failed, as a broker that never answers. */
+    private fun neverAnswering(user: String): org.hapticon.messaging.Messenger = object : org.hapticon.messaging.Messenger by TestMessenger(user) {
+        override suspend fun connect(listener: org.hapticon.messaging.InboxListener) = kotlinx.coroutines.awaitCancellation()
     }
 
     /** The settings, recording every write (the probe's are what a screen would show). */
@@ -384,7 +389,7 @@ class ChatSyncTest {
         scope.coroutineContext[kotlinx.coroutines.Job]!!.children.forEach { it.cancelAndJoin() }
         settings.update { ChatPreferences() }
         val made = java.util.concurrent.CopyOnWriteArrayList<String>()
-        val candidate = newSync(factory = { user, broker, _ -> made += "$user at $broker"; null })
+        val candidate = newSync(factory = { user, broker, _ -> made += "$user at $broker"; neverAnswering(user) })
         candidate.start()
         val recording = RecordingSettings(settings)
 
