@@ -14,6 +14,8 @@ import org.hapticon.app.data.RoomIconRepository
 import org.hapticon.app.data.SharedPreferencesChatSettings
 import org.hapticon.app.data.database.HapticonDatabase
 import org.hapticon.app.playback.AdaptiveHapticPlayer
+import org.hapticon.app.playback.AndroidVibrationGate
+import org.hapticon.app.playback.UsageVibrator
 import org.hapticon.app.playback.IconAudioCache
 import org.hapticon.app.playback.Media3AudioCoupledOutput
 import org.hapticon.messaging.RendererKind
@@ -83,10 +85,12 @@ class ChatComponent(
                 DeviceCapabilities.detect(context, vibrator, audio.hapticPlaybackSupported, audio.hapticGeneratorAvailable)
             }
             val player = chatPlayer(
-                vibrator, device, settings,
+                UsageVibrator(vibrator, AndroidVibrationGate(context, vibrator)), device, settings,
                 audio = Media3AudioCoupledOutput(context),
                 audioCache = IconAudioCache(java.io.File(context.cacheDir, "icon-audio")),
             )
+            val notifier = MessageNotifier(context) { settings.preferences.value.userName }
+            val power = context.getSystemService(android.os.PowerManager::class.java)
             val sync = ChatSync(
                 repository = repository,
                 outbox = repository,
@@ -98,10 +102,10 @@ class ChatComponent(
                 rateLimiter = VibrationRateLimiter(Clock.MONOTONIC),
                 localCapabilities = localCapabilities(device, settings),
                 scope = scope,
-                quietNow = { doNotDisturb(context) },
+                arrivalConditions = notifier::arrivalConditions,
+                screenOn = { power?.isInteractive ?: true },
             )
-            val notifier = MessageNotifier(context) { settings.preferences.value.userName }
-            sync.onIncoming = { message, _ -> notifier.show(message) }
+            sync.onIncoming = { message, alert -> notifier.show(message, alert) }
             // Lives as long as the process, like the sync it nudges.
             NetworkWatcher(context, sync).start()
             val probe: BrokerProbe = { user, broker, password -> probeBroker(settings, sync, user, broker, password) }
@@ -131,7 +135,7 @@ class ChatComponent(
          * Settings applies to the next icon or pattern.
          */
         internal fun chatPlayer(
-            vibrator: android.os.Vibrator,
+            vibrator: UsageVibrator,
             device: () -> DeviceCapabilities,
             settings: ChatSettingsRepository,
             audio: org.hapticon.app.playback.AudioCoupledOutput? = null,
@@ -200,11 +204,5 @@ class ChatComponent(
         }
 
         private const val PROBE_TIMEOUT_MILLIS = 5_000L
-
-        /** Do-not-disturb is on when the interruption filter lets less than everything through. */
-        private fun doNotDisturb(context: Context): Boolean {
-            val manager = context.getSystemService(android.app.NotificationManager::class.java) ?: return false
-            return manager.currentInterruptionFilter > android.app.NotificationManager.INTERRUPTION_FILTER_ALL
-        }
     }
 }

@@ -1,6 +1,7 @@
 package org.hapticon.app.sync
 
 import androidx.room.Room
+import org.hapticon.app.playback.usageVibrator
 import androidx.test.core.app.ApplicationProvider
 import android.content.Context
 import android.os.Vibrator
@@ -96,7 +97,7 @@ class ChatSyncReconnectTest {
             { user, url, password ->
                 KilledMidPublish(MqttMessenger(MqttSettings(BrokerAddress.parse(url), user, password, reconnectPolicy = twoMinutes))).also { made.complete(it) }
             },
-            AdaptiveHapticPlayer(vibrator, { device }, { null }, renderContext = EmptyCoroutineContext), VibrationRateLimiter(Clock.MONOTONIC),
+            AdaptiveHapticPlayer(usageVibrator(vibrator), { device }, { null }, renderContext = EmptyCoroutineContext), VibrationRateLimiter(Clock.MONOTONIC),
             { user -> RendererChoice.capabilitiesOf(user, device, null) }, scope,
         )
         sync.start()

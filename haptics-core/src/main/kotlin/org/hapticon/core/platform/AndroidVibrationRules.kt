@@ -38,7 +38,8 @@ public enum class AudioUsage(public val platformValue: Int) {
     /**
      * The vibration usage Android derives from this audio usage and judges the vibration by:
      * `VibrationAttributes.Builder(AudioAttributes)` maps the `USAGE_NOTIFICATION_COMMUNICATION_*` usages to
-     * NOTIFICATION, ASSISTANCE_SONIFICATION to TOUCH and MEDIA to MEDIA.
+     * NOTIFICATION, ASSISTANCE_SONIFICATION to TOUCH and MEDIA to MEDIA. (From API 33 `AudioAttributes.Builder.build()`
+     * already turns the deprecated `USAGE_NOTIFICATION_COMMUNICATION_*` into `USAGE_NOTIFICATION`: the same vibration usage.)
      */
     public val vibrationUsage: VibrationUsage
         get() = when (this) {

@@ -11,7 +11,6 @@ import androidx.compose.material3.AlertDialog
 import androidx.compose.material3.Text
 import androidx.compose.material3.TextButton
 import androidx.compose.runtime.Composable
-import androidx.compose.runtime.DisposableEffect
 import androidx.compose.runtime.LaunchedEffect
 import androidx.compose.runtime.getValue
 import androidx.compose.runtime.mutableStateOf
@@ -34,6 +33,7 @@ import org.hapticon.app.data.ChatExport
 import org.hapticon.app.feature.iconeditor.IconEditorRoute
 import org.hapticon.app.playback.RendererChoice
 import org.hapticon.app.sync.ChatComponent
+import org.hapticon.app.sync.MessageNotifier
 import org.hapticon.app.sync.ReachableService
 import org.hapticon.messaging.ConnectionState
 import org.hapticon.messaging.InviteLink
@@ -166,11 +166,18 @@ fun ConversationRoute(component: ChatComponent, peer: String, onBack: () -> Unit
             }
         },
     )
-    // Read receipts go out while the conversation is on screen; its notification goes away.
-    DisposableEffect(peer) {
+    // On screen means RESUMED: the app left with the chat open (another app, the screen off) pauses it, so later
+    // messages are neither marked read nor kept from notifying. The notification goes away; Android learns which
+    // conversation is shown (its LocusId, the same as its shortcut's and notification's).
+    val activity = androidx.activity.compose.LocalActivity.current
+    androidx.lifecycle.compose.LifecycleResumeEffect(peer) {
         component.sync.openConversation(peer)
         component.notifier?.clear(peer)
-        onDispose { component.sync.closeConversation(peer) }
+        if (android.os.Build.VERSION.SDK_INT >= 29) activity?.setLocusContext(android.content.LocusId(MessageNotifier.shortcutId(peer)), null)
+        onPauseOrDispose {
+            component.sync.closeConversation(peer)
+            if (android.os.Build.VERSION.SDK_INT >= 29) activity?.setLocusContext(null, null)
+        }
     }
     val uiState by viewModel.uiState.collectAsStateWithLifecycle()
     val prefs by component.settings.preferences.collectAsStateWithLifecycle()

@@ -242,6 +242,8 @@ class TalkBackNodeTreeTest {
         // The hug's own step waveform, timings and amplitudes, as the player renders it for this vibrator.
         val waveform = VibrationWaveform.render(HapticIcon.HUG)
         assertEquals(RecordedVibration(waveform.timings().toList(), waveform.amplitudes().toList()), lastVibration(fixture.vibrator))
+        // Told once Android played it: after the vibration, not with the press.
+        compose.waitUntil(5_000) { felt.isNotEmpty() }
         assertEquals(listOf("bob" to hug.id), felt.toList())
     }
 

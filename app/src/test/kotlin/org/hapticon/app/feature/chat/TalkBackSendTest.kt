@@ -107,6 +107,8 @@ class TalkBackSendTest {
         // The hug's own step waveform, as the player renders it for an amplitude-controlled vibrator.
         assertEquals(VibrationWaveform.render(HapticIcon.HUG).timings().toList(), lastVibration(fixture.vibrator)!!.timings)
         // And bob is told it was felt (the felt receipt the sync sends).
+        // Told once Android played it: after the vibration, not with the press.
+        compose.waitUntil(5_000) { felt.isNotEmpty() }
         assertEquals(listOf("bob" to hug.id), felt.toList())
     }
 }
