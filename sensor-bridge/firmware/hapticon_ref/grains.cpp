@@ -4,6 +4,16 @@
 
 namespace hgr {
 
+static uint8_t bitCount(uint16_t bits) {
+  uint8_t n = 0;
+  for (; bits != 0; bits &= (uint16_t)(bits - 1)) n++;
+  return n;
+}
+
+uint32_t deliveryMicros(uint16_t electrodeBits) {
+  return (PULSES_PER_GRAIN - 1) * PULSE_PERIOD_MICROS + (uint32_t)bitCount(electrodeBits) * SLOT_MICROS;
+}
+
 GrainParams defaultParams(uint8_t adcBits) {
   GrainParams p;
   p.grains = 24;
@@ -14,14 +24,8 @@ GrainParams defaultParams(uint8_t adcBits) {
   p.electrodeBits = 0x1FF;
   for (uint8_t i = 0; i < ELECTRODES; i++) p.steps[i] = 0;
   p.cutoffDeciHz = 200;
-  p.grainMicros = 20000;
+  p.grainMicros = (uint16_t)deliveryMicros(p.electrodeBits);
   return p;
-}
-
-static uint8_t bitCount(uint16_t bits) {
-  uint8_t n = 0;
-  for (; bits != 0; bits &= (uint16_t)(bits - 1)) n++;
-  return n;
 }
 
 ParamError validate(const GrainParams& p, uint32_t sampleRateHz) {
@@ -34,9 +38,8 @@ ParamError validate(const GrainParams& p, uint32_t sampleRateHz) {
   }
   // The cutoff must be above 0 and below Nyquist: 10 * cutoff(Hz) < 10 * rate / 2.
   if (p.cutoffDeciHz == 0 || (uint32_t)p.cutoffDeciHz * 2 >= sampleRateHz * 10) return BAD_CUTOFF;
-  // A grain must outlast its own burst: (PULSES - 1) periods plus a full scan of the electrodes.
-  uint32_t burst = (PULSES_PER_GRAIN - 1) * PULSE_PERIOD_MICROS + (uint32_t)bitCount(p.electrodeBits) * SLOT_MICROS;
-  if (p.grainMicros < burst) return BAD_GRAIN_LENGTH;
+  // No grain may start while one is being delivered: (PULSES - 1) periods plus a full scan of the electrodes.
+  if (p.grainMicros < deliveryMicros(p.electrodeBits)) return BAD_GRAIN_LENGTH;
   return PARAMS_OK;
 }
 

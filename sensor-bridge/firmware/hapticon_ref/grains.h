@@ -4,7 +4,8 @@
 // org.hapticon.sensor.electrotactile (TimeDivisionScan, AmplitudeSteps); docs/sensor-models.md.
 // Published rules (Shaping Compliance, CHI 2024): grains = bins - 1; 2 anodic 200 us pulses per grain at
 // 125 Hz; each 200 us pulse followed by 50 us before the next electrode (a 4 kHz scan); amplitude in 200
-// steps over 0-2.7 mA; fewer than 4 electrodes felt too weak. Plain C++, no heap: builds with avr-gcc.
+// steps over 0-2.7 mA; fewer than 4 electrodes felt too weak; no grain starts while one is being delivered
+// (003_8ca1dc8f53472543.txt:95-105, :123). Plain C++, no heap: builds with avr-gcc.
 #ifndef HAPTICON_GRAINS_H
 #define HAPTICON_GRAINS_H
 
@@ -15,7 +16,7 @@ namespace hgr {
 
 const uint8_t MAX_GRAINS = 99;            // 100 bins, as GrainBins.MAX_COUNT
 const uint8_t ELECTRODES = 9;             // the 3x3 array, index 3*row + column
-const uint8_t MIN_ELECTRODES = 4;         // fewer felt too weak (Shaping Compliance's pilot)
+const uint8_t MIN_ELECTRODES = 4;         // fewer felt too weak (Shaping Compliance's pilot, :107)
 const uint8_t AMPLITUDE_STEPS = 200;      // step 200 = 2.7 mA, the absolute cap
 const uint16_t PULSE_MICROS = 200;
 const uint16_t GAP_MICROS = 50;
@@ -47,15 +48,20 @@ struct GrainParams {
   uint16_t electrodeBits;        // bit i = electrode i; at least MIN_ELECTRODES set, none above bit 8
   uint8_t steps[ELECTRODES];     // amplitude step per electrode, 0..AMPLITUDE_STEPS
   uint16_t cutoffDeciHz;         // low-pass cutoff in 0.1 Hz, below the Nyquist rate
-  uint16_t grainMicros;          // no grain starts within this long of the last one (>= the 8.2 ms burst)
+  uint16_t grainMicros;          // no grain starts within this long of the last one (>= deliveryMicros(electrodeBits))
 };
 
 // Bytes of a SET_GRAINS payload: grains, distribution, min u16, max u16, bits u16, 9 steps, cutoff u16,
 // grain length u16 (little-endian).
 const size_t PARAMS_LENGTH = 21;
 
-// The study's defaults: 24 grains, linear, the ADC's whole range (0..2^adcBits - 1, raw counts), the large
-// square at step 0 (nothing is felt until the host sends a calibrated level), 20 Hz, 20 ms.
+// How long one grain takes to deliver on the electrodes in bits: the second pulse starts 8 ms after the first and
+// its scan takes 250 us per electrode (9.0 ms on 4 electrodes, 10.25 ms on 9). The paper's dead time: no grain
+// starts while one is being delivered.
+uint32_t deliveryMicros(uint16_t electrodeBits);
+
+// The defaults: 24 grains, linear, the ADC's whole range (0..2^adcBits - 1, raw counts), the large square at step 0
+// (nothing is felt until the host sends a calibrated level), 20 Hz, and a dead time of the grain's own delivery.
 GrainParams defaultParams(uint8_t adcBits = 10);
 
 // Checks p against the hard limits for a sensor sampled at sampleRateHz.
@@ -64,7 +70,7 @@ ParamError validate(const GrainParams& p, uint32_t sampleRateHz);
 // Parses a SET_GRAINS payload; false when its length is wrong.
 bool parseParams(const uint8_t* payload, size_t length, GrainParams& out);
 
-// One calibration stimulus (Shaping Compliance: each electrode alone, 200 ms, rising from 0.8 mA until clear
+// One calibration stimulus (Shaping Compliance, :152: each electrode alone, 200 ms, rising from 0.8 mA until clear
 // and pain-free): the grain's pulses (200 us, anodic) every 8 ms (125 Hz) for millis on one electrode. One
 // electrode is the point of it, so the 4-electrode minimum of grains does not apply; the 2.7 mA cap does.
 struct Stimulus {

@@ -64,7 +64,7 @@ void slowFullPress_firesExactlyTheRequestedGrains() {
       RecordingStimulator out;
       uint32_t fired = slowPress(renderer, out);
       // 99 convex grains crowd the start of the press (the first edge is 0.1 force units, the tenth 10)
-      // more tightly than the 20 ms grain can follow: only the study's 9-39 must be exact everywhere.
+      // more tightly than a 10.25 ms grain can follow: only the study's 9-39 must be exact everywhere.
       if (counts[i] <= 39 || d == hgr::LINEAR) CHECK(fired == counts[i]);
       CHECK(out.pulses.size() == fired * 2 * 9);
     }
@@ -101,6 +101,51 @@ void stepPress_firstPulseWithin25ms() {
   // The 20 Hz filter (a = 0.118 at 1 kHz) passes the first edge (25.6) at the first sample after the press.
   CHECK(!out.pulses.empty() && out.pulses[0].onset - pressed < 25000);
   CHECK(!out.pulses.empty() && out.pulses[0].onset == pressed);
+}
+
+// Shaping Compliance fires no grain while one is being delivered (003_8ca1dc8f53472543.txt:97): the dead time is the
+// grain's own delivery, 8 ms + 250 us per electrode, and a force still moving fires the next grain at the first
+// sample after it.
+void rapidPress_nextGrainAtTheFirstSampleAfterDelivery() {
+  CHECK(hgr::deliveryMicros(0x01B) == 9000);
+  CHECK(hgr::deliveryMicros(0x03F) == 9500);
+  CHECK(hgr::deliveryMicros(0x1FF) == 10250);
+  CHECK(hgr::defaultParams().grainMicros == 10250);
+  const uint16_t bits[] = {0x01B, 0x1FF};
+  const uint32_t expectedSecond[] = {9000, 11000};  // the first 1 ms sample at or after 9.0 and 10.25 ms
+  for (int b = 0; b < 2; b++) {
+    hgr::GrainRenderer renderer;
+    hgr::GrainParams p = params(99, hgr::LINEAR, bits[b]);
+    p.grainMicros = (uint16_t)hgr::deliveryMicros(bits[b]);
+    p.cutoffDeciHz = 4990;  // a nearly transparent filter: every 1 ms sample crosses bins
+    CHECK(hgr::validate(p, 1000) == hgr::PARAMS_OK);
+    renderer.configure(p, 1000);
+    RecordingStimulator out;
+    std::vector<uint32_t> onsets;
+    for (uint32_t t = 0; t < 30000; t += 50) {
+      // Force climbs 40 units per ms: four bins a sample, so only the dead time holds grains back.
+      if (t % 1000 == 0 && renderer.offer(t, (uint16_t)(t / 1000 * 40))) onsets.push_back(t);
+      renderer.service(t, out);
+    }
+    CHECK(onsets.size() >= 3);
+    if (onsets.size() >= 3) {
+      CHECK(onsets[0] == 1000);
+      CHECK(onsets[1] - onsets[0] == expectedSecond[b]);
+      CHECK(onsets[2] - onsets[1] == expectedSecond[b]);
+    }
+    // Every pulse of a grain is out before the next grain's first.
+    for (size_t i = 1; i < onsets.size(); i++) {
+      for (size_t k = 0; k < out.pulses.size(); k++) {
+        if (out.pulses[k].onset < onsets[i]) continue;
+        CHECK(out.pulses[k].onset == onsets[i]);
+        break;
+      }
+    }
+  }
+  // One microsecond shorter than the delivery is refused.
+  hgr::GrainParams shortDead = params(9, hgr::LINEAR, 0x01B);
+  shortDead.grainMicros = 8999;
+  CHECK(hgr::validate(shortDead, 1000) == hgr::BAD_GRAIN_LENGTH);
 }
 
 void validate_refusesWhatTheLimitsForbid() {
@@ -226,6 +271,7 @@ int main() {
   slowFullPress_firesExactlyTheRequestedGrains();
   grain_scansEachElectrode250usApartTwiceAt125Hz();
   stepPress_firstPulseWithin25ms();
+  rapidPress_nextGrainAtTheFirstSampleAfterDelivery();
   validate_refusesWhatTheLimitsForbid();
   parseParams_readsTheLittleEndianPayload();
   printf("grains_test: %d checks, %d failed\n", checks, failures);

@@ -99,8 +99,9 @@ int main() {
   for (int pin = 0; pin < 64; pin++) CHECK(electrodePulses[pin] == 0);
 
   // SET_GRAINS: 9 grains over 0..1000, linear, the small square (electrodes 0, 1, 3, 4) at step 200
-  // (2.7 mA), 20 Hz, 20 ms, sequence 11. Then a 20 s slow press on A0.
-  uint8_t payload[21] = {9, 0, 0x00, 0x00, 0xe8, 0x03, 0x1b, 0x00, 200, 200, 0, 200, 200, 0, 0, 0, 0, 0xc8, 0x00, 0x20, 0x4e};
+  // (2.7 mA), 20 Hz, a 9 ms dead time (the grain's own delivery on 4 electrodes), sequence 11. Then a 20 s slow
+  // press on A0.
+  uint8_t payload[21] = {9, 0, 0x00, 0x00, 0xe8, 0x03, 0x1b, 0x00, 200, 200, 0, 200, 200, 0, 0, 0, 0, 0xc8, 0x00, 0x28, 0x23};
   hfp::FrameWriter writer(11);
   writer.begin(hfp::TYPE_SET_GRAINS);
   for (size_t i = 0; i < sizeof(payload); i++) writer.u8(payload[i]);

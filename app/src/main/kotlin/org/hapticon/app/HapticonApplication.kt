@@ -7,7 +7,6 @@ import android.os.StrictMode
 import org.hapticon.app.di.AppContainer
 import org.hapticon.app.sync.ChatComponent
 import org.hapticon.app.sync.ChatHost
-import org.hapticon.app.sync.ReachableService
 
 /**
  * Holds the app's long-lived objects; tests replace them through [container]. As the [ChatHost] it hands the
@@ -28,11 +27,8 @@ class HapticonApplication : Application(), ChatHost {
         }
         container = AppContainer.create(this)
         // The chat sync runs in the application's scope from start-up: it drains the outbox and receives.
+        // "Stay reachable" is started by the activity, the boot receiver and the keep-alive alarm, not here: a
+        // process started for BOOT_COMPLETED must follow the user's "after a restart" choice.
         container.chat?.sync?.start()
-        // "Stay reachable" was on when the app last ran: keep the promise from the first start.
-        if (container.chat?.settings?.preferences?.value?.stayReachable == true) {
-            runCatching { ReachableService.start(this) }
-                .onFailure { android.util.Log.w("HapticonApplication", "cannot start Stay reachable now: ${it.message}") }
-        }
     }
 }

@@ -23,7 +23,7 @@ import androidx.lifecycle.compose.collectAsStateWithLifecycle
  * in [onNewIntent] instead of starting a second activity.
  */
 class MainActivity : ComponentActivity() {
-    private var destination by mutableStateOf(TopLevelDestination.ICONS)
+    private var destination by mutableStateOf(TopLevelDestination.CHATS)
 
     override fun onCreate(savedInstanceState: Bundle?) {
         super.onCreate(savedInstanceState)
@@ -32,8 +32,11 @@ class MainActivity : ComponentActivity() {
         destination = savedInstanceState?.getString(KEY_DESTINATION)
             ?.let { name -> TopLevelDestination.entries.firstOrNull { it.name == name } }
             // A study session still running (the app was killed mid-session) reopens in front of the participant.
-            ?: if (container.study?.settings?.preferences?.value?.activeSessionId != null) TopLevelDestination.STUDY else TopLevelDestination.ICONS
+            // A messenger opens on its chats, as Signal and Google Messages do.
+            ?: if (container.study?.settings?.preferences?.value?.activeSessionId != null) TopLevelDestination.STUDY else TopLevelDestination.CHATS
         handleIntent(intent, container)
+        // The app opened in front of the user: "Stay reachable", if chosen, runs from now (Android may have stopped it).
+        org.hapticon.app.sync.ReachableService.startIfChosen(this)
         setContent {
             val dynamicColor = container.chat?.settings?.preferences?.collectAsStateWithLifecycle()?.value?.dynamicColor ?: false
             HapticonTheme(dynamicColor = dynamicColor) {

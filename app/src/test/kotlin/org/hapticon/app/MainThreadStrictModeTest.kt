@@ -37,6 +37,7 @@ import org.hapticon.messaging.InboxListener
 import org.hapticon.messaging.RendererKind
 import org.hapticon.messaging.broker.EmbeddedBroker
 import org.hapticon.messaging.BrokerAddress
+import org.hapticon.messaging.mqtt.DeviceId
 import org.hapticon.messaging.mqtt.MqttMessenger
 import org.hapticon.messaging.mqtt.MqttSettings
 import org.junit.After
@@ -133,11 +134,12 @@ class MainThreadStrictModeTest {
         shadowOf(app).grantPermissions(Manifest.permission.POST_NOTIFICATIONS)
         val broker = BrokerProcess(temp.newFolder("broker"), BrokerProcess.freePort()).also { it.start() }
         val address = BrokerAddress(EmbeddedBroker.HOST, broker.port)
-        val bob = MqttMessenger(MqttSettings(address, "bob", "bob-secret"))
+        val bob = MqttMessenger(MqttSettings(address, "bob", "bob-secret", DeviceId.generate()))
         try {
             // alice's account through the settings (the sync connects, off the main thread); bob on his own client
             // publishes what his phone can do and sends alice a knock.
-            chat.settings.update { it.copy(userName = "alice", brokerUrl = address.toString(), brokerPassword = "alice-secret") }
+            // bob's client speaks plaintext, so alice chooses it too (end to end is the default; this test is about threads).
+            chat.settings.update { it.copy(userName = "alice", brokerUrl = address.toString(), brokerPassword = "alice-secret", endToEnd = false) }
             awaitTrue("alice connected") { chat.sync.connection.value == ConnectionState.Connected }
             runBlocking {
                 bob.connect(InboxListener { })

@@ -31,6 +31,31 @@ class ManifestTest {
         val service = info.services.orEmpty().single { it.name == "org.hapticon.app.sync.ReachableService" }
         assertEquals(android.content.pm.ServiceInfo.FOREGROUND_SERVICE_TYPE_REMOTE_MESSAGING, service.foregroundServiceType)
         assertEquals(false, service.exported)
+        // Android 15 forbids BOOT_COMPLETED receivers to start these types (developer.android.com/about/versions/15/
+        // changes/foreground-service-types; microphone since 14); the boot path starts remoteMessaging.
+        val notFromBoot = android.content.pm.ServiceInfo.FOREGROUND_SERVICE_TYPE_DATA_SYNC or android.content.pm.ServiceInfo.FOREGROUND_SERVICE_TYPE_CAMERA or
+            android.content.pm.ServiceInfo.FOREGROUND_SERVICE_TYPE_MEDIA_PLAYBACK or android.content.pm.ServiceInfo.FOREGROUND_SERVICE_TYPE_PHONE_CALL or
+            android.content.pm.ServiceInfo.FOREGROUND_SERVICE_TYPE_MEDIA_PROJECTION or android.content.pm.ServiceInfo.FOREGROUND_SERVICE_TYPE_MICROPHONE
+        assertEquals(0, service.foregroundServiceType and notFromBoot)
+        // The battery exemption is asked with Android's dialog, which needs this normal permission.
+        assertTrue(requested.toString(), "android.permission.REQUEST_IGNORE_BATTERY_OPTIMIZATIONS" in requested)
+        // The camera app takes an invite's photo: Hapticon itself asks for no camera (declaring it would make
+        // ACTION_IMAGE_CAPTURE need the permission granted).
+        assertEquals(false, "android.permission.CAMERA" in requested)
+    }
+
+    @Test
+    fun launcherIcon_isTheAdaptiveIconWithAMonochromeLayer() {
+        val context = ApplicationProvider.getApplicationContext<Context>()
+        val info = context.packageManager.getApplicationInfo(context.packageName, 0)
+        assertEquals(R.mipmap.ic_launcher, info.icon)
+        val icon = context.getDrawable(info.icon) as android.graphics.drawable.AdaptiveIconDrawable
+        assertTrue(icon.foreground != null && icon.background != null)
+        assertTrue("themed icons need the monochrome layer", icon.monochrome != null)
+        val launcher = context.packageManager.queryIntentActivities(
+            android.content.Intent(android.content.Intent.ACTION_MAIN).addCategory(android.content.Intent.CATEGORY_LAUNCHER).setPackage(context.packageName), 0,
+        ).single()
+        assertEquals(R.mipmap.ic_launcher, launcher.iconResource.takeIf { it != 0 } ?: info.icon)
     }
 
     @Test

@@ -100,6 +100,7 @@ private fun dispatch(args: List<String>, console: Console) {
         "fit-bench" -> runFitBench(rest, console)
         "replicate" -> org.hapticon.companion.replicate.runReplicate(rest, console)
         "compliance-schedule" -> org.hapticon.companion.study.runComplianceSchedule(rest, console)
+        "compliance-analysis" -> org.hapticon.companion.study.runComplianceAnalysis(rest, console)
         else -> throw UsageException("unknown command '$command'; try 'hapticon help'")
     }
 }

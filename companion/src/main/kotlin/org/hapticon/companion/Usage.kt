@@ -73,7 +73,8 @@ val USAGE: String = """
     |      Shaping Compliance's calibration on the terminal: each electrode alone, a 200 ms stimulus from
     |      0.8 mA (step 60, 0.81 mA); keys u/+/space one step up (not yet), d/- one step down (too strong),
     |      r again, y/Enter clear and pain-free (next electrode); then all nine with 39 grains while you
-    |      press: y/Enter done, d/- all one step down. q stops. Never past 2.7 mA (step 200). Prints the
+    |      press, until uniform: y/Enter done, d/- all one step down, 1-9 then w/s one electrode a step
+    |      weaker/stronger. q stops. Never past 2.7 mA (step 200). Prints the
     |      calibrated steps for board set --steps; --save writes them (with their mA, the time and the
     |      participant) to FILE for board set --calibration: whole or not at all, nothing when stopped with
     |      q, and an existing FILE is refused before the port opens unless --force.
@@ -99,14 +100,21 @@ val USAGE: String = """
     |      Make the study's CA (ca.crt, ca.key mode 600) and the broker's certificate for those hosts.
     |  hapticon broker cert issue USER [--data DIR | --ca-dir DIR] [--out FILE] [--password-file FILE] [--days N]
     |      Write USER.p12 (mode 600): USER's client certificate (CN = USER, default 365 days) and key.
-    |  hapticon broker adduser NAME [--data DIR | --users FILE] [--password-file FILE]
-    |      Add a broker user or change its password (asked on the terminal, or the file's first line).
+    |  hapticon broker adduser NAME [--data DIR | --users FILE] [--password-file FILE | --generate] [--iterations N]
+    |      Add a broker user or change its password (asked on the terminal, the file's first line, or made up
+    |      and printed once with --generate), stored with N PBKDF2 rounds (210000; 101 for Mosquitto).
     |  hapticon schedule --participants N --design paper|williams|full|random|fixed [--seed S] [--protocol FILE]
     |      Counterbalanced orders of a study (default: the originating study) as CSV participant,position,task,
     |      a blank line, then participant,task,position,stimulus; participant is the pseudonymous id (P000-A).
-    |  hapticon compliance-schedule --participants N [--repetitions R] [--seed S]
-    |      The Shaping Compliance study's trials (grains 0/9/19/39 x five electrode shapes, magnitude
-    |      estimation) per participant as CSV participant,trial,condition,grains,shape,electrodes,repetition.
+    |  hapticon compliance-schedule --participants N [--protocol ID] [--repetitions R] [--seed S]
+    |      A compliance protocol's trials per participant as CSV participant,trial,condition,grains,shape,
+    |      electrodes,repetition,before (before: calibrate, break+calibrate or nothing). ID: shaping-compliance
+    |      (default: Task 1 as published, 9/19/39 grains x 4 shapes x 3 counterbalanced blocks, calibrated
+    |      before each), shaping-compliance-shapes (Task 2, drawing) or shaping-compliance-extended (ours, 60).
+    |  hapticon compliance-analysis ANSWERS.csv... [--out DIR]
+    |      Shaping Compliance's analysis of the app's compliance answer files: Task 1 scores / SD per
+    |      participant and repetition, reference rows at 0, ART ANOVA and ART-C (Tukey); Task 2's drawings as
+    |      Figure 5's heatmaps (--out writes one PNG per shape).
     |  hapticon study-protocol [--out FILE]
     |      Print (or write) the default study protocol JSON, to edit and pass to --protocol. See docs/study.md.
     |  hapticon analyze RESULTS.csv [--out DIR] [--holm] [--test t|wilcoxon|both]
@@ -134,9 +142,10 @@ val USAGE: String = """
     |      Train a gesture model from labelled CSV (header time_s,<channels..>[,label]; without a label
     |      column the file name holds the label, e.g. p1-knock-gentle-3.csv). Defaults: 1 s, 30 trees.
     |  hapticon train --classifier logitboost --in DIR_OR_CSV [MORE..] --out MODEL.json [--iterations N]
-    |      Social-touch model: one message per contact CSV (header time_s,intensity,x,y,area) named
-    |      PERSON-LABEL[-N].csv; LogitBoost over stumps on 13 message features (default 10 rounds); prints
-    |      10x10-fold CV and leave-one-person-out accuracy.
+    |      Social-touch model: one message per CSV named PERSON-LABEL[-N].csv, a skin recording (header
+    |      time_s,joint,e:X:Y,..) or a pointer stream (header time_s,intensity,x,y,area); LogitBoost over
+    |      decision stumps as WEKA runs it on the EIT-skin paper's 13 features (default 10 rounds); prints
+    |      ten 10-fold CVs and leave-one-transmitter-out accuracy.
     |  hapticon classify --model MODEL.json --in REC.csv
     |      Classify a recording (same channels and rate as the model) live: CSV time_s,label,probability,event
     |      per decision, event 1 where a gesture is reported. With a social-touch model: label,probability
@@ -148,10 +157,11 @@ val USAGE: String = """
     |      icon JSON and print the icon and its fit report (--json: one JSON object). See docs/gesture-extraction.md.
     |  hapticon fit-bench [--trials N] [--seed S]
     |      Parameter recovery of the fit on random synthetic icons at SNR 10-40 dB, per envelope method.
-    |  hapticon replicate [ID]
+    |  hapticon replicate [ID] [--data DIR]
     |      Reproduce a published result and print ours beside the paper's figures; without ID, list them
-    |      (000 haptic icons, 001 compliance grains, 002 NAO touch gestures, 003 EIT-skin social touch,
-    |      004 tele-handshake calibration). docs/replication.md.
+    |      by seed-file number or short name: 000 haptic-icons, 001 eit-skin (social touch), 002 handshake|glove,
+    |      003 shaping-compliance (electrotactile grains), 004 nao (touch gestures). `replicate nao --data DIR`
+    |      scores the NAO study's recordings (PERSON-raw.csv, PERSON-indices.csv). docs/replication.md.
     |  hapticon help
     |      Print this text.
     |

@@ -79,6 +79,28 @@ class ConvertCommandTest {
     }
 
     @Test
+    fun convert_seventySecondClip_fileToFileIsNotHeldToThePlaybackCap() {
+        // Meta's own 70 s test clip (facebook/meta-haptics-sdk core/haptic_data/test_files/long_clip.haptic), compacted.
+        val clip = file("long_clip.haptic").also {
+            it.writeText("""{"version": {"major": 1, "minor": 0, "patch": 0}, "signals": {"continuous": {"envelopes": {
+                "amplitude": [{"time": 0.0, "amplitude": 0.0}, {"time": 5.0, "amplitude": 0.5, "emphasis": {"amplitude": 0.75, "frequency": 1.0}},
+                  {"time": 10.0, "amplitude": 1.0}, {"time": 20.0, "amplitude": 0.0}, {"time": 40.0, "amplitude": 1.0},
+                  {"time": 50.0, "amplitude": 0.0}, {"time": 70.0, "amplitude": 1.0}],
+                "frequency": [{"time": 0.0, "frequency": 0.0}, {"time": 10.0, "frequency": 1.0}, {"time": 20.0, "frequency": 0.0},
+                  {"time": 40.0, "frequency": 1.0}, {"time": 50.0, "frequency": 0.0}, {"time": 70.0, "frequency": 1.0}]}}}}""")
+        }
+        val ahap = file("long_clip.ahap")
+        val result = cli("convert", clip.path, ahap.path)
+        assertEquals(result.toString(), 0, result.exitCode)
+        assertTrue(result.stdout, result.stdout.startsWith("wrote $ahap: long_clip as ahap, 70.000 s"))
+        assertEquals(70.0, PatternSource.load(ahap.path).pattern.duration, 1e-9)
+        val wav = file("long_clip.wav")
+        val rendered = cli("convert", clip.path, wav.path, "--rate", "8000")
+        assertEquals(rendered.toString(), 0, rendered.exitCode)
+        assertEquals(560_000, wav.inputStream().use { WavReader.read(it) }.samples().size)
+    }
+
+    @Test
     fun convert_rangeOption_mapsSharpnessIntoThePhonesRange() {
         val out = file("hit.haptic")
         assertEquals(0, cli("convert", "hit", out.path, "--range", "100:300").exitCode)

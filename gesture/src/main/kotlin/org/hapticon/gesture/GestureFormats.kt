@@ -21,5 +21,5 @@ public object GestureFormats {
     public const val SOCIAL_TOUCH_MODEL_SCHEMA: String = "hapticon.social-touch-model"
 
     /** Version of the social-touch model file. */
-    public const val SOCIAL_TOUCH_MODEL_VERSION: Int = 1
+    public const val SOCIAL_TOUCH_MODEL_VERSION: Int = 2
 }

@@ -39,7 +39,11 @@ public data class HapticIcon(
         }
     }
 
-    /** Carrier frequency in Hz: 440·2^((note − 69)/12). */
+    /**
+     * Carrier frequency in Hz: 440·2^((note − 69)/12), the originating study's note formula solved for f
+     * (000_f26496a15a0d284b.txt:78-81). Its Table 3 prints these rounded: 350, 220, 220 and 147 Hz for notes 65, 57,
+     * 57 and 50 (:88-91), which are 349.23, 220.00, 220.00 and 146.83 Hz.
+     */
     val frequency: Double get() = midiNoteToHz(note)
 
     /** Length of one envelope, attack + sustain + release, in seconds. */
@@ -75,13 +79,13 @@ public data class HapticIcon(
         /** Highest supported render rate in Hz. */
         public const val MAX_SAMPLE_RATE: Int = 192_000
 
-        /** Stroke, from the originating study: 1.0/1.0/0.3/1.0 s, note 65, period 2.6 s, ×4. */
+        /** Stroke, the originating study's Table 3: 1.0/1.0/0.3/1.0 s, note 65, period 2.6 s, ×4 (000_f26496a15a0d284b.txt:88). */
         public val STROKE: HapticIcon = HapticIcon("stroke", 1.0, 1.0, 0.3, 1.0, 65.0, 2.6, 4)
-        /** Hit: 0.01/0.1/1.0/0.03 s, note 57, period 0.2 s, ×8. */
+        /** Hit: 0.01/0.1/1.0/0.03 s, note 57, period 0.2 s, ×8 (000_f26496a15a0d284b.txt:89). */
         public val HIT: HapticIcon = HapticIcon("hit", 0.01, 0.1, 1.0, 0.03, 57.0, 0.2, 8)
-        /** Knock: 0.005/0.01/0.5/0.005 s, note 57, period 0.27 s, ×3. */
+        /** Knock: 0.005/0.01/0.5/0.005 s, note 57, period 0.27 s, ×3 (000_f26496a15a0d284b.txt:90). */
         public val KNOCK: HapticIcon = HapticIcon("knock", 0.005, 0.01, 0.5, 0.005, 57.0, 0.27, 3)
-        /** Hug: 1.5/1.0/0.5/0.5 s, note 50, played once. */
+        /** Hug: 1.5/1.0/0.5/0.5 s, note 50, played once (period "-", 000_f26496a15a0d284b.txt:91). */
         public val HUG: HapticIcon = HapticIcon("hug", 1.5, 1.0, 0.5, 0.5, 50.0, 0.0, 1)
 
         /**

@@ -45,6 +45,15 @@ public interface Messenger {
     public fun reconnectNow() {}
 
     /**
+     * Sends one round trip to the broker now and suspends until it is answered: true when it was within
+     * [timeoutMillis], false when not connected or no answer came (the connection is dead though not yet
+     * noticed). For a phone that wakes from sleep only now and then: the client's own keep-alive timer counts
+     * only awake time, so the broker would otherwise hear nothing. Does not throw. The default answers from
+     * [state], for messengers without a round trip of their own.
+     */
+    public suspend fun ping(timeoutMillis: Long): Boolean = state.value == ConnectionState.Connected
+
+    /**
      * Publishes [message] into [recipient]'s inbox and suspends until the broker has acknowledged it
      * (PUBACK). Throws [MessagingException] when not connected or the publish fails; the message may or may
      * not have reached the broker then, which is why receivers deduplicate. Throws
@@ -106,8 +115,13 @@ public sealed interface InboxEvent {
     /** A tele-handshake partner's hand. */
     public data class HandPoseReceived(val pose: HandPose) : InboxEvent
 
-    /** A user's capabilities (retained, so also on every connection). */
-    public data class CapabilitiesReceived(val capabilities: Capabilities) : InboxEvent
+    /**
+     * A user's capabilities. [retained] is the broker's word that it sent the stored copy because this client just
+     * subscribed (MQTT 3.1.1 §3.3.1.3: RETAIN 1 "as a result of a new subscription", 0 for a message published while
+     * subscribed). Every client publishes its own on every connection, so the retained ones are a directory of the
+     * users who ever connected; the copy of this user's own publish arrives with [retained] false after them.
+     */
+    public data class CapabilitiesReceived(val capabilities: Capabilities, val retained: Boolean = false) : InboxEvent
 
     /** A payload that was refused, for the listener to log or count; it has no other effect. */
     public data class Rejected(val topic: String, val rejection: Decoded.Rejected) : InboxEvent

@@ -26,7 +26,7 @@ public data class OutboxEntry(
  *
  * An entry lives from [enqueue] until the receiver's delivered (or read) receipt arrives ([markDelivered]),
  * not merely until the broker acknowledged it ([markSent]): a broker acknowledges before it has saved
- * (Mosquitto writes its store every `autosave_interval` changes; a kill in between loses what it
+ * (Mosquitto writes its store every `autosave_interval`, a second in the shipped configuration; a kill in between loses what it
  * acknowledged), so the end-to-end receipt is the only proof of delivery (the end-to-end argument, Saltzer,
  * Reed and Clark 1984). Until it comes the entry is sent again now and then, and the receiver drops the
  * repeats by id.

@@ -52,6 +52,12 @@ public enum class RejectionReason {
 
     /** The sealed payload verified but does not decrypt with this user's key. */
     UNDECRYPTABLE,
+
+    /**
+     * A retained message on an inbox topic: the broker would replay it at every subscription, and each replay would
+     * earn its sender a delivered receipt (telling it when this user is online). Never shown, never acknowledged.
+     */
+    RETAINED,
 }
 
 /**

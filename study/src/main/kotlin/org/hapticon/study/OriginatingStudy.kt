@@ -4,19 +4,24 @@ import org.hapticon.core.HapticIcon
 import org.hapticon.study.design.OrderScheme
 
 /**
- * The built-in protocols of the study the haptic icons come from (Wei et al.): [PROTOCOL], the default, rates each
- * icon in its own trial; [PAPER_PROTOCOL] runs the paper's own procedure. Both play the `processing` envelopes, what
- * the study's participants felt.
+ * The built-in protocols of the study the haptic icons come from (Wei et al.; its text is 000_f26496a15a0d284b.txt):
+ * [PROTOCOL], the default, rates each icon in its own trial; [PAPER_PROTOCOL] runs the paper's own procedure. Both
+ * play the `processing` envelopes, what the study's participants felt (the Sound library of Processing 3, :66, :95).
  *
- * [PROTOCOL]: the study the haptic icons come from. A virtual partner "has already sent" the messages;
- * the participant plays each icon and rates a statement on a 5-point agreement scale.
+ * [PROTOCOL]: the study the haptic icons come from. A virtual partner "has already sent" the messages (:95); the
+ * participant plays each icon and rates a statement on the paper's 5-point Likert scale, 1 strongly disagree .. 5
+ * strongly agree (:121).
  *
- * 1. `icons`: the four preset icons alone, "Haptic icon N feels like stroking / hitting / knocking / hugging", one
- *    statement per icon, N its position in the participant's order. Always first.
- * 2. `text`: a short message with each icon, "This haptic icon enhances the effect of the text".
- * 3. `stickers`: a sticker with each icon, "This haptic icon enhances the touch effect of the sticker".
+ * 1. `icons`: the four preset icons alone, "Haptic icon N feels like stroking / hitting / knocking / hugging" (:121),
+ *    one statement per icon, N its position in the participant's order. Always first (:127).
+ * 2. `text`: a short message with each icon, "This haptic icon enhances the effect of the text" (the paper's "This
+ *    haptic icon enhance the effect of text.", :121, grammar mended). The texts are ours: the paper shows its own
+ *    only in images (Fig. 4, Tables 4-5, :74, :95, :97).
+ * 3. `stickers`: a sticker with each icon, "This haptic icon enhances the touch effect of the sticker" (:121). The
+ *    stickers are ours: the paper's were WeChat dialog boxes, not published (:95).
  *
- * Tasks 2 and 3 alternate across participants (2-3, 3-2, ...); the icons within each task follow a Williams square.
+ * Tasks 2 and 3 alternate across participants (2-3, 3-2, ...: "counterbalanced between participants", :127); the
+ * icons within each task follow a Williams square (the paper shows them on one screen; the order is ours).
  */
 public object OriginatingStudy {
     /** The protocol id. */
@@ -41,7 +46,7 @@ public object OriginatingStudy {
     /** Id of [PAPER_PROTOCOL]. */
     public const val PAPER_ID: String = "hapticon-icons-paper"
 
-    /** Participants in the originating study. */
+    /** Participants in the originating study: 16, 4 male and 12 female, aged 25-30 (000_f26496a15a0d284b.txt:117). */
     public const val PAPER_PARTICIPANTS: Int = 16
 
     /** The per-trial protocol; see the type's description. */
@@ -82,10 +87,11 @@ public object OriginatingStudy {
     /**
      * The originating study's procedure, read-only in the app: [PAPER_PARTICIPANTS] participants; task 1 (the icons)
      * first, tasks 2 (text) and 3 (stickers) counterbalanced as in the paper (2-3 for one participant, 3-2 for the
-     * next); the icons numbered as in the paper (icon 1 = stroke, 2 = hit, 3 = knock, 4 = hug) rather than by their
-     * position; in every task the four icons shown together on one chat screen and pressed freely
-     * ([TaskPresentation.TOGETHER]), then the questionnaire items answered after the task; white-noise masking on
-     * the participant's headphones.
+     * next; 000_f26496a15a0d284b.txt:127); the icons numbered as in the paper's items (icon 1 = stroke, 2 = hit,
+     * 3 = knock, 4 = hug, :121) rather than by their position; in every task the four icons shown together on one
+     * chat screen (Fig. 4, :95) and pressed (:127; how often: paper silent, ours freely,
+     * [TaskPresentation.TOGETHER]), then the questionnaire items answered after the task (on a computer in the
+     * paper, :127; in the app here); white noise on the participant's headphones (:125).
      */
     public val PAPER_PROTOCOL: StudyProtocol = PROTOCOL.copy(
         id = PAPER_ID,

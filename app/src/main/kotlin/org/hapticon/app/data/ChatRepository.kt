@@ -67,7 +67,10 @@ interface ChatRepository {
     /** Every stored message, by conversation then time (the export). */
     suspend fun allMessages(): List<StoredMessage>
 
-    /** Makes a failed or waiting own message due for sending now (the user tapped retry). */
+    /**
+     * Makes a failed or waiting own message due for sending now (the user tapped retry): the same row, sent with the
+     * same id. A failed one shows as sending again until the broker acknowledges it or it fails anew.
+     */
     suspend fun retryNow(messageId: String)
 
     /** Deletes the conversation with [peer], its messages and whatever of it is still in the outbox. */
@@ -148,7 +151,13 @@ class OfflineFirstChatRepository(
     override suspend fun allMessages(): List<StoredMessage> = messages.all().map { it.asExternalModel() }
 
     override suspend fun retryNow(messageId: String) {
-        outbox.dueNow(messageId, clock.nowMillis())
+        db.withTransaction {
+            outbox.dueNow(messageId, clock.nowMillis())
+            val row = messages.message(messageId) ?: return@withTransaction
+            if (row.outgoing && row.state == MessageState.FAILED.name && outbox.entry(messageId) != null) {
+                messages.updateState(messageId, MessageState.SENDING.name)
+            }
+        }
     }
 
     override suspend fun deleteConversation(peer: String) {

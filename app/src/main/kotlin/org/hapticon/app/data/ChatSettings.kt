@@ -25,6 +25,11 @@ data class ChatPreferences(
     val stayReachable: Boolean = false,
     /** Start the "Stay reachable" service again after the phone restarts. */
     val reachableAfterBoot: Boolean = false,
+    /**
+     * First launch saved the account and still owes the user the offer of "Stay reachable" and autoplay (asked
+     * once, before the chat list; answered, it is false for good).
+     */
+    val reachableOfferPending: Boolean = false,
     /** Conversations moved out of the chat list (still stored, back on a new message). */
     val archived: Set<String> = emptySet(),
     /**
@@ -38,10 +43,11 @@ data class ChatPreferences(
      */
     val enterSends: Boolean = false,
     /**
-     * Seal every message end to end ([org.hapticon.messaging.e2e.EndToEnd], keys in [AppKeys]). Off by default
-     * while peers may run without it: a sealed chat refuses plaintext and cannot write to a peer without keys.
+     * Seal every message end to end ([org.hapticon.messaging.e2e.EndToEnd], keys in [AppKeys]), so whoever runs the
+     * broker can neither read nor forge them. On by default, as in `hapticon chat`; off only by the user's explicit
+     * choice (a study that needs the broker to see content), confirmed in Settings and logged at every session.
      */
-    val endToEnd: Boolean = false,
+    val endToEnd: Boolean = true,
     /**
      * What this phone does with a pattern's or icon's frequencies its actuator cannot give (API 36 frequency
      * profile): move the whole thing by octaves (the default, docs/patterns.md) or clamp each frequency. Published
@@ -53,7 +59,7 @@ data class ChatPreferences(
     override fun toString(): String =
         "ChatPreferences(userName=$userName, brokerUrl=$brokerUrl, autoPlay=$autoPlay, rendererOverride=$rendererOverride, " +
             "dynamicColor=$dynamicColor, sendFeltReceipts=$sendFeltReceipts, stayReachable=$stayReachable, " +
-            "reachableAfterBoot=$reachableAfterBoot, archived=$archived, enterSends=$enterSends, endToEnd=$endToEnd, pitchFit=$pitchFit, brokerPassword=${if (brokerPassword == null) "none" else "***"})"
+            "reachableAfterBoot=$reachableAfterBoot, reachableOfferPending=$reachableOfferPending, archived=$archived, enterSends=$enterSends, endToEnd=$endToEnd, pitchFit=$pitchFit, brokerPassword=${if (brokerPassword == null) "none" else "***"})"
 }
 
 /** Reads and writes [ChatPreferences]. */
@@ -91,9 +97,11 @@ class SharedPreferencesChatSettings(
             .putBoolean(FELT_RECEIPTS, next.sendFeltReceipts)
             .putBoolean(STAY_REACHABLE, next.stayReachable)
             .putBoolean(AFTER_BOOT, next.reachableAfterBoot)
+            .putBoolean(OFFER_PENDING, next.reachableOfferPending)
             .putStringSet(ARCHIVED, next.archived)
             .putBoolean(ENTER_SENDS, next.enterSends)
-            .putBoolean(END_TO_END, next.endToEnd)
+            .putBoolean(PLAINTEXT_CHOSEN, !next.endToEnd)
+            .remove(OLD_END_TO_END)
             .putString(PITCH_FIT, next.pitchFit.name)
             .apply()
         writePassword(next.brokerPassword)
@@ -130,9 +138,12 @@ class SharedPreferencesChatSettings(
         sendFeltReceipts = prefs.getBoolean(FELT_RECEIPTS, true),
         stayReachable = prefs.getBoolean(STAY_REACHABLE, false),
         reachableAfterBoot = prefs.getBoolean(AFTER_BOOT, false),
+        reachableOfferPending = prefs.getBoolean(OFFER_PENDING, false),
         archived = prefs.getStringSet(ARCHIVED, null)?.toSet() ?: emptySet(),
         enterSends = prefs.getBoolean(ENTER_SENDS, false),
-        endToEnd = prefs.getBoolean(END_TO_END, false),
+        // Only a choice stored under PLAINTEXT_CHOSEN turns encryption off. Earlier versions wrote end_to_end=false with
+        // every other setting, so that old key cannot tell a choice from the old default: it is ignored.
+        endToEnd = !prefs.getBoolean(PLAINTEXT_CHOSEN, false),
         // A name a later version wrote and this one does not know falls back to the default.
         pitchFit = PitchFit.entries.firstOrNull { it.name == prefs.getString(PITCH_FIT, null) } ?: PitchFit.OCTAVES,
     )
@@ -149,9 +160,11 @@ class SharedPreferencesChatSettings(
         const val FELT_RECEIPTS = "felt_receipts"
         const val STAY_REACHABLE = "stay_reachable"
         const val AFTER_BOOT = "reachable_after_boot"
+        const val OFFER_PENDING = "reachable_offer_pending"
         const val ARCHIVED = "archived"
         const val ENTER_SENDS = "enter_sends"
-        const val END_TO_END = "end_to_end"
+        const val OLD_END_TO_END = "end_to_end"
+        const val PLAINTEXT_CHOSEN = "plaintext_chosen"
         const val PITCH_FIT = "pitch_fit"
     }
 }

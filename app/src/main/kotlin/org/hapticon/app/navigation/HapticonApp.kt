@@ -14,6 +14,7 @@ import androidx.compose.runtime.saveable.rememberSaveableStateHolder
 import androidx.compose.ui.Modifier
 import org.hapticon.app.di.AppContainer
 import org.hapticon.app.feature.chat.ChatsRoute
+import org.hapticon.app.feature.chat.rememberChatsNavigation
 import org.hapticon.app.feature.gesture.GesturesRoute
 import org.hapticon.app.feature.icons.IconsRoute
 import org.hapticon.app.feature.sensors.SensorsRoute
@@ -37,9 +38,13 @@ fun HapticonApp(
     // During a participant's session the bar is hidden: the participant sees the session and nothing else.
     val studyPreferences by (container.study?.settings?.preferences ?: NO_STUDY).collectAsStateWithLifecycle()
     val inSession = selected == TopLevelDestination.STUDY && studyPreferences?.activeSessionId != null
+    // Inside a conversation (any Chats screen but the list) the bar is hidden, as in Signal: the composer sits on the
+    // keyboard, and the bar's 80 dp go to the messages.
+    val chatsNavigation = rememberChatsNavigation()
+    val inChat = selected == TopLevelDestination.CHATS && container.chat != null && !chatsNavigation.atTopLevel
     Scaffold(
         bottomBar = {
-            if (!inSession) NavigationBar {
+            if (!inSession && !inChat) NavigationBar {
                 for (destination in TopLevelDestination.entries) {
                     NavigationBarItem(
                         selected = destination == selected,
@@ -56,7 +61,7 @@ fun HapticonApp(
             saveableStates.SaveableStateProvider(selected.name) {
                 when (selected) {
                     // A container built without chat (some tests) shows an empty Chats destination.
-                    TopLevelDestination.CHATS -> container.chat?.let { ChatsRoute(it, onOpenStudy = { onSelect(TopLevelDestination.STUDY) }) }
+                    TopLevelDestination.CHATS -> container.chat?.let { ChatsRoute(it, onOpenStudy = { onSelect(TopLevelDestination.STUDY) }, navigation = chatsNavigation) }
                     TopLevelDestination.ICONS -> IconsRoute(container)
                     TopLevelDestination.SENSORS -> SensorsRoute(container)
                     TopLevelDestination.STUDY -> StudyRoute(container)

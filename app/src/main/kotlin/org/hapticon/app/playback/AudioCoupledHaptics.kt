@@ -87,10 +87,12 @@ class IconAudioCache(
      * The WAV file of [pattern]: its signal ([org.hapticon.core.pattern.signal], every frequency key as it is, the
      * transients as bursts) in PCM16 at [sampleRate], rendered now if it is not cached.
      *
-     * @throws IllegalArgumentException when the pattern reaches the Nyquist frequency (it cannot be audio here).
+     * @throws IllegalArgumentException when the pattern reaches the Nyquist frequency (it cannot be audio here), or
+     *   plays longer than the safety cap ([HapticPattern.checkPlayable]).
      */
     @Throws(IOException::class)
     fun fileFor(pattern: HapticPattern): File {
+        pattern.checkPlayable()
         require(pattern.frequency.all { it.hertz < sampleRate / 2.0 }) { "${pattern.name} reaches ${sampleRate / 2} Hz, the Nyquist frequency at $sampleRate Hz" }
         val file = File(directory, "${keyOf(pattern)}.wav")
         if (file.isFile) {

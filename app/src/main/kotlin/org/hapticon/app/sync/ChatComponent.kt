@@ -28,6 +28,7 @@ import org.hapticon.messaging.Clock
 import org.hapticon.messaging.Messenger
 import org.hapticon.messaging.VibrationRateLimiter
 import org.hapticon.messaging.BrokerAddress
+import org.hapticon.messaging.mqtt.DeviceId
 import org.hapticon.messaging.mqtt.MqttMessenger
 import org.hapticon.messaging.mqtt.MqttSettings
 
@@ -55,7 +56,17 @@ class ChatComponent(
     val patterns: org.hapticon.app.data.RoomPatternRepository? = null,
     /** The user's client certificate for mutual TLS; null in containers built without one. */
     val certificates: org.hapticon.app.data.ClientCertificateRepository? = null,
+    /** Whether a peer has published end-to-end keys ([peerKeys]); reads key files, so never on the main thread. */
+    private val keysOf: (peer: String) -> PeerKeys = { PeerKeys.NOT_NEEDED },
+    /** Whether the phone has a network ([NetworkWatcher.online]); null while unknown. */
+    val online: kotlinx.coroutines.flow.StateFlow<Boolean?> = MutableStateFlow(null),
 ) {
+    /**
+     * Whether messages to [peer] can be sealed: [PeerKeys.NONE_PUBLISHED] when [peer] never published end-to-end keys
+     * (unknown on this broker, or an old client without encryption), which a "New chat" should say. Reads files.
+     */
+    suspend fun peerKeys(peer: String): PeerKeys = kotlinx.coroutines.withContext(Dispatchers.IO) { keysOf(peer) }
+
     /** An invite link opened from outside, waiting for the Chats screen to apply it. */
     val pendingInvite: MutableStateFlow<String?> = MutableStateFlow(null)
 
@@ -78,6 +89,7 @@ class ChatComponent(
             val settings = SharedPreferencesChatSettings(context)
             val keys = AppKeys(java.io.File(context.filesDir, "e2e"))
             val certificates = org.hapticon.app.data.ClientCertificateStore(java.io.File(context.filesDir, "client-certificate"))
+            val devices = java.io.File(context.filesDir, "mqtt-devices")
             val vibrator = defaultVibrator(context)
             // Audio support does not change while the app runs; asking for it costs an effect-library query.
             val audio = DeviceCapabilities.detect(context, vibrator)
@@ -96,7 +108,10 @@ class ChatComponent(
                 outbox = repository,
                 settings = settings,
                 messengerFactory = { user, broker, password ->
-                    mqttMessenger(user, broker, password, keys.takeIf { settings.preferences.value.endToEnd }, certificates.credentials())
+                    val sealed = settings.preferences.value.endToEnd
+                    // The user's explicit choice in Settings; logged at every session so it is never silent.
+                    if (!sealed) android.util.Log.w("ChatComponent", "end-to-end encryption is OFF for $user (chosen in Settings): the broker's operator can read and forge this account's messages")
+                    mqttMessenger(user, broker, password, keys.takeIf { sealed }, devices, certificates.credentials())
                 },
                 player = player,
                 rateLimiter = VibrationRateLimiter(Clock.MONOTONIC),
@@ -107,14 +122,18 @@ class ChatComponent(
             )
             sync.onIncoming = { message, alert -> notifier.show(message, alert) }
             // Lives as long as the process, like the sync it nudges.
-            NetworkWatcher(context, sync).start()
+            val network = NetworkWatcher(context, sync).also { it.start() }
             val probe: BrokerProbe = { user, broker, password -> probeBroker(settings, sync, user, broker, password) }
             val trustKey = { peer: String ->
                 val user = settings.preferences.value.userName
                 (user != null && keys.trust(user, peer)).also { trusted -> if (trusted) sync.keyTrusted(peer) }
             }
             val patterns = org.hapticon.app.data.RoomPatternRepository(db.patternDao())
-            return ChatComponent(repository, RoomIconRepository(db.iconDao()), settings, sync, player, device, probe, notifier, trustKey, patterns, certificates)
+            val keysOf = { peer: String -> peerKeysOf(peer, settings.preferences.value, sync.connection.value, keys) }
+            return ChatComponent(
+                repository, RoomIconRepository(db.iconDao()), settings, sync, player, device, probe, notifier, trustKey, patterns, certificates, keysOf,
+                online = network.online,
+            )
         }
 
         /**
@@ -147,25 +166,36 @@ class ChatComponent(
         )
 
         /**
-         * How the messenger of [user] connects to [broker]: with [credentials] on an `ssl://` broker, the client
+         * How the messenger of [user] connects to [broker] as [device], with the keep-alive the keep-alive alarm is timed for
+         * ([KeepAlive.MQTT_KEEP_ALIVE_SECONDS]): with [credentials] on an `ssl://` broker, the client
          * certificate logs in and the study CA in its chain is what the broker's certificate must chain to
          * (docs/security.md, "Client certificates"); a `tcp://` broker cannot carry one, so there the password
          * alone logs in. Throws [IllegalArgumentException] for an invalid address, or a certificate of another user.
          */
-        internal fun mqttSettings(user: String, broker: String, password: String?, credentials: ClientCredentials?): MqttSettings {
+        internal fun mqttSettings(user: String, broker: String, password: String?, device: DeviceId, credentials: ClientCredentials?): MqttSettings {
             val address = BrokerAddress.parse(broker)
             val tls = credentials?.takeIf { address.tls }
-            return MqttSettings(address, user, password, clientCertificate = tls?.certificate, trustedCertificates = tls?.trusted.orEmpty())
+            return MqttSettings(
+                address, user, password, device, keepAliveSeconds = KeepAlive.MQTT_KEEP_ALIVE_SECONDS,
+                clientCertificate = tls?.certificate, trustedCertificates = tls?.trusted.orEmpty(),
+            )
         }
 
         /**
          * The messenger of [user] at [broker]; with [keys], sealed end to end; with [credentials], logged in by
-         * client certificate ([mqttSettings]). The client id is the user name (the broker binds it to the login),
-         * so no per-device id any more. Null, logged, when the address is not valid or the end-to-end keys do not
-         * open (the Keystore key is gone): rather no chat than a plaintext one.
+         * client certificate ([mqttSettings]). Its broker session is this phone's own for [user] (client id
+         * `USER:DEVICE`, the device id kept in [devices]/USER, a secret: docs/security.md), so the user's other
+         * devices keep theirs. Null, logged, when the address is not valid, the device id cannot be kept, or the
+         * end-to-end keys do not open (the Keystore key is gone): rather no chat than a plaintext one.
          */
-        internal fun mqttMessenger(user: String, broker: String, password: String?, keys: AppKeys?, credentials: ClientCredentials? = null): Messenger? = try {
-            MqttMessenger(mqttSettings(user, broker, password, credentials), keys?.endToEnd(user))
+        internal fun mqttMessenger(
+            user: String, broker: String, password: String?, keys: AppKeys?, devices: java.io.File, credentials: ClientCredentials? = null,
+        ): Messenger? = try {
+            val device = DeviceId.loadOrCreate(java.io.File(devices, user))
+            MqttMessenger(mqttSettings(user, broker, password, device, credentials), keys?.endToEnd(user))
+        } catch (e: java.io.IOException) {
+            android.util.Log.w("ChatComponent", "no messenger for $user: this phone's device id cannot be kept (${e.message})")
+            null
         } catch (e: IllegalArgumentException) {
             android.util.Log.w("ChatComponent", "no messenger for $user at $broker: ${e.message}")
             null
@@ -175,11 +205,14 @@ class ChatComponent(
         }
 
         /**
-         * Tests [broker] for [user] through the real session: the settings are switched to it, and the answer is
-         * the first Connected or Failed state of that session within [PROBE_TIMEOUT_MILLIS]. On failure the
-         * previous settings come back, so nothing is saved. A separate probe client would be unsafe: the broker
-         * binds the client id to the user name, so a second connection as [user] would take over (and with a
-         * clean session erase) the user's queued messages; through the real session whatever arrives is stored.
+         * Tests [broker] for [user] through the real session, without saving anything first: the session runs as
+         * the candidate ([ChatSync.trySession]) while the settings keep the previous account, so no screen shows an
+         * account that is not yet there (first launch stays on its form, with what was typed). The answer is the
+         * first Connected or Failed state of that session within [timeoutMillis]; Connected saves the account (the
+         * session goes on as it is), anything else leaves the settings as they were. A separate probe client would
+         * be unsafe: the broker binds the client id to the user name, so a second connection as [user] would take
+         * over (and with a clean session erase) the user's queued messages; through the real session whatever
+         * arrives is stored.
          */
         internal suspend fun probeBroker(
             settings: ChatSettingsRepository,
@@ -189,20 +222,68 @@ class ChatComponent(
             password: String?,
             timeoutMillis: Long = PROBE_TIMEOUT_MILLIS,
         ): String? {
-            val previous = settings.preferences.value
             val target = ChatSync.SessionTarget(user, broker.toString(), password)
-            settings.update { it.copy(userName = user, brokerUrl = broker.toString(), brokerPassword = password) }
-            val state = kotlinx.coroutines.withTimeoutOrNull(timeoutMillis) { sync.settledStateOf(target) }
-            if (state == org.hapticon.messaging.ConnectionState.Connected) return null
-            val lastFailure = (sync.connection.value as? org.hapticon.messaging.ConnectionState.Connecting)?.lastFailure
-            settings.update { previous }
-            return when (state) {
-                is org.hapticon.messaging.ConnectionState.Failed -> "The broker at $broker refused the connection: ${state.reason}"
-                else -> "No answer from $broker within ${timeoutMillis / 1000} s. Is `hapticon broker --host ADDRESS` running, " +
-                    "and is this phone on the same network?" + (lastFailure?.let { " ($it)" } ?: "")
+            return sync.trySession(target) {
+                val state = kotlinx.coroutines.withTimeoutOrNull(timeoutMillis) { sync.settledStateOf(target) }
+                if (state == org.hapticon.messaging.ConnectionState.Connected) {
+                    // A first account (none before) owes the user the offer of Stay reachable, saved in the same
+                    // write: no screen ever sees the account without it (the chat list would flash by).
+                    settings.update {
+                        it.copy(
+                            userName = user, brokerUrl = broker.toString(), brokerPassword = password,
+                            reachableOfferPending = it.reachableOfferPending || it.userName == null,
+                        )
+                    }
+                    return@trySession null
+                }
+                val lastFailure = (sync.connection.value as? org.hapticon.messaging.ConnectionState.Connecting)?.lastFailure
+                when (state) {
+                    is org.hapticon.messaging.ConnectionState.Failed -> "The broker at $broker refused the connection: ${state.reason}"
+                    else -> "No answer from $broker within ${timeoutMillis / 1000} s. Is the broker running on the study computer, " +
+                        "and is this phone on the same network?" + (lastFailure?.let { " ($it)" } ?: "")
+                }
             }
         }
 
         private const val PROBE_TIMEOUT_MILLIS = 5_000L
+
+        /**
+         * What is known of [peer]'s end-to-end keys for the account of [prefs]: with encryption off nothing is needed; a
+         * pinned key means published; without one, a session that is [connection] Connected has read every retained key
+         * (`hapticon/v1/keys/+`), so [peer] published none; before that it is not known yet.
+         */
+        internal fun peerKeysOf(peer: String, prefs: org.hapticon.app.data.ChatPreferences, connection: org.hapticon.messaging.ConnectionState, keys: AppKeys): PeerKeys {
+            if (!prefs.endToEnd) return PeerKeys.NOT_NEEDED
+            if (!org.hapticon.messaging.Topics.isValidUserName(peer)) return PeerKeys.NONE_PUBLISHED // nobody can publish under it
+            val user = prefs.userName ?: return PeerKeys.NOT_KNOWN_YET
+            val known = try {
+                keys.endToEnd(user).hasKeyOf(peer)
+            } catch (e: java.security.GeneralSecurityException) {
+                return PeerKeys.NOT_KNOWN_YET // no keys of our own (the Keystore key is gone): the session does not run either
+            } catch (e: IllegalStateException) {
+                return PeerKeys.NOT_KNOWN_YET // a damaged pin file: the messenger refuses to guess too
+            }
+            return when {
+                known -> PeerKeys.PUBLISHED
+                connection == org.hapticon.messaging.ConnectionState.Connected -> PeerKeys.NONE_PUBLISHED
+                else -> PeerKeys.NOT_KNOWN_YET
+            }
+        }
+
     }
+}
+
+/** What [ChatComponent.peerKeys] knows of a peer's end-to-end keys. */
+enum class PeerKeys {
+    /** Encryption is off (the user's choice): no keys are needed. */
+    NOT_NEEDED,
+
+    /** The peer published keys: messages to it are sealed. */
+    PUBLISHED,
+
+    /** Connected, and the broker holds no keys of the peer: nothing can be sent until it connects with encryption on. */
+    NONE_PUBLISHED,
+
+    /** Not connected since the app started: the retained keys have not been read yet. */
+    NOT_KNOWN_YET,
 }

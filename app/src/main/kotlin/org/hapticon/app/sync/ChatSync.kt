@@ -89,6 +89,9 @@ class ChatSync(
     private val connectionState = MutableStateFlow<ConnectionState>(ConnectionState.Disconnected)
     // The user, broker and password that connectionState belongs to; null before the first session.
     private val sessionTarget = MutableStateFlow<SessionTarget?>(null)
+    // An account being tested (first launch, a new broker in Settings): the session runs as it, while the saved
+    // settings stay as they were until it answers (see [trySession]).
+    private val candidate = MutableStateFlow<SessionTarget?>(null)
     private val peers = MutableStateFlow<Map<String, Capabilities>>(emptyMap())
     private val openConversations = MutableStateFlow<Set<String>>(emptySet())
     private val hands = java.util.concurrent.ConcurrentHashMap<String, NetworkPartnerHand>()
@@ -127,6 +130,30 @@ class ChatSync(
     /** The latest capabilities each peer published (retained on the broker, so known soon after connecting). */
     val peerCapabilities: StateFlow<Map<String, Capabilities>> = peers.asStateFlow()
 
+    /** The users whose capabilities this session's messenger received, and whether that is all the broker has. */
+    private data class Directory(val users: Set<String> = emptySet(), val complete: Boolean = false)
+
+    @Volatile
+    private var directory = Directory()
+    private val known = MutableStateFlow<Set<String>?>(null)
+
+    /**
+     * Everyone who ever connected to the current broker, or null until that is known. Every client publishes its
+     * retained capabilities on every connection (here at each Connected), so the broker's retained capabilities are a
+     * directory of its users; a new subscription receives them all (RETAIN 1), and the broker queues the live copy of
+     * this phone's own publish behind them, so that copy's arrival completes the directory
+     * ([InboxEvent.CapabilitiesReceived.retained]; MqttMessengerTest). Users who connect later join as they publish.
+     * Null again while a new session subscribes afresh, and for good when the own publish never comes back.
+     */
+    val knownUsers: StateFlow<Set<String>?> = known.asStateFlow()
+
+    private fun learnUser(messenger: Messenger, event: InboxEvent.CapabilitiesReceived) {
+        val user = event.capabilities.user
+        val now = Directory(directory.users + user, directory.complete || (user == messenger.user && !event.retained))
+        directory = now
+        known.value = now.users.takeIf { now.complete }
+    }
+
     /** Whom a session connects as. */
     data class SessionTarget(val user: String, val brokerUrl: String, val password: String?) {
         override fun toString(): String = "SessionTarget($user at $brokerUrl)" // never the password
@@ -137,14 +164,30 @@ class ChatSync(
         kotlinx.coroutines.flow.combine(sessionTarget, connectionState) { current, state -> if (current == target) state else null }
             .first { it == ConnectionState.Connected || it is ConnectionState.Failed }!!
 
+    /**
+     * Runs the session as [target] without saving it, until [block] returns: the settings (and every screen
+     * that shows them) keep the saved account meanwhile. [block] saves the account when it answered; the
+     * session then goes on unchanged. Not saved, the session returns to the saved account.
+     */
+    suspend fun <T> trySession(target: SessionTarget, block: suspend () -> T): T {
+        candidate.value = target
+        try {
+            return block()
+        } finally {
+            candidate.value = null
+        }
+    }
+
     /** Starts syncing; reconnects with a new messenger whenever the user name, broker or password changes. Idempotent. */
     fun start() {
         if (job != null) return
         job = scope.launch {
-            val accounts = settings.preferences
-                // endToEnd too: switching it makes a new (sealing or plain) messenger.
-                .map { Triple(it.userName, it.brokerUrl, it.brokerPassword) to it.endToEnd }
-                .distinctUntilChanged()
+            // endToEnd too: switching it makes a new (sealing or plain) messenger. A candidate under test
+            // replaces the saved account; saving it afterwards maps to the same account, so the session goes on.
+            val accounts = kotlinx.coroutines.flow.combine(settings.preferences, candidate) { prefs, tried ->
+                val account = tried?.let { Triple(it.user, it.brokerUrl, it.password) } ?: Triple(prefs.userName, prefs.brokerUrl, prefs.brokerPassword)
+                account to prefs.endToEnd
+            }.distinctUntilChanged()
             kotlinx.coroutines.flow.combine(accounts, restarts) { account, _ -> account }
                 .collectLatest { (target, _) ->
                     val (user, broker, password) = target
@@ -182,7 +225,7 @@ class ChatSync(
      * connectivity callback, see [NetworkWatcher]). A session waiting out its reconnection backoff tries
      * at once: the user is reachable again within a round trip, not after up to 30 s. A session that
      * reads Connected but was made over another network is started afresh: its socket went with the old
-     * network, and keep-alive would notice only after up to 1.5 × 30 s. The session is persistent
+     * network, and keep-alive would notice only after up to 1.5 × 60 s. The session is persistent
      * (cleanSession=false) and the outbox keeps what is unsent, so a restart loses nothing.
      */
     fun networkAvailable(network: String) {
@@ -196,6 +239,30 @@ class ChatSync(
                 restarts.update { it + 1 }
             }
             else -> Unit
+        }
+    }
+
+    /**
+     * The keep-alive alarm woke the phone ([KeepAlive]): the MQTT client's own timers count only awake time, so
+     * after a sleep its keep-alive is late and a reconnection backoff may still be waiting. Connected, one round
+     * trip tells the broker the client lives and shows whether the connection does; none within
+     * [KeepAlive.ROUND_TRIP_TIMEOUT_MILLIS] starts a fresh session (persistent, and the outbox keeps what is
+     * unsent, so nothing is lost). Waiting to reconnect, it reconnects now. True when the broker answered.
+     */
+    suspend fun keepAlive(): Boolean {
+        val messenger = session?.messenger ?: return false
+        return when (messenger.state.value) {
+            ConnectionState.Connected -> messenger.ping(KeepAlive.ROUND_TRIP_TIMEOUT_MILLIS).also { alive ->
+                if (!alive && session?.messenger === messenger) {
+                    Log.i(TAG, "no answer to the keep-alive: starting a fresh session")
+                    restarts.update { it + 1 }
+                }
+            }
+            is ConnectionState.Connecting -> {
+                messenger.reconnectNow()
+                false
+            }
+            else -> false
         }
     }
 
@@ -243,6 +310,9 @@ class ChatSync(
     private suspend fun runSession(messenger: Messenger) = coroutineScope {
         val sender = OutboxSender(outbox, messenger, retryPolicy, clock)
         session = Session(messenger, sender)
+        // A new messenger subscribes afresh (possibly to another broker): its directory starts empty.
+        directory = Directory()
+        known.value = null
         try {
             launch {
                 // One collector, so every (re)connection the screens see is one that flushes what is owed. The
@@ -295,7 +365,10 @@ class ChatSync(
                     // The receiver has it: the outbox stops sending it again (OutboxSender, end to end).
                     outbox.markDelivered(event.receipt.messageId, event.receipt.from)
                 }
-                is InboxEvent.CapabilitiesReceived -> peers.update { it + (event.capabilities.user to event.capabilities) }
+                is InboxEvent.CapabilitiesReceived -> {
+                    peers.update { it + (event.capabilities.user to event.capabilities) }
+                    learnUser(messenger, event)
+                }
                 is InboxEvent.HandPoseReceived -> hands[event.pose.from]?.offer(event.pose, nanoClock())
                 is InboxEvent.Rejected -> {
                     Log.w(TAG, "rejected payload on ${event.topic}: ${event.rejection.reason} ${event.rejection.field ?: ""} ${event.rejection.detail}")

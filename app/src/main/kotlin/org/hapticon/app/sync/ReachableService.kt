@@ -33,7 +33,14 @@ import org.hapticon.messaging.ConnectionState
  * Type `remoteMessaging` (Android 14+): `dataSync` would be stopped after 6 hours a day on Android 15
  * and may not be started from BOOT_COMPLETED there; `remoteMessaging` has neither limit.
  * START_STICKY: if Android kills the process, it restarts the service, and the application restarts
- * the sync.
+ * the sync. While it runs, the keep-alive alarm ([KeepAlive]) wakes the phone once a minute so that the
+ * broker keeps hearing from it in Doze.
+ *
+ * Started by the user (Settings, the first-launch offer, the chat list's note), by the activity when the app
+ * opens with it chosen, after a restart or an app update ([BootReceiver], when the user chose restarts too),
+ * and by the keep-alive alarm should Android have stopped it. Android 12+ forbids starting a foreground service
+ * from the background except in listed cases; BOOT_COMPLETED and MY_PACKAGE_REPLACED are among them, and so are
+ * an exact alarm's broadcast and an app exempt from battery optimisation.
  */
 class ReachableService : Service() {
     private var scope: CoroutineScope? = null
@@ -42,11 +49,13 @@ class ReachableService : Service() {
 
     override fun onCreate() {
         super.onCreate()
+        running = true
         ensureChannel(this)
         val chat = chatHost.chat
         startInForeground(notification(this, chat?.settings?.preferences?.value?.brokerUrl.orEmpty(), ConnectionState.Disconnected))
         if (chat == null) return
         chat.sync.start()
+        KeepAlive.schedule(this)
         scope = CoroutineScope(SupervisorJob() + Dispatchers.Main.immediate).also { scope ->
             scope.launch {
                 combine(chat.sync.connection, chat.settings.preferences) { state, prefs -> prefs.brokerUrl to state }
@@ -58,6 +67,8 @@ class ReachableService : Service() {
     override fun onStartCommand(intent: Intent?, flags: Int, startId: Int): Int = START_STICKY
 
     override fun onDestroy() {
+        running = false
+        KeepAlive.cancel(this)
         scope?.cancel()
         scope = null
         super.onDestroy()
@@ -77,8 +88,25 @@ class ReachableService : Service() {
         const val ONGOING_ID: Int = 2
         const val CHANNEL: String = "reachable"
 
+        /** True between the service's onCreate and onDestroy in this process. */
+        @Volatile
+        var running: Boolean = false
+            private set
+
         fun start(context: Context) {
             ContextCompat.startForegroundService(context, Intent(context, ReachableService::class.java))
+        }
+
+        /**
+         * Starts the service when the user chose "Stay reachable" and it is not running; false when Android
+         * refused (a background start it does not allow now), logged.
+         */
+        fun startIfChosen(context: Context): Boolean {
+            val chosen = context.chatHost.chat?.settings?.preferences?.value?.stayReachable == true
+            if (!chosen || running) return chosen
+            return runCatching { start(context) }
+                .onFailure { android.util.Log.w("ReachableService", "cannot start Stay reachable now: ${it.message}") }
+                .isSuccess
         }
 
         fun stop(context: Context) {
@@ -118,11 +146,18 @@ class ReachableService : Service() {
     }
 }
 
-/** Starts "Stay reachable" again after a restart when the user chose so. */
+/**
+ * Starts "Stay reachable" again after the phone restarts, when the user chose restarts too, and after an update
+ * of the app (which stops its services), when Stay reachable was on.
+ */
 class BootReceiver : BroadcastReceiver() {
     override fun onReceive(context: Context, intent: Intent) {
-        if (intent.action != Intent.ACTION_BOOT_COMPLETED) return
         val prefs = context.chatHost.chat?.settings?.preferences?.value ?: return
-        if (prefs.stayReachable && prefs.reachableAfterBoot) ReachableService.start(context)
+        val start = when (intent.action) {
+            Intent.ACTION_BOOT_COMPLETED -> prefs.stayReachable && prefs.reachableAfterBoot
+            Intent.ACTION_MY_PACKAGE_REPLACED -> prefs.stayReachable
+            else -> false
+        }
+        if (start) ReachableService.startIfChosen(context)
     }
 }

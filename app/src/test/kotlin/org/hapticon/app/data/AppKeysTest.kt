@@ -15,6 +15,7 @@ import org.hapticon.messaging.e2e.EndToEnd
 import org.hapticon.messaging.e2e.Identity
 import org.hapticon.messaging.e2e.InMemoryKeyPins
 import org.hapticon.messaging.BrokerAddress
+import org.hapticon.messaging.mqtt.DeviceId
 import org.hapticon.messaging.mqtt.MqttMessenger
 import org.hapticon.messaging.mqtt.MqttSettings
 import org.junit.After
@@ -60,7 +61,7 @@ class AppKeysTest {
             assertEquals("the keys of alice are wrapped and no wrapping key was given", e.message)
         }
         TestAndroidKeyStore.keys.clear() // the Keystore key is gone: the messenger is not made at all
-        assertEquals(null, ChatComponent.mqttMessenger("alice", "tcp://127.0.0.1:1", "alice-secret", AppKeys(dir)))
+        assertEquals(null, ChatComponent.mqttMessenger("alice", "tcp://127.0.0.1:1", "alice-secret", AppKeys(dir), File(dir, "devices")))
     }
 
     @Test
@@ -69,10 +70,10 @@ class AppKeysTest {
         val url = "tcp://${EmbeddedBroker.HOST}:${broker.port}"
         val phoneEvents = LinkedBlockingQueue<InboxEvent>()
         val phoneKeys = AppKeys(dir).endToEnd("alice")
-        val phone: Messenger = ChatComponent.mqttMessenger("alice", url, "alice-secret", AppKeys(dir))!!
+        val phone: Messenger = ChatComponent.mqttMessenger("alice", url, "alice-secret", AppKeys(dir), File(dir, "devices"))!!
         val bobE2e = EndToEnd(Identity.generate("bob"), InMemoryKeyPins())
         val bobEvents = LinkedBlockingQueue<InboxEvent>()
-        val bob = MqttMessenger(MqttSettings(BrokerAddress.parse(url), "bob", "bob-secret"), bobE2e)
+        val bob = MqttMessenger(MqttSettings(BrokerAddress.parse(url), "bob", "bob-secret", DeviceId.generate()), bobE2e)
         runBlocking {
             withTimeout(20_000) {
                 bob.connect(InboxListener { bobEvents.put(it) })

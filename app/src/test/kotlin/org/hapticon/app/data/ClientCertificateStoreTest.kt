@@ -7,6 +7,7 @@ import java.time.Duration
 import java.time.Instant
 import org.hapticon.app.sync.ChatComponent
 import org.hapticon.messaging.broker.CertificateAuthority
+import org.hapticon.messaging.mqtt.DeviceId
 import org.junit.After
 import org.junit.Assert.assertArrayEquals
 import org.junit.Assert.assertEquals
@@ -167,16 +168,16 @@ class ClientCertificateStoreTest {
     fun messengerSettings_carryTheStoredCertificateAndStudyCa_onTlsOnly() {
         store().import(p12(), password, "p01")
         val credentials = store().credentials()
-        val tls = ChatComponent.mqttSettings("p01", "ssl://127.0.0.1:8883", null, credentials)
+        val tls = ChatComponent.mqttSettings("p01", "ssl://127.0.0.1:8883", null, DeviceId.generate(), credentials)
         assertEquals("p01", tls.clientCertificate?.user)
         assertArrayEquals(credentials!!.certificate.certificate.encoded, tls.clientCertificate!!.certificate.encoded)
         assertEquals(listOf(ca.certificate), tls.trustedCertificates)
         assertNull(tls.password)
         // A tcp:// broker cannot carry a certificate: the password logs in there.
-        val plain = ChatComponent.mqttSettings("p01", "tcp://127.0.0.1:1883", "pw", credentials)
+        val plain = ChatComponent.mqttSettings("p01", "tcp://127.0.0.1:1883", "pw", DeviceId.generate(), credentials)
         assertNull(plain.clientCertificate)
         assertEquals(emptyList<Any>(), plain.trustedCertificates)
         assertEquals("pw", plain.password)
-        assertNull(ChatComponent.mqttSettings("p01", "ssl://127.0.0.1:8883", "pw", null).clientCertificate)
+        assertNull(ChatComponent.mqttSettings("p01", "ssl://127.0.0.1:8883", "pw", DeviceId.generate(), null).clientCertificate)
     }
 }

@@ -84,7 +84,15 @@ class NavigationAndAccessibilityTest {
     }
 
     @Test
-    fun bottomBar_switchesBetweenIconsAndSensors() {
+    fun bottomBar_opensOnChats_switchesBetweenIconsAndSensors() {
+        // A messenger opens on its chats (here the first-launch form: no account yet).
+        rule.onNode(hasText("Chats") and isSelected()).assertExists()
+        // The first-launch form once the settings and Room have answered (Room on its own thread).
+        rule.waitUntil(10_000) { rule.onAllNodes(hasText("Welcome to Hapticon")).fetchSemanticsNodes().isNotEmpty() }
+        assertEveryControlIsNamed("Chats")
+
+        rule.onNode(hasText("Icons") and hasClickAction()).performClick()
+        rule.waitForIdle()
         rule.onNode(hasText("Icons") and isSelected()).assertExists()
         assertEveryControlIsNamed("Icons")
 

@@ -14,6 +14,8 @@ import org.hapticon.app.designsystem.HapticonSeed
 import org.hapticon.app.designsystem.seedColorScheme
 import org.hapticon.app.feature.chat.AccountCheck
 import org.hapticon.app.feature.chat.ChatClock
+import org.hapticon.app.feature.chat.ChatConnection
+import org.hapticon.app.feature.chat.NewChatProblem
 import org.hapticon.app.feature.chat.ChatListActions
 import org.hapticon.app.feature.chat.ChatListScreen
 import org.hapticon.app.feature.chat.ChatListUiState
@@ -93,6 +95,30 @@ class ChatsScreenshotTest : ScreenshotTest() {
     @Test
     fun list_badgesTimesAndPreviews() = screen("chats-list", variants = Variant.MAIN) { ChatListScreen(list, ChatListActions(), clock, now) }
 
+    /** Offline: the list is there as always (from Room), with one line under the top bar saying why nothing moves. */
+    @Test
+    fun list_offline_saysSoAndShowsTheChats() = screen("chats-list-offline") {
+        ChatListScreen(list.copy(connection = ChatConnection.Offline), ChatListActions(), clock, now)
+    }
+
+    /** The broker does not answer: the line names it. */
+    @Test
+    fun list_brokerUnreachable_saysWhichBroker() = screen("chats-list-unreachable", variants = listOf(Variant.Light)) {
+        ChatListScreen(list.copy(connection = ChatConnection.Unreachable("192.168.1.20:1883")), ChatListActions(), clock, now)
+    }
+
+    /** A conversation with someone who never connected to the broker: the line says why the message keeps one tick. */
+    @Test
+    fun conversation_peerNeverConnected_saysSo() = screen("chats-conversation-never-connected", variants = listOf(Variant.Light)) {
+        ConversationScreen(
+            ConversationUiState.Success(
+                "caroll", listOf(message(1, true, MessageState.SENT, now - 2 * 60_000, "Hi Carol, it's Alice from the lab").copy(conversation = "caroll")),
+                HapticIcon.PRESETS, null, null, null, null, peerNeverConnected = true,
+            ),
+            ConversationActions(), clock, now,
+        )
+    }
+
     @Test
     fun list_empty_saysWhatToDoFirst() = screen("chats-empty") {
         ChatListScreen(ChatListUiState.Success("alice", emptyList()), ChatListActions(), clock, now)
@@ -101,8 +127,9 @@ class ChatsScreenshotTest : ScreenshotTest() {
     @Test
     fun firstLaunch_failedTest_saysWhy() = screen("chats-first-launch") {
         FirstLaunchScreen(
-            "", AccountCheck.Failed("No answer from tcp://192.168.1.20:1883 within 5 s. Is `hapticon broker` running, and is this phone on the same network?"),
-        ) { _, _, _ -> }
+            "", AccountCheck.Failed("No answer from tcp://192.168.1.20:1883 within 5 s. Is the broker running on the study computer, and is this phone on the same network?"),
+            onSave = { _, _, _ -> },
+        )
     }
 
     @Test

@@ -21,6 +21,17 @@ import org.hapticon.sensor.live.CommandWriter
 import org.hapticon.sensor.live.describeProblem
 import org.hapticon.sensor.protocol.framed.FramedEncoder
 import org.hapticon.study.compliance.ComplianceStudy
+import org.hapticon.study.compliance.DrawingPoint
+import org.hapticon.app.feature.study.DrawingCanvas
+import androidx.compose.foundation.layout.Column
+import androidx.compose.foundation.layout.fillMaxWidth
+import androidx.compose.foundation.layout.padding
+import androidx.compose.material3.MaterialTheme
+import androidx.compose.material3.Text
+import androidx.compose.runtime.mutableStateListOf
+import androidx.compose.runtime.remember
+import androidx.compose.ui.Modifier
+import androidx.compose.ui.unit.dp
 import java.time.Instant
 import org.junit.Test
 
@@ -38,7 +49,9 @@ class SensingPapersScreenshotTest : ScreenshotTest() {
     @Test
     fun electrotactile_wholeArrayCheck() = screen("sensors-electrotactile-check") {
         ElectrotactileCalibrationScreen(
-            ElectrotactileUiState.WholeArrayCheck(sent = true, steps = listOf(66, 72, 61, 80, 63, 70, 64, 68, 75), boardReady = true, message = "Sent: press the sensor and feel the grains"),
+            ElectrotactileUiState.WholeArrayCheck(
+                sent = true, selected = 3, steps = listOf(66, 72, 61, 78, 63, 70, 64, 68, 75), boardReady = true, message = "Sent: press the sensor and feel the grains",
+            ),
             ElectrotactileActions(),
         )
     }
@@ -93,7 +106,7 @@ class SensingPapersScreenshotTest : ScreenshotTest() {
     fun compliance_trial() = screen("study-compliance-trial", Variant.MAIN) {
         val protocol = ComplianceStudy.PROTOCOL
         ComplianceScreen(
-            ComplianceUiState.Trial("p7", protocol.trials(6)[4], 60, protocol.instructions, sent = true, boardReady = true, message = null),
+            ComplianceUiState.Trial("p7", protocol, protocol.trials(6)[16], protocol.trialCount, sent = true, boardReady = true, message = null),
             ComplianceActions(),
         )
     }
@@ -101,8 +114,52 @@ class SensingPapersScreenshotTest : ScreenshotTest() {
     @Test
     fun compliance_setup() = screen("study-compliance-setup") {
         ComplianceScreen(
-            ComplianceUiState.Setup(ComplianceStudy.PROTOCOL, "p7", 6, listOf(66, 72, 61, 80, 63, 70, 64, 68, 75), boardReady = true, message = null),
+            ComplianceUiState.Setup(ComplianceStudy.ALL, ComplianceStudy.PROTOCOL, "p7", 6, calibration, boardReady = true, message = null),
             ComplianceActions(),
         )
     }
+
+    /** The break after the first repetition: the calibration is redone before the second (003_8ca1dc8f53472543.txt:150, :152). */
+    @Test
+    fun compliance_breakAndCalibration() = screen("study-compliance-break") {
+        val protocol = ComplianceStudy.PROTOCOL
+        ComplianceScreen(
+            ComplianceUiState.Calibrate("p7", protocol, protocol.trials(6)[12], isBreak = true, calibration = calibration, fresh = false, boardReady = true, message = null),
+            ComplianceActions(),
+        )
+    }
+
+    /** Task 2: yes/no, then the outline drawn on the device's outline (one already drawn). */
+    @Test
+    fun compliance_drawing() = screen("study-compliance-drawing", Variant.MAIN) {
+        val protocol = ComplianceStudy.SHAPES_PROTOCOL
+        val contours = remember {
+            mutableStateListOf(listOf(DrawingPoint(0.33, 0.31), DrawingPoint(0.52, 0.28), DrawingPoint(0.68, 0.36), DrawingPoint(0.7, 0.55), DrawingPoint(0.5, 0.66), DrawingPoint(0.31, 0.6)))
+        }
+        Column(Modifier.padding(16.dp)) {
+            Text("p3 · trial 4 of ${protocol.trialCount}: the drawing area", style = MaterialTheme.typography.titleMedium)
+            DrawingCanvas(contours, Modifier.fillMaxWidth())
+        }
+    }
+
+    @Test
+    fun compliance_drawingTrial() = screen("study-compliance-drawing-trial") {
+        val protocol = ComplianceStudy.SHAPES_PROTOCOL
+        ComplianceScreen(ComplianceUiState.Trial("p3", protocol, protocol.trials(2)[3], protocol.trialCount, sent = true, boardReady = true, message = null), ComplianceActions())
+    }
+
+    @Test
+    fun compliance_done() = screen("study-compliance-done") {
+        val protocol = ComplianceStudy.PROTOCOL
+        val medians = ComplianceStudy.CONDITIONS.associate { it.id to (it.grains / 10.0 + it.mask.pattern.activeCount / 6.0) }
+        ComplianceScreen(
+            ComplianceUiState.Done(
+                "p7", protocol, 36, java.io.File("p7-shaping-compliance.csv"), medians, summaryProblem = null,
+                exported = java.io.File("p7-shaping-compliance.csv"), boardReady = true, message = null,
+            ),
+            ComplianceActions(),
+        )
+    }
+
+    private val calibration = StoredCalibration(ElectrotactileCalibrationResult(listOf(66, 72, 61, 80, 63, 70, 64, 68, 75)), Instant.parse("2026-12-01T09:30:00Z"), "P07")
 }

@@ -23,8 +23,14 @@ import org.hapticon.messaging.InboxListener
 import org.hapticon.messaging.RetryPolicy
 import org.hapticon.messaging.broker.EmbeddedBroker
 import org.hapticon.messaging.BrokerAddress
+import org.hapticon.messaging.mqtt.DeviceId
 import org.hapticon.messaging.mqtt.MqttMessenger
 import org.hapticon.messaging.mqtt.MqttSettings
+import org.hapticon.messaging.MessagingException
+import org.hapticon.messaging.e2e.EndToEnd
+import org.hapticon.messaging.e2e.Identity
+import org.hapticon.messaging.e2e.InMemoryKeyPins
+import org.hapticon.app.data.TestAndroidKeyStore
 import org.junit.After
 import org.junit.Assert.assertEquals
 import org.junit.Assert.assertNull
@@ -39,7 +45,8 @@ import org.robolectric.annotation.Config
 
 /**
  * The app's own chat wiring (the application's container: settings, sync, notifier, probe and the
- * notification's receiver) against the embedded broker in a child JVM, with bob on another client.
+ * notification's receiver) against the embedded broker in a child JVM, with bob on another client. End to end
+ * as shipped: alice's keys are wrapped by a Keystore key (the in-memory test provider), bob seals too.
  */
 @RunWith(RobolectricTestRunner::class)
 @Config(sdk = [35])
@@ -56,6 +63,7 @@ class ChatOverBrokerTest {
 
     @Before
     fun setUp() {
+        TestAndroidKeyStore.install()
         shadowOf(app).grantPermissions(Manifest.permission.POST_NOTIFICATIONS)
         broker = BrokerProcess(temp.newFolder("broker"), BrokerProcess.freePort()).also { it.start() }
         address = BrokerAddress(EmbeddedBroker.HOST, broker.port)
@@ -68,7 +76,30 @@ class ChatOverBrokerTest {
         chat.settings.update { it.copy(userName = null) }
         withTimeoutOrNull(10_000) { chat.sync.connection.first { it != ConnectionState.Connected } }
         broker.stop()
+        TestAndroidKeyStore.uninstall()
     }
+
+    /** bob on his own client, sealing end to end with keys of his own. */
+    private fun sealingBob(): MqttMessenger {
+        val fast = RetryPolicy(initialDelayMillis = 50, maxDelayMillis = 500, jitter = 0.0)
+        return MqttMessenger(MqttSettings(address, "bob", "bob-secret", DeviceId.generate(), reconnectPolicy = fast), EndToEnd(Identity.generate("bob"), InMemoryKeyPins())).also { bob = it }
+    }
+
+    /** Sends as soon as [from] has the recipient's key (its retained key arrives just after connecting). */
+    private suspend fun sendWhenKeyKnown(from: MqttMessenger, to: String, message: ChatMessage) {
+        val deadline = System.nanoTime() + 20_000_000_000L
+        while (true) {
+            try {
+                return from.send(to, message)
+            } catch (e: MessagingException) {
+                if (System.nanoTime() > deadline) throw e
+                delay(20)
+            }
+        }
+    }
+
+    /** This phone's client id for alice: `alice:` and the device id the app keeps (ChatComponent.mqttMessenger). */
+    private fun phoneSession(): String = "alice:" + DeviceId.loadOrCreate(java.io.File(app.filesDir, "mqtt-devices/alice")).value
 
     private fun awaitTrue(what: String, condition: suspend () -> Boolean) = runBlocking {
         withTimeoutOrNull(20_000) { while (!condition()) delay(20) }
@@ -88,8 +119,8 @@ class ChatOverBrokerTest {
 
         assertNull(problem)
         assertEquals("alice", chat.settings.preferences.value.userName)
-        // The probe was the user's own persistent session (client id = user name), now in use; nothing else.
-        assertEquals(mapOf("alice" to true), broker.sessions())
+        // The probe was this phone's own persistent session of the user, now in use; nothing else.
+        assertEquals(mapOf(phoneSession() to true), broker.sessions())
     }
 
     @Test
@@ -111,7 +142,37 @@ class ChatOverBrokerTest {
         assertEquals(true, problem!!.startsWith("No answer from $nowhere within 5 s."))
         assertEquals(address.toString(), chat.settings.preferences.value.brokerUrl)
         runBlocking { withTimeout(20_000) { chat.sync.connection.first { it == ConnectionState.Connected } } }
-        assertEquals(mapOf("alice" to true), broker.sessions())
+        assertEquals(mapOf(phoneSession() to true), broker.sessions())
+    }
+
+    /**
+     * The honest tick: while alice's app is closed (no session; the broker keeps her persistent one and queues),
+     * bob's message gets no delivered receipt, however long he waits: his phone shows one tick. When alice's app
+     * runs again the queued message is stored, and only then does bob get "delivered" for it.
+     */
+    @Test
+    fun closedReceiver_noDeliveredReceiptUntilTheMessageIsStored() = runBlocking {
+        assertNull(probe("alice-secret"))
+        // Closed: the account's session ends (a clean disconnect; the broker keeps the session and queues).
+        chat.settings.update { it.copy(userName = null) }
+        awaitTrue("alice's session kept but disconnected") { broker.sessions() == mapOf(phoneSession() to false) }
+        val bobInbox = CopyOnWriteArrayList<InboxEvent>()
+        val bob = MqttMessenger(MqttSettings(address, "bob", "bob-secret", DeviceId.generate())).also { bob = it }
+        bob.connect(InboxListener { bobInbox += it })
+        val message = ChatMessage.compose("bob", "are you there?", null, HapticIcon.KNOCK, Clock.SYSTEM)
+        bob.send("alice", message)
+
+        delay(3_000)
+        // (Capabilities arrive, retained; receipts do not.)
+        assertEquals(emptyList<InboxEvent>(), bobInbox.filterIsInstance<InboxEvent.ReceiptReceived>())
+        assertEquals(emptyList<String>(), chat.repository.messages("bob").first().map { it.text })
+
+        // Open again: the queued message arrives, is stored, and bob hears "delivered" for exactly that message.
+        chat.settings.update { it.copy(userName = "alice") }
+        awaitTrue("bob's delivered receipt") { bobInbox.any { it is InboxEvent.ReceiptReceived } }
+        val receipt = bobInbox.filterIsInstance<InboxEvent.ReceiptReceived>().first().receipt
+        assertEquals(listOf(message.id, "alice", "DELIVERED"), listOf(receipt.messageId, receipt.from, receipt.state.name))
+        assertEquals(listOf("are you there?"), chat.repository.messages("bob").first().map { it.text })
     }
 
     /**
@@ -123,10 +184,9 @@ class ChatOverBrokerTest {
     fun replyFromTheNotification_reachesThePeerThroughTheBroker() = runBlocking {
         assertNull(probe("alice-secret"))
         val bobInbox = CopyOnWriteArrayList<InboxEvent>()
-        val fast = RetryPolicy(initialDelayMillis = 50, maxDelayMillis = 500, jitter = 0.0)
-        val bob = MqttMessenger(MqttSettings(address, "bob", "bob-secret", reconnectPolicy = fast)).also { bob = it }
+        val bob = sealingBob()
         bob.connect(InboxListener { bobInbox += it })
-        bob.send("alice", ChatMessage.compose("bob", "are you coming?", null, HapticIcon.KNOCK, Clock.SYSTEM))
+        sendWhenKeyKnown(bob, "alice", ChatMessage.compose("bob", "are you coming?", null, HapticIcon.KNOCK, Clock.SYSTEM))
 
         awaitTrue("the notification") { shadowOf(notifications).getNotification("bob", MessageNotifier.NOTIFICATION_ID) != null }
         val posted = shadowOf(notifications).getNotification("bob", MessageNotifier.NOTIFICATION_ID)
@@ -144,5 +204,26 @@ class ChatOverBrokerTest {
         awaitTrue("the notification cleared") { shadowOf(notifications).getNotification("bob", MessageNotifier.NOTIFICATION_ID) == null }
         val stored = chat.repository.messages("bob").first()
         assertEquals(listOf("are you coming?" to false, "on my way" to true), stored.map { it.text to it.outgoing })
+    }
+
+    /**
+     * End to end by default: the app's session publishes alice's key and pins bob's; a peer who never published a key
+     * (carol) is named as such for "New chat", and with encryption switched off no key is needed.
+     */
+    @Test
+    fun endToEndByDefault_peerWithKeysAndPeerWithout_areTold() = runBlocking {
+        assertEquals(true, chat.settings.preferences.value.endToEnd)
+        assertEquals(PeerKeys.NOT_KNOWN_YET, chat.peerKeys("bob")) // no account yet
+        val bobInbox = CopyOnWriteArrayList<InboxEvent>()
+        val bob = sealingBob()
+        bob.connect(InboxListener { bobInbox += it })
+        assertNull(probe("alice-secret"))
+        awaitTrue("bob's key pinned") { chat.peerKeys("bob") == PeerKeys.PUBLISHED }
+        assertEquals(PeerKeys.NONE_PUBLISHED, chat.peerKeys("carol"))
+        // alice's key was published on connecting: bob can seal for her, and what he sends is stored.
+        sendWhenKeyKnown(bob, "alice", ChatMessage.compose("bob", "sealed hello", null, null, Clock.SYSTEM))
+        awaitTrue("bob's sealed message stored") { chat.repository.messages("bob").first().any { it.text == "sealed hello" } }
+        chat.settings.update { it.copy(endToEnd = false) }
+        assertEquals(PeerKeys.NOT_NEEDED, chat.peerKeys("carol"))
     }
 }

@@ -30,6 +30,7 @@ import org.hapticon.messaging.RetryPolicy
 import org.hapticon.messaging.VibrationRateLimiter
 import org.hapticon.messaging.broker.EmbeddedBroker
 import org.hapticon.messaging.BrokerAddress
+import org.hapticon.messaging.mqtt.DeviceId
 import org.hapticon.messaging.mqtt.MqttMessenger
 import org.hapticon.messaging.mqtt.MqttSettings
 import org.junit.After
@@ -54,6 +55,9 @@ import kotlin.coroutines.EmptyCoroutineContext
 class ChatSyncReconnectTest {
     @get:Rule
     val temp = TemporaryFolder()
+
+    // Every messenger ChatSync makes is this phone's: one session across reconnections.
+    private val phoneDevice = DeviceId.generate()
 
     private val context = ApplicationProvider.getApplicationContext<Context>()
     private val scope = CoroutineScope(SupervisorJob() + Dispatchers.Default)
@@ -95,7 +99,7 @@ class ChatSyncReconnectTest {
         val sync = ChatSync(
             repository, repository, settings,
             { user, url, password ->
-                KilledMidPublish(MqttMessenger(MqttSettings(BrokerAddress.parse(url), user, password, reconnectPolicy = twoMinutes))).also { made.complete(it) }
+                KilledMidPublish(MqttMessenger(MqttSettings(BrokerAddress.parse(url), user, password, phoneDevice, reconnectPolicy = twoMinutes))).also { made.complete(it) }
             },
             AdaptiveHapticPlayer(usageVibrator(vibrator), { device }, { null }, renderContext = EmptyCoroutineContext), VibrationRateLimiter(Clock.MONOTONIC),
             { user -> RendererChoice.capabilitiesOf(user, device, null) }, scope,

@@ -427,6 +427,54 @@ class ChatSyncTest {
         assertEquals(before, settings.preferences.value)
     }
 
+    /** The settings, recording every write (the probe's are what a screen would show). */
+    private class RecordingSettings(private val inner: InMemoryChatSettings) : org.hapticon.app.data.ChatSettingsRepository {
+        val writes = java.util.concurrent.CopyOnWriteArrayList<ChatPreferences>()
+        override val preferences = inner.preferences
+        override fun update(transform: (ChatPreferences) -> ChatPreferences) {
+            inner.update(transform)
+            writes += inner.preferences.value
+        }
+    }
+
+    @Test
+    fun probe_firstLaunch_runsTheCandidateSessionWithoutWritingUntilItAnswers() = runBlocking {
+        scope.coroutineContext[kotlinx.coroutines.Job]!!.children.forEach { it.cancelAndJoin() }
+        settings.update { ChatPreferences() }
+        val made = java.util.concurrent.CopyOnWriteArrayList<String>()
+        val candidate = newSync(factory = { user, broker, _ -> made += "$user at $broker"; null })
+        candidate.start()
+        val recording = RecordingSettings(settings)
+
+        val problem = ChatComponent.probeBroker(recording, candidate, "carol", org.hapticon.messaging.BrokerAddress.parse("tcp://10.1.1.1:1883"), null, timeoutMillis = 300)
+
+        assertEquals(true, problem!!.startsWith("No answer from tcp://10.1.1.1:1883 within 0 s."))
+        // The session was tried as carol, while the settings (and every screen) never held her.
+        assertEquals(listOf("carol at tcp://10.1.1.1:1883"), made)
+        assertEquals(emptyList<ChatPreferences>(), recording.writes.toList())
+        assertNull(settings.preferences.value.userName)
+    }
+
+    @Test
+    fun probe_firstLaunch_answered_savesOnceWithTheOfferPending_andKeepsTheSession() = runBlocking {
+        scope.coroutineContext[kotlinx.coroutines.Job]!!.children.forEach { it.cancelAndJoin() }
+        settings.update { ChatPreferences() }
+        val made = java.util.concurrent.CopyOnWriteArrayList<TestMessenger>()
+        val candidate = newSync(factory = { user, _, _ -> TestMessenger(user).also { made += it } })
+        candidate.start()
+        val recording = RecordingSettings(settings)
+
+        assertNull(ChatComponent.probeBroker(recording, candidate, "carol", org.hapticon.messaging.BrokerAddress.parse("tcp://10.1.1.1:1883"), "pw"))
+
+        val saved = recording.writes.single()
+        assertEquals(listOf("carol", "tcp://10.1.1.1:1883", "pw"), listOf(saved.userName, saved.brokerUrl, saved.brokerPassword))
+        assertEquals(true, saved.reachableOfferPending)
+        // Saving the candidate it already ran as does not start another session.
+        kotlinx.coroutines.delay(200)
+        assertEquals(1, made.size)
+        assertEquals(org.hapticon.messaging.ConnectionState.Connected, candidate.connection.value)
+    }
+
     @Test
     fun securityRejections_becomeWarnings_otherRejectionsOnlyLogged() = runBlocking {
         await(messenger.state) { it == org.hapticon.messaging.ConnectionState.Connected }

@@ -121,4 +121,35 @@ class NetworkWatcherTest {
         awaitValue(5_000, { sync.connection.value }) { it == ConnectionState.Connected }
         assertEquals(0, made[0].nudges)
     }
+
+    /** What Android does when [netId], the default network, is gone with none to replace it. */
+    private fun networkLost(netId: Int) {
+        val network = ShadowNetwork.newInstance(netId)
+        shadowOf(connectivity).networkCallbacks.forEach { it.onLost(network) }
+    }
+
+    /** The chat screens' "Offline" line follows [NetworkWatcher.online]: the default network, and only its loss. */
+    @Test
+    fun online_followsTheDefaultNetwork_offlineOnlyWhenItGoesWithNoneToReplaceIt() {
+        val watcher = NetworkWatcher(context, sync("tcp://127.0.0.1:1", null) { _, _, _ -> null })
+        assertEquals(null, watcher.online.value)
+        watcher.start()
+        assertEquals(true, watcher.online.value) // Robolectric's phone has an active network
+        networkAvailable(100)
+        networkLost(99) // a network that is not the default one
+        assertEquals(true, watcher.online.value)
+        networkLost(100)
+        assertEquals(false, watcher.online.value)
+        networkAvailable(101)
+        assertEquals(true, watcher.online.value)
+    }
+
+    @Test
+    fun online_phoneOfflineWhenTheWatcherStarts_isFalseAtOnce() {
+        // No default network: Android then calls no callback at registration at all.
+        shadowOf(connectivity).setActiveNetworkInfo(null)
+        val watcher = NetworkWatcher(context, sync("tcp://127.0.0.1:1", null) { _, _, _ -> null })
+        watcher.start()
+        assertEquals(false, watcher.online.value)
+    }
 }

@@ -44,6 +44,7 @@ import org.hapticon.messaging.RetryPolicy
 import org.hapticon.messaging.VibrationRateLimiter
 import org.hapticon.messaging.broker.EmbeddedBroker
 import org.hapticon.messaging.BrokerAddress
+import org.hapticon.messaging.mqtt.DeviceId
 import org.hapticon.messaging.mqtt.MqttMessenger
 import org.hapticon.messaging.mqtt.MqttSettings
 import org.junit.After
@@ -69,6 +70,9 @@ class ReachableDeliveryTest {
     @get:Rule
     val temp = TemporaryFolder()
 
+    // Every messenger ChatSync makes is this phone's: one session across reconnections.
+    private val phoneDevice = DeviceId.generate()
+
     private val context = ApplicationProvider.getApplicationContext<Context>()
     private val vibrator = context.getSystemService(Vibrator::class.java)
     private val notifications = context.getSystemService(NotificationManager::class.java)
@@ -93,7 +97,7 @@ class ReachableDeliveryTest {
         val settings = InMemoryChatSettings(ChatPreferences(userName = "alice", brokerUrl = address.toString(), autoPlay = true, brokerPassword = "alice-secret"))
         sync = ChatSync(
             repository, repository, settings,
-            { user, url, password -> MqttMessenger(MqttSettings(BrokerAddress.parse(url), user, password, reconnectPolicy = fastReconnect)) },
+            { user, url, password -> MqttMessenger(MqttSettings(BrokerAddress.parse(url), user, password, phoneDevice, reconnectPolicy = fastReconnect)) },
             // Rendered on the calling thread: this test is about delivery (threading: MainThreadWorkTest).
             AdaptiveHapticPlayer(usageVibrator(vibrator), { device }, { null }, renderContext = EmptyCoroutineContext), VibrationRateLimiter(Clock.MONOTONIC),
             { user -> RendererChoice.capabilitiesOf(user, device, null) }, scope,
@@ -102,7 +106,7 @@ class ReachableDeliveryTest {
         sync.onIncoming = { message, alert -> notifier.show(message, alert) }
         sync.start()
         await(sync.connection) { it == ConnectionState.Connected }
-        bob = MqttMessenger(MqttSettings(address, "bob", "bob-secret", reconnectPolicy = fastReconnect))
+        bob = MqttMessenger(MqttSettings(address, "bob", "bob-secret", DeviceId.generate(), reconnectPolicy = fastReconnect))
         bob.connect(InboxListener { bobInbox += it })
     }
 

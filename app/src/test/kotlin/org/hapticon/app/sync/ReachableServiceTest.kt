@@ -39,19 +39,5 @@ class ReachableServiceTest {
         assertEquals("Refused by tcp://192.168.1.20:1883: not authorized", ReachableService.statusText(broker, ConnectionState.Failed("not authorized")))
     }
 
-    @Test
-    fun boot_startsTheServiceOnlyWhenChosen() {
-        val app = androidx.test.core.app.ApplicationProvider.getApplicationContext<org.hapticon.app.HapticonApplication>()
-        val settings = app.container.chat!!.settings
-        val boot = android.content.Intent(android.content.Intent.ACTION_BOOT_COMPLETED)
-        shadowOf(app).clearStartedServices()
-
-        settings.update { it.copy(stayReachable = true, reachableAfterBoot = false) }
-        BootReceiver().onReceive(app, boot)
-        assertEquals(null, shadowOf(app).nextStartedService)
-
-        settings.update { it.copy(reachableAfterBoot = true) }
-        BootReceiver().onReceive(app, boot)
-        assertEquals(ReachableService::class.java.name, shadowOf(app).nextStartedService?.component?.className)
-    }
+    // The boot path, through Android's broadcast to the manifest's receiver: KeepAliveTest.
 }

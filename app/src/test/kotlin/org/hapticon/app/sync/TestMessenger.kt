@@ -55,6 +55,18 @@ class TestMessenger(override val user: String) : Messenger {
         nudges++
     }
 
+    /** Whether the broker answers [ping] (false: a connection that died unnoticed); [pings] counts the round trips. */
+    @Volatile
+    var answersPing = true
+
+    @Volatile
+    var pings = 0
+
+    override suspend fun ping(timeoutMillis: Long): Boolean {
+        pings++
+        return connection.value == ConnectionState.Connected && answersPing
+    }
+
     override suspend fun disconnect() {
         connection.value = ConnectionState.Disconnected
     }

@@ -16,11 +16,12 @@ fun interface KeyInput {
 }
 
 /**
- * Shaping Compliance's per-person calibration (the electrotactile compliance illusion paper, CHI 2024) walked on the
+ * Shaping Compliance's per-person calibration (003_8ca1dc8f53472543.txt:152) walked on the
  * terminal, one key per answer, through the same state machine the app uses ([ElectrotactileCalibration]): each
  * electrode of the 3×3 array gets a 200 ms stimulus starting at 0.8 mA (step 60, 0.81 mA) and rising one hardware
  * step (13.5 µA) per "not yet" until the person calls it clear and pain-free; then the whole-array check, 39 grains
- * on all nine electrodes at their levels while the person presses the sensor.
+ * on all nine electrodes at their levels while the person presses the sensor, adjusted until the sensation is uniform
+ * (003_8ca1dc8f53472543.txt:152): one electrode that stands out goes a step weaker or stronger, or all go a step down.
  *
  * Every stimulus goes to the board through [link] (STIMULATE, then SET_GRAINS for the check) and its ack or refusal
  * is printed as one line. The 2.7 mA cap holds three times over: the state machine never raises past step 200 (a
@@ -29,6 +30,7 @@ fun interface KeyInput {
  *
  * Keys: `u`, `+` or space = not yet (one step up, stimulus again); `d` or `-` = too strong (one step down, again);
  * `r` = the same stimulus again; `y` or Enter = clear and pain-free (next electrode; in the check: done);
+ * in the check, `1`–`9` = pick the electrode that stands out, then `w` = that one weaker, `s` = that one stronger;
  * `q` = stop without a result.
  *
  * @param rangeOverride the force range for the check when the board announces none (a channel in physical units).
@@ -40,6 +42,9 @@ class CalibrationWalk(
     private val rangeOverride: FirmwareForceRange? = null,
 ) {
     private val calibration = ElectrotactileCalibration()
+
+    /** The electrode picked in the whole-array check (0..8), or null before one is. */
+    private var picked: Int? = null
 
     /** Walks the calibration; returns the result, or null when the person stopped (q) or input ended first. */
     fun run(): ElectrotactileCalibrationResult? {
@@ -95,7 +100,18 @@ class CalibrationWalk(
                 sendCheck()
             }
             'r' -> sendCheck()
-            else -> out.println("whole-array check: y/Enter feels right, d/- too strong (all one step down), r send again, q stop")
+            in '1'..'9' -> {
+                picked = key - '1'
+                out.println("electrode $key picked: w weaker, s stronger")
+            }
+            'w', 's' -> {
+                val electrode = picked ?: return out.println("pick the electrode that stands out first: 1-9")
+                if (key == 'w') calibration.weaker(electrode) else calibration.stronger(electrode)
+                val step = calibration.steps()[electrode]
+                out.println("electrode ${electrode + 1}: step $step = ${ma(AmplitudeSteps.milliampsOf(step))} mA")
+                sendCheck()
+            }
+            else -> out.println(CHECK_HELP)
         }
     }
 
@@ -113,7 +129,7 @@ class CalibrationWalk(
         }
         val outcome = link.send(FirmwareGrainParams.wholeArrayCheck(calibration.steps(), range))
         out.println("whole-array check, ${ElectrotactileCalibration.CHECK_GRAINS} grains on all 9 electrodes: ${verdict(outcome)}")
-        if (outcome.accepted) out.println("press the sensor and feel the grains: y/Enter feels right, d/- too strong")
+        if (outcome.accepted) out.println("press the sensor and feel the grains: y/Enter uniform and pain-free, d/- all too strong, 1-9 then w/s one electrode")
     }
 
     /** `acknowledged`, or the app's one-line problem ("The board refused …: reason"). */
@@ -123,5 +139,7 @@ class CalibrationWalk(
 
     private companion object {
         const val KEY_HELP = "keys: u/+/space not yet, d/- too strong, r again, y/Enter clear and pain-free, q stop"
+        const val CHECK_HELP = "whole-array check: y/Enter uniform and pain-free, d/- too strong (all one step down), " +
+            "1-9 pick an electrode then w weaker / s stronger, r send again, q stop"
     }
 }

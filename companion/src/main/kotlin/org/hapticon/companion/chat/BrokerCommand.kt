@@ -29,9 +29,10 @@ import java.io.Reader
  * rules as the Mosquitto deployment. `--allow-anonymous` switches that off, loudly. [waitForStop] blocks
  * until the broker should stop; tests pass their own.
  *
- * `hapticon broker adduser NAME [--data DIR | --users FILE] [--password-file FILE]` adds a user or
- * changes its password; the password comes from the file's first line, else from the terminal (asked
- * twice, not echoed), else from the first line of [input]. A running broker sees the change at once.
+ * `hapticon broker adduser NAME [--data DIR | --users FILE] [--password-file FILE | --generate] [--iterations N]` adds
+ * a user or changes its password; the password comes from the file's first line, else from the terminal (asked
+ * twice, not echoed), else from the first line of [input]; `--generate` makes a random one and prints it once. It is
+ * stored with N PBKDF2 rounds (210,000 by default). A running broker sees the change at once.
  *
  * `--tls-port` adds a TLS listener on `--host` (the plain one then stays on 127.0.0.1) with the broker certificate
  * of `hapticon broker ca init`; `--client-certs` (default required) says whether clients must show a certificate of
@@ -222,15 +223,23 @@ private fun prepareSecurity(arguments: Arguments, data: File, console: Console):
 }
 
 private fun addUser(args: List<String>, console: Console, input: Reader) {
-    val arguments = Arguments.parse("broker adduser", args, valueOptions = setOf("data", "users", "password-file"))
+    val arguments = Arguments.parse("broker adduser", args, valueOptions = setOf("data", "users", "password-file", "iterations"), flagOptions = setOf("generate"))
     val name = arguments.single("a user name")
     if (!Topics.isValidUserName(name)) {
         throw UsageException("the user name must be 1..${Topics.MAX_USER_NAME_LENGTH} letters, digits, '.', '_' or '-', starting with a letter or digit; got '$name'")
     }
+    val iterations = arguments.int("iterations", PasswordFile.DEFAULT_ITERATIONS)
+    if (iterations !in 1..MAX_ITERATIONS) throw UsageException("--iterations must be in 1..$MAX_ITERATIONS, got $iterations")
+    val generate = arguments.flag("generate")
+    if (generate && arguments.value("password-file") != null) throw UsageException("--generate excludes --password-file")
     val users = File(arguments.value("users") ?: File(arguments.value("data") ?: defaultDataDirectory(), "passwd").path)
-    val password = arguments.value("password-file")?.let(::readPasswordFile) ?: askPassword(name, input)
+    val password = when {
+        generate -> generatedPassword()
+        else -> arguments.value("password-file")?.let(::readPasswordFile) ?: askPassword(name, input)
+    }
     try {
-        PasswordFile(users).add(name, password)
+        PasswordFile(users).add(name, password, iterations)
+        if (generate) console.out.println("broker: password of $name: ${String(password)} (shown once; give it to $name)")
     } catch (e: IOException) {
         throw UsageException("cannot write the users file $users: ${e.message}")
     } finally {
@@ -238,6 +247,19 @@ private fun addUser(args: List<String>, console: Console, input: Reader) {
     }
     console.out.println("broker: $name can connect now (users file $users)")
 }
+
+/**
+ * 100 random bits as four groups of five letters and digits (base32 without 0, 1, 8, 9, easy to type on a phone). A
+ * password nobody can guess needs no slow hash (docs/security.md, "Floods and guessing"): with it, `--iterations 101`
+ * keeps Mosquitto, which checks passwords on its only thread, fast under a wrong-password flood.
+ */
+private fun generatedPassword(): CharArray {
+    val alphabet = "abcdefghijklmnopqrstuvwxyz234567"
+    val random = java.security.SecureRandom()
+    return CharArray(23) { i -> if (i % 6 == 5) '-' else alphabet[random.nextInt(alphabet.length)] }
+}
+
+private const val MAX_ITERATIONS = 10_000_000
 
 private fun askPassword(name: String, input: Reader): CharArray {
     val terminal = System.console()

@@ -9,19 +9,32 @@ import java.util.Locale
 
 /** How the terminal chat shows messages, icons and capabilities. Pure functions, so tests pin the wording. */
 object ChatFormat {
-    /** `bob: hello [sticker hug] [icon knock: …]`, with [message]'s text made safe for a terminal. */
+    /**
+     * `bob: hello [sticker hug] [icon knock: …]`, with [message]'s text made safe for a terminal. A text of several
+     * lines continues under its sender, each further line starting with spaces as wide as the name and `│ `, so no
+     * line a peer writes can start at the left edge and pass for another sender's message or for the chat's own news:
+     * ```
+     * bob: first line
+     *    │ alice: not alice
+     * ```
+     */
     fun message(message: ChatMessage): String = buildString {
         append(message.sender).append(':')
-        if (message.text.isNotEmpty()) append(' ').append(terminalSafe(message.text))
+        if (message.text.isNotEmpty()) {
+            append(' ').append(terminalSafe(message.text).replace("\n", "\n" + " ".repeat(message.sender.length) + CONTINUATION))
+        }
         message.sticker?.let { append(" [sticker ").append(it).append(']') }
         message.icon?.let { append(" [").append(icon(it)).append(']') }
         message.pattern?.let { append(" [").append(pattern(it)).append(']') }
     }
 
+    /** What starts each further line of a message, after spaces as wide as the sender's name. */
+    const val CONTINUATION: String = "│ "
+
     /** A pattern's name and shape, e.g. `pattern boing: 0.400 s, 3 amplitude keys, 110.0–220.0 Hz, 1 transient`. */
     fun pattern(pattern: HapticPattern): String = String.format(
         Locale.ROOT, "pattern %s: %.3f s, %d amplitude keys, %.1f–%.1f Hz, %d transient%s",
-        terminalSafe(pattern.name), pattern.duration, pattern.amplitude.size, pattern.frequency.minOf { it.hertz },
+        oneLine(pattern.name), pattern.duration, pattern.amplitude.size, pattern.frequency.minOf { it.hertz },
         pattern.frequency.maxOf { it.hertz }, pattern.transients.size, if (pattern.transients.size == 1) "" else "s",
     )
 
@@ -33,7 +46,7 @@ object ChatFormat {
         val repeats = if (icon.count > 1) ", ${icon.count}× every ${number(icon.period)} s" else ""
         return String.format(
             Locale.ROOT, "icon %s: attack %s s, sustain %s s, release %s s, level %s, note %s (%.1f Hz)%s, %.3f s",
-            terminalSafe(icon.name), number(icon.attack), number(icon.sustain), number(icon.release), number(icon.level),
+            oneLine(icon.name), number(icon.attack), number(icon.sustain), number(icon.release), number(icon.level),
             number(icon.note), icon.frequency, repeats, icon.duration,
         )
     }
@@ -62,9 +75,17 @@ object ChatFormat {
      * `\uXXXX`, so a received message cannot move the cursor, clear the screen, retitle the terminal or
      * disguise its text.
      */
-    fun terminalSafe(text: String): String = buildString(text.length) {
+    fun terminalSafe(text: String): String = escape(text) { unsafeInTerminal(it) }
+
+    /**
+     * [text] for a place that must stay one line (an icon's name, the `wrote ….wav` line, a rejection's detail): like
+     * [terminalSafe], and line breaks and tabs shown as `\u000a` and `\u0009` too.
+     */
+    fun oneLine(text: String): String = escape(text) { it == '\n' || it == '\t' || unsafeInTerminal(it) }
+
+    private inline fun escape(text: String, unsafe: (Char) -> Boolean): String = buildString(text.length) {
         for (c in text) {
-            if (unsafeInTerminal(c)) {
+            if (unsafe(c)) {
                 append(String.format(Locale.ROOT, "\\u%04x", c.code))
             } else {
                 append(c)

@@ -35,6 +35,8 @@ import org.hapticon.messaging.InboxGate
 import org.hapticon.messaging.InboxListener
 import org.hapticon.messaging.InvalidMessageException
 import org.hapticon.messaging.Messenger
+import org.hapticon.messaging.Outbox
+import org.hapticon.messaging.OutboxEntry
 import org.hapticon.messaging.OutboxSender
 import org.hapticon.messaging.Receipt
 import org.hapticon.messaging.ReceiptState
@@ -54,10 +56,14 @@ import kotlin.concurrent.thread
  * A terminal chat for [messenger]'s user: lines read from the input are sent to the current peer, what
  * arrives is printed to [out], connection news and rejected payloads go to [err].
  *
- * Typed messages go through an outbox, so they wait while the broker is unreachable. Received messages
- * pass an [InboxGate] (repeats dropped, icons rate-limited), are acknowledged with a delivered receipt,
- * and get a read receipt when the user next enters a line (the terminal showed them by then). A laptop
- * cannot vibrate: with [wavDir], icons the gate lets through are rendered to WAV files there instead.
+ * Typed messages go through [outbox], so they wait while the broker is unreachable, and stay there until the
+ * receiver's delivered receipt: with a [ChatStore] across restarts too (a new session sends what an earlier one left
+ * unconfirmed, and `/pending` lists what is still unconfirmed). Received messages pass an [InboxGate] (repeats
+ * dropped, icons rate-limited; with a [ChatStore] as its deduplicator, across restarts), are shown, then acknowledged
+ * with a delivered receipt, and get a read receipt when the user next enters a line (the terminal showed them by
+ * then). Whatever a peer wrote is shown neutralised ([ChatFormat]): control characters escaped, further lines of a
+ * text indented under their sender. A laptop cannot vibrate: with [wavDir], icons the gate lets through are rendered
+ * to WAV files there instead.
  */
 class ChatSession(
     private val messenger: Messenger,
@@ -70,9 +76,12 @@ class ChatSession(
     private val drainTimeoutMillis: Long = 5_000,
     /** The end-to-end protection [messenger] uses, for `/safety` and `/trust`; null when it is off. */
     private val e2e: EndToEnd? = null,
+    /** Where typed messages wait for their receipts. */
+    private val outbox: Outbox = InMemoryOutbox(),
+    /** Where [outbox] keeps them across restarts, for the user's information; null when it dies with the process. */
+    private val keptIn: File? = null,
 ) : InboxListener {
     private val user = messenger.user
-    private val outbox = InMemoryOutbox()
     private val sender = OutboxSender(outbox, messenger, clock = clock)
     @Volatile private var peer: String? = initialPeer
     private val unread = ArrayList<ChatMessage>() // shown, read receipt not yet sent
@@ -106,6 +115,7 @@ class ChatSession(
                 if (line == null) break
             }
         }
+        resumeEarlierSession()
         coroutineScope {
             val background = CoroutineScope(coroutineContext + SupervisorJob(coroutineContext.job))
             background.launch { reportConnection() }
@@ -129,20 +139,48 @@ class ChatSession(
                 }
                 if (connection.isCompleted || messenger.state.value is ConnectionState.Failed) connection.await()
                 val left = drainOutbox()
-                val unconfirmed = outbox.pending().count { it.awaitingReceipt }
-                if (unconfirmed > 0) {
-                    err.println("chat: $unconfirmed message(s) reached the broker but were not yet confirmed by the receiver; nothing will send them again after this process ends")
+                val unconfirmed = outbox.pending().filter { it.awaitingReceipt }
+                if (unconfirmed.isNotEmpty()) {
+                    val fate = keptIn?.let { "kept in $it and sent again at the next start" } ?: "nothing will send them again after this process ends"
+                    err.println("chat: ${unconfirmed.size} message(s) reached the broker but were not yet confirmed by the receiver; $fate:")
+                    listPending(unconfirmed, err)
                 }
                 if (left > 0) {
                     val why = (messenger.state.value as? ConnectionState.Connecting)?.lastFailure ?: lastFailure ?: "the broker did not acknowledge them"
+                    val fate = keptIn?.let { "kept in $it and sent at the next start" } ?: "they are lost with this process"
                     // One line and a non-zero exit: a script piping lines in must learn that they did not go out.
-                    throw UsageException("$left message(s) not delivered ($why); they are lost with this process")
+                    throw UsageException("$left message(s) not delivered ($why); $fate")
                 }
             } finally {
                 background.cancel()
                 withContext(NonCancellable) { messenger.disconnect() }
             }
         }
+    }
+
+    /**
+     * Says what an earlier session left unconfirmed and makes all of it due at once: that session may have ended long
+     * ago, and a broker may have lost what it acknowledged (the receiver drops a repeat by id).
+     */
+    private suspend fun resumeEarlierSession() {
+        val earlier = outbox.pending()
+        if (earlier.isEmpty()) return
+        val now = clock.nowMillis()
+        for (entry in earlier) {
+            sentTexts[entry.message.id] = mention(entry.message)
+            if (entry.awaitingReceipt) outbox.markSent(entry.message.id, now)
+        }
+        err.println("chat: ${earlier.size} message(s) of an earlier session not yet confirmed by their receivers; sending them again:")
+        listPending(earlier, err)
+    }
+
+    /** One line per entry, oldest first, at most [MAX_LISTED] (then how many more). */
+    private fun listPending(entries: List<OutboxEntry>, to: PrintStream) {
+        for (entry in entries.take(MAX_LISTED)) {
+            val state = if (entry.awaitingReceipt) "reached the broker, no receipt yet" else "not yet at the broker" + (entry.lastError?.let { ": " + ChatFormat.oneLine(it) } ?: "")
+            to.println("  … to ${entry.recipient}: ${mention(entry.message)} ($state)")
+        }
+        if (entries.size > MAX_LISTED) to.println("  … and ${entries.size - MAX_LISTED} more")
     }
 
     private suspend fun readLines(lines: Channel<String?>, connection: Deferred<Unit>) {
@@ -199,6 +237,15 @@ class ChatSession(
                     say("no icon sent: ${e.message}")
                 }
             }
+            "/pending" -> {
+                val pending = outbox.pending()
+                if (pending.isEmpty()) {
+                    say("every message you sent is confirmed by its receiver")
+                } else {
+                    say("${pending.size} message(s) not yet confirmed by their receivers:")
+                    synchronized(out) { listPending(pending, out) }
+                }
+            }
             "/safety" -> say(safety(rest.ifEmpty { peer }))
             "/trust" -> say(trust(rest))
             "/sticker" -> send(rest.substringAfter(' ', ""), sticker = rest.substringBefore(' '), icon = null)
@@ -208,13 +255,13 @@ class ChatSession(
     }
 
     private fun safety(of: String?): String {
-        val e2e = e2e ?: return "end-to-end encryption is off (start the chat with --e2e)"
+        val e2e = e2e ?: return "end-to-end encryption is off (this chat was started with --plaintext)"
         if (of == null || !Topics.isValidUserName(of)) return "usage: /safety PEER"
         return e2e.safetyNumber(of)?.let { "safety number with $of: $it (compare it with $of's)" } ?: "no key of $of yet"
     }
 
     private fun trust(user: String): String {
-        val e2e = e2e ?: return "end-to-end encryption is off (start the chat with --e2e)"
+        val e2e = e2e ?: return "end-to-end encryption is off (this chat was started with --plaintext)"
         if (!Topics.isValidUserName(user)) return "usage: /trust PEER"
         val trusted = e2e.trust(user) ?: return "no changed key of $user is waiting"
         return "now trusting $user's new key; safety number ${SafetyNumber.of(e2e.identity.bundle, trusted)}"
@@ -237,7 +284,9 @@ class ChatSession(
             is InboxEvent.MessageReceived -> received(event.message)
             is InboxEvent.ReceiptReceived -> {
                 val r = event.receipt
-                runBlocking { sender.confirm(r) } // the message is done: it leaves the outbox
+                val confirmed = runBlocking { sender.confirm(r) } // the message is done: it leaves the outbox
+                // Each copy of a resent message is acknowledged: only the receipt that confirmed it is news.
+                if (r.state == ReceiptState.DELIVERED && !confirmed) return
                 val what = sentTexts[r.messageId] ?: "message ${r.messageId.take(8)}"
                 say(
                     when (r.state) {
@@ -256,7 +305,7 @@ class ChatSession(
             is InboxEvent.HandPoseReceived -> Unit
             is InboxEvent.Rejected -> {
                 val r = event.rejection
-                err.println("chat: rejected a payload on ${event.topic}: ${r.reason}${r.field?.let { " ($it)" } ?: ""}: ${r.detail}")
+                err.println("chat: rejected a payload on ${ChatFormat.oneLine(event.topic)}: ${r.reason}${r.field?.let { " (${ChatFormat.oneLine(it)})" } ?: ""}: ${ChatFormat.oneLine(r.detail)}")
                 if (r.reason == RejectionReason.KEY_CHANGED) {
                     val who = Topics.inboxSender(user, event.topic) ?: Topics.keysOwner(event.topic)
                     // Signal's rule: a changed key is shown, never silently accepted; the user decides after comparing.
@@ -267,10 +316,15 @@ class ChatSession(
     }
 
     private fun received(message: ChatMessage) {
+        // Recorded as seen, then shown, then acknowledged: the delivered receipt says the user has it.
+        val admission = gate.admit(message) as? Admission.New
+        if (admission != null) show(message, admission)
         // Every copy is acknowledged, repeats too: the sender resends until a delivered receipt arrives, and
         // the first receipt may have been lost.
         receipts.trySend(message.sender to Receipt(message.id, user, ReceiptState.DELIVERED, clock.nowMillis()))
-        val admission = gate.admit(message) as? Admission.New ?: return // a repeat: it took effect already
+    }
+
+    private fun show(message: ChatMessage, admission: Admission.New) {
         say(ChatFormat.message(message))
         synchronized(unread) { unread += message }
         if (message.icon == null && message.pattern == null) return
@@ -288,9 +342,11 @@ class ChatSession(
         try {
             val icon = message.icon
             val pattern = message.pattern
-            say("  " + if (icon != null) WavExport.write(icon, AudioSettings(), file) else writeWav(pattern!!, file, AudioSettings().sampleRate, AudioSettings().encoding))
+            // The line names the icon, which the peer chose: one line, control characters escaped.
+            val wrote = if (icon != null) WavExport.write(icon, AudioSettings(), file) else writeWav(pattern!!, file, AudioSettings().sampleRate, AudioSettings().encoding)
+            say("  " + ChatFormat.oneLine(wrote))
         } catch (e: UsageException) {
-            say("  (icon not rendered: ${e.message})")
+            say("  (icon not rendered: ${ChatFormat.oneLine(e.message.orEmpty())})")
         }
     }
 
@@ -356,9 +412,9 @@ class ChatSession(
     }
 
     private fun mention(message: ChatMessage): String = when {
-        message.text.isNotEmpty() -> "\"" + ChatFormat.terminalSafe(message.text.take(40)) + (if (message.text.length > 40) "…\"" else "\"")
-        message.icon != null -> "icon ${message.icon!!.name}"
-        message.pattern != null -> "pattern ${message.pattern!!.name}"
+        message.text.isNotEmpty() -> "\"" + ChatFormat.oneLine(message.text.take(40)) + (if (message.text.length > 40) "…\"" else "\"")
+        message.icon != null -> "icon ${ChatFormat.oneLine(message.icon!!.name)}"
+        message.pattern != null -> "pattern ${ChatFormat.oneLine(message.pattern!!.name)}"
         else -> "sticker ${message.sticker}"
     }
 
@@ -372,12 +428,14 @@ class ChatSession(
             |  /to PEER              talk to PEER from now on
             |  /safety [PEER]        show the safety number with PEER (end-to-end encryption)
             |  /trust PEER           accept PEER's changed key after comparing safety numbers
+            |  /pending              list the messages their receivers have not confirmed yet
             |  /quit                 leave (so does end of input)
         """.trimMargin()
 
         private const val DRAIN_POLL_MILLIS = 20L
         private const val RECEIPT_GRACE_MILLIS = 1_000L
         private const val MAX_KNOWN_CAPABILITIES = 1_000
+        private const val MAX_LISTED = 10
     }
 
     private object ConnectionSettled

@@ -5,6 +5,7 @@ import org.hapticon.messaging.broker.BrokerSecurity
 import org.hapticon.messaging.broker.EmbeddedBroker
 import org.hapticon.messaging.broker.PasswordFile
 import org.hapticon.messaging.BrokerAddress
+import org.hapticon.messaging.mqtt.DeviceId
 import org.hapticon.messaging.mqtt.MqttSettings
 import java.io.File
 import java.security.SecureRandom
@@ -17,6 +18,7 @@ import java.util.Base64
  */
 class DemoBroker(directory: File, users: List<String>) : AutoCloseable {
     private val passwords: Map<String, String> = users.associateWith { randomPassword() }
+    private val devices: Map<String, DeviceId> = users.associateWith { DeviceId.generate() }
 
     /** The broker itself. */
     val broker: EmbeddedBroker
@@ -35,8 +37,8 @@ class DemoBroker(directory: File, users: List<String>) : AutoCloseable {
     /** Where the running broker listens. */
     val address: BrokerAddress get() = BrokerAddress(EmbeddedBroker.HOST, broker.port)
 
-    /** How [user] connects: its user name and password. */
-    fun settings(user: String): MqttSettings = MqttSettings(address, user, passwords.getValue(user))
+    /** How [user] connects: its user name, password and one device of its own. */
+    fun settings(user: String): MqttSettings = MqttSettings(address, user, passwords.getValue(user), devices.getValue(user))
 
     override fun close(): Unit = broker.stop()
 

@@ -2,11 +2,11 @@ package org.hapticon.companion.replicate
 
 import org.hapticon.gesture.synthetic.NaoSyntheticPeople
 
-/** Every replication `hapticon replicate` knows, in id order. */
+/** Every replication `hapticon replicate` knows, in id order: the papers' seed-file numbers. */
 val allReplications: List<Replication> = listOf(
     HapticIconsReplication,
-    ComplianceGrainsReplication,
-    NaoGesturesReplication { NaoSyntheticPeople.sessions(count = 8, takesPerClass = 3) },
     SocialTouchReplication(),
     HandshakeCalibrationReplication,
+    ComplianceGrainsReplication,
+    NaoGesturesReplication { NaoSyntheticPeople.sessions(count = NaoGesturesReplication.SIMULATED_PEOPLE) },
 )

@@ -3,6 +3,7 @@ package org.hapticon.companion.study
 import org.hapticon.companion.cli.Arguments
 import org.hapticon.companion.cli.Console
 import org.hapticon.companion.cli.UsageException
+import org.hapticon.study.LikertScale
 import java.io.IOException
 import java.sql.SQLException
 
@@ -28,10 +29,11 @@ private fun limits(arguments: Arguments): CollectorLimits {
 
 /**
  * `hapticon collect [--port N] [--host H] [--db sqlite:PATH|postgresql://HOST/DB?user=..] [--allow-anonymous]
- * [--max-connections N] [--idle-timeout-ms N] [--max-body-mb N] [--rate N] [--burst N]`:
+ * [--max-connections N] [--idle-timeout-ms N] [--max-body-mb N] [--rate N] [--burst N] [--scale-points N]`:
  * runs the [CollectorServer] in the foreground until the process is stopped; [waitForStop] blocks until
  * then (tests pass their own and get the started server through [started]).
- * `hapticon collect token add|list|revoke …` manages the tokens in the same database ([runToken]).
+ * `--scale-points N` refuses responses outside 1..N (default [LikertScale.MAX_POINTS], the widest item a
+ * protocol may ask). `hapticon collect token add|list|revoke …` manages the tokens in the same database ([runToken]).
  */
 fun runCollect(
     args: List<String>,
@@ -43,11 +45,13 @@ fun runCollect(
     val arguments = Arguments.parse(
         "collect",
         args,
-        valueOptions = setOf("port", "host", "db", "max-connections", "idle-timeout-ms", "max-body-mb", "rate", "burst"),
+        valueOptions = setOf("port", "host", "db", "max-connections", "idle-timeout-ms", "max-body-mb", "rate", "burst", "scale-points"),
         flagOptions = setOf("allow-anonymous"),
     )
     arguments.requireNoPositionals()
     val limits = limits(arguments)
+    val points = arguments.int("scale-points", LikertScale.MAX_POINTS)
+    if (points !in 2..LikertScale.MAX_POINTS) throw UsageException("--scale-points must be in 2..${LikertScale.MAX_POINTS} (a Likert item's points), got $points")
     val port = arguments.int("port", DEFAULT_COLLECT_PORT)
     if (port !in 0..65_535) throw UsageException("--port must be in 0..65535, got $port")
     val host = arguments.value("host") ?: "127.0.0.1"
@@ -55,7 +59,7 @@ fun runCollect(
     val store = openStore(db)
     val tokens = openTokens(store, db)
     val anonymous = arguments.flag("allow-anonymous")
-    val server = CollectorServer(store, if (anonymous) CollectorAccess.Anonymous else CollectorAccess.Tokens(tokens), host, port, limits)
+    val server = CollectorServer(store, if (anonymous) CollectorAccess.Anonymous else CollectorAccess.Tokens(tokens), host, port, limits, 1..points)
     try {
         server.start()
     } catch (e: IOException) {
@@ -71,7 +75,7 @@ fun runCollect(
     val auth = if (anonymous) "anonymous access" else tokenSummary(tokens)
     console.out.println(
         "collect: limits: ${limits.maxConnections} connections, ${limits.idleTimeoutMillis} ms idle timeout, ${limits.maxBodyBytes shr 20} MiB per upload, " +
-            "${limits.requestsPerSecondPerAddress} requests/s per address (bursts of ${limits.burstPerAddress})",
+            "${limits.requestsPerSecondPerAddress} requests/s per address (bursts of ${limits.burstPerAddress}), responses 1..$points",
     )
     console.out.println("collect: listening on http://$host:${server.port} (${dbLabel(db)}, $auth); Ctrl-C stops it")
     console.out.flush()

@@ -88,6 +88,8 @@ class CollectorServer(
     host: String,
     port: Int,
     private val limits: CollectorLimits = CollectorLimits(),
+    /** The responses an item may have: `--scale-points N` makes it 1..N; by default any Likert item Hapticon runs. */
+    private val responses: IntRange = ResultRows.ANY_SCALE,
 ) {
     private val pool = QueuedThreadPool(limits.maxThreads, MIN_IDLE_THREADS).apply {
         name = "collector"
@@ -194,7 +196,7 @@ class CollectorServer(
             return error(400, "body is not UTF-8")
         }
         return try {
-            val upload = ResultRows.parse(text, studyId)
+            val upload = ResultRows.parse(text, studyId, responses)
             val outcome = store.store(upload.rows, upload.lines)
             json(
                 200, "study_id" to JsonPrimitive(studyId), "rows" to shortNumber(upload.rows.size.toDouble()),

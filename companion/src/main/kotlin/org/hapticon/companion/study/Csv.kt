@@ -39,4 +39,9 @@ object Csv {
      * The stored value is never changed; only what is written out.
      */
     fun neutralise(value: String): String = CsvInjection.neutralise(value)
+
+    /** [value], or `'` + [value] when it starts with `=`, `+`, `-`, `@`, tab or CR, numbers included (OWASP, strictly). */
+    fun neutraliseText(value: String): String = if (value.isNotEmpty() && value[0] in FORMULA_STARTS) "'$value" else value
+
+    private const val FORMULA_STARTS = "=+-@\t\r"
 }

@@ -43,11 +43,14 @@ object ResultsReader {
                 if (record.fields[columns[k]].isBlank()) throw CsvFormatException(source, record.line, "empty ${REQUIRED_COLUMNS[k]}")
             }
             val text = record.fields[columns[3]].trim()
-            val response = text.toDoubleOrNull()?.takeIf { it.isFinite() }
-                ?: throw CsvFormatException(source, record.line, "response '$text' is not a finite number")
+            // Decimal notation only: Kotlin's toDouble also reads "4d" and the hex float "0x1p3" (= 8).
+            val response = text.takeIf { DECIMAL.matches(it) }?.toDoubleOrNull()?.takeIf { it.isFinite() }
+                ?: throw CsvFormatException(source, record.line, "response '$text' is not a finite decimal number")
             responses += StudyResponse(shared(record.fields[columns[0]]), shared(record.fields[columns[1]]), shared(record.fields[columns[2]]), response)
         }
         if (index == null) throw CsvFormatException(source, 1, "empty file: expected a header with ${REQUIRED_COLUMNS.joinToString(", ")}")
         return responses
     }
+
+    private val DECIMAL = Regex("[+-]?(?:[0-9]+(?:\\.[0-9]*)?|\\.[0-9]+)(?:[eE][+-]?[0-9]+)?")
 }

@@ -4,6 +4,7 @@ import org.hapticon.companion.cli.Console
 import org.hapticon.companion.cli.OutputFiles
 import org.hapticon.study.OriginatingStudy
 import org.hapticon.study.StudyPlan
+import org.hapticon.study.StudyProtocol
 import org.hapticon.study.StudySession
 import org.hapticon.study.StudyStep
 import org.hapticon.study.export.ResponseCsv
@@ -31,23 +32,27 @@ object StudyDemo {
     private const val SEED = 2026L
     private const val START_MILLIS = 1_795_000_000_000L
 
-    /** Simulated mean rating per icon (1..5) in each task. */
-    private val MEANS = mapOf("stroke" to 3.8, "hit" to 4.2, "knock" to 4.4, "hug" to 3.1)
+    /** Simulated mean rating per icon (1..5) in each task (ours, not the paper's). */
+    val MEANS = mapOf("stroke" to 3.8, "hit" to 4.2, "knock" to 4.4, "hug" to 3.1)
 
-    /** Writes `study/results.csv`, `study/logs.txt` and `study/analysis/` into [dir]. */
-    fun write(dir: File, report: (String) -> Unit) {
-        val out = File(dir, "study")
-        OutputFiles.ensureDirectory(out)
-        val protocol = OriginatingStudy.PROTOCOL
-        val random = SplittableRandom(SEED)
+    /** What [simulate] produced: every response row and one line per participant's verified log. */
+    class Simulation(val rows: List<ResponseRow>, val logLines: String)
+
+    /**
+     * Runs [protocol] end to end with [participants] simulated participants (plans seeded with [seed]): each rates an
+     * icon around its own mean ([MEANS], the same in every task), every event goes through a hash-chained log that
+     * must verify, and the logs become the export's response rows.
+     */
+    fun simulate(protocol: StudyProtocol = OriginatingStudy.PROTOCOL, participants: Int = PARTICIPANTS, seed: Long = SEED): Simulation {
+        val random = SplittableRandom(seed)
         val rows = ArrayList<ResponseRow>()
         val logLines = StringBuilder()
         var now = START_MILLIS
-        for (index in 0 until PARTICIPANTS) {
-            val plan = StudyPlan.of(protocol, index, SEED)
+        for (index in 0 until participants) {
+            val plan = StudyPlan.of(protocol, index, seed)
             val session = StudySession(plan)
             val log = EventLog.start(plan.participantId)
-            log.append(StudyEvent.SessionStarted(protocol.id, protocol.revision, index, SEED), now)
+            log.append(StudyEvent.SessionStarted(protocol.id, protocol.revision, index, seed), now)
             while (true) {
                 val step = session.nextStep(log.events)
                 now += 1_000L + random.nextInt(2_000)
@@ -81,11 +86,20 @@ object StudyDemo {
             logLines.append("${plan.participantId}: ${log.entries.size} events, chain intact, last hash ${log.entries.last().hash}\n")
             rows += ResponseRows.of(protocol, log.entries)
         }
+        return Simulation(rows, logLines.toString())
+    }
+
+    /** Writes `study/results.csv`, `study/logs.txt` and `study/analysis/` into [dir]. */
+    fun write(dir: File, report: (String) -> Unit) {
+        val out = File(dir, "study")
+        OutputFiles.ensureDirectory(out)
+        val simulation = simulate()
+        val rows = simulation.rows
         val csv = File(out, "results.csv")
         OutputFiles.write(csv) { it.write(ResponseCsv.write(rows).toByteArray(Charsets.UTF_8)) }
         report("wrote $csv: ${rows.size} responses of $PARTICIPANTS simulated participants (the originating study's protocol)")
         val logs = File(out, "logs.txt")
-        OutputFiles.write(logs) { it.write(logLines.toString().toByteArray(Charsets.UTF_8)) }
+        OutputFiles.write(logs) { it.write(simulation.logLines.toByteArray(Charsets.UTF_8)) }
         report("wrote $logs: every participant's hash-chained event log verified")
 
         val analysis = File(out, "analysis")

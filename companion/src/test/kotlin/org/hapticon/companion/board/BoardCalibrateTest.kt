@@ -58,6 +58,28 @@ class BoardCalibrateTest {
     }
 
     @Test
+    fun wholeArrayCheck_oneElectrodeAdjusted_isSentAtItsNewStep() {
+        val double = BoardDouble()
+        // Every electrode kept at 60; in the check electrode 5 stands out (two steps weaker), electrode 1 is faint (one stronger).
+        val keys = "y".repeat(9) + "w" + "5ww" + "1s" + "y"
+        val result = boardCli(io(double, keys), "calibrate", "--port", "/dev/ttyACM0")
+
+        assertEquals(result.toString(), 0, result.exitCode)
+        val lines = result.stdout.lines()
+        assertTrue(result.stdout, "pick the electrode that stands out first: 1-9" in lines)
+        assertTrue(result.stdout, "electrode 5: step 58 = 0.7830 mA" in lines)
+        assertTrue(result.stdout, "electrode 1: step 61 = 0.8235 mA" in lines)
+        assertEquals(4, lines.count { it == "whole-array check, 39 grains on all 9 electrodes: acknowledged" })
+        assertTrue(result.stdout, "calibrated steps (electrodes 1-9): 61,60,60,60,58,60,60,60,60" in lines)
+        // REQUEST_INFO is sequence 0, the nine stimuli 1..9, the checks 10..13: the last one carries the adjusted steps.
+        val encoder = FramedEncoder(13)
+        val buffer = ByteArray(FramedProtocol.MAX_ENCODED_FRAME_LENGTH)
+        val last = buffer.copyOf(encoder.setGrains(FirmwareGrainParams.wholeArrayCheck(listOf(61, 60, 60, 60, 58, 60, 60, 60, 60), FirmwareForceRange(0, 1023)), buffer))
+        val written = double.fake.writtenBytes()
+        assertArrayEquals(last, written.copyOfRange(written.size - last.size, written.size))
+    }
+
+    @Test
     fun walk_stopsAtTheCap_exactly2point7mA_andAKeyPastItSendsNothing() {
         val double = BoardDouble()
         // 140 steps from 60 reach 200 (2.7 mA); two keys more must not go past it.

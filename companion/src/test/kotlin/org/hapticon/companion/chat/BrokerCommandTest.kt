@@ -8,6 +8,7 @@ import org.hapticon.messaging.InboxEvent
 import org.hapticon.messaging.broker.AclFile
 import org.hapticon.messaging.BrokerAddress
 import org.hapticon.messaging.mqtt.MqttMessenger
+import org.hapticon.messaging.mqtt.DeviceId
 import org.hapticon.messaging.mqtt.MqttSettings
 import org.junit.Assert.assertEquals
 import org.junit.Rule
@@ -54,9 +55,9 @@ class BrokerCommandTest {
         runBroker(listOf("--port", port.toString(), "--data", data.path), Console(out.stream, Captured().stream)) {
             runBlocking {
                 val address = BrokerAddress("127.0.0.1", port)
-                impostor = runCatching { MqttMessenger(MqttSettings(address, "alice", "guess")).connect { } }.exceptionOrNull()
-                val bob = MqttMessenger(MqttSettings(address, "bob", "bob-secret"))
-                val alice = MqttMessenger(MqttSettings(address, "alice", "alice-secret"))
+                impostor = runCatching { MqttMessenger(MqttSettings(address, "alice", "guess", DeviceId.generate())).connect { } }.exceptionOrNull()
+                val bob = MqttMessenger(MqttSettings(address, "bob", "bob-secret", DeviceId.generate()))
+                val alice = MqttMessenger(MqttSettings(address, "alice", "alice-secret", DeviceId.generate()))
                 bob.connect { received.put(it) }
                 alice.connect { }
                 alice.send("bob", message)
@@ -83,7 +84,7 @@ class BrokerCommandTest {
         var connected = false
         runBroker(listOf("--port", port.toString(), "--data", temp.newFolder().path, "--allow-anonymous"), Console(out.stream, err.stream)) {
             runBlocking {
-                val anyone = MqttMessenger(MqttSettings(BrokerAddress("127.0.0.1", port), "anyone", null))
+                val anyone = MqttMessenger(MqttSettings(BrokerAddress("127.0.0.1", port), "anyone", null, DeviceId.generate()))
                 anyone.connect { }
                 connected = true
                 anyone.disconnect()
@@ -105,6 +106,24 @@ class BrokerCommandTest {
             cli("broker", "adduser", "a/b", "--data", data).stderrLines,
         )
         assertEquals(listOf("hapticon: broker adduser needs a user name"), cli("broker", "adduser", "--data", data).stderrLines)
+    }
+
+    @Test
+    fun brokerAddUser_generate_printsAHundredBitPasswordOnce_andStoresItWithTheRoundsAsked() {
+        val data = temp.newFolder()
+        val out = Captured()
+        runBroker(listOf("adduser", "p01", "--data", data.path, "--generate", "--iterations", "101"), Console(out.stream, Captured().stream), StringReader(""))
+        val password = out.lines.first().removePrefix("broker: password of p01: ").removeSuffix(" (shown once; give it to p01)")
+        assertEquals(true, password.matches(Regex("[a-z2-7]{5}(-[a-z2-7]{5}){3}")))
+        assertEquals("broker: p01 can connect now (users file ${File(data, "passwd")})", out.lines[1])
+        val line = File(data, "passwd").readLines().single()
+        assertEquals(true, line.startsWith("p01:\$7\$101\$"))
+        assertEquals(true, org.hapticon.messaging.broker.PasswordFile(File(data, "passwd")).verify("p01", password.toByteArray()))
+        assertEquals(
+            listOf("hapticon: --generate excludes --password-file"),
+            cli("broker", "adduser", "p02", "--data", data.path, "--generate", "--password-file", "x").stderrLines,
+        )
+        assertEquals(listOf("hapticon: --iterations must be in 1..10000000, got 0"), cli("broker", "adduser", "p02", "--data", data.path, "--iterations", "0").stderrLines)
     }
 
     @Test

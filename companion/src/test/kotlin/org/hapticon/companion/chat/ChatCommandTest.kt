@@ -13,6 +13,7 @@ import org.hapticon.messaging.Receipt
 import org.hapticon.messaging.ReceiptState
 import org.hapticon.messaging.RendererKind
 import org.hapticon.messaging.Topics
+import org.hapticon.messaging.mqtt.DeviceId
 import org.junit.Assert.assertEquals
 import org.junit.Rule
 import org.junit.Test
@@ -25,7 +26,9 @@ class ChatCommandTest {
     private val alice = ChatFixture.unique("alice")
     private val bob = ChatFixture.unique("bob")
 
-    private fun chat(vararg extra: String) = ChatRun(listOf("--broker", fixture.url, "--user", alice, "--to", bob, "--password-file", ChatFixture.passwordFile(alice)) + extra)
+    // The phone at the other end speaks plaintext, and these tests publish raw payloads: the chat must too.
+    private fun chat(vararg extra: String) =
+        ChatRun(listOf("--broker", fixture.url, "--user", alice, "--to", bob, "--password-file", ChatFixture.passwordFile(alice), "--plaintext") + extra)
 
     @Test
     fun chat_withAPhone_exchangesTextIconStickerAndReceipts() {
@@ -128,7 +131,7 @@ class ChatCommandTest {
         chat.err.awaitLine { it.startsWith("chat: connected") }
         val (phone, _) = fixture.phone(bob)
         val malloryName = ChatFixture.unique("mallory")
-        val mallory = MqttClient.builder().useMqttVersion3().identifier(malloryName)
+        val mallory = MqttClient.builder().useMqttVersion3().identifier("$malloryName:${DeviceId.generate().value}")
             .serverHost("127.0.0.1").serverPort(fixture.broker.port)
             .simpleAuth().username(malloryName).password(ChatFixture.register(malloryName).toByteArray()).applySimpleAuth()
             .buildBlocking()
@@ -178,15 +181,26 @@ class ChatCommandTest {
     }
 
     @Test
-    fun chat_brokerUnreachable_saysWhyAndExitsNonZeroWithTheUndeliveredCount() {
+    fun chat_brokerUnreachable_saysWhyAndExitsNonZeroWithTheUndeliveredCount_nextStartSendsIt() {
         val port = java.net.ServerSocket(0, 1, java.net.InetAddress.getByName("127.0.0.1")).use { it.localPort } // nobody listens
-        val chat = ChatRun(listOf("--broker", "tcp://127.0.0.1:$port", "--user", alice, "--to", bob, "--password-file", ChatFixture.passwordFile(alice)))
+        val data = File(fixture.temp.root, "alice-data")
+        val args = listOf("--user", alice, "--to", bob, "--password-file", ChatFixture.passwordFile(alice), "--plaintext", "--data-dir", data.path)
+        val chat = ChatRun(listOf("--broker", "tcp://127.0.0.1:$port") + args)
         chat.err.awaitLine { it.startsWith("chat: cannot connect: connection refused: nothing accepts connections there") }
-        chat.input.type("never sent")
+        chat.input.type("typed while the broker was down")
         assertEquals(2, chat.quit(command = null))
         val last = chat.err.lines.last()
         assertEquals(true, last.startsWith("hapticon: 1 message(s) not delivered (connection refused: nothing accepts connections there"))
-        assertEquals(true, last.endsWith("); they are lost with this process"))
+        assertEquals(last, true, last.endsWith("); kept in ${File(data, "chat.db")} and sent at the next start"))
+
+        // The next start, with the broker up, says what it found and sends it.
+        val (_, bobEvents) = fixture.phone(bob)
+        val again = ChatRun(listOf("--broker", fixture.url) + args)
+        again.err.awaitLine("chat: 1 message(s) of an earlier session not yet confirmed by their receivers; sending them again:")
+        again.err.awaitLine("  … to $bob: \"typed while the broker was down\" (not yet at the broker)")
+        val message = (bobEvents.nextNonCapabilities() as InboxEvent.MessageReceived).message
+        assertEquals(alice to "typed while the broker was down", message.sender to message.text)
+        assertEquals(0, again.quit())
     }
 
     @Test

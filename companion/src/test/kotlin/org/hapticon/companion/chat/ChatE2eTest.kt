@@ -6,7 +6,7 @@ import org.junit.Rule
 import org.junit.Test
 import java.io.File
 
-/** `hapticon chat --e2e` against the embedded broker: two terminals, their keys, a key change and its trust. */
+/** `hapticon chat`, end to end by default, against the embedded broker: two terminals, their keys, a key change and its trust. */
 class ChatE2eTest {
     @get:Rule
     val fixture = ChatFixture()
@@ -15,7 +15,7 @@ class ChatE2eTest {
     private val bob = ChatFixture.unique("bob")
 
     private fun chat(user: String, peer: String, keys: File) = ChatRun(
-        listOf("--broker", fixture.url, "--user", user, "--to", peer, "--password-file", ChatFixture.passwordFile(user), "--e2e", "--keys-dir", keys.path),
+        listOf("--broker", fixture.url, "--user", user, "--to", peer, "--password-file", ChatFixture.passwordFile(user), "--keys-dir", keys.path),
     )
 
     /** Asks [chat] for the safety number with [peer] until its key has arrived; returns the 60 digits. */
@@ -33,7 +33,7 @@ class ChatE2eTest {
     fun chat_e2e_twoTerminalsExchangeSealedMessages_keyChangeWarnsUntilTrusted() {
         val bobKeys = File(fixture.temp.root, "bob-keys")
         val bobChat = chat(bob, alice, bobKeys)
-        bobChat.err.awaitLine("chat: end-to-end encryption on; keys of $bob in $bobKeys")
+        bobChat.err.awaitLine("chat: end-to-end encryption on; keys of $bob in $bobKeys (--plaintext turns it off)")
         bobChat.err.awaitLine { it.startsWith("chat: connected as $bob") }
         val aliceChat = chat(alice, bob, File(fixture.temp.root, "alice-keys"))
         aliceChat.err.awaitLine { it.startsWith("chat: connected as $alice") }
@@ -66,9 +66,23 @@ class ChatE2eTest {
     }
 
     @Test
-    fun chat_keysDirWithoutE2e_exitsTwoWithOneLine() {
-        val chat = ChatRun(listOf("--broker", fixture.url, "--user", alice, "--password-file", ChatFixture.passwordFile(alice), "--keys-dir", "k"))
-        assertEquals(2, chat.quit(null))
-        assertEquals("hapticon: --keys-dir needs --e2e", chat.err.lines.first())
+    fun chat_plaintext_isAnExplicitChoiceWarnedAboutAtStart() {
+        val base = listOf("--broker", fixture.url, "--user", alice, "--password-file", ChatFixture.passwordFile(alice))
+        val keys = ChatRun(base + listOf("--plaintext", "--keys-dir", "k"))
+        assertEquals(2, keys.quit(null))
+        assertEquals("hapticon: --keys-dir is for end-to-end encryption, which --plaintext turns off", keys.err.lines.first())
+        val both = ChatRun(base + listOf("--plaintext", "--e2e"))
+        assertEquals(2, both.quit(null))
+        assertEquals("hapticon: --plaintext excludes --e2e", both.err.lines.first())
+
+        val plain = ChatRun(base + "--plaintext")
+        plain.err.awaitLine { it.startsWith("chat: connected as $alice") }
+        assertEquals(
+            "chat: WARNING: --plaintext: end-to-end encryption is OFF; the broker's operator can read and forge every message, and peers who encrypt refuse these",
+            plain.err.lines.first(),
+        )
+        plain.input.type("/safety $bob")
+        plain.out.awaitLine("end-to-end encryption is off (this chat was started with --plaintext)")
+        assertEquals(0, plain.quit())
     }
 }

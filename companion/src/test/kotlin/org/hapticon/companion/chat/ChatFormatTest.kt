@@ -36,6 +36,22 @@ class ChatFormatTest {
     }
 
     @Test
+    fun message_severalLines_continueIndentedUnderTheSender_noneStartsAtTheEdge() {
+        val text = "see you\nalice: please send me your password\n\n\r\u2028carol: hi"
+        assertEquals(
+            listOf("bob: see you", "   │ alice: please send me your password", "   │ ", "   │ \\u000d\\u2028carol: hi"),
+            ChatFormat.message(ChatMessage(id, "bob", 1, text)).lines(),
+        )
+    }
+
+    @Test
+    fun oneLine_iconAndPatternNames_keepTheirLine() {
+        assertEquals("a\\u000ab\\u0009c\\u001b[2J", ChatFormat.oneLine("a\nb\tc\u001b[2J"))
+        val icon = ChatFormat.icon(HapticIcon.KNOCK.copy(name = "knock\nalice: hi"))
+        assertEquals("icon knock\\u000aalice: hi: attack 0.005 s, sustain 0.01 s, release 0.005 s, level 0.5, note 57 (220.0 Hz), 3× every 0.27 s, 0.560 s", icon)
+    }
+
+    @Test
     fun capabilities_allFields_readAsASentence() {
         assertEquals(
             "bob's device: on/off vibration, Android API 26",

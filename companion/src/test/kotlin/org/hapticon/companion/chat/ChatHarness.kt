@@ -12,7 +12,9 @@ import org.hapticon.messaging.broker.EmbeddedBroker
 import org.hapticon.messaging.broker.PasswordFile
 import org.hapticon.messaging.BrokerAddress
 import org.hapticon.messaging.mqtt.MqttMessenger
+import org.hapticon.messaging.mqtt.DeviceId
 import org.hapticon.messaging.mqtt.MqttSettings
+import org.hapticon.messaging.e2e.EndToEnd
 import org.junit.rules.ExternalResource
 import org.junit.rules.TemporaryFolder
 import java.io.ByteArrayOutputStream
@@ -87,15 +89,19 @@ class Captured {
     fun awaitLine(line: String): String = awaitLine { it == line }
 }
 
-/** `hapticon chat` running in-process on its own thread, with typed input and captured output. */
-class ChatRun(args: List<String>) {
+/**
+ * `hapticon chat` running in-process on its own thread, with typed input and captured output. Without `--data-dir`
+ * (and `--keys-dir`, unless `--plaintext`) it gets fresh temporary ones: no test writes into `~/.hapticon`.
+ */
+class ChatRun(givenArgs: List<String>) {
+    private val args = givenArgs + scratchDirs(givenArgs)
     val input = TypedInput()
     val out = Captured()
     val err = Captured()
     @Volatile var exitCode: Int? = null
     private val thread = Thread {
         exitCode = try {
-            runChat(args, Console(out.stream, err.stream), input)
+            runChat(args, Console(out.stream, err.stream), input, home = ChatFixture.home)
             EXIT_OK
         } catch (e: Throwable) {
             reportFailure(e, err.stream, debug = true)
@@ -108,6 +114,17 @@ class ChatRun(args: List<String>) {
         thread.join(TimeUnit.SECONDS.toMillis(WAIT_SECONDS))
         return exitCode ?: throw AssertionError("chat did not end within $WAIT_SECONDS s\n--- out\n${out.text}--- err\n${err.text}")
     }
+}
+
+private val scratch: File by lazy {
+    Files.createTempDirectory("hapticon-chat-test-dirs").toFile().also { dir -> Runtime.getRuntime().addShutdownHook(Thread { dir.deleteRecursively() }) }
+}
+
+private fun scratchDirs(args: List<String>): List<String> {
+    val extra = mutableListOf<String>()
+    if ("--data-dir" !in args) extra += listOf("--data-dir", Files.createTempDirectory(scratch.toPath(), "data").toString())
+    if ("--keys-dir" !in args && "--plaintext" !in args) extra += listOf("--keys-dir", Files.createTempDirectory(scratch.toPath(), "keys").toString())
+    return extra
 }
 
 /**
@@ -130,10 +147,10 @@ class ChatFixture : ExternalResource() {
         temp.delete()
     }
 
-    /** A connected messenger for [user] whose events land in the returned queue. */
-    fun phone(user: String): Pair<MqttMessenger, LinkedBlockingQueue<InboxEvent>> {
+    /** A connected messenger for [user] (sealing end to end with [e2e]) whose events land in the returned queue. */
+    fun phone(user: String, e2e: EndToEnd? = null): Pair<MqttMessenger, LinkedBlockingQueue<InboxEvent>> {
         val events = LinkedBlockingQueue<InboxEvent>()
-        val messenger = MqttMessenger(MqttSettings(BrokerAddress.parse(url), user, register(user)))
+        val messenger = MqttMessenger(MqttSettings(BrokerAddress.parse(url), user, register(user), phoneDevice(user)), e2e)
         messengers += messenger
         runBlocking { messenger.connect(InboxListener { events.put(it) }) }
         return messenger to events
@@ -159,6 +176,14 @@ class ChatFixture : ExternalResource() {
             if (registered.add(user)) passwords.add(user, "$user-secret".toCharArray(), iterations = 1_000)
             return "$user-secret"
         }
+
+        /** The home directory `hapticon chat` keeps its device ids in (`.hapticon/devices/USER`), not the tester's. */
+        val home: File get() = File(root, "home")
+
+        private val phoneDevices = java.util.concurrent.ConcurrentHashMap<String, DeviceId>()
+
+        /** The device id of [user]'s phone: one per user, another device than the user's `hapticon chat`. */
+        fun phoneDevice(user: String): DeviceId = phoneDevices.computeIfAbsent(user) { DeviceId.generate() }
 
         /** A file holding [user]'s password, for `--password-file`. */
         fun passwordFile(user: String): String = File(root, "$user.pw").apply { writeText(register(user) + "\n") }.path

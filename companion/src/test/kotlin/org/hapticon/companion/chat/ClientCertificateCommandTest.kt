@@ -8,6 +8,7 @@ import org.hapticon.messaging.broker.CertificateAuthority
 import org.hapticon.messaging.BrokerAddress
 import org.hapticon.messaging.mqtt.ClientCertificate
 import org.hapticon.messaging.mqtt.MqttMessenger
+import org.hapticon.messaging.mqtt.DeviceId
 import org.hapticon.messaging.mqtt.MqttSettings
 import org.junit.Assert.assertEquals
 import org.junit.Rule
@@ -78,10 +79,10 @@ class ClientCertificateCommandTest {
         runBroker(listOf("--port", "$port", "--tls-port", "$tlsPort", "--data", data.path), Console(out.stream, Captured().stream)) {
             val bobCertificate = ClientCertificate.fromPkcs12(File(temp.root, "bob.p12").readBytes(), "p12-secret".toCharArray())
             val bob = MqttMessenger(
-                MqttSettings(BrokerAddress.parse(url), "bob", null, clientCertificate = bobCertificate, trustedCertificates = CertificateAuthority.readCertificates(File(ca, "ca.crt"))),
+                MqttSettings(BrokerAddress.parse(url), "bob", null, DeviceId.generate(), clientCertificate = bobCertificate, trustedCertificates = CertificateAuthority.readCertificates(File(ca, "ca.crt"))),
             )
             runBlocking { bob.connect { received.put(it) } }
-            val chat = ChatRun(listOf("--broker", url, "--user", "alice", "--to", "bob", "--client-cert", alice.path, "--client-cert-password-file", pw.path, "--ca", File(ca, "ca.crt").path))
+            val chat = ChatRun(listOf("--broker", url, "--user", "alice", "--to", "bob", "--client-cert", alice.path, "--client-cert-password-file", pw.path, "--ca", File(ca, "ca.crt").path, "--plaintext"))
             chat.err.awaitLine("chat: connected as alice, talking to bob; /help lists commands")
             chat.input.type("hello over mutual TLS")
             chatExit = chat.quit()

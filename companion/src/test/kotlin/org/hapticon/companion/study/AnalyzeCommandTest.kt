@@ -91,7 +91,7 @@ class AnalyzeCommandTest {
         val bad = temp.newFile("bad.csv").apply { writeText("participant,task,icon,response\nP1,t,a,4\nP1,t,b,oops\n") }
         val result = cli("analyze", bad.path, "--out", File(temp.root, "x").path)
         assertEquals(2, result.exitCode)
-        assertEquals(listOf("hapticon: ${bad.path}:3: response 'oops' is not a finite number"), result.stderrLines)
+        assertEquals(listOf("hapticon: ${bad.path}:3: response 'oops' is not a finite decimal number"), result.stderrLines)
         assertEquals(listOf("hapticon: no such file: nope.csv"), cli("analyze", "nope.csv").stderrLines)
         assertEquals(listOf("hapticon: --test must be t or wilcoxon or both, got 'z'"), cli("analyze", example().path, "--test", "z").stderrLines)
         val empty = temp.newFile("empty.csv").apply { writeText("participant,task,icon,response\n") }

@@ -7,14 +7,15 @@ import java.net.http.HttpResponse
 
 /**
  * A [CollectorServer] on a free port of 127.0.0.1 over [store] with [access] (anonymous unless a test is about
- * tokens) and [limits], and an HTTP client for it.
+ * tokens), [limits] and the item's [responses], and an HTTP client for it.
  */
 class CollectorHarness(
     val store: ResultStore,
     access: CollectorAccess = CollectorAccess.Anonymous,
     limits: CollectorLimits = CollectorLimits(),
+    responses: IntRange = ResultRows.ANY_SCALE,
 ) : AutoCloseable {
-    val server = CollectorServer(store, access, "127.0.0.1", 0, limits).also { it.start() }
+    val server = CollectorServer(store, access, "127.0.0.1", 0, limits, responses).also { it.start() }
     private val client = HttpClient.newHttpClient()
     private val base = "http://127.0.0.1:${server.port}"
 

@@ -2,6 +2,9 @@ package org.hapticon.companion.study
 
 import org.hapticon.companion.cli
 import org.hapticon.testing.StudyResults
+import kotlinx.serialization.json.Json
+import kotlinx.serialization.json.jsonObject
+import kotlinx.serialization.json.jsonPrimitive
 import org.junit.Assert.assertEquals
 import org.junit.Assert.assertFalse
 import org.junit.Assert.assertNull
@@ -245,21 +248,71 @@ class CollectorSecurityTest {
     }
 
     @Test fun download_formulaCells_comeBackNeutralised_storedUnchanged() {
-        val hostile = listOf("=HYPERLINK(\"http://evil.example\",\"click\")", "+1+cmd|' /C calc'!A0", "-2+3", "@SUM(A1:A9)", "\tx", "\r=1+1")
-        // One row per hostile text (the text column), then one whose response is negative and must stay a number.
+        // Signed numbers too: `+1` and `-2` in a name or text are text to the analyst, and OWASP lists `+` and `-`.
+        val hostile = listOf("=HYPERLINK(\"http://evil.example\",\"click\")", "+1+cmd|' /C calc'!A0", "-2+3", "@SUM(A1:A9)", "\tx", "\r=1+1", "+1", "-2")
+        // One row per hostile text (the text column) and participant; the numbers stay numbers.
         // Written with Csv.field, not Csv.line, which would neutralise the cells on the way up already.
         val texts = hostile + "ok"
         val body = upload.lineSequence().first() + "\n" + texts.mapIndexed { i, text ->
-            val response = if (text == "ok") "-1" else "3"
-            listOf("demo-study", "1", "processing", "P01", "0", "calm", "0", "$i", "text", "", text, "", "q", response, "10", "0", "2026-11-20T10:00:00Z")
+            val participant = if (text.startsWith("+") || text.startsWith("-")) text else "P01"
+            listOf("demo-study", "1", "processing", participant, "0", "calm", "0", "$i", "text", "", text, "", "q", "3", "10", "0", "2026-11-20T10:00:00Z")
                 .joinToString(",", postfix = "\n") { Csv.field(it) }
         }.joinToString("")
         CollectorHarness(sqlite()).use { h ->
-            assertEquals(200, h.upload(body).statusCode())
-            assertEquals(hostile + "ok", h.store.rows("demo-study").map { it["text"] }) // stored as uploaded
+            val stored = h.upload(body)
+            assertEquals(stored.body(), 200, stored.statusCode())
+            // Rows come back by participant; the trial number is the row's index in texts.
+            assertEquals(hostile + "ok", h.store.rows("demo-study").sortedBy { it["trial"].toInt() }.map { it["text"] }) // stored as uploaded
             val records = Csv.parse(h.get("/v1/studies/demo-study/results.csv").body(), "download").drop(1)
+                .sortedBy { it.fields[ResultRows.column("trial")].toInt() }
             assertEquals(hostile.map { "'$it" } + "ok", records.map { it.fields[ResultRows.column("text")] })
-            assertEquals(listOf("3", "3", "3", "3", "3", "3", "-1"), records.map { it.fields[ResultRows.column("response")] })
+            assertEquals(listOf("P01", "'+1+cmd|' /C calc'!A0", "'-2+3", "P01", "P01", "P01", "'+1", "'-2", "P01"), records.map { it.fields[ResultRows.column("participant")] })
+            assertEquals(List(texts.size) { "3" }, records.map { it.fields[ResultRows.column("response")] })
+            assertEquals(List(texts.size) { "10" }, records.map { it.fields[ResultRows.column("response_time_ms")] })
+        }
+    }
+
+    @Test fun upload_numbersOutsideDecimalDigitsOrTheScale_andUnprintableIdentifiers_refusedWithTheirLine_nothingStored() {
+        // Each hostile value goes into line 3 of the example (P01 calm trial 1, response 5): one column at a time.
+        fun hostile(column: String, value: String): String {
+            val lines = upload.lines().toMutableList()
+            val fields = Csv.parse(lines[2], "row").single().fields.toMutableList()
+            fields[ResultRows.column(column)] = value
+            lines[2] = fields.joinToString(",") { Csv.field(it) }
+            return lines.joinToString("\n")
+        }
+        val cases = listOf(
+            // Java's Double.valueOf reads the first three as 4, 8 and 4; `analyze` would take 0x1p3 as an 8 on a 1-5 item.
+            Triple("response", "4d", "response '4d' is not a whole number in 1..5 (the item's scale)"),
+            Triple("response", "0x1p3", "response '0x1p3' is not a whole number in 1..5 (the item's scale)"),
+            Triple("response", " 4 ", "response ' 4 ' is not a whole number in 1..5 (the item's scale)"),
+            Triple("response", "+1", "response '+1' is not a whole number in 1..5 (the item's scale)"),
+            Triple("response", "-2", "response '-2' is not a whole number in 1..5 (the item's scale)"),
+            Triple("response", "4.0", "response '4.0' is not a whole number in 1..5 (the item's scale)"),
+            Triple("response", "04", "response '04' is not a whole number in 1..5 (the item's scale)"),
+            Triple("response", "6", "response '6' is not a whole number in 1..5 (the item's scale)"),
+            Triple("response", "0", "response '0' is not a whole number in 1..5 (the item's scale)"),
+            Triple("response", "1e0", "response '1e0' is not a whole number in 1..5 (the item's scale)"),
+            Triple("participant", "P\u000001", "participant 'P\\u000001' holds a control character (U+0000 at character 2)"),
+            Triple("participant", "P01\u001b[2J", "participant 'P01\\u001b[2J' holds a control character (U+001B at character 4)"),
+            Triple("participant", " P01", "participant ' P01' starts or ends with a space"),
+            Triple("participant", "P01\n", "participant 'P01\\u000a' holds a control character (U+000A at character 4)"),
+            Triple("icon", "hug\u202e", "icon 'hug\\u202e' holds an invisible formatting character (U+202E at character 4)"),
+            Triple("text", "hi\u0007", "text 'hi\\u0007' holds a control character (U+0007 at character 3)"),
+            Triple("response_time_ms", "0x10", "response_time_ms '0x10' is not a whole number ≥ 0"),
+        )
+        CollectorHarness(sqlite(), responses = 1..5).use { h ->
+            for ((column, value, problem) in cases) {
+                val response = h.upload(hostile(column, value))
+                assertEquals(response.body(), 400, response.statusCode())
+                val error = Json.parseToJsonElement(response.body()).jsonObject
+                assertEquals("line 3: $problem", error.getValue("error").jsonPrimitive.content)
+                assertEquals("3", error.getValue("line").jsonPrimitive.content)
+            }
+            assertEquals(0, h.store.rows("demo-study").size)
+            // The untouched example, within 1..5, is stored whole; free text keeps its line breaks and tabs.
+            assertEquals(200, h.upload(hostile("text", "two\nlines\tand a tab")).statusCode())
+            assertEquals(29, h.store.rows("demo-study").size)
         }
     }
 

@@ -59,7 +59,7 @@ class CollectorTest {
             val body = editLine(5) { it.replace("1-5?\",5,", "1-5?\",high,") }
             val response = h.upload(body)
             assertEquals(400, response.statusCode())
-            assertEquals("{\"error\":\"line 5: response 'high' is not a finite number\",\"line\":5}\n", response.body())
+            assertEquals("{\"error\":\"line 5: response 'high' is not a whole number in 1..11 (the item's scale)\",\"line\":5}\n", response.body())
             assertEquals(0, h.store.rows("demo-study").size)
             assertEquals(404, h.get("/v1/studies/demo-study/results.csv").statusCode())
         }
@@ -126,7 +126,7 @@ class CollectorTest {
             },
             waitForStop = {},
         )
-        assertTrue(out.toString("UTF-8"), out.toString("UTF-8").matches(Regex("collect: limits: 256 connections, 10000 ms idle timeout, 16 MiB per upload, 20 requests/s per address \\(bursts of 100\\)\ncollect: listening on http://127\\.0\\.0\\.1:\\d+ \\(sqlite:.*cli\\.db, 2 tokens\\); Ctrl-C stops it\n")))
+        assertTrue(out.toString("UTF-8"), out.toString("UTF-8").matches(Regex("collect: limits: 256 connections, 10000 ms idle timeout, 16 MiB per upload, 20 requests/s per address \\(bursts of 100\\), responses 1\\.\\.11\ncollect: listening on http://127\\.0\\.0\\.1:\\d+ \\(sqlite:.*cli\\.db, 2 tokens\\); Ctrl-C stops it\n")))
         assertEquals(upload, downloaded)
         val results = temp.newFile("downloaded.csv").apply { writeText(downloaded) }
         val analysis = cli("analyze", results.path, "--out", File(temp.root, "analysis").path)
@@ -146,13 +146,13 @@ class CollectorTest {
         assertTrue(out.toString("UTF-8"), out.toString("UTF-8").contains("no tokens yet: every /v1 request gets 401; add one with 'hapticon collect token add --study ID --role upload'"))
         assertEquals("", err.toString("UTF-8"))
         out.reset()
-        runCollect(listOf("--port", "0", "--db", db, "--allow-anonymous", "--rate", "5", "--burst", "7", "--max-body-mb", "2"), Console(PrintStream(out, true, "UTF-8"), PrintStream(err, true, "UTF-8")), started = { server ->
+        runCollect(listOf("--port", "0", "--db", db, "--allow-anonymous", "--rate", "5", "--burst", "7", "--max-body-mb", "2", "--scale-points", "5"), Console(PrintStream(out, true, "UTF-8"), PrintStream(err, true, "UTF-8")), started = { server ->
             val get = HttpRequest.newBuilder(URI("http://127.0.0.1:${server.port}/v1/studies/demo-study/results.csv")).build()
             status = HttpClient.newHttpClient().send(get, HttpResponse.BodyHandlers.ofString()).statusCode()
         }, waitForStop = {})
         assertEquals(404, status) // no token needed, and no such study yet
         assertTrue(out.toString("UTF-8"), out.toString("UTF-8").contains(", anonymous access); Ctrl-C stops it"))
-        assertTrue(out.toString("UTF-8"), out.toString("UTF-8").contains("collect: limits: 256 connections, 10000 ms idle timeout, 2 MiB per upload, 5 requests/s per address (bursts of 7)\n"))
+        assertTrue(out.toString("UTF-8"), out.toString("UTF-8").contains("collect: limits: 256 connections, 10000 ms idle timeout, 2 MiB per upload, 5 requests/s per address (bursts of 7), responses 1..5\n"))
         assertTrue(err.toString("UTF-8"), err.toString("UTF-8").startsWith("collect: WARNING: --allow-anonymous: NO AUTHENTICATION. Anyone who can reach 127.0.0.1:"))
     }
 
@@ -161,6 +161,7 @@ class CollectorTest {
         assertEquals(listOf("hapticon: --port must be in 0..65535, got 70000"), cli("collect", "--port", "70000").stderrLines)
         assertEquals(listOf("hapticon: --rate must be in 1..100000, got 0"), cli("collect", "--rate", "0").stderrLines)
         assertEquals(listOf("hapticon: --max-body-mb must be in 1..1024, got 2048"), cli("collect", "--max-body-mb", "2048").stderrLines)
+        assertEquals(listOf("hapticon: --scale-points must be in 2..11 (a Likert item's points), got 12"), cli("collect", "--scale-points", "12").stderrLines)
         assertEquals(listOf("hapticon: unknown option --token-file for collect"), cli("collect", "--token-file", "nope").stderrLines)
         val db = "sqlite:" + File(temp.root, "tokens.db").path
         assertEquals(listOf("hapticon: collect token needs add, list or revoke"), cli("collect", "token").stderrLines)

@@ -1,157 +1,240 @@
 package org.hapticon.gesture.social
 
-/**
- * One frame of a contact stream: at [timeSeconds], contact of [intensity] (pressure in the sensor's unit; 0 or
- * less = no contact) centred at ([x], [y]) (normalised 0..1 across the surface) over [area] (the sensor's area
- * unit). A phone's touchscreen gives pressure, position and touch major × minor; a pressure grid gives the sum
- * of its cells, their intensity-weighted centroid and the number of active cells.
- */
-public data class ContactFrame(val timeSeconds: Double, val intensity: Double, val x: Double, val y: Double, val area: Double)
+import kotlin.math.abs
+import kotlin.math.sqrt
 
 /**
- * The 13 features of one touch message, after the EIT-skin social-touch paper's Table 1: its feature groups are
- * pressure intensity (maxima and minima), location, contact area, touch duration, the maximum rates of intensity
- * rise and fall, and the touch count, with the touches of one message averaged. Our 13, in [NAMES] order, each
- * averaged over the message's touches unless it says otherwise:
+ * When a touch is on (the EIT-skin paper's segmentation, 001_e790093bbd2e3cd3.txt:101): "the beginning and end of each
+ * touch was defined by a change in the intensity above (or below) a pre-defined threshold of a signal from either the
+ * artificial skin or the shoulder joint sensor". A frame is in a touch while its largest element exceeds [skin] or the
+ * joint's potential change exceeds [joint] in magnitude.
  *
- *  1. `intensity_max` — a touch's highest intensity;
- *  2. `intensity_min` — a touch's lowest intensity while in contact;
- *  3. `intensity_mean` — a touch's mean intensity;
- *  4. `x`, 5. `y` — a touch's intensity-weighted mean position;
- *  6. `area_max`, 7. `area_mean` — a touch's largest and mean contact area;
- *  8. `duration_s` — from a touch's first to its last contact frame;
- *  9. `rise_max` — a touch's fastest intensity rise, units/s (including the step from no contact);
- * 10. `fall_max` — a touch's fastest intensity fall, units/s (including the step to no contact);
- * 11. `touch_count` — the message's number of touches (not averaged);
- * 12. `message_s` — first contact to last contact of the message (not averaged);
- * 13. `gap_mean_s` — mean time between one touch's end and the next one's start (0 with fewer than 2 touches).
- *
- * The groups are the paper's; the exact split into 13 (which statistics of intensity and area, the two timing
- * features 12–13) is our reading and was not re-checked against the table's rows.
- *
- * A touch is a maximal run of frames with intensity > 0. Frames must come in time order; non-finite frames are
- * skipped and counted. Streaming and O(1) in memory, so an hour-long stream costs nothing more than its frames.
- * An empty stream (or no contact) gives all zeros.
+ * The paper does not give the thresholds (paper silent): [DEFAULT] is 5 % of full scale for a skin and a joint scaled
+ * 0..1 (above [SocialTouchSyntheticPeople]'s sub-threshold "no touch" contact), [ANY_CONTACT] any contact at all, for a
+ * touchscreen, whose pressure is 0 off the glass.
  */
-public class SocialTouchFeatures {
-    private var touches = 0
-    private var inTouch = false
-    private var skipped = 0L
-    // Per-message sums of per-touch values.
-    private val sums = DoubleArray(10)
-    // The running touch.
-    private var tMax = 0.0; private var tMin = 0.0; private var tSum = 0.0; private var tFrames = 0L
-    private var tWx = 0.0; private var tWy = 0.0; private var tW = 0.0; private var tX = 0.0; private var tY = 0.0
-    private var tAreaMax = 0.0; private var tAreaSum = 0.0
-    private var tStart = 0.0; private var tRise = 0.0; private var tFall = 0.0
+public class TouchThresholds(public val skin: Double, public val joint: Double) {
+    init {
+        require(skin >= 0.0 && skin.isFinite() && joint >= 0.0 && joint.isFinite()) { "thresholds must be finite and >= 0, got $skin and $joint" }
+    }
+
+    /** Whether a frame whose largest element is [skinMax] and whose joint change is [jointChange] is in a touch. */
+    public fun on(skinMax: Double, jointChange: Double): Boolean = skinMax > skin || abs(jointChange) > joint
+
+    public companion object {
+        /** 0.05 of a 0..1 skin and joint. */
+        public val DEFAULT: TouchThresholds = TouchThresholds(0.05, 0.05)
+
+        /** Anything above 0 on the skin or the joint. */
+        public val ANY_CONTACT: TouchThresholds = TouchThresholds(0.0, 0.0)
+    }
+}
+
+/**
+ * The 13 features of one touch message: the EIT-skin paper's Table 1, in its order and with its definitions
+ * (001_e790093bbd2e3cd3.txt:111–124, defined at :107–110 and :128–130). Features 1–12 are measured per touch and
+ * "if multiple touches were used to communicate a message, the average of their values was used"
+ * (001_e790093bbd2e3cd3.txt:132); a touch is a run of frames that [thresholds] call on (:101).
+ *
+ *  1. `max_intensity` — the largest element value over the touch ("maximum … conductivity changes … over all finite
+ *     elements", :107);
+ *  2. `min_intensity` — the smallest element value over the touch (:107);
+ *  3. `max_joint`, 4. `min_joint` — the joint sensor's largest and smallest potential change over the touch (:107);
+ *  5. `x`, 6. `y` — the centroid of the elements holding at least 75 % of the image's maximum (:108), at the frame where
+ *     the touch's maximum occurs (paper silent on the instant; ours: the same instant as feature 8, :109);
+ *  7. `displacement` — the distance "from the initial to final locations of a touch" (:108): the 75 % centroids of the
+ *     touch's first and last frames;
+ *  8. `spatial_resolution` — at the instant of the maximum intensity, the number of elements holding at least 50 % of
+ *     the maximum, as a ratio of all elements (:109, :128);
+ *  9. `mean_spatial_resolution` — the same ratio averaged over the touch's frames (:128);
+ * 10. `duration_s` — "the time taken from the beginning to the end of the touch" (:130): from the first frame on to the
+ *     first frame off (to the last frame on if the stream ends first);
+ * 11. `max_rise_rate`, 12. `max_fall_rate` — the largest increase and decrease of any element between adjoining frames,
+ *     per second (:130), over the steps into, through and out of the touch;
+ * 13. `touch_count` — "the number of sequential touches that constitute a particular message" (:130), not averaged.
+ *
+ * Paper silent, ours: the centroid counts each qualifying element once (not weighted by intensity, as "the centroid" of
+ * the elements reads); an image whose maximum is not above 0 has no location (a touch seen by the joint sensor alone
+ * is located at the origin, with resolution 0); a message with no touch gives 13 zeros (nothing crossed the threshold:
+ * the paper's "no touch" class, :152).
+ *
+ * Frames must come in time order with [SkinLayout.size] elements; a frame that is shorter or longer, non-finite or
+ * earlier than the last is skipped and counted. Streaming: memory is two frames' elements, whatever the stream's length.
+ */
+public class SocialTouchFeatures(private val layout: SkinLayout, private val thresholds: TouchThresholds = TouchThresholds.DEFAULT) {
+    private val n = layout.size
+    private var previous = DoubleArray(n)
+    private var havePrevious = false
     private var lastTime = Double.NaN
-    private var lastIntensity = 0.0
-    private var firstContact = Double.NaN
-    private var lastContact = Double.NaN
-    private var gapSum = 0.0
+    private var skipped = 0L
 
-    /** Frames skipped for a non-finite field or for going back in time. */
+    private var touches = 0
+    private val sums = DoubleArray(COUNT - 1)
+
+    // The running touch.
+    private var inTouch = false
+    private var firstStart = Double.NaN
+    private var start = 0.0
+    private var lastOn = 0.0
+    private var tMax = 0.0
+    private var tMin = 0.0
+    private var jMax = 0.0
+    private var jMin = 0.0
+    private var peakX = 0.0
+    private var peakY = 0.0
+    private var peakResolution = 0.0
+    private var located = false
+    private var firstX = 0.0
+    private var firstY = 0.0
+    private var lastX = 0.0
+    private var lastY = 0.0
+    private var resolutionSum = 0.0
+    private var frames = 0L
+    private var rise = 0.0
+    private var fall = 0.0
+
+    /** Frames skipped for a wrong element count, a non-finite value or going back in time. */
     public val skippedFrames: Long get() = skipped
 
+    /** Touches ended or running so far. */
+    public val touchCount: Int get() = touches + if (inTouch) 1 else 0
+
+    /** Whether the last frame was in a touch. */
+    public val inContact: Boolean get() = inTouch
+
+    /** From the first touch's first frame to the last frame in a touch, seconds (0 without a touch). */
+    public val contactSeconds: Double get() = if (firstStart.isNaN()) 0.0 else lastOn - firstStart
+
     /** Feeds one frame. */
-    public fun offer(frame: ContactFrame) {
+    public fun offer(frame: SkinFrame) {
         val t = frame.timeSeconds
-        if (!(t.isFinite() && frame.intensity.isFinite() && frame.x.isFinite() && frame.y.isFinite() && frame.area.isFinite()) || t < lastTime) {
+        val e = frame.elements
+        if (e.size != n || !t.isFinite() || !frame.joint.isFinite() || t < lastTime || e.any { !it.isFinite() }) {
             skipped++
             return
         }
-        val dt = if (lastTime.isNaN()) 0.0 else t - lastTime
-        val intensity = maxOf(frame.intensity, 0.0)
-        if (intensity > 0.0) {
-            if (!inTouch) {
-                if (!lastContact.isNaN()) gapSum += t - lastContact
-                startTouch(t, intensity, frame)
-            } else {
-                addToTouch(intensity, frame)
-            }
-            if (dt > 0.0) {
-                val rate = (intensity - lastIntensity) / dt
-                if (rate > tRise) tRise = rate
-                if (-rate > tFall) tFall = -rate
-            }
-            lastContact = t
-        } else if (inTouch) {
-            if (dt > 0.0 && lastIntensity / dt > tFall) tFall = lastIntensity / dt
-            endTouch()
+        var max = e[0]
+        var min = e[0]
+        for (k in 1 until n) {
+            if (e[k] > max) max = e[k]
+            if (e[k] < min) min = e[k]
         }
-        lastIntensity = intensity
+        val on = thresholds.on(max, frame.joint)
+        if (on && !inTouch) startTouch(t)
+        if (inTouch && havePrevious && t > lastTime) rates(e, t - lastTime)
+        if (on) addFrame(t, e, max, min, frame.joint) else if (inTouch) endTouch(t)
+        e.copyInto(previous)
+        havePrevious = true
         lastTime = t
     }
 
-    private fun startTouch(t: Double, intensity: Double, frame: ContactFrame) {
+    private fun startTouch(t: Double) {
         inTouch = true
-        if (firstContact.isNaN()) firstContact = t
-        tStart = t
-        tMax = intensity; tMin = intensity; tSum = 0.0; tFrames = 0
-        tWx = 0.0; tWy = 0.0; tW = 0.0; tAreaMax = 0.0; tAreaSum = 0.0
-        // A touch starting from no contact rises by its first intensity over one frame step.
-        val dt = if (lastTime.isNaN()) 0.0 else t - lastTime
-        tRise = if (dt > 0.0) intensity / dt else 0.0
-        tFall = 0.0
-        addToTouch(intensity, frame)
+        start = t
+        if (firstStart.isNaN()) firstStart = t
+        tMax = Double.NEGATIVE_INFINITY; tMin = Double.POSITIVE_INFINITY
+        jMax = Double.NEGATIVE_INFINITY; jMin = Double.POSITIVE_INFINITY
+        peakX = 0.0; peakY = 0.0; peakResolution = 0.0
+        located = false
+        resolutionSum = 0.0; frames = 0
+        rise = 0.0; fall = 0.0
     }
 
-    private fun addToTouch(intensity: Double, frame: ContactFrame) {
-        if (intensity > tMax) tMax = intensity
-        if (intensity < tMin) tMin = intensity
-        tSum += intensity
-        tFrames++
-        tWx += intensity * frame.x; tWy += intensity * frame.y; tW += intensity
-        tX = frame.x; tY = frame.y
-        if (frame.area > tAreaMax) tAreaMax = frame.area
-        tAreaSum += frame.area
+    private fun rates(e: DoubleArray, dt: Double) {
+        for (k in 0 until n) {
+            val rate = (e[k] - previous[k]) / dt
+            if (rate > rise) rise = rate
+            if (-rate > fall) fall = -rate
+        }
     }
 
-    private fun endTouch() {
-        inTouch = false
+    private fun addFrame(t: Double, e: DoubleArray, max: Double, min: Double, joint: Double) {
+        lastOn = t
+        if (min < tMin) tMin = min
+        if (joint > jMax) jMax = joint
+        if (joint < jMin) jMin = joint
+        frames++
+        if (max <= 0.0) {
+            if (max > tMax) tMax = max
+            return
+        }
+        // One pass: the 75 % centroid (:108) and the 50 % element count (:128) of this image.
+        val at75 = 0.75 * max
+        val at50 = 0.5 * max
+        var sx = 0.0
+        var sy = 0.0
+        var c75 = 0
+        var c50 = 0
+        for (k in 0 until n) {
+            val v = e[k]
+            if (v >= at50) c50++
+            if (v >= at75) { sx += layout.x(k); sy += layout.y(k); c75++ }
+        }
+        val cx = sx / c75
+        val cy = sy / c75
+        val resolution = c50.toDouble() / n
+        resolutionSum += resolution
+        if (!located) { firstX = cx; firstY = cy; located = true }
+        lastX = cx; lastY = cy
+        if (max > tMax) {
+            tMax = max
+            peakX = cx; peakY = cy; peakResolution = resolution
+        }
+    }
+
+    private fun endTouch(t: Double) {
+        add(values(t))
         touches++
-        sums[0] += tMax; sums[1] += tMin; sums[2] += tSum / tFrames
-        sums[3] += tWx / tW; sums[4] += tWy / tW
-        sums[5] += tAreaMax; sums[6] += tAreaSum / tFrames
-        sums[7] += lastContact - tStart
-        sums[8] += tRise; sums[9] += tFall
+        inTouch = false
     }
 
-    /** The 13 features of everything offered so far (a touch still in contact counts as ended). */
+    private fun add(v: DoubleArray) {
+        for (k in v.indices) sums[k] += v[k]
+    }
+
+    /** Features 1–12 of the running touch, ending at [end]. */
+    private fun values(end: Double): DoubleArray {
+        val dx = lastX - firstX
+        val dy = lastY - firstY
+        return doubleArrayOf(
+            tMax, tMin, jMax, jMin, peakX, peakY,
+            if (located) sqrt(dx * dx + dy * dy) else 0.0,
+            peakResolution, resolutionSum / frames,
+            end - start, rise, fall,
+        )
+    }
+
+    /** The 13 features of everything offered so far (a touch still on counts as ending at its last frame). */
     public fun features(): DoubleArray {
         val out = DoubleArray(COUNT)
-        val wasInTouch = inTouch
-        val saved = sums.copyOf()
-        val savedTouches = touches
-        if (wasInTouch) endTouch()
-        if (touches > 0) {
-            for (k in 0 until 10) out[k] = sums[k] / touches
-            out[10] = touches.toDouble()
-            out[11] = lastContact - firstContact
-            out[12] = if (touches > 1) gapSum / (touches - 1) else 0.0
-        }
-        // Leave the running state as it was: more frames may follow.
-        saved.copyInto(sums)
-        touches = savedTouches
-        inTouch = wasInTouch
+        val count = touchCount
+        if (count == 0) return out
+        val total = sums.copyOf()
+        if (inTouch) values(lastOn).forEachIndexed { k, v -> total[k] += v }
+        for (k in total.indices) out[k] = total[k] / count
+        out[COUNT - 1] = count.toDouble()
         return out
     }
 
     public companion object {
-        /** Features per message. */
+        /** Features per message (Table 1, 001_e790093bbd2e3cd3.txt:111–124). */
         public const val COUNT: Int = 13
 
-        /** The feature names, in output order. */
+        /** The feature names, in Table 1's order. */
         public val NAMES: List<String> = listOf(
-            "intensity_max", "intensity_min", "intensity_mean", "x", "y", "area_max", "area_mean",
-            "duration_s", "rise_max", "fall_max", "touch_count", "message_s", "gap_mean_s",
+            "max_intensity", "min_intensity", "max_joint", "min_joint", "x", "y", "displacement",
+            "spatial_resolution", "mean_spatial_resolution", "duration_s", "max_rise_rate", "max_fall_rate", "touch_count",
         )
 
-        /** The features of a whole [stream]. */
-        public fun of(stream: Sequence<ContactFrame>): DoubleArray {
-            val features = SocialTouchFeatures()
+        /** The features of a whole [stream] on [layout]. */
+        public fun of(layout: SkinLayout, stream: Sequence<SkinFrame>, thresholds: TouchThresholds = TouchThresholds.DEFAULT): DoubleArray {
+            val features = SocialTouchFeatures(layout, thresholds)
             for (frame in stream) features.offer(frame)
             return features.features()
         }
+
+        /** The features of a touchscreen [stream], drawn on [pad] and cut at any contact ([TouchThresholds.ANY_CONTACT]). */
+        public fun ofContacts(stream: Sequence<ContactFrame>, pad: TouchPadSkin = TouchPadSkin()): DoubleArray =
+            of(pad.layout, stream.map(pad::frame), TouchThresholds.ANY_CONTACT)
     }
 }

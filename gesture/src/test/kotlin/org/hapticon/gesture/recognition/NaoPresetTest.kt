@@ -18,6 +18,21 @@ class NaoPresetTest {
         val forest = NaoPreset.FOREST
         assertEquals(listOf(100, 32, 20, 8), listOf(forest.trees, forest.maxDepth, forest.featuresPerSplit, forest.minSamplesSplit))
         assertTrue(forest.bootstrap)
+        assertEquals(listOf("hand", "lower-arm", "upper-arm", "shoulder"), NaoPreset.LOCATIONS)
+    }
+
+    @Test
+    fun tasks_areThePapersFourClassifiers_eachWithNoneAndItsChance() {
+        // 004_7d5078645d142b2a.txt:205 (1/5, 1/3, 1/6) and :215 (1/11).
+        assertEquals(listOf(5, 3, 6, 11), NaoTask.entries.map { it.classes.size })
+        assertEquals(listOf("gentle", "energetic", "none"), NaoTask.INTENSITY.classes)
+        assertEquals(listOf("hit", "poke", "squeeze", "stroke", "tickle", "none"), NaoTask.GESTURE.classes)
+        assertEquals(NaoPreset.LOCATIONS + "none", NaoTask.LOCATION.classes)
+        assertEquals(1.0 / 3, NaoTask.INTENSITY.chance, 0.0)
+        assertEquals(NaoTask.entries.toSet(), NaoPreset.FORESTS.keys)
+        val span = NaoSpan(0, 80, "tickle-gentle", "shoulder")
+        assertEquals(listOf("shoulder", "gentle", "tickle", "tickle-gentle"), NaoTask.entries.map { it.labelOf(span) })
+        assertEquals(List(4) { "none" }, NaoTask.entries.map { it.labelOf(null) })
     }
 
     @Test
@@ -50,7 +65,7 @@ class NaoPresetTest {
 
     @Test
     fun windowLabel_takesTheGestureAtThreeQuartersOfTheWindow() {
-        val spans = listOf(NaoSpan(100, 300, "poke-gentle"))
+        val spans = listOf(NaoSpan(100, 300, "poke-gentle", "hand"))
         // Window [40, 120) overlaps 20 samples; [60, 140) 40; [80, 160) 60 = 0.75 × 80: labelled.
         assertEquals("none", NaoPreset.windowLabel(spans, 40))
         assertEquals("none", NaoPreset.windowLabel(spans, 60))
@@ -59,18 +74,20 @@ class NaoPresetTest {
         assertEquals("poke-gentle", NaoPreset.windowLabel(spans, 240))
         assertEquals("none", NaoPreset.windowLabel(spans, 241))
         // A gesture shorter than 60 samples never labels a window.
-        assertEquals("none", NaoPreset.windowLabel(listOf(NaoSpan(100, 159, "hit-energetic")), 90))
+        assertEquals("none", NaoPreset.windowLabel(listOf(NaoSpan(100, 159, "hit-energetic", "hand")), 90))
         // Two gestures in one window: the one it overlaps more, if ≥ 60.
-        assertEquals("tickle-gentle", NaoPreset.windowLabel(listOf(NaoSpan(0, 15, "hit-gentle"), NaoSpan(15, 200, "tickle-gentle")), 0))
+        assertEquals("tickle-gentle", NaoPreset.windowLabel(listOf(NaoSpan(0, 15, "hit-gentle", "hand"), NaoSpan(15, 200, "tickle-gentle", "upper-arm")), 0))
     }
 
     @Test
-    fun windows_stepByHalfAWindow() {
-        val recording = NaoRecording("p", List(4) { DoubleArray(200) { 10.0 } }, listOf(NaoSpan(40, 200, "squeeze-energetic")))
+    fun windows_stepByHalfAWindow_andCarryEveryTasksLabel() {
+        val recording = NaoRecording("p", List(4) { DoubleArray(200) { 10.0 } }, listOf(NaoSpan(40, 200, "squeeze-energetic", "lower-arm")))
         val windows = NaoPreset.windows(listOf(recording))
         // Starts 0, 40, 80, 120 (120 + 80 = 200).
         assertEquals(4, windows.size)
-        assertEquals(listOf("none", "squeeze-energetic", "squeeze-energetic", "squeeze-energetic"), windows.labels)
+        assertEquals(listOf("none", "squeeze-energetic", "squeeze-energetic", "squeeze-energetic"), windows.labels(NaoTask.COMBINED))
+        assertEquals(listOf("none", "lower-arm", "lower-arm", "lower-arm"), windows.labels(NaoTask.LOCATION))
+        assertEquals(listOf("none", "energetic", "energetic", "energetic"), windows.labels(NaoTask.INTENSITY))
         assertEquals(124, windows.features[0].size)
     }
 
@@ -81,17 +98,20 @@ class NaoPresetTest {
     }
 
     @Test
-    fun evaluation_syntheticPeople_randomSplitFlattersLeaveOnePersonOut() {
-        val windows = NaoPreset.windows(NaoSyntheticPeople.sessions(count = 4, takesPerClass = 2, seed = 7))
-        val small = ForestParams(trees = 20, maxDepth = 32, featuresPerSplit = 20, minSamplesSplit = 8)
-        val split = NaoEvaluation.randomSplit(windows, small)
-        val lopo = NaoEvaluation.leaveOnePersonOut(windows, small)
-        assertEquals(windows.size - (windows.size * 0.7).toInt(), split.total)
+    fun evaluation_separateForestPerTask_scoresOverTheTasksOwnClasses() {
+        val windows = NaoPreset.windows(NaoSyntheticPeople.sessions(count = 3, rounds = 1, seed = 7))
+        val small = ForestParams(trees = 10, maxDepth = 32, featuresPerSplit = 20, minSamplesSplit = 8)
+        for (task in NaoTask.entries) {
+            val split = NaoEvaluation.randomSplit(windows, task, small)
+            assertEquals(task.classes.size, split.confusion.size)
+            assertEquals(windows.size - (windows.size * 0.7).toInt(), split.total)
+            // Far above chance on these well-separated synthetic gestures.
+            assertTrue("${task.label} ${split.accuracy}", split.accuracy > 2 * task.chance)
+        }
+        // Intensity is scored over gentle, energetic and none: every window counts, none-windows included.
+        val lopo = NaoEvaluation.leaveOnePersonOut(windows, NaoTask.INTENSITY, small)
         assertEquals(windows.size, lopo.total)
-        // Far above the 1-in-11 guess on these well-separated synthetic gestures.
-        assertTrue("split ${split.combined}", split.combined > 0.5)
-        assertTrue("lopo ${lopo.combined}", lopo.combined > 0.3)
-        assertTrue(split.gesture >= split.combined)
+        assertTrue(lopo.confusion[2].sum() > 0)
     }
 
     @Test
@@ -100,43 +120,25 @@ class NaoPresetTest {
         val confusion = Array(n) { IntArray(n) }
         val tickle = NaoPreset.LABELS.indexOf("tickle-gentle")
         val poke = NaoPreset.LABELS.indexOf("poke-gentle")
-        val pokeEnergetic = NaoPreset.LABELS.indexOf("poke-energetic")
+        val none = NaoPreset.LABELS.indexOf("none")
         confusion[tickle][tickle] = 64
         confusion[tickle][poke] = 11
-        confusion[tickle][pokeEnergetic] = 25
-        val scores = NaoScores(confusion)
+        confusion[tickle][none] = 25
+        confusion[none][none] = 300
+        val scores = NaoScores(NaoTask.COMBINED, confusion)
         assertEquals(0.64, scores.share("tickle-gentle", "tickle-gentle"), 1e-12)
         assertEquals(0.11, scores.share("tickle-gentle", "poke-gentle"), 1e-12)
-        assertEquals(0.64, scores.combined, 1e-12)
-        assertEquals(0.64, scores.gesture, 1e-12)
-        // Intensity right for tickle-gentle and poke-gentle predictions: 75 of 100.
-        assertEquals(0.75, scores.intensity, 1e-12)
+        // 364 of 400 windows right; the two classes with windows recall 0.64 and 1.0.
+        assertEquals(364.0 / 400, scores.accuracy, 1e-12)
+        assertEquals(0.82, scores.averageLabelAccuracy, 1e-12)
     }
 
     @Test
-    fun naoCsv_readsTimeFourResistancesAndLabelSpans() {
-        val csv = "time_s,r1,r2,r3,r4,label\n" +
-            (0 until 6).joinToString("\n") { i -> "${i * 0.025},10,11,12,13,${if (i in 2..4) "poke_gentle" else "none"}" }
-        val recording = NaoCsv.read(csv, "p1")
-        assertEquals(6, recording.frameCount)
-        assertEquals(13.0, recording.channels[3][5], 0.0)
-        assertEquals("[poke-gentle[2, 5)]", recording.spans.toString())
-    }
-
-    @Test
-    fun naoCsv_badRows_nameTheLine() {
-        for ((csv, message) in listOf(
-            "time,r1,r2,r3\n0,1,2,3\n" to "line 1: expected 4 resistance columns, found 3",
-            "time,r1,r2,r3,r4\n0,1,2,3,x\n" to "line 2: resistance r4 must be a finite number >= 0, was \"x\"",
-            "time,r1,r2,r3,r4\n0,1,2,3,4\n0,1,2,3,4\n" to "line 3: time must be a number after the previous row's, was \"0\"",
-            "time,r1,r2,r3,r4,label\n0,1,2,3,4,wave-gentle\n" to "line 2: unknown gesture 'wave-gentle'; expected one of ${NaoPreset.LABELS.joinToString()}",
-        )) {
-            try {
-                NaoCsv.read(csv, "p")
-                fail("accepted $csv")
-            } catch (e: IllegalArgumentException) {
-                assertEquals(message, e.message)
-            }
-        }
+    fun scores_intensity_noneCountsAsAClass() {
+        val confusion = arrayOf(intArrayOf(8, 1, 1), intArrayOf(0, 9, 1), intArrayOf(2, 0, 78))
+        val scores = NaoScores(NaoTask.INTENSITY, confusion)
+        assertEquals(95.0 / 100, scores.accuracy, 1e-12)
+        assertEquals((0.8 + 0.9 + 78.0 / 80) / 3, scores.averageLabelAccuracy, 1e-12)
+        assertEquals(2.0 / 80, scores.share("none", "gentle"), 1e-12)
     }
 }

@@ -20,15 +20,37 @@ class LogitBoostTest {
     }
 
     @Test
-    fun train_nonSeparableIdenticalRows_learnsTheClassFrequencies() {
-        // 30 × class 0 and 10 × class 1 with the same features: no stump can split, so p → (0.75, 0.25).
+    fun train_identicalRows_noStumpCanSplit_soEveryClassStaysEquallyLikely() {
+        // 30 × class 0 and 10 × class 1 with the same features. WEKA's DecisionStump finds no cut and predicts 0 on
+        // both sides, so LogitBoost never moves off p = 1/J (it does not learn the class frequencies): the first class wins.
         val rows = List(40) { doubleArrayOf(1.0, 2.0) }
-        val labels = IntArray(40) { if (it < 30) 0 else 1 }
+        val labels = IntArray(40) { if (it < 30) 1 else 0 }
         val model = LogitBoost.train(rows, labels, 2, iterations = 50)
         val p = DoubleArray(2)
         assertEquals(0, model.predict(doubleArrayOf(1.0, 2.0), p))
-        assertEquals(0.75, p[0], 1e-6)
-        assertEquals(0.25, p[1], 1e-6)
+        assertEquals(0.5, p[0], 0.0)
+        assertEquals(0.5, p[1], 0.0)
+    }
+
+    @Test
+    fun train_oneRound_isTheWeightedMeanResponseEitherSideOfTheBestCut() {
+        // Two classes at x 0, 0 | 1, 1. Round 1: p = 0.5, so z = ±2 and w = 0.25 each, rescaled to sum 4 → 1 each.
+        // The cut at 0.5 gives left mean z = +2 (class 0), right −2; F_0 += 2·(2 − 1)/2 = 1 left, −1 right.
+        val model = LogitBoost.train(listOf(doubleArrayOf(0.0), doubleArrayOf(0.0), doubleArrayOf(1.0), doubleArrayOf(1.0)), intArrayOf(0, 0, 1, 1), 2, iterations = 1)
+        val p = DoubleArray(2)
+        assertEquals(0, model.predict(doubleArrayOf(0.2), p))
+        assertEquals(Math.exp(1.0) / (Math.exp(1.0) + Math.exp(-1.0)), p[0], 1e-12)
+        assertEquals(1, model.predict(doubleArrayOf(0.5000001), p))
+        assertEquals(0, model.predict(doubleArrayOf(0.5), p)) // <= the cut goes left, as WEKA's whichSubset
+    }
+
+    @Test
+    fun settings_outOfRange_areRejected() {
+        assertThrows(IllegalArgumentException::class.java) { LogitBoost.Settings(iterations = 0) }
+        assertThrows(IllegalArgumentException::class.java) { LogitBoost.Settings(shrinkage = 0.0) }
+        assertThrows(IllegalArgumentException::class.java) { LogitBoost.Settings(zMax = Double.NaN) }
+        assertThrows(IllegalArgumentException::class.java) { LogitBoost.Settings(weightThresholdPercent = 101) }
+        assertEquals(LogitBoost.Settings(10, 1.0, 3.0, 100, -Double.MAX_VALUE), LogitBoost.WEKA_DEFAULTS)
     }
 
     @Test

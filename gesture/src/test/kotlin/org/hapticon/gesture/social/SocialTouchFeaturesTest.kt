@@ -5,67 +5,127 @@ import org.junit.Assert.assertEquals
 import org.junit.Test
 
 class SocialTouchFeaturesTest {
-    private fun frame(t: Double, i: Double, x: Double = 0.5, y: Double = 0.5, area: Double = if (i > 0) 2.0 else 0.0) = ContactFrame(t, i, x, y, area)
+    /** Three elements in a row at x = 0, 1, 2 (y = 0). */
+    private val row3 = SkinLayout.grid(3, 1, 0.0, 2.0, 0.0, 0.0)
+
+    private fun f(t: Double, vararg e: Double, joint: Double = 0.0) = SkinFrame(t, e, joint)
 
     @Test
-    fun features_twoTouches_areAveragedPerTouch() {
-        // 100 Hz: touch 1 at 0.01–0.03 s (1, 3, 2 at x 0.2), rest, touch 2 at 0.06–0.07 s (4, 4 at x 0.8).
-        val stream = listOf(
-            frame(0.00, 0.0), frame(0.01, 1.0, x = 0.2), frame(0.02, 3.0, x = 0.2), frame(0.03, 2.0, x = 0.2),
-            frame(0.04, 0.0), frame(0.05, 0.0), frame(0.06, 4.0, x = 0.8, area = 4.0), frame(0.07, 4.0, x = 0.8, area = 6.0), frame(0.08, 0.0),
+    fun names_areTable1sThirteenInItsOrder() {
+        assertEquals(
+            listOf(
+                "max_intensity", "min_intensity", "max_joint", "min_joint", "x", "y", "displacement",
+                "spatial_resolution", "mean_spatial_resolution", "duration_s", "max_rise_rate", "max_fall_rate", "touch_count",
+            ),
+            SocialTouchFeatures.NAMES,
         )
-        val f = SocialTouchFeatures.of(stream.asSequence())
-        assertEquals(13, f.size)
-        assertEquals((3.0 + 4.0) / 2, f[0], 1e-12) // intensity_max
-        assertEquals((1.0 + 4.0) / 2, f[1], 1e-12) // intensity_min
-        assertEquals((2.0 + 4.0) / 2, f[2], 1e-12) // intensity_mean
-        assertEquals((0.2 + 0.8) / 2, f[3], 1e-12) // x
-        assertEquals((2.0 + 6.0) / 2, f[5], 1e-12) // area_max
-        assertEquals((2.0 + 5.0) / 2, f[6], 1e-12) // area_mean
-        assertEquals((0.02 + 0.01) / 2, f[7], 1e-12) // duration_s
-        // Rises: touch 1 (1 − 0)/0.01 = 100 then (3 − 1)/0.01 = 200; touch 2 (4 − 0)/0.01 = 400.
-        assertEquals((200.0 + 400.0) / 2, f[8], 1e-9)
-        // Falls: touch 1 (3 − 2)/0.01 = 100 then (2 − 0)/0.01 = 200; touch 2 (4 − 0)/0.01 = 400.
-        assertEquals((200.0 + 400.0) / 2, f[9], 1e-9)
-        assertEquals(2.0, f[10], 0.0)
-        assertEquals(0.07 - 0.01, f[11], 1e-12)
-        assertEquals(0.06 - 0.03, f[12], 1e-12)
     }
 
     @Test
-    fun features_emptyOrNoContact_areAllZero() {
-        assertArrayEquals(DoubleArray(13), SocialTouchFeatures.of(emptySequence()), 0.0)
-        assertArrayEquals(DoubleArray(13), SocialTouchFeatures.of(sequenceOf(frame(0.0, 0.0), frame(1.0, 0.0))), 0.0)
+    fun features_twoTouches_areTable1sDefinitionsAveragedPerTouch() {
+        // 10 Hz. Touch 1 at 0.1–0.2 s (off at 0.3), touch 2 at 0.5 s (off at 0.6).
+        val stream = listOf(
+            f(0.0, 0.0, 0.0, 0.0),
+            f(0.1, 1.0, 0.8, 0.0, joint = 0.1),
+            f(0.2, 2.0, 1.6, 0.2, joint = 0.3),
+            f(0.3, 0.0, 0.0, 0.0),
+            f(0.4, 0.0, 0.0, 0.0),
+            f(0.5, 0.0, 0.5, 1.0, joint = -0.2),
+            f(0.6, 0.0, 0.0, 0.0),
+        )
+        val x = SocialTouchFeatures.of(row3, stream.asSequence())
+        // Touch 1: max 2 at 0.2 s, where ≥ 1.5 (75 %) are elements 0 and 1 (x 0.5) and ≥ 1.0 (50 %) 2 of 3; min 0;
+        // joint 0.1..0.3; centroids 0.5 then 0.5 (no displacement); 0.2 s; rises 10/s, falls 20/s (2 → 0 in 0.1 s).
+        // Touch 2: max 1 at 0.5 s, ≥ 0.75 only element 2 (x 2), ≥ 0.5 2 of 3; joint −0.2; 0.1 s; rise and fall 10/s.
+        val expected = doubleArrayOf(
+            (2.0 + 1.0) / 2, 0.0, (0.3 - 0.2) / 2, (0.1 - 0.2) / 2, (0.5 + 2.0) / 2, 0.0, 0.0,
+            2.0 / 3, 2.0 / 3, (0.2 + 0.1) / 2, (10.0 + 10.0) / 2, (20.0 + 10.0) / 2, 2.0,
+        )
+        assertArrayEquals(expected, x, 1e-9)
     }
 
     @Test
-    fun features_oneSample_isOneTouchOfNoDuration() {
-        val f = SocialTouchFeatures.of(sequenceOf(frame(5.0, 2.0, x = 0.3, y = 0.9)))
-        assertArrayEquals(doubleArrayOf(2.0, 2.0, 2.0, 0.3, 0.9, 2.0, 2.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0), f, 1e-12)
+    fun features_aStroke_movesItsCentroidAndReportsTheDisplacementAndPeakLocation() {
+        // A 5 × 1 strip at x 0..4: one element lit at a time, walking from x 0 to 4; the strongest at x 3.
+        val strip = SkinLayout.grid(5, 1, 0.0, 4.0, 0.0, 0.0)
+        val levels = doubleArrayOf(0.4, 0.5, 0.6, 0.9, 0.7)
+        val stream = (0..4).map { k -> SkinFrame(k * 0.025, DoubleArray(5) { if (it == k) levels[k] else 0.0 }) }
+        val x = SocialTouchFeatures.of(strip, stream.asSequence())
+        assertEquals(4.0, x[6], 1e-12) // displacement: first centroid x 0, last x 4
+        assertEquals(3.0, x[4], 1e-12) // location at the maximum's frame
+        assertEquals(0.2, x[7], 1e-12) // one element of five at ≥ 50 %
+        assertEquals(0.1, x[9], 1e-12) // 0 → 0.1 s, the stream ending in contact
+        assertEquals(1.0, x[12], 0.0)
+    }
+
+    @Test
+    fun features_theCentroidIsOfElementsAtLeast75PercentOfTheMaximum_unweighted() {
+        // Elements at x 0, 1, 2 holding 1.0, 0.75, 0.74: the first two qualify, each counted once → x 0.5.
+        val x = SocialTouchFeatures.of(row3, sequenceOf(f(0.0, 1.0, 0.75, 0.74)))
+        assertEquals(0.5, x[4], 1e-12)
+        assertEquals(1.0, x[7], 1e-12) // all three ≥ 0.5
+    }
+
+    @Test
+    fun features_aTouchSeenOnlyByTheJointSensor_isLocatedAtTheOrigin() {
+        val stream = sequenceOf(f(0.0, 0.0, 0.0, 0.0), f(0.1, 0.0, 0.0, 0.0, joint = 0.4), f(0.2, 0.0, 0.0, 0.0, joint = 0.6), f(0.3, 0.0, 0.0, 0.0))
+        val x = SocialTouchFeatures.of(row3, stream)
+        assertArrayEquals(doubleArrayOf(0.0, 0.0, 0.6, 0.4, 0.0, 0.0, 0.0, 0.0, 0.0, 0.2, 0.0, 0.0, 1.0), x, 1e-12)
+    }
+
+    @Test
+    fun features_belowTheThresholdOrEmpty_areAllZero() {
+        assertArrayEquals(DoubleArray(13), SocialTouchFeatures.of(row3, emptySequence()), 0.0)
+        val faint = sequenceOf(f(0.0, 0.05, 0.0, 0.0, joint = -0.05), f(0.1, 0.04, 0.01, 0.0))
+        assertArrayEquals(DoubleArray(13), SocialTouchFeatures.of(row3, faint), 0.0)
+        assertEquals(1.0, SocialTouchFeatures.of(row3, faint, TouchThresholds(0.01, 1.0))[12], 0.0)
+    }
+
+    @Test
+    fun offer_wrongSizeNonFiniteOrBackwardsFrames_areSkippedAndCounted() {
+        val features = SocialTouchFeatures(row3)
+        features.offer(f(1.0, 1.0, 0.0, 0.0))
+        features.offer(f(1.1, 1.0, 0.0))
+        features.offer(f(Double.NaN, 1.0, 0.0, 0.0))
+        features.offer(f(0.5, 1.0, 0.0, 0.0))
+        features.offer(f(1.2, 1.0, Double.NaN, 0.0))
+        features.offer(f(1.3, 1.0, 0.0, 0.0, joint = Double.POSITIVE_INFINITY))
+        assertEquals(5, features.skippedFrames)
+        assertEquals(1.0, features.features()[12], 0.0)
     }
 
     @Test
     fun features_hourLongStream_countsEveryTouchInConstantMemory() {
-        // One hour at 100 Hz: a 0.5 s touch every 2 s, 1800 touches, 360,000 frames generated lazily.
-        val frames = generateSequence(0L) { it + 1 }.take(360_000).map { k ->
-            val t = k / 100.0
-            frame(t, if (k % 200 < 50) 1.0 else 0.0)
-        }
-        val f = SocialTouchFeatures.of(frames)
-        assertEquals(1800.0, f[10], 0.0)
-        assertEquals(0.49, f[7], 1e-9)
-        assertEquals(3598.49, f[11], 1e-6)
-        assertEquals(1.51, f[12], 1e-6)
+        // One hour at 40 Hz on a 16-element pad, generated lazily: a 0.5 s touch every 2 s (from frame 1), 1800 touches.
+        val pad = SkinLayout.grid(4, 4)
+        val frames = generateSequence(0L) { it + 1 }.take(144_000).map { k -> SkinFrame(k / 40.0, DoubleArray(16) { if (k % 80 in 1..20) 0.5 else 0.0 }) }
+        val x = SocialTouchFeatures.of(pad, frames)
+        assertEquals(1800.0, x[12], 0.0)
+        assertEquals(0.5, x[9], 1e-9) // on at k, off at k + 20: 20 frames of 25 ms
+        assertEquals(20.0, x[10], 1e-9) // 0 → 0.5 in 25 ms
     }
 
     @Test
-    fun offer_nanOrBackwardsFrames_areSkippedAndCounted() {
-        val features = SocialTouchFeatures()
-        features.offer(frame(1.0, 1.0))
-        features.offer(frame(Double.NaN, 1.0))
-        features.offer(frame(0.5, 1.0))
-        features.offer(frame(1.01, Double.POSITIVE_INFINITY))
-        assertEquals(3, features.skippedFrames)
-        assertEquals(1.0, features.features()[10], 0.0)
+    fun touchPad_drawsAContactAsADiscOfItsArea_andAlwaysTheElementUnderTheFinger() {
+        val pad = TouchPadSkin(columns = 5, rows = 5)
+        val point = pad.frame(ContactFrame(0.0, 0.7, 0.5, 0.5, 0.0)).elements
+        assertEquals(listOf(12), point.indices.filter { point[it] > 0 })
+        assertEquals(0.7, point[12], 0.0)
+        // Area π·0.25² → radius 0.25: the centre and its four neighbours 0.25 away.
+        val disc = pad.frame(ContactFrame(0.0, 0.7, 0.5, 0.5, Math.PI * 0.0625)).elements
+        assertEquals(listOf(7, 11, 12, 13, 17), disc.indices.filter { disc[it] > 0 })
+        assertArrayEquals(DoubleArray(25), pad.frame(ContactFrame(0.0, 0.0, 0.5, 0.5, 0.3)).elements, 0.0)
+    }
+
+    @Test
+    fun ofContacts_countsEachFingerDownAsATouch() {
+        val stream = sequenceOf(
+            ContactFrame(0.00, 0.5, 0.2, 0.5, 0.01), ContactFrame(0.05, 0.0, 0.0, 0.0, 0.0),
+            ContactFrame(0.10, 0.6, 0.8, 0.5, 0.01), ContactFrame(0.15, 0.0, 0.0, 0.0, 0.0),
+        )
+        val x = SocialTouchFeatures.ofContacts(stream)
+        assertEquals(2.0, x[12], 0.0)
+        assertEquals(0.55, x[0], 1e-12)
+        assertEquals(0.05, x[9], 1e-12)
     }
 }

@@ -9,64 +9,83 @@ import org.junit.Test
 
 class SocialTouchSyntheticPeopleTest {
     @Test
-    fun classes_areSixEmotionsSixSocialMessagesAndNoTouch_eachWithAPrototypeButNoTouch() {
-        assertEquals(6, SocialTouchClasses.EMOTIONS.size)
-        assertEquals(6, SocialTouchClasses.SOCIAL_MESSAGES.size)
+    fun classes_areThePapersSixEmotionsSixSocialMessagesAndNoTouch() {
+        // 001_e790093bbd2e3cd3.txt:146 and :152, in the paper's order.
+        assertEquals(listOf("anger", "fear", "happiness", "sadness", "disgust", "surprise"), SocialTouchClasses.EMOTIONS)
+        assertEquals(listOf("attention-getting", "greeting", "acceptance", "rejection", "affection", "animosity"), SocialTouchClasses.SOCIAL_MESSAGES)
         assertEquals(13, SocialTouchClasses.ALL.toSet().size)
-        assertEquals("no-touch", SocialTouchClasses.ALL.last())
+        assertEquals(7, SocialTouchClasses.EMOTION_SET.size)
+        assertEquals(7, SocialTouchClasses.MESSAGE_SET.size)
         assertEquals(SocialTouchClasses.ALL.dropLast(1).toSet(), SocialTouchSyntheticPeople.PROTOTYPES.keys)
     }
 
     @Test
-    fun messages_everyPersonGivesEveryClassTheRequestedTimes_inShuffledOrder() {
-        val messages = SocialTouchSyntheticPeople.messages(people = 3, takesPerClass = 4)
-        assertEquals(3 * 4 * 13, messages.size)
-        for (person in listOf("p1", "p2", "p3")) for (label in SocialTouchClasses.ALL) {
-            assertEquals("$person $label", 4, messages.count { it.person == person && it.label == label })
+    fun experiment1_twoTransmitters_650TouchesEach_fiftyPerClass_shuffled() {
+        val messages = SocialTouchSyntheticPeople.experiment1()
+        assertEquals(1300, messages.size)
+        for (person in listOf("A", "B")) {
+            assertEquals(650, messages.count { it.person == person })
+            for (label in SocialTouchClasses.ALL) assertEquals(50, messages.count { it.person == person && it.label == label })
         }
-        // Shuffled: p1's first 13 messages are not the classes in list order.
         assertNotEquals(SocialTouchClasses.ALL, messages.take(13).map { it.label })
-        // Frames at 100 Hz, in time order.
-        for (m in messages) assertTrue(m.frames.zipWithNext().all { (a, b) -> b.timeSeconds > a.timeSeconds })
     }
 
     @Test
-    fun messages_sameSeed_sameFrames_otherSeed_otherFrames() {
-        val a = SocialTouchSyntheticPeople.messages(2, 2, seed = 7)
-        val b = SocialTouchSyntheticPeople.messages(2, 2, seed = 7)
-        val c = SocialTouchSyntheticPeople.messages(2, 2, seed = 8)
-        assertEquals(a.map { it.frames }, b.map { it.frames })
-        assertNotEquals(a.map { it.frames }, c.map { it.frames })
+    fun experiment2_fortyTwoTransmitters_2730Touches_fivePerClass() {
+        val messages = SocialTouchSyntheticPeople.experiment2()
+        assertEquals(2730, messages.size)
+        assertEquals(42, messages.map { it.person }.distinct().size)
+        assertTrue(messages.groupBy { it.person to it.label }.values.all { it.size == 5 })
     }
 
     @Test
-    fun features_followThePrototypes_touchCountsAndNoTouchZeros() {
-        val messages = SocialTouchSyntheticPeople.messages(people = 2, takesPerClass = 3)
-        val touches = SocialTouchFeatures.NAMES.indexOf("touch_count")
-        for (m in messages) {
-            val f = SocialTouchFeatures.of(m.frames.asSequence())
-            val prototype = SocialTouchSyntheticPeople.PROTOTYPES[m.label]
-            if (prototype == null) {
-                assertArrayEquals(m.label, DoubleArray(13), f, 0.0)
-                assertEquals((SocialTouchSyntheticPeople.NO_TOUCH_SECONDS * 100).toInt(), m.frames.size)
-            } else {
-                // Every touch stays in contact (intensity floored above 0), so the count is the prototype's, give or take the slip.
-                assertTrue("${m.label} ${f[touches]}", f[touches] in maxOf(1, prototype.touches - 1).toDouble()..(prototype.touches + 1).toDouble())
-            }
+    fun frames_are40HzOn729Elements_andRegenerateIdentically() {
+        val m = SocialTouchSyntheticPeople.messages(1, 1, seed = 7).first()
+        val a = m.frames().toList()
+        val b = m.frames().toList()
+        assertEquals(729, SocialTouchSyntheticPeople.LAYOUT.size)
+        assertTrue(a.all { it.elements.size == 729 })
+        assertEquals(a.map { it.timeSeconds }, a.indices.map { it / 40.0 })
+        assertEquals(a.map { it.elements.toList() to it.joint }, b.map { it.elements.toList() to it.joint })
+        val other = SocialTouchSyntheticPeople.messages(1, 1, seed = 8).first { it.label == m.label }
+        assertNotEquals(a.map { it.elements.toList() }, other.frames().map { it.elements.toList() }.toList())
+    }
+
+    @Test
+    fun features_noTouchIsBelowTheThreshold_everyOtherMessageHasATouch() {
+        val rows = SocialTouchSyntheticPeople.features(SocialTouchSyntheticPeople.messages(people = 3, takesPerClass = 2), SocialTouchClasses.ALL)
+        val noTouch = SocialTouchClasses.ALL.indexOf(SocialTouchClasses.NO_TOUCH)
+        for (i in 0 until rows.size) {
+            if (rows.labels[i] == noTouch) assertArrayEquals(DoubleArray(13), rows.features[i], 0.0)
+            else assertTrue("${SocialTouchClasses.ALL[rows.labels[i]]} ${rows.features[i][12]}", rows.features[i][12] >= 1.0)
         }
-        // Most messages keep the prototype's count: 1 − TOUCH_COUNT_SLIP of them, and all of a one-touch class that slipped down.
-        val kept = messages.filter { it.label != SocialTouchClasses.NO_TOUCH }
-            .count { SocialTouchFeatures.of(it.frames.asSequence())[touches] == SocialTouchSyntheticPeople.PROTOTYPES[it.label]!!.touches.toDouble() }
-        assertTrue("$kept of 72", kept in 40..64)
     }
 
     @Test
-    fun features_labelsIndexTheGivenList_andAnUnknownClassIsRefused() {
-        val labels = SocialTouchClasses.EMOTIONS
-        val messages = SocialTouchSyntheticPeople.messages(2, 1, labels = labels)
-        val rows = SocialTouchSyntheticPeople.features(messages, labels)
-        assertEquals(12, rows.size)
-        assertEquals(messages.map { labels.indexOf(it.label) }, rows.labels.toList())
+    fun features_followWhatThePaperSaysOfTheClasses() {
+        val rows = SocialTouchSyntheticPeople.features(SocialTouchSyntheticPeople.experiment2(), SocialTouchClasses.ALL)
+        fun mean(label: String, feature: String): Double {
+            val c = SocialTouchClasses.ALL.indexOf(label)
+            val k = SocialTouchFeatures.NAMES.indexOf(feature)
+            return rows.labels.indices.filter { rows.labels[it] == c }.map { rows.features[it][k] }.average()
+        }
+        // Highest pressures for anger and fear (:286); largest displacements for sadness and fear (:287).
+        val emotions = SocialTouchClasses.EMOTIONS
+        assertEquals(setOf("anger", "fear"), emotions.sortedByDescending { mean(it, "max_intensity") }.take(2).toSet())
+        assertEquals(setOf("sadness", "fear"), emotions.sortedByDescending { mean(it, "displacement") }.take(2).toSet())
+        // Shortest durations for surprise, disgust and anger (:289).
+        assertEquals(setOf("surprise", "disgust", "anger"), emotions.sortedBy { mean(it, "duration_s") }.take(3).toSet())
+        // Attention at the shoulder (x > 0), greeting and rejection near the hand (x < 0) (:290); all on the outside (:288).
+        assertTrue(mean("attention-getting", "x") > 0.5)
+        assertTrue(mean("greeting", "x") < -0.5 && mean("rejection", "x") < -0.5)
+        assertTrue(SocialTouchClasses.ALL.dropLast(1).all { mean(it, "y") > 0.0 })
+    }
+
+    @Test
+    fun features_labelsIndexTheGivenList_othersAreLeftOut_andAnUnknownClassIsRefused() {
+        val rows = SocialTouchSyntheticPeople.features(SocialTouchSyntheticPeople.messages(2, 1), SocialTouchClasses.MESSAGE_SET)
+        assertEquals(14, rows.size)
+        assertEquals(7, rows.classCount)
         assertEquals(listOf("p1", "p2"), rows.people.distinct())
         try {
             SocialTouchSyntheticPeople.messages(1, 1, labels = listOf("tickle"))
@@ -74,13 +93,5 @@ class SocialTouchSyntheticPeopleTest {
         } catch (e: IllegalArgumentException) {
             assertEquals("unknown classes: [tickle]", e.message)
         }
-    }
-
-    @Test
-    fun leaveOnePersonOut_thirteenClasses_isFarAboveChanceButNotPerfect() {
-        // 4 people × 6 takes × 13 classes: people differ in force, tempo and position, so held-out people are harder.
-        val rows = SocialTouchSyntheticPeople.features(SocialTouchSyntheticPeople.messages(4, 6), SocialTouchClasses.ALL)
-        val lopo = SocialTouchEvaluation.leaveOnePersonOut(rows)
-        assertTrue("$lopo", lopo > 0.6 && lopo < 1.0)
     }
 }

@@ -9,6 +9,7 @@ import org.hapticon.core.io.SchemaJson
 import org.hapticon.core.io.shortNumber
 import java.util.Locale
 import kotlin.math.abs
+import kotlin.math.ceil
 import kotlin.math.sqrt
 
 /**
@@ -34,8 +35,8 @@ import kotlin.math.sqrt
  *   and control point and is subdivided until straight lines stay within 0.002 of it.
  * - `Version` is optional. Apple's own sample files have commas before closing brackets; they are accepted.
  *
- * Writing follows Meta's converter: one `HapticContinuous` event (intensity 1, sharpness 0, at most 30 s, as
- * Core Haptics allows) shaped by `HapticIntensityControl` and `HapticSharpnessControl` curves of at most 16
+ * Writing follows Meta's converter (facebook/meta-haptics-sdk `core/haptic_data/src/ahap.rs`): `HapticContinuous`
+ * events of intensity 1 and sharpness 0, one per 30 s (the longest Core Haptics plays), shaped by `HapticIntensityControl` and `HapticSharpnessControl` curves of at most 16
  * control points each (a new curve starts at the previous one's last point), plus one `HapticTransient` per
  * transient.
  */
@@ -104,9 +105,16 @@ public object Ahap {
         val entries = ArrayList<JsonElement>()
         if (pattern.amplitude.isNotEmpty()) {
             val start = pattern.amplitude.first().time
-            entries += entry("Event", "Time" to num(start), "EventType" to JsonPrimitive("HapticContinuous"),
-                "EventDuration" to num(pattern.continuousDuration - start),
-                "EventParameters" to params("HapticIntensity" to 1.0, "HapticSharpness" to 0.0))
+            val end = pattern.continuousDuration
+            // Core Haptics plays a continuous event for at most 30 s, so a longer pattern takes consecutive events,
+            // as Meta's converter writes them (`ahap_continuous_events_from_breakpoints`); the curves span them all.
+            val events = maxOf(1, ceil((end - start) / MAX_CONTINUOUS_SECONDS).toInt())
+            for (k in 0 until events) {
+                val time = start + k * MAX_CONTINUOUS_SECONDS
+                entries += entry("Event", "Time" to num(time), "EventType" to JsonPrimitive("HapticContinuous"),
+                    "EventDuration" to num(minOf(MAX_CONTINUOUS_SECONDS, end - time)),
+                    "EventParameters" to params("HapticIntensity" to 1.0, "HapticSharpness" to 0.0))
+            }
             entries += curves(INTENSITY_CONTROL, densify(pattern.amplitude.map { it.time to it.amplitude }, ::sqrt, { it * it }, { AMPLITUDE_TOLERANCE }))
             val outside = pattern.frequency.count { it.hertz !in mapping }
             if (outside > 0) notes += "$outside frequency keys outside ${hz(mapping.minHz)}..${hz(mapping.maxHz)} clamped to the range"

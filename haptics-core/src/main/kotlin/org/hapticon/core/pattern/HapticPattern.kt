@@ -16,7 +16,10 @@ import java.util.Locale
  *
  * A value is always valid: the constructor throws [PatternException] naming the first bad field
  * (`amplitude[3].time: must not be before the previous key`), so no NaN, negative time or out-of-range
- * amplitude can reach an actuator. The same 30 s safety cap as icons applies ([HapticIcon.MAX_DURATION_SECONDS]).
+ * amplitude can reach an actuator. A value may last up to [MAX_DURATION_SECONDS] (an hour), because a file
+ * converted from one format to another drives no body (Lofelt's and Meta's tools make clips over a minute long);
+ * whatever plays or sends a pattern first asks [checkPlayable], which holds the 30 s safety cap of icons
+ * ([HapticIcon.MAX_DURATION_SECONDS]).
  */
 public class HapticPattern(
     public val name: String,
@@ -62,9 +65,21 @@ public class HapticPattern(
                 "must be in [0, 1], was ${tap.sharpness}"
             }
         }
-        check(duration <= HapticIcon.MAX_DURATION_SECONDS, "duration") {
-            "total duration ${"%.3f".format(Locale.ROOT, duration)} s exceeds the ${HapticIcon.MAX_DURATION_SECONDS} s safety cap"
+        check(duration <= MAX_DURATION_SECONDS, "duration") {
+            "total duration ${"%.3f".format(Locale.ROOT, duration)} s is longer than a pattern may be ($MAX_DURATION_SECONDS s)"
         }
+    }
+
+    /**
+     * This pattern, when it may drive an actuator: throws [PatternException] on `duration` when it plays longer
+     * than the [HapticIcon.MAX_DURATION_SECONDS] safety cap. Every path that vibrates, plays audio-coupled haptics
+     * or imports a pattern into the app's library (whose patterns are there to be played and sent) calls it.
+     */
+    public fun checkPlayable(): HapticPattern {
+        check(duration <= HapticIcon.MAX_DURATION_SECONDS, "duration") {
+            "plays for ${"%.3f".format(Locale.ROOT, duration)} s, longer than the ${HapticIcon.MAX_DURATION_SECONDS} s safety cap for playing"
+        }
+        return this
     }
 
     /** Seconds the continuous part lasts: the last amplitude key's time (0 without keys). */
@@ -97,6 +112,12 @@ public class HapticPattern(
 
         /** Highest carrier frequency a pattern may ask for. */
         public const val MAX_HERTZ: Double = 20_000.0
+
+        /**
+         * Longest a pattern value may last, in seconds (one hour). Bounds what a conversion may write (an hour of
+         * 48 kHz float WAV is 690 MB); far past the longest clip the haptic tools make.
+         */
+        public const val MAX_DURATION_SECONDS: Double = 3600.0
     }
 }
 

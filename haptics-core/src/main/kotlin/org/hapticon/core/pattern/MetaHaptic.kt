@@ -17,9 +17,18 @@ import kotlin.math.sqrt
  * `signals.continuous.envelopes` with `amplitude` breakpoints {time, amplitude, emphasis?: {amplitude,
  * frequency}} and optional `frequency` breakpoints {time, frequency}, every value normalised 0..1.
  *
- * Reading rejects what Meta's validator rejects, naming the file's member: an empty or single-breakpoint
- * amplitude envelope, a zero duration, breakpoint times that go back, values outside [0, 1], an emphasis
- * weaker than its breakpoint, and a frequency breakpoint outside the amplitude envelope's time span.
+ * Reading follows Meta's validator (facebook/meta-haptics-sdk `core/haptic_data/src/v1.rs`, `HapticData::validate`)
+ * in the `LegacyCompatibility` mode its loaders use (`haptic_data_from_json`), naming the file's member:
+ * - refused: an empty or single-breakpoint amplitude envelope, a zero duration, breakpoint times that go back,
+ *   values outside [0, 1], an emphasis weaker than its breakpoint;
+ * - `version.minor` and `version.patch` are optional (0 when absent: `#[serde(default)]` in `version.rs`), as is
+ *   `metadata`;
+ * - a frequency breakpoint outside the amplitude envelope's time span is refused only by Meta's `Strict` mode,
+ *   "to stay compatible with .haptic files that were created with earlier versions of Haptics Studio": Lofelt
+ *   Studio's exports end their frequency envelope up to a few ms after the amplitude envelope. Such an envelope is
+ *   clipped to the amplitude envelope's span (the value at each edge interpolated in the file's normalised
+ *   frequency, which is what `.haptic` interpolates), with one note; nothing plays there, as a clip ends with its
+ *   last amplitude breakpoint (`HapticData::duration`).
  * Amplitude is the pattern's amplitude; a normalised frequency becomes Hz through [FrequencyMapping]; an
  * emphasis becomes a [Transient] with intensity √(emphasis amplitude) and sharpness = emphasis frequency, as
  * Meta's AHAP converter maps them (`core/datamodel/src/ios/v1.rs`). Without a frequency envelope the carrier
@@ -42,8 +51,8 @@ public object MetaHaptic {
         val root = SchemaJson.parseUtf8(bytes).asObject("haptic")
         val version = root["version"].asObject("version")
         val major = version["major"].asNumber("version.major")
-        version["minor"].asNumber("version.minor")
-        version["patch"].asNumber("version.patch")
+        version["minor"]?.asNumber("version.minor")
+        version["patch"]?.asNumber("version.patch")
         if (major != MAJOR_VERSION.toDouble()) fail("version.major", "unsupported data model version $major (this build reads $MAJOR_VERSION)")
         val envelopesPath = "signals.continuous.envelopes"
         val envelopes = root["signals"].asObject("signals")["continuous"].asObject("signals.continuous")["envelopes"].asObject(envelopesPath)
@@ -76,16 +85,20 @@ public object MetaHaptic {
                 notes += "no frequency envelope: the carrier stays at ${hz(mapping.hertzOf(0.5))}, the middle of the range"
                 listOf(FrequencyKey(0.0, mapping.hertzOf(0.5)))
             }
-            else -> f.asArray(frequencyPath).objects(frequencyPath).map { (path, bp) ->
-                val time = bp["time"].asTime("$path.time")
-                if (time < first || time > last) fail("$path.time", "$time s lies outside the amplitude envelope ($first..$last s)")
-                FrequencyKey(time, mapping.hertzOf(bp["frequency"].asUnit("$path.frequency")))
-            }.also { list ->
-                for (i in 1 until list.size) {
-                    if (list[i].time < list[i - 1].time) fail("$frequencyPath[$i].time", "must not be before the previous breakpoint")
+            else -> {
+                val normalised = f.asArray(frequencyPath).objects(frequencyPath).map { (path, bp) ->
+                    bp["time"].asTime("$path.time") to bp["frequency"].asUnit("$path.frequency")
                 }
-                if (list.isEmpty()) notes += "empty frequency envelope: the carrier stays at the middle of the range"
-            }.ifEmpty { listOf(FrequencyKey(0.0, mapping.hertzOf(0.5))) }
+                for (i in 1 until normalised.size) {
+                    if (normalised[i].first < normalised[i - 1].first) fail("$frequencyPath[$i].time", "must not be before the previous breakpoint")
+                }
+                if (normalised.isEmpty()) {
+                    notes += "empty frequency envelope: the carrier stays at the middle of the range"
+                    listOf(FrequencyKey(0.0, mapping.hertzOf(0.5)))
+                } else {
+                    clipToSpan(normalised, first, last, notes).map { (t, x) -> FrequencyKey(t, mapping.hertzOf(x)) }
+                }
+            }
         }
         return PatternImport(HapticPattern(name, keys, frequency, taps), notes)
     }
@@ -149,4 +162,34 @@ public object MetaHaptic {
         ))
         return PatternExport(SchemaJson.encodeElement(root, "  ") + "\n", notes)
     }
+
+    /**
+     * [points] (time, normalised frequency, in time order) within first..last: the points inside, and where points
+     * lie outside, the value at that edge (interpolated, or held from the nearest point) in their place; one note.
+     */
+    private fun clipToSpan(points: List<Pair<Double, Double>>, first: Double, last: Double, notes: MutableList<String>): List<Pair<Double, Double>> {
+        val before = points.count { it.first < first }
+        val after = points.count { it.first > last }
+        if (before == 0 && after == 0) return points
+        fun valueAt(t: Double): Double {
+            val next = points.indexOfFirst { it.first >= t }
+            if (next <= 0) return if (next == 0) points[0].second else points.last().second
+            val (t0, x0) = points[next - 1]
+            val (t1, x1) = points[next]
+            return if (t1 == t0) x1 else x0 + (x1 - x0) * (t - t0) / (t1 - t0)
+        }
+        val clipped = ArrayList<Pair<Double, Double>>()
+        points.filterTo(clipped) { it.first in first..last }
+        if (before > 0 && clipped.firstOrNull()?.first != first) clipped.add(0, first to valueAt(first))
+        if (after > 0 && clipped.lastOrNull()?.first != last) clipped += last to valueAt(last)
+        val what = listOfNotNull(
+            if (before > 0) "$before before its start (up to ${millis(first - points.first().first)})" else null,
+            if (after > 0) "$after past its end (up to ${millis(points.last().first - last)})" else null,
+        ).joinToString(" and ")
+        notes += "frequency envelope clipped to the amplitude envelope (${seconds(first)}..${seconds(last)}): $what breakpoint(s) outside it, as Lofelt Studio exports write"
+        return clipped
+    }
+
+    private fun millis(seconds: Double): String = String.format(Locale.ROOT, "%.2f ms", seconds * 1000.0)
+
 }

@@ -18,12 +18,13 @@ public fun HapticPattern.edited(name: String, gain: Double = 1.0, semitones: Dou
     if (!(semitones in -MAX_SEMITONES..MAX_SEMITONES)) throw PatternException("semitones", "must be in [-$MAX_SEMITONES, $MAX_SEMITONES], was $semitones")
     if (!(timeScale in MIN_TIME_SCALE..MAX_TIME_SCALE)) throw PatternException("timeScale", "must be in [$MIN_TIME_SCALE, $MAX_TIME_SCALE], was $timeScale")
     val ratio = 2.0.pow(semitones / 12.0)
+    // The editor's result is played and sent, so it keeps the safety cap a stretched pattern could break.
     return HapticPattern(
         name,
         amplitude.map { AmplitudeKey(it.time * timeScale, it.amplitude * gain) },
         frequency.map { FrequencyKey(it.time * timeScale, it.hertz * ratio) },
         transients.map { Transient(it.time * timeScale, it.intensity * gain, it.sharpness) },
-    )
+    ).checkPlayable()
 }
 
 /** Largest pitch move of [edited], in semitones (four octaves). */

@@ -10,7 +10,8 @@ package org.hapticon.core.pattern
  * - The format comes from the file name's extension; a name without a known one (content URIs often have none)
  *   is recognised by content: `"Pattern"` → AHAP, `"signals"` → Meta `.haptic`, else Hapticon JSON.
  * - Every problem (malformed JSON, NaN-like overflow `1e999`, a negative or decreasing time, a duration over the
- *   30 s safety cap, too many keys, an amplitude outside 0..1) becomes one [PatternImportException] whose
+ *   30 s safety cap ([HapticPattern.checkPlayable]: what the app imports is there to be played and sent), too
+ *   many keys, an amplitude outside 0..1) becomes one [PatternImportException] whose
  *   message is one line naming the file and the member: `boing.ahap: Pattern[2].Event.Time: must be …`.
  */
 public object PatternImporter {
@@ -29,7 +30,7 @@ public object PatternImporter {
         val format = formatOf(fileName, bytes)
         val name = patternName(fileName)
         return try {
-            PatternFiles.read(bytes, format, name, mapping)
+            PatternFiles.read(bytes, format, name, mapping).also { it.pattern.checkPlayable() }
         } catch (e: IllegalArgumentException) {
             // PatternException and JsonException are both IllegalArgumentExceptions with a field or offset in the message.
             throw PatternImportException("$shownName: ${oneLine(e.message ?: e.javaClass.simpleName)}")

@@ -29,14 +29,15 @@ public fun HapticPattern.driveEnvelope(): (Double) -> Double {
 /**
  * This pattern as amplitude steps for `VibrationEffect.createWaveform` (every vibrator with amplitude control):
  * [VibrationWaveform.render] of the [driveEnvelope]. The frequency curve is lost: such a vibrator plays at its
- * own resonance. Inherits [VibrationWaveform]'s safety limits (amplitudes 0..255, at most 30 s).
+ * own resonance. Amplitudes stay in 0..255 ([VibrationWaveform]'s limit).
  *
+ * @throws PatternException when the pattern plays longer than the safety cap ([HapticPattern.checkPlayable]).
  * @throws IllegalArgumentException when the pattern's duration rounds to 0 ms.
  */
-public fun HapticPattern.vibrationWaveform(): VibrationWaveform = VibrationWaveform.render(driveEnvelope(), duration)
+public fun HapticPattern.vibrationWaveform(): VibrationWaveform = checkPlayable().let { VibrationWaveform.render(driveEnvelope(), duration) }
 
 /** This pattern for a vibrator without amplitude control: [VibrationWaveform.onOff] of the [driveEnvelope]. */
-public fun HapticPattern.onOffWaveform(): VibrationWaveform = VibrationWaveform.onOff(driveEnvelope(), duration)
+public fun HapticPattern.onOffWaveform(): VibrationWaveform = checkPlayable().let { VibrationWaveform.onOff(driveEnvelope(), duration) }
 
 /**
  * What a vibrator accepts in an envelope effect: Android's `VibratorEnvelopeEffectInfo` (API 36).
@@ -120,6 +121,8 @@ public sealed interface PatternEnvelope {
          * frequency at its end time. With a [frequencyRange] (the phone's `VibratorFrequencyProfile` min..max Hz)
          * the result is a [Waveform] whose frequencies were moved into the range by [fit] ([fitPitchInto]);
          * without one it is a [Basic] envelope with sharpness = `FrequencyMapping.DEFAULT.normalizedOf(hz)`.
+         *
+         * @throws PatternException when the pattern plays longer than the safety cap ([HapticPattern.checkPlayable]).
          */
         public fun of(
             pattern: HapticPattern,
@@ -127,6 +130,7 @@ public sealed interface PatternEnvelope {
             frequencyRange: ClosedFloatingPointRange<Double>?,
             fit: PitchFit = PitchFit.OCTAVES,
         ): PatternEnvelope? {
+            pattern.checkPlayable()
             if (info.maxControlPoints < 1 || info.minControlPointMillis < 1 || info.maxControlPointMillis < info.minControlPointMillis) return null
             val totalMillis = Math.round(pattern.duration * 1000)
             if (totalMillis < info.minControlPointMillis || totalMillis > info.maxDurationMillis) return null

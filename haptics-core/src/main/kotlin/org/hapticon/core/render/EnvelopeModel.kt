@@ -24,7 +24,14 @@ public enum class EnvelopeModel {
     ;
 
     public companion object {
-        /** The model presets are played and rendered with unless the user picks another: [PROCESSING]. */
+        /**
+         * The model presets are played and rendered with unless the user picks another: [PROCESSING], what the
+         * participants felt. It assumes Processing Sound 2.0.1–2.3.1: the paper names only "the Sound Library in
+         * Processing 3" (000_f26496a15a0d284b.txt:66, :95); it cites work of 2018 (:175), so the study ran in 2018 or
+         * later, when Processing 3's Sound library was the JSyn-based 2.x, whose `Env` is the same from 2.0.1 to 2.3.1
+         * (docs/envelope-models.md). Another version would change only overlapping repetitions (stroke): 2.4.0
+         * replaces a running envelope instead of adding to it.
+         */
         public val DEFAULT: EnvelopeModel = PROCESSING
     }
 }

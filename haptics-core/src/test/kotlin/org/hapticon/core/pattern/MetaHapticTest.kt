@@ -34,8 +34,10 @@ class MetaHapticTest {
         assertEquals("$amplitude: has a single breakpoint; it needs at least two", error(haptic("""{"time": 0, "amplitude": 0.5}""")))
         assertEquals("$amplitude: has zero duration (every breakpoint at 0.2 s)",
             error(haptic("""{"time": 0.2, "amplitude": 0.5}, {"time": 0.2, "amplitude": 0.1}""")))
-        assertEquals("signals.continuous.envelopes.frequency[1].time: 0.5 s lies outside the amplitude envelope (0.0..0.3 s)",
-            error(haptic("""{"time": 0, "amplitude": 0.5}, {"time": 0.3, "amplitude": 0}""", """{"time": 0, "frequency": 0.5}, {"time": 0.5, "frequency": 0.5}""")))
+        assertEquals("signals.continuous.envelopes.frequency[1].time: must not be before the previous breakpoint",
+            error(haptic("""{"time": 0, "amplitude": 0.5}, {"time": 0.3, "amplitude": 0}""", """{"time": 0.2, "frequency": 0.5}, {"time": 0.1, "frequency": 0.5}""")))
+        assertEquals("signals.continuous.envelopes.frequency[0].frequency: must be in [0, 1], was 1.1",
+            error(haptic("""{"time": 0, "amplitude": 0.5}, {"time": 0.3, "amplitude": 0}""", """{"time": 0.2, "frequency": 1.1}""")))
         assertEquals("$amplitude[1].emphasis.amplitude: must not be below the breakpoint's amplitude 0.5, was 0.4",
             error(haptic("""{"time": 0, "amplitude": 0.1}, {"time": 0.3, "amplitude": 0.5, "emphasis": {"amplitude": 0.4, "frequency": 0.5}}""")))
         assertEquals("$amplitude[1].time: must not be before the previous breakpoint (0.3 s), was 0.1",
@@ -51,6 +53,40 @@ class MetaHapticTest {
         val (pattern, notes) = MetaHaptic.read(haptic("""{"time": 0, "amplitude": 0.5}, {"time": 1, "amplitude": 0}"""), "x")
         assertEquals(FrequencyMapping.DEFAULT.hertzOf(0.5), pattern.frequencyAt(0.5), 1e-9)
         assertEquals(1, notes.size)
+    }
+
+    @Test
+    fun read_frequencyPastBothEnds_clippedToTheAmplitudeEnvelopeWithOneNote() {
+        val mapping = FrequencyMapping.DEFAULT
+        val (pattern, notes) = MetaHaptic.read(haptic(
+            """{"time": 0.1, "amplitude": 0.5}, {"time": 0.3, "amplitude": 0}""",
+            """{"time": 0.0, "frequency": 0.0}, {"time": 0.2, "frequency": 1.0}, {"time": 0.4, "frequency": 0.0}""",
+        ), "x", mapping)
+        // Edges interpolated in the file's normalised frequency: 0.5 at 0.1 s and at 0.3 s.
+        assertEquals(listOf(0.1, 0.2, 0.3), pattern.frequency.map { it.time })
+        val expected = listOf(mapping.hertzOf(0.5), mapping.maxHz, mapping.hertzOf(0.5))
+        expected.zip(pattern.frequency) { hz, key -> assertEquals(hz, key.hertz, 1e-9) }
+        assertEquals(listOf("frequency envelope clipped to the amplitude envelope (0.100 s..0.300 s): 1 before its start (up to 100.00 ms) " +
+            "and 1 past its end (up to 100.00 ms) breakpoint(s) outside it, as Lofelt Studio exports write"), notes)
+    }
+
+    @Test
+    fun read_frequencyWhollyPastTheEnd_heldFromItsFirstBreakpoint() {
+        val (pattern, notes) = MetaHaptic.read(haptic(
+            """{"time": 0, "amplitude": 0.5}, {"time": 0.3, "amplitude": 0}""",
+            """{"time": 0.5, "frequency": 0.25}, {"time": 0.6, "frequency": 1.0}""",
+        ), "x")
+        assertEquals(listOf(FrequencyKey(0.3, FrequencyMapping.DEFAULT.hertzOf(0.25))), pattern.frequency)
+        assertEquals(1, notes.size)
+    }
+
+    @Test
+    fun read_versionWithMajorOnly_minorAndPatchDefaultToZero() {
+        val (pattern, _) = MetaHaptic.read("""{"version": {"major": 1}, "signals": {"continuous": {"envelopes": {"amplitude": [
+            {"time": 0, "amplitude": 0.5}, {"time": 0.3, "amplitude": 0}]}}}}""".toByteArray(), "x")
+        assertEquals(0.3, pattern.duration, 0.0)
+        assertEquals("version.minor: expected a number, got \"0\"",
+            error("""{"version": {"major": 1, "minor": "0"}, "signals": {}}""".toByteArray()))
     }
 
     @Test

@@ -67,7 +67,24 @@ class PatternSignalTest {
         }.field)
         assertEquals("frequency", assertThrows(PatternException::class.java) { HapticPattern("x", emptyList(), emptyList()) }.field)
         assertEquals("duration", assertThrows(PatternException::class.java) {
-            HapticPattern("x", listOf(AmplitudeKey(0.0, 0.1), AmplitudeKey(31.0, 0.1)), listOf(FrequencyKey(0.0, 100.0)))
+            HapticPattern("x", listOf(AmplitudeKey(0.0, 0.1), AmplitudeKey(3600.001, 0.1)), listOf(FrequencyKey(0.0, 100.0)))
         }.field)
+    }
+
+    @Test
+    fun pattern_longerThanTheSafetyCap_isAValueButNotPlayable() {
+        val long = HapticPattern("x", listOf(AmplitudeKey(0.0, 0.1), AmplitudeKey(31.0, 0.1)), listOf(FrequencyKey(0.0, 100.0)))
+        val hour = HapticPattern("x", listOf(AmplitudeKey(0.0, 0.1), AmplitudeKey(3600.0, 0.1)), listOf(FrequencyKey(0.0, 100.0)))
+        assertEquals(3600.0, hour.duration, 0.0)
+        val refused = assertThrows(PatternException::class.java) { long.checkPlayable() }
+        assertEquals("duration: plays for 31.000 s, longer than the 30.0 s safety cap for playing", refused.message)
+        // Every actuator path asks first: the waveform, the on/off pattern and the envelope effect.
+        assertEquals("duration", assertThrows(PatternException::class.java) { long.vibrationWaveform() }.field)
+        assertEquals("duration", assertThrows(PatternException::class.java) { long.onOffWaveform() }.field)
+        assertEquals("duration", assertThrows(PatternException::class.java) {
+            PatternEnvelope.of(long, EnvelopeEffectInfo(16, 20, 1000, 60_000), null)
+        }.field)
+        val thirty = HapticPattern("x", listOf(AmplitudeKey(0.0, 0.1), AmplitudeKey(30.0, 0.1)), listOf(FrequencyKey(0.0, 100.0)))
+        assertEquals(thirty, thirty.checkPlayable())
     }
 }

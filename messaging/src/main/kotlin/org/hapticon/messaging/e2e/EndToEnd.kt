@@ -123,6 +123,13 @@ public class EndToEnd(
      */
     public fun trust(user: String): KeyBundle? = changed.remove(user)?.also(pins::pin)
 
+    /**
+     * Whether a key of [peer] is known (pinned): it published one, or wrote to us. A messenger that read the retained
+     * keys (`hapticon/v1/keys/+`, on every connection) knows every user who ever published; false for anyone else means
+     * nothing can be sealed for [peer] yet.
+     */
+    public fun hasKeyOf(peer: String): Boolean = pins.pinned(peer) != null
+
     /** The safety number of this user and [peer]'s pinned key, or null before first contact. */
     public fun safetyNumber(peer: String): String? = pins.pinned(peer)?.let { SafetyNumber.of(identity.bundle, it) }
 

@@ -18,10 +18,16 @@ internal object InboxDecoding {
     /**
      * With [e2e], inbox payloads must be sealed and open (see [EndToEnd.open]) and key topics are learnt;
      * without it, a sealed payload is named as such rather than rejected as an unknown schema. Returns null
-     * for a key that needs no one's attention (first seen or unchanged).
+     * for a key that needs no one's attention (first seen or unchanged). An inbox message that arrives [retained]
+     * (the broker replays a retained message at every subscription, MQTT 3.1.1 §3.3.1.3) is refused unread: the
+     * embedded broker refuses such publishes, Mosquitto cannot (docs/security.md). On other topics [retained] is
+     * passed on with capabilities ([InboxEvent.CapabilitiesReceived.retained]).
      */
-    fun decode(user: String, topic: String, payload: ByteArray, e2e: EndToEnd? = null): InboxEvent? {
+    fun decode(user: String, topic: String, payload: ByteArray, e2e: EndToEnd? = null, retained: Boolean = false): InboxEvent? {
         val sender = Topics.inboxSender(user, topic)
+        if (sender != null && retained) {
+            return InboxEvent.Rejected(topic, Decoded.Rejected(RejectionReason.RETAINED, null, "a retained message from $sender: replayed by the broker, not shown"))
+        }
         if (sender != null) {
             val plaintext = when {
                 e2e != null -> when (val opened = e2e.open(sender, payload)) {
@@ -71,7 +77,7 @@ internal object InboxDecoding {
             ?: return InboxEvent.Rejected(topic, Decoded.Rejected(RejectionReason.UNEXPECTED_TOPIC, null, "not an inbox or capabilities topic of $user"))
         return when (val decoded = MessageCodec.decodeCapabilities(payload)) {
             is Decoded.Accepted -> if (decoded.value.user == owner) {
-                InboxEvent.CapabilitiesReceived(decoded.value)
+                InboxEvent.CapabilitiesReceived(decoded.value, retained)
             } else {
                 // Only the owner may write its topic (the ACL says so); a mismatch is a forgery or a bug.
                 InboxEvent.Rejected(

@@ -20,6 +20,7 @@ import kotlinx.coroutines.flow.asStateFlow
 import kotlinx.coroutines.flow.first
 import kotlinx.coroutines.future.await
 import kotlinx.coroutines.withContext
+import kotlinx.coroutines.withTimeoutOrNull
 import org.hapticon.messaging.Capabilities
 import org.hapticon.messaging.ChatMessage
 import org.hapticon.messaging.ConnectionState
@@ -45,8 +46,9 @@ import java.util.logging.Level
 import java.util.logging.Logger
 
 /**
- * A [Messenger] over MQTT 3.1.1 with the HiveMQ client: QoS 1 everywhere, a persistent session
- * (cleanSession=false) under the client id of [MqttSettings.clientId] (the user name), the inbox at
+ * A [Messenger] over MQTT 3.1.1 with the HiveMQ client: QoS 1 for inbox payloads (hand poses QoS 0), everyone's
+ * retained capabilities and keys read at QoS 0, a persistent session (cleanSession=false) under the client id of
+ * [MqttSettings.clientId] (this device's own), the inbox at
  * `hapticon/v1/inbox/<user>/+` (see [Topics]) and everyone's capabilities at `hapticon/v1/capabilities/+`.
  * What this user sends goes to `hapticon/v1/inbox/<recipient>/<user>`.
  *
@@ -115,7 +117,7 @@ public class MqttMessenger(
                 client.disconnect().await()
             } catch (e: Exception) {
                 // Already gone (the broker closed it, say): nothing left to close.
-                LOG.log(Level.FINE, "disconnect of ${settings.clientId}", e)
+                LOG.log(Level.FINE, "disconnect of ${settings.user}", e)
             }
         }
         if (mutableState.value !is ConnectionState.Failed) mutableState.value = ConnectionState.Disconnected
@@ -126,7 +128,31 @@ public class MqttMessenger(
 
     override fun reconnectNow() {
         val waiting = nextAttempt ?: return
-        if (!closing && waiting.complete(Unit)) LOG.log(Level.FINE, "${settings.clientId}: reconnecting now, the network is back")
+        if (!closing && waiting.complete(Unit)) LOG.log(Level.FINE, "${settings.user}: reconnecting now, the network is back")
+    }
+
+    /**
+     * One UNSUBSCRIBE/UNSUBACK round trip. MQTT 3.1.1 has PINGREQ for this, but the HiveMQ client sends it only
+     * from its own keep-alive timer; any control packet resets the broker's keep-alive count (§3.1.2.10), and an
+     * UNSUBSCRIBE of a filter this client never subscribed changes nothing: the broker compares filters
+     * character by character (§3.10.4) and answers UNSUBACK all the same. The filter is the user's inbox topic
+     * from itself, one the ACL lets the user read, so no broker has reason to refuse it. Unlike a publish it
+     * reaches nobody else.
+     */
+    override suspend fun ping(timeoutMillis: Long): Boolean {
+        val client = client ?: return false
+        if (state.value != ConnectionState.Connected) return false
+        return try {
+            withTimeoutOrNull(timeoutMillis) {
+                client.unsubscribeWith().topicFilter(Topics.inbox(user, user)).send().await()
+                true
+            } ?: false
+        } catch (e: CancellationException) {
+            throw e
+        } catch (e: Exception) {
+            LOG.log(Level.FINE, "keep-alive round trip of ${settings.clientId} failed", e)
+            false
+        }
     }
 
     override suspend fun send(recipient: String, message: ChatMessage) {
@@ -214,15 +240,19 @@ public class MqttMessenger(
             publishKeysThen { mutableState.value = ConnectionState.Connected }
             return
         }
+        // Everyone's capabilities and keys at QoS 0: each is a retained message, sent at every subscription, and a
+        // broker keeps no QoS 0 message for an offline session (Mosquitto: queue_qos0_messages false; HiveMQ outside
+        // its queue limit), so a participant who republishes its own thousands of times cannot fill the queues that
+        // hold everyone's inbox messages.
         var subscribe = client.subscribeWith()
             .addSubscription().topicFilter(inboxTopic).qos(MqttQos.AT_LEAST_ONCE).applySubscription()
-            .addSubscription().topicFilter(Topics.ALL_CAPABILITIES).qos(MqttQos.AT_LEAST_ONCE).applySubscription()
-        if (e2e != null) subscribe = subscribe.addSubscription().topicFilter(Topics.ALL_KEYS).qos(MqttQos.AT_LEAST_ONCE).applySubscription()
+            .addSubscription().topicFilter(Topics.ALL_CAPABILITIES).qos(MqttQos.AT_MOST_ONCE).applySubscription()
+        if (e2e != null) subscribe = subscribe.addSubscription().topicFilter(Topics.ALL_KEYS).qos(MqttQos.AT_MOST_ONCE).applySubscription()
         subscribe.send()
             .whenComplete { subAck: Mqtt3SubAck?, error: Throwable? ->
                 when {
                     // The connection dropped meanwhile; the disconnected listener has it in hand.
-                    error != null -> LOG.log(Level.FINE, "subscribe of ${settings.clientId} failed", error)
+                    error != null -> LOG.log(Level.FINE, "subscribe of ${settings.user} failed", error)
                     subAck!!.returnCodes.any { it == Mqtt3SubAckReturnCode.FAILURE } -> {
                         mutableState.value = ConnectionState.Failed(
                             "the broker refused the subscription to $inboxTopic or ${Topics.ALL_CAPABILITIES} (check its ACL)",
@@ -252,7 +282,7 @@ public class MqttMessenger(
                 if (error == null) {
                     if (!closing) connected()
                 } else {
-                    LOG.log(Level.FINE, "key publish of ${settings.clientId} failed", error)
+                    LOG.log(Level.FINE, "key publish of ${settings.user} failed", error)
                 }
             }
     }
@@ -285,11 +315,11 @@ public class MqttMessenger(
             val event = if (size > MessageLimits.MAX_PAYLOAD_BYTES) {
                 InboxDecoding.oversized(publish.topic.toString(), size)
             } else {
-                InboxDecoding.decode(user, publish.topic.toString(), publish.payloadAsBytes, e2e)
+                InboxDecoding.decode(user, publish.topic.toString(), publish.payloadAsBytes, e2e, retained = publish.isRetain)
             }
             if (event != null) listener.onInboxEvent(event)
         } catch (e: Exception) {
-            LOG.log(Level.WARNING, "inbox listener of ${settings.clientId} failed; message acknowledged anyway", e)
+            LOG.log(Level.WARNING, "inbox listener of ${settings.user} failed; message acknowledged anyway", e)
         } finally {
             publish.acknowledge()
         }

@@ -7,16 +7,17 @@ import org.hapticon.messaging.Topics
 /**
  * How an [MqttMessenger] connects.
  *
- * The MQTT client id is the user name: the broker binds the client id to the authenticated user
- * (Mosquitto `use_username_as_clientid true`; the embedded broker refuses any other id), so nobody can
- * take over another user's persistent session and its queued messages. A user therefore has one session:
- * a second device of the same user that connects takes the session over from the first (MQTT 3.1.1
- * §3.1.4: the server disconnects the existing client with that id).
+ * The MQTT client id is `USER:DEVICE` ([clientId]): each device of a user has its own persistent session, so
+ * two devices both receive what is sent to the user and never take each other's session over. [device] is a
+ * secret kept on the device ([DeviceId]): nobody can present another's client id (the embedded broker also
+ * refuses a client id that is not the authenticated user's).
  *
  * @property broker where to connect.
- * @property user the user name (see [Topics.isValidUserName]); also the MQTT user name and client id.
+ * @property user the user name (see [Topics.isValidUserName]); also the MQTT user name and the first half of the client id.
  * @property password the MQTT password, or null for a broker started with `--allow-anonymous` or when
  *   [clientCertificate] authenticates. Sent in clear text unless [BrokerAddress.tls].
+ * @property device this device's session of [user], kept from one run to the next ([DeviceId.loadOrCreate]): a new
+ *   one starts an empty session.
  * @property keepAliveSeconds MQTT keep-alive: how soon a dead connection is noticed.
  * @property reconnectPolicy delays between reconnection attempts.
  * @property clientCertificate the user's certificate for mutual TLS (docs/security.md, "Client certificates"):
@@ -28,6 +29,7 @@ public data class MqttSettings(
     val broker: BrokerAddress,
     val user: String,
     val password: String?,
+    val device: DeviceId,
     val keepAliveSeconds: Int = 30,
     val reconnectPolicy: RetryPolicy = RetryPolicy(initialDelayMillis = 250, maxDelayMillis = 30_000),
     val clientCertificate: ClientCertificate? = null,
@@ -43,12 +45,12 @@ public data class MqttSettings(
         }
     }
 
-    /** The MQTT client id: the user name, as the broker requires. */
-    val clientId: String get() = user
+    /** The MQTT client id: `USER:DEVICE`, as the embedded broker requires. */
+    val clientId: String get() = "$user:${device.value}"
 
-    /** Omits the password. */
+    /** Omits the password and most of the device id. */
     override fun toString(): String =
-        "MqttSettings(broker=$broker, user=$user, password=${if (password == null) "none" else "***"}, keepAliveSeconds=$keepAliveSeconds" +
+        "MqttSettings(broker=$broker, user=$user, password=${if (password == null) "none" else "***"}, device=$device, keepAliveSeconds=$keepAliveSeconds" +
             (if (clientCertificate != null) ", clientCertificate=${clientCertificate.user}" else "") +
             (if (trustedCertificates.isNotEmpty()) ", trustedCertificates=${trustedCertificates.size}" else "") + ")"
 }

@@ -50,8 +50,11 @@ class EndToEndTest {
         assertFalse("the plaintext must not be visible", String(sealed).contains("meet at 5"))
         assertTrue(EndToEnd.looksSealed(sealed))
         assertNull(bob.safetyNumber("alice"))
+        assertFalse(bob.hasKeyOf("alice"))
         assertArrayEquals(text, (bob.open("alice", sealed) as Opened.Plain).plaintext)
         assertEquals(alice.safetyNumber("bob"), bob.safetyNumber("alice")) // pinned on first contact, both see one number
+        assertTrue(bob.hasKeyOf("alice"))
+        assertFalse(bob.hasKeyOf("carol"))
     }
 
     @Test

@@ -8,6 +8,7 @@ import kotlinx.coroutines.runBlocking
 import org.hapticon.messaging.InboxListener
 import org.hapticon.messaging.RetryPolicy
 import org.hapticon.messaging.broker.AclFile
+import org.hapticon.messaging.broker.BrokerLimits
 import org.hapticon.messaging.broker.BrokerSecurity
 import org.hapticon.messaging.broker.BrokerTls
 import org.hapticon.messaging.broker.CertificateAuthority
@@ -45,7 +46,7 @@ class BrokerFixture : ExternalResource() {
 
     /** A messenger for [user] (registered in the broker's password file), not yet connected. */
     fun messenger(user: String): MqttMessenger =
-        MqttMessenger(MqttSettings(address, user, SharedBroker.register(user), reconnectPolicy = FAST_RECONNECT)).also { messengers += it }
+        MqttMessenger(MqttSettings(address, user, SharedBroker.register(user), TestDevices.of(user), reconnectPolicy = FAST_RECONNECT)).also { messengers += it }
 
     /** A messenger for [user], connected with [listener]. */
     fun connected(user: String, listener: InboxListener): MqttMessenger =
@@ -55,7 +56,7 @@ class BrokerFixture : ExternalResource() {
      * A bare MQTT client, authenticated as [user] (client id [clientId]), that can attempt anything the
      * broker lets it: the hostile third user.
      */
-    fun rawClient(user: String, clientId: String = user): Mqtt3BlockingClient {
+    fun rawClient(user: String, clientId: String = TestDevices.clientId(user)): Mqtt3BlockingClient {
         val client = MqttClient.builder().useMqttVersion3().identifier(clientId).serverHost(EmbeddedBroker.HOST).serverPort(broker.port)
             .simpleAuth().username(user).password(SharedBroker.register(user).toByteArray()).applySimpleAuth()
             .buildBlocking()
@@ -88,7 +89,11 @@ object SharedBroker {
         val tls = listOf(ClientCertificates.REQUIRED, ClientCertificates.OPTIONAL).map { mode ->
             BrokerTls(0, EmbeddedBroker.HOST, ca.serverCertificateFile, ca.serverKeyFile, ca.certificateFile, mode)
         }
-        EmbeddedBroker(File(root, "store"), security = BrokerSecurity.Authenticated(passwords.file, acl), tls = tls)
+        // Every test connects from 127.0.0.1, and several send wrong passwords on purpose: with the default of 10
+        // failed logins per address, new users of later tests would wait for the address to regain one.
+        // EmbeddedLoginFloodTest runs the default limits on a broker of its own.
+        val limits = BrokerLimits(failedLoginsPerSource = 10_000)
+        EmbeddedBroker(File(root, "store"), security = BrokerSecurity.Authenticated(passwords.file, acl), tls = tls, limits = limits)
             .also { OneBrokerAtATime.start(it) }
     }
 
@@ -125,6 +130,19 @@ object OneBrokerAtATime {
         broker.start()
         current = broker
     }
+}
+
+/**
+ * One device id per user name in this JVM: a test's messengers of one user share a session, as one device's would;
+ * a second device of that user needs an id of its own ([DeviceId.generate]).
+ */
+object TestDevices {
+    private val ids = java.util.concurrent.ConcurrentHashMap<String, DeviceId>()
+
+    fun of(user: String): DeviceId = ids.computeIfAbsent(user) { DeviceId.generate() }
+
+    /** [user]'s client id, as [MqttSettings.clientId] makes it. */
+    fun clientId(user: String): String = "$user:${of(user).value}"
 }
 
 private val users = AtomicInteger()

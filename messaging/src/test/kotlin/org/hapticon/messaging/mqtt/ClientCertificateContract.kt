@@ -58,7 +58,7 @@ abstract class ClientCertificateContract {
 
     protected fun connected(user: String, listener: CollectingListener = CollectingListener()): MqttMessenger {
         val settings = MqttSettings(
-            tlsAddress, user, password = null, reconnectPolicy = FAST_RECONNECT,
+            tlsAddress, user, password = null, TestDevices.of(user), reconnectPolicy = FAST_RECONNECT,
             clientCertificate = ClientCertificate.fromPkcs12(p12(user), PASSWORD.toCharArray()),
             trustedCertificates = listOf(ca.certificate),
         )
@@ -108,13 +108,13 @@ abstract class ClientCertificateContract {
 
     @Test
     fun noCertificate_isRefusedInTheHandshake_evenWithBobsPassword() {
-        assertRefusedInHandshake(refusal { raw(bob, p12 = null, user = bob, password = password(bob)) })
+        assertRefusedInHandshake(refusal { raw(TestDevices.clientId(bob), p12 = null, user = bob, password = password(bob)) })
     }
 
     @Test
     fun certificateOfAnotherCa_isRefusedInTheHandshake() {
         val other = CertificateAuthority.init(File(certificates.root, "other-ca"), "Someone else's CA", emptyList())
-        assertRefusedInHandshake(refusal { raw(bob, p12(bob, by = other)) })
+        assertRefusedInHandshake(refusal { raw(TestDevices.clientId(bob), p12(bob, by = other)) })
     }
 
     @Test
@@ -138,7 +138,7 @@ abstract class ClientCertificateContract {
     @Test
     fun settings_refuseACertificateOfAnotherUser() {
         val e = refusal {
-            MqttSettings(tlsAddress, bob, null, clientCertificate = ClientCertificate.fromPkcs12(p12(mallory), PASSWORD.toCharArray()))
+            MqttSettings(tlsAddress, bob, null, TestDevices.of(bob), clientCertificate = ClientCertificate.fromPkcs12(p12(mallory), PASSWORD.toCharArray()))
         }
         assertNotNull(e as? IllegalArgumentException)
         assertEquals("the client certificate is for $mallory, not $bob: the broker takes the user name from the certificate", e.message)

@@ -12,8 +12,10 @@ class EmbeddedBrokerSecurityTest : BrokerSecurityContract() {
     override val bob = uniqueUser("bob")
     override val mallory = uniqueUser("mallory")
     override val address: BrokerAddress get() = fixture.address
-    override val keepsSessionsOnRefusedConnects = true
     override val refusesForeignClientIds = true
+    override val refusesRetainedInboxPublishes = true
+    override val sharesQueues = true
+    override val brokerName = "embedded broker"
 
     override fun password(user: String): String = SharedBroker.register(user)
 }

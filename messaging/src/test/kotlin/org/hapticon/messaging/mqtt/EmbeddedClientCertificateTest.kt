@@ -30,13 +30,13 @@ class EmbeddedClientCertificateTest : ClientCertificateContract() {
 
     @Test
     fun optionalListener_takesPasswordUsersAndCertificateUsers_butNeitherAsSomeoneElse() {
-        raw(bob, p12 = null, user = bob, password = password(bob), address = optionalAddress).disconnect().get(5, TimeUnit.SECONDS)
-        raw(alice, p12(alice), address = optionalAddress).disconnect().get(5, TimeUnit.SECONDS)
-        assertEquals(Mqtt3ConnAckReturnCode.NOT_AUTHORIZED, (refusal { raw(bob, p12 = null, address = optionalAddress) } as Mqtt3ConnAckException).mqttMessage.returnCode)
+        raw(TestDevices.clientId(bob), p12 = null, user = bob, password = password(bob), address = optionalAddress).disconnect().get(5, TimeUnit.SECONDS)
+        raw(TestDevices.clientId(alice), p12(alice), address = optionalAddress).disconnect().get(5, TimeUnit.SECONDS)
+        assertEquals(Mqtt3ConnAckReturnCode.NOT_AUTHORIZED, (refusal { raw(TestDevices.clientId(bob), p12 = null, address = optionalAddress) } as Mqtt3ConnAckException).mqttMessage.returnCode)
         // A certificate decides who the client is: another user name with it is refused, whatever the password.
         assertEquals(
             Mqtt3ConnAckReturnCode.BAD_USER_NAME_OR_PASSWORD,
-            (refusal { raw(bob, p12(mallory), user = bob, password = password(bob), address = optionalAddress) } as Mqtt3ConnAckException).mqttMessage.returnCode,
+            (refusal { raw(TestDevices.clientId(bob), p12(mallory), user = bob, password = password(bob), address = optionalAddress) } as Mqtt3ConnAckException).mqttMessage.returnCode,
         )
     }
 

@@ -52,11 +52,11 @@ class EndToEndBrokerTest {
     }
 
     private fun connected(user: String, e2e: EndToEnd?, listener: CollectingListener = CollectingListener()): MqttMessenger =
-        MqttMessenger(MqttSettings(BrokerAddress(EmbeddedBroker.HOST, broker.port), user, register(user), reconnectPolicy = FAST_RECONNECT), e2e)
+        MqttMessenger(MqttSettings(BrokerAddress(EmbeddedBroker.HOST, broker.port), user, register(user), TestDevices.of(user), reconnectPolicy = FAST_RECONNECT), e2e)
             .also { messengers += it; runBlocking { it.connect(listener) } }
 
     private fun operator(): Mqtt3BlockingClient =
-        MqttClient.builder().useMqttVersion3().identifier("operator").serverHost(EmbeddedBroker.HOST).serverPort(broker.port)
+        MqttClient.builder().useMqttVersion3().identifier(TestDevices.clientId("operator")).serverHost(EmbeddedBroker.HOST).serverPort(broker.port)
             .simpleAuth().username("operator").password(register("operator").toByteArray()).applySimpleAuth()
             .buildBlocking().also { it.connect(); rawClients += it }
 

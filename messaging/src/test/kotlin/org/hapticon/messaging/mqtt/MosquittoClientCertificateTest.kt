@@ -10,7 +10,7 @@ import java.io.File
 
 /**
  * [ClientCertificateContract] against a real Mosquitto running companion/mosquitto's configuration with its
- * client-certificate listener (`require_certificate`, `use_identity_as_username`, `use_username_as_clientid`)
+ * client-certificate listener (`require_certificate`, `use_identity_as_username`)
  * enabled, and a CA made by [CertificateAuthority] as `hapticon broker ca init` makes it.
  */
 class MosquittoClientCertificateTest : ClientCertificateContract() {
@@ -25,7 +25,7 @@ class MosquittoClientCertificateTest : ClientCertificateContract() {
     override val mallory = "mallory"
     override val ca: CertificateAuthority get() = authority
     override val tlsAddress: BrokerAddress get() = mosquitto.tlsAddress
-    override val refusesForeignClientIds = false // use_username_as_clientid replaces the id instead
+    override val refusesForeignClientIds = false // Mosquitto does not bind client ids (see mosquitto.conf)
 
     override fun password(user: String): String = "$user-secret"
 

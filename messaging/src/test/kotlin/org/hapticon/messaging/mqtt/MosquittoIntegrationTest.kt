@@ -61,7 +61,7 @@ class MosquittoIntegrationTest {
     }
 
     private fun messenger(user: String, password: String = PASSWORDS.getValue(user)) =
-        MqttMessenger(MqttSettings(mosquitto.address, user, password, reconnectPolicy = FAST_RECONNECT)).also { messengers += it }
+        MqttMessenger(MqttSettings(mosquitto.address, user, password, TestDevices.of(user), reconnectPolicy = FAST_RECONNECT)).also { messengers += it }
 
     private fun connected(user: String, listener: CollectingListener) =
         messenger(user).also { runBlocking { it.connect(listener) } }
@@ -108,6 +108,18 @@ class MosquittoIntegrationTest {
         mallory.publishQos1(Topics.inbox("bob", "mallory"), MessageCodec.encode(marker))
         // Mosquitto keeps one publisher's messages in order: had the forgery passed, it would come first.
         assertEquals(InboxEvent.MessageReceived(marker), bobInbox.awaitEvent())
+    }
+
+    @Test
+    fun ping_mosquittoAnswersTheKeepAliveRoundTrip_andTheInboxStaysSubscribed() = runBlocking {
+        val alice = connected("alice", CollectingListener())
+        val bobInbox = CollectingListener()
+        val bob = connected("bob", bobInbox)
+        // Whatever Mosquitto checks for an UNSUBSCRIBE, the filter is one the ACL lets bob read.
+        assertEquals(true, bob.ping(5_000))
+        val message = ChatMessage.compose("alice", "still there?")
+        alice.send("bob", message)
+        assertEquals(InboxEvent.MessageReceived(message), bobInbox.awaitEvent())
     }
 
     @Test

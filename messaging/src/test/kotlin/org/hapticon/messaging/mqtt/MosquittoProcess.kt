@@ -16,7 +16,13 @@ import java.util.concurrent.TimeUnit
  * rewritten into [dir] and its listener on a free loopback port. Missing Mosquitto skips the test, except
  * on CI (env CI=true), which installs it and must run these tests.
  */
-class MosquittoProcess(private val dir: File, users: Map<String, String>, certificates: CertificateAuthority? = null) {
+class MosquittoProcess(
+    private val dir: File,
+    users: Map<String, String>,
+    certificates: CertificateAuthority? = null,
+    /** Options added to the plain listener, to show what the shipped file leaves out and why. */
+    listenerOptions: List<String> = emptyList(),
+) {
     val port: Int = ServerSocket(0, 1, InetAddress.getByName(HOST)).use { it.localPort }
 
     /** The client-certificate listener's port (the shipped file's commented `listener 8884` block, enabled when [certificates] are given). */
@@ -31,7 +37,8 @@ class MosquittoProcess(private val dir: File, users: Map<String, String>, certif
             run(listOf(tool("mosquitto_passwd"), "-b") + (if (passwd.exists()) emptyList() else listOf("-c")) + listOf(passwd.path, user, password))
         }
         File(dir, "data").mkdirs()
-        config.writeText(deploymentConfig(port, File(dir, "data"), passwd) + (certificates?.let { certificateListener(tlsPort, it) } ?: ""))
+        val plain = deploymentConfig(port, File(dir, "data"), passwd).replace("listener $port $HOST\n", (listOf("listener $port $HOST") + listenerOptions).joinToString("\n", postfix = "\n"))
+        config.writeText(plain + (certificates?.let { certificateListener(tlsPort, it) } ?: ""))
     }
 
     val address: BrokerAddress get() = BrokerAddress(HOST, port)
@@ -85,6 +92,9 @@ class MosquittoProcess(private val dir: File, users: Map<String, String>, certif
     /** What Mosquitto logged, for failure messages. */
     fun log(): String = log.readText()
 
+    /** The installed Mosquitto's version, e.g. `2.0.11` (from `mosquitto -h`). */
+    val version: String by lazy { installedVersion() }
+
     private fun run(command: List<String>) {
         val p = ProcessBuilder(command).redirectErrorStream(true).start()
         val output = p.inputStream.readBytes().decodeToString()
@@ -110,10 +120,23 @@ class MosquittoProcess(private val dir: File, users: Map<String, String>, certif
                 "certfile " to "certfile ${ca.serverCertificateFile.absolutePath}",
                 "keyfile " to "keyfile ${ca.serverKeyFile.absolutePath}",
             )
-            for (required in replacements.keys + listOf("require_certificate true", "use_identity_as_username true", "use_username_as_clientid true")) {
+            for (required in replacements.keys + listOf("require_certificate true", "use_identity_as_username true")) {
                 if (block.none { it.startsWith(required) }) fail("mosquitto.conf's certificate listener no longer has a line starting with \"$required\"")
             }
             return block.joinToString("\n", prefix = "\n", postfix = "\n") { line -> replacements.entries.firstOrNull { line.startsWith(it.key) }?.value ?: line }
+        }
+
+        /** Skips the calling test unless the installed Mosquitto is 2.0.11 (Debian 12's, which CI installs). */
+        fun assumeVersion2011() {
+            assumeInstalled()
+            assumeTrue("Mosquitto ${installedVersion()}, not 2.0.11", installedVersion() == "2.0.11")
+        }
+
+        private fun installedVersion(): String {
+            val p = ProcessBuilder(tool("mosquitto"), "-h").redirectErrorStream(true).start()
+            val output = p.inputStream.readBytes().decodeToString()
+            p.waitFor()
+            return Regex("mosquitto version (\\S+)").find(output)?.groupValues?.get(1) ?: "unknown"
         }
 
         /** Skips the calling test when Mosquitto is not installed, or fails it on CI. */

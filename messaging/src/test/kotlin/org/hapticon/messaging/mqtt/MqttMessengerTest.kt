@@ -184,14 +184,39 @@ class MqttMessengerTest {
         val bobInbox = CollectingListener()
         val bobMessenger = fixture.connected(bob, bobInbox)
         bobMessenger.publishCapabilities(bobCapabilities)
-        assertEquals(InboxEvent.CapabilitiesReceived(bobCapabilities), bobInbox.awaitEvent())
+        // Bob was subscribed when he published: his own copy is a live one (RETAIN 0).
+        assertEquals(InboxEvent.CapabilitiesReceived(bobCapabilities, retained = false), bobInbox.awaitEvent())
         val aliceInbox = CollectingListener()
         fixture.connected(alice, aliceInbox)
-        assertEquals(InboxEvent.CapabilitiesReceived(bobCapabilities), aliceInbox.awaitEvent())
+        // Alice gets the stored copy because she just subscribed (RETAIN 1, MQTT 3.1.1 §3.3.1.3).
+        assertEquals(InboxEvent.CapabilitiesReceived(bobCapabilities, retained = true), aliceInbox.awaitEvent())
         // An empty retained message deletes it, so later tests on the shared broker do not receive it. Only bob
         // may write bob's capabilities, and only one client can be bob at a time.
         bobMessenger.disconnect()
         fixture.rawClient(bob).publishQos1(Topics.capabilities(bob), ByteArray(0), retain = true)
+    }
+
+    /**
+     * What the app's "has this user ever connected" rests on: a client that connects gets every stored capabilities
+     * message (RETAIN 1), and the live copy of the capabilities it then publishes itself comes after all of them.
+     */
+    @Test
+    fun connect_retainedDirectoryArrivesBeforeTheLiveCopyOfOwnCapabilities() = runBlocking {
+        val bobCapabilities = Capabilities(bob, RendererKind.AMPLITUDE_WAVEFORM, amplitudeControl = true, apiLevel = 34)
+        val bobMessenger = fixture.connected(bob, CollectingListener())
+        bobMessenger.publishCapabilities(bobCapabilities)
+        bobMessenger.disconnect()
+        val aliceInbox = CollectingListener()
+        val aliceMessenger = fixture.connected(alice, aliceInbox)
+        val aliceCapabilities = Capabilities(alice, RendererKind.ON_OFF, amplitudeControl = false, apiLevel = 35)
+        aliceMessenger.publishCapabilities(aliceCapabilities)
+        // Other tests' users may have left capabilities on the shared broker: read up to alice's own live copy.
+        val own = InboxEvent.CapabilitiesReceived(aliceCapabilities, retained = false)
+        val before = generateSequence { aliceInbox.awaitEvent() }.takeWhile { it != own }.toList()
+        assertTrue(before.contains(InboxEvent.CapabilitiesReceived(bobCapabilities, retained = true)))
+        assertTrue("$before", before.all { it is InboxEvent.CapabilitiesReceived && it.retained })
+        aliceMessenger.disconnect()
+        for (user in listOf(alice, bob)) fixture.rawClient(user).publishQos1(Topics.capabilities(user), ByteArray(0), retain = true)
     }
 
     @Test
@@ -246,7 +271,7 @@ class MqttMessengerTest {
     @Test
     fun reconnectNow_brokerBackDuringALongBackoff_connectsAtOnceNotAfterTheBackoff() = runBlocking {
         val twoMinutes = org.hapticon.messaging.RetryPolicy(initialDelayMillis = 120_000, maxDelayMillis = 120_000, jitter = 0.0)
-        val slow = MqttMessenger(MqttSettings(fixture.address, alice, SharedBroker.register(alice), reconnectPolicy = twoMinutes))
+        val slow = MqttMessenger(MqttSettings(fixture.address, alice, SharedBroker.register(alice), TestDevices.of(alice), reconnectPolicy = twoMinutes))
         try {
             slow.connect(CollectingListener())
             fixture.broker.stop()
@@ -269,7 +294,7 @@ class MqttMessengerTest {
     @Test
     fun disconnect_whileWaitingToReconnect_staysDisconnectedEvenWhenNudged() = runBlocking {
         val twoMinutes = org.hapticon.messaging.RetryPolicy(initialDelayMillis = 120_000, maxDelayMillis = 120_000, jitter = 0.0)
-        val slow = MqttMessenger(MqttSettings(fixture.address, bob, SharedBroker.register(bob), reconnectPolicy = twoMinutes))
+        val slow = MqttMessenger(MqttSettings(fixture.address, bob, SharedBroker.register(bob), TestDevices.of(bob), reconnectPolicy = twoMinutes))
         slow.connect(CollectingListener())
         fixture.broker.stop()
         withTimeout(10_000) { slow.state.first { it is ConnectionState.Connecting } }
@@ -278,6 +303,31 @@ class MqttMessengerTest {
         slow.reconnectNow()
         Thread.sleep(1_500)
         assertEquals(ConnectionState.Disconnected, slow.state.value)
+    }
+
+    @Test
+    fun ping_connected_brokerAnswers_andTheInboxStaysSubscribed() = runBlocking {
+        val aliceMessenger = fixture.connected(alice, CollectingListener())
+        val bobInbox = CollectingListener()
+        val bobMessenger = fixture.connected(bob, bobInbox)
+        assertTrue(bobMessenger.ping(5_000))
+        assertTrue(bobMessenger.ping(5_000))
+        // The round trip's UNSUBSCRIBE named a filter bob never subscribed: his inbox still receives.
+        aliceMessenger.send(bob, hello)
+        assertEquals(InboxEvent.MessageReceived(hello), bobInbox.awaitEvent())
+    }
+
+    @Test
+    fun ping_notConnectedOrBrokerGone_false() = runBlocking {
+        assertEquals(false, fixture.messenger(alice).ping(1_000))
+        val bobMessenger = fixture.connected(bob, CollectingListener())
+        fixture.broker.stop()
+        try {
+            withTimeout(10_000) { bobMessenger.state.first { it is ConnectionState.Connecting } }
+            assertEquals(false, bobMessenger.ping(1_000))
+        } finally {
+            fixture.broker.start()
+        }
     }
 
     @Test

@@ -23,7 +23,7 @@ public data class ElectrodePattern(val bits: Int) {
 
     /**
      * Whether this pattern has enough electrodes for a compliance grain to be felt: at least
-     * [MIN_COMPLIANCE_ELECTRODES] (Shaping Compliance's pilot found fewer too weak). [GrainOutput] and the
+     * [MIN_COMPLIANCE_ELECTRODES] (Shaping Compliance's pilot found 1–3 too weak: 003_8ca1dc8f53472543.txt:107). [GrainOutput] and the
      * compliance protocol refuse patterns below it; other uses (calibrating one electrode) may drive fewer.
      */
     public val isStrongEnoughForCompliance: Boolean get() = activeCount >= MIN_COMPLIANCE_ELECTRODES
@@ -41,7 +41,7 @@ public data class ElectrodePattern(val bits: Int) {
         /** Electrodes per side. */
         public const val SIZE: Int = 3
 
-        /** Fewest electrodes a compliance grain may drive: 4 (fewer felt too weak in Shaping Compliance's pilot). */
+        /** Fewest electrodes a compliance grain may drive: 4 (fewer felt too weak in Shaping Compliance's pilot, 003_8ca1dc8f53472543.txt:107). */
         public const val MIN_COMPLIANCE_ELECTRODES: Int = 4
 
         /** All nine electrodes: the whole-array calibration check. */
@@ -72,28 +72,36 @@ public data class ElectrodePattern(val bits: Int) {
 }
 
 /**
- * The electrode conditions of Shaping Compliance (the electrotactile compliance illusion, CHI 2024) on the 3×3
- * array: large square 9 (3×3), vertical line 6 (2 columns × 3 rows), horizontal line 6 (3 columns × 2 rows),
- * small square 4 (2×2) and triangle 6. The paper gives the sizes; where a shape sits on the array is ours (a
- * 3×3 array has no centred 2-wide block: we use the left columns and the top rows). Every mask has at least
- * [ElectrodePattern.MIN_COMPLIANCE_ELECTRODES] electrodes: fewer felt too weak in the paper's pilot.
+ * The electrode conditions of Shaping Compliance (the electrotactile compliance illusion, CHI 2024) on its 3×3 array
+ * (1.5 mm electrodes, 3 mm apart, the centre one over the FSR's centre: 003_8ca1dc8f53472543.txt:115, :117).
+ *
+ * From the paper's text: Task 1's four conditions are the "large square with 3×3 electrodes, small square (2×2),
+ * vertical line (2×3), and horizontal line (3×2)" (003_8ca1dc8f53472543.txt:144), sizes written columns × rows (the
+ * vertical line is the taller one); Task 2 adds a triangle (:171); squares have 4 or 9 electrodes, lines 6 and the
+ * triangle 6, shapes vary in "orientations (horizontal, vertical, diagonal), relative positions (top, bottom, left,
+ * right), and sizes" (:107). Which electrodes a 2-wide shape and the triangle take is shown only in Figure 5, whose
+ * caption says the active electrodes are drawn beside each heatmap (:159, :177); that figure is not in the text, so
+ * those placements are ours: the left columns and the top rows for the 2-wide shapes, and for the triangle a right
+ * triangle whose hypotenuse is the array's diagonal (the text's "diagonal" orientation), right angle at the bottom left.
+ * Every mask has at least [ElectrodePattern.MIN_COMPLIANCE_ELECTRODES] electrodes: fewer felt too weak in the
+ * paper's pilot (:107).
  */
 public enum class ElectrodeMask(
     /** The electrodes this mask drives. */
     public val pattern: ElectrodePattern,
 ) {
-    /** The whole array, 9 electrodes: `XXX/XXX/XXX`. */
+    /** The whole array, 9 electrodes ("3×3"): `XXX/XXX/XXX`. */
     LARGE_SQUARE(ElectrodePattern.of("XXX", "XXX", "XXX")),
 
-    /** A 2×2 block in the top-left corner, 4 electrodes: `XX./XX./...`. */
+    /** 2×2, 4 electrodes; the top-left corner is ours (figure only): `XX./XX./...`. */
     SMALL_SQUARE(ElectrodePattern.of("XX.", "XX.", "...")),
 
-    /** Three columns by two rows, the top two rows, 6 electrodes: `XXX/XXX/...`. */
+    /** 3 columns × 2 rows, 6 electrodes; the top two rows are ours (figure only): `XXX/XXX/...`. */
     HORIZONTAL_LINE(ElectrodePattern.of("XXX", "XXX", "...")),
 
-    /** Two columns by three rows, the left two columns, 6 electrodes: `XX./XX./XX.`. */
+    /** 2 columns × 3 rows, 6 electrodes; the left two columns are ours (figure only): `XX./XX./XX.`. */
     VERTICAL_LINE(ElectrodePattern.of("XX.", "XX.", "XX.")),
 
-    /** A triangle outline, apex at the top centre and base along the bottom row, 6 electrodes: `.X./X.X/XXX`. */
-    TRIANGLE(ElectrodePattern.of(".X.", "X.X", "XXX")),
+    /** Task 2's triangle, 6 electrodes: a right triangle along the diagonal, right angle bottom left (ours, figure only): `X../XX./XXX`. */
+    TRIANGLE(ElectrodePattern.of("X..", "XX.", "XXX")),
 }

@@ -5,8 +5,8 @@ import org.hapticon.sensor.safety.SafetyLimits
 import kotlin.math.ceil
 
 /**
- * The stimulator's amplitude resolution: [STEPS] steps over 0–2.7 mA (Shaping Compliance's hardware, "200 steps
- * of 0–2.7 mA"), step k = k·2.7/200 mA = k·13.5 µA. Step 200 is the hard cap [SafetyLimits.ELECTROTACTILE_MAX_MILLIAMPS];
+ * The stimulator's amplitude resolution: [STEPS] steps over 0–2.7 mA (Shaping Compliance's circuit: "0–2.7 mA,
+ * controllable with 200 discrete steps", 003_8ca1dc8f53472543.txt:123), step k = k·2.7/200 mA = k·13.5 µA. Step 200 is the hard cap [SafetyLimits.ELECTROTACTILE_MAX_MILLIAMPS];
  * nothing maps above it.
  */
 public object AmplitudeSteps {
@@ -67,17 +67,21 @@ public data class CalibrationStimulus(
 )
 
 /**
- * Shaping Compliance's per-person calibration, as a state machine the app or a CLI drives:
+ * Shaping Compliance's per-person calibration (003_8ca1dc8f53472543.txt:152), as a state machine the app or a CLI
+ * drives:
  *
- * 1. Each electrode of the 3×3 array in order (0..8, row by row): a [STIMULUS_MILLIS] ms stimulus starting at
- *    the first step at or above [START_MILLIAMPS] (step 60, 0.81 mA); [notYet] raises it one hardware step
- *    (13.5 µA) for the next stimulus until the person calls it clear and pain-free ([clearAndPainFree]);
- *    [tooStrong] lowers it one step. Raising stops at step 200 (2.7 mA): the cap is absolute.
- * 2. The whole-array check: all nine electrodes at their levels while the person presses, with
- *    [CHECK_GRAINS] grains over the press. [wholeArrayOk] finishes; [tooStrong] lowers every electrode
- *    one step and repeats the check.
+ * 1. Each electrode of the 3×3 array in order (0..8, row by row; "each of the 9 channels ... separately in order"): a
+ *    [STIMULUS_MILLIS] ms stimulus starting at the first step at or above [START_MILLIAMPS] (step 60, 0.81 mA);
+ *    [notYet] raises it one hardware step (13.5 µA) for the next stimulus until the person calls it clear and
+ *    pain-free ([clearAndPainFree]); [tooStrong] lowers it one step. Raising stops at step 200 (2.7 mA): the cap is
+ *    absolute. The step size is paper silent ("gradually increased"): ours is the hardware's smallest.
+ * 2. The whole-array check: all nine electrodes at their levels while the person presses, with [CHECK_GRAINS]
+ *    grains over the press ("39 grains, all electrodes"), adjusted until the sensation is "pain-free and uniform ...
+ *    on the whole stimulated area": [weaker] or [stronger] moves the one electrode the person feels stand out by a
+ *    step, [tooStrong] lowers every electrode a step, and [wholeArrayOk] finishes.
  *
- * [stimulus] is what to play next. Not thread-safe.
+ * The study redoes this before each repetition (:152, "before starting each repetition"); the compliance protocol
+ * says when. [stimulus] is what to play next. Not thread-safe.
  */
 public class ElectrotactileCalibration {
     private val levels = IntArray(ELECTRODES) { START_STEP }
@@ -125,6 +129,30 @@ public class ElectrotactileCalibration {
         }
     }
 
+    /**
+     * Whole-array check: [electrode] (0..8) stands out as stronger than the rest, so it alone goes one step weaker
+     * (not below 0).
+     * @throws IllegalStateException outside the whole-array check; IllegalArgumentException for an electrode outside 0..8.
+     */
+    public fun weaker(electrode: Int) {
+        levels[requireCheckElectrode(electrode, "weaker")] = maxOf(0, levels[electrode] - 1)
+    }
+
+    /**
+     * Whole-array check: [electrode] (0..8) is felt less than the rest, so it alone goes one step stronger (never past
+     * step 200, 2.7 mA).
+     * @throws IllegalStateException outside the whole-array check; IllegalArgumentException for an electrode outside 0..8.
+     */
+    public fun stronger(electrode: Int) {
+        levels[requireCheckElectrode(electrode, "stronger")] = minOf(AmplitudeSteps.STEPS, levels[electrode] + 1)
+    }
+
+    private fun requireCheckElectrode(electrode: Int, action: String): Int {
+        check(isCheckingWholeArray) { "$action only in the whole-array check" }
+        require(electrode in 0 until ELECTRODES) { "electrode must be in 0..8, was $electrode" }
+        return electrode
+    }
+
     /** The whole-array check passed: calibration is done. */
     public fun wholeArrayOk() {
         check(isCheckingWholeArray) { "wholeArrayOk only in the whole-array check" }
@@ -149,16 +177,16 @@ public class ElectrotactileCalibration {
         /** Electrodes on the array. */
         public const val ELECTRODES: Int = ElectrodePattern.SIZE * ElectrodePattern.SIZE
 
-        /** Where each electrode's stimulus starts: 0.8 mA (Shaping Compliance). */
+        /** Where each electrode's stimulus starts: 0.8 mA (003_8ca1dc8f53472543.txt:152). */
         public const val START_MILLIAMPS: Double = 0.8
 
         /** The first step at or above [START_MILLIAMPS]: 60 (0.81 mA). */
         public val START_STEP: Int = AmplitudeSteps.stepAtLeast(START_MILLIAMPS)
 
-        /** One calibration stimulus lasts 200 ms (Shaping Compliance). */
+        /** One calibration stimulus lasts 200 ms (003_8ca1dc8f53472543.txt:152). */
         public const val STIMULUS_MILLIS: Int = 200
 
-        /** Grains over a press in the whole-array check: 39, the study's most. */
+        /** Grains over a press in the whole-array check: 39 on all electrodes, the most stimulating condition (003_8ca1dc8f53472543.txt:152). */
         public const val CHECK_GRAINS: Int = 39
     }
 }

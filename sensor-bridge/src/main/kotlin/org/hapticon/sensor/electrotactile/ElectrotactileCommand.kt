@@ -25,7 +25,7 @@ public enum class PulsePolarity {
 /**
  * The timing of one electrotactile burst: [pulseCount] rectangular monophasic pulses of [pulseWidthMicros] µs
  * at [frequencyHz] (pulse onsets 1/f apart) with [polarity]. [GRAIN] is the compliance-grain burst: 2 anodic
- * pulses of 200 µs at 125 Hz.
+ * pulses of 200 µs at 125 Hz (Shaping Compliance, 003_8ca1dc8f53472543.txt:99).
  *
  * The bounds checked here (1–1000 Hz, 1–1000 µs, 1–100 pulses, pulse shorter than the period) are sanity
  * checks, not study values.

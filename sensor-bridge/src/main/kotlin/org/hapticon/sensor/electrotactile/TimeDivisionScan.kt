@@ -6,8 +6,10 @@ public data class ScanPulse(val electrode: Int, val onsetMicros: Long)
 /**
  * Time-division scanning, as Shaping Compliance drove several electrodes from one current source: within
  * each pulse of the train the active electrodes are pulsed one after another, each [PULSE_MICROS] µs pulse
- * followed by [GAP_MICROS] µs before the next electrode, so one electrode slot is 250 µs (a 4 kHz scan). Pulse p
- * of the train starts at p/f; electrode j (in [ElectrodePattern.electrodes] order) at p/f + j·250 µs.
+ * followed by [GAP_MICROS] µs before the next electrode, so one electrode slot is 250 µs (a 4 kHz scan;
+ * 003_8ca1dc8f53472543.txt:99, :105, :123). Pulse p of the train starts at p/f; electrode j (in
+ * [ElectrodePattern.electrodes] order) at p/f + j·250 µs. The scan order within a pulse is paper silent: ours is
+ * the electrodes' numbering.
  */
 public object TimeDivisionScan {
     /** Each electrode's pulse: 200 µs. */
@@ -21,6 +23,16 @@ public object TimeDivisionScan {
 
     /** The scan rate: 1/250 µs = 4000 Hz. */
     public const val SCAN_HZ: Double = 1e6 / SLOT_MICROS
+
+    /**
+     * How long one grain takes to deliver on [pattern], in µs: the train's last pulse starts (count − 1)/f after the
+     * first and its scan of the n electrodes takes n × 250 µs, so 8 ms + n × 250 µs for the grain's 2 pulses at 125 Hz:
+     * 9.0 ms on 4 electrodes, 9.5 ms on 6, 10.25 ms on 9. Shaping Compliance fires no grain "while a previous one was
+     * still being delivered" (003_8ca1dc8f53472543.txt:97): this is the dead time after each grain, derived from the
+     * published pulses (:99) and scan (:105, :123); the paper prints no duration of its own.
+     */
+    public fun deliveryMicros(pattern: ElectrodePattern, train: PulseTrain = PulseTrain.GRAIN): Long =
+        Math.round((train.pulseCount - 1) * 1e6 / train.frequencyHz) + pattern.activeCount * SLOT_MICROS
 
     /**
      * The pulses of one grain on [pattern] with [train]'s pulse count and rate, in time order.

@@ -5,9 +5,10 @@ import kotlin.math.floor
 
 /**
  * A per-region calibration table from interaction pressure (V) to actuator angle (°), read by linear
- * interpolation between its points and clamped to them: pressures below the first point give the first
- * angle, above the last point the last angle. So the table's largest angle, [maxDegrees], bounds every
- * output, and the table itself must lie within the region's hard limit (190° for fingers, 310° for the palm).
+ * interpolation between its points (as the tele-handshake paper reads its data table, 002_12aacdd60a14fec1.txt:118)
+ * and clamped to them: pressures below the first point give the first angle, above the last point the last angle.
+ * So the table's largest angle, [maxDegrees], bounds every output, and the table itself must lie within the region's
+ * hard limit (190° for fingers, 310° for the palm: the paper's maximum motor angles, :112).
  *
  * Pressures must be finite and strictly increasing; angles finite, ≥ 0 and non-decreasing (more pressure
  * never moves the actuator back), at least 2 points.
@@ -88,9 +89,11 @@ public class ActuatorTable(
         public const val DEFAULT_POINTS: Int = 5
 
         /**
-         * The default table for [region]: a placeholder until the actuator is calibrated, not measured data.
-         * 5 points evenly spaced from Pmin to Pmax whose angles rise linearly from 0° to the region's limit
-         * (190° for fingers, 310° for the palm), i.e. θ = limit·(P − Pmin)/(Pmax − Pmin).
+         * The default table for [region]: a placeholder until the actuator is calibrated, not measured data. The
+         * paper's table (pressure read every 10° from the band's touch to 190°/310°, averaged over three people and
+         * two runs, 002_12aacdd60a14fec1.txt:101-118) exists only as its Figure 10 (:241), whose values are not in
+         * the text. Ours: 5 points evenly spaced from Pmin to Pmax whose angles rise linearly from 0° to the
+         * region's limit (190° for fingers, 310° for the palm), i.e. θ = limit·(P − Pmin)/(Pmax − Pmin).
          */
         public fun defaultFor(region: HandRegion): ActuatorTable {
             val steps = DEFAULT_POINTS - 1

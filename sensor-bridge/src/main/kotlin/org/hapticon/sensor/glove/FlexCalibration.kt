@@ -14,10 +14,11 @@ public enum class GloveFinger {
 }
 
 /**
- * One finger's flex-sensor calibration, ln R = α·θ + ln β: the resistance R (kΩ) rises exponentially with
- * the bend angle θ (degrees). [alphaPerDegree] is α in 1/°, [betaKiloohms] is β, the resistance at 0°, in kΩ
- * (the study gives β = 16.17 and 16.24 without a unit; kΩ matches a flex sensor's flat resistance, so that
- * is the unit assumed here and everywhere in the glove model).
+ * One finger's flex-sensor calibration, ln R = α·θ + ln β, the tele-handshake paper's Eq. 5
+ * (002_12aacdd60a14fec1.txt:85): the resistance R (kΩ) rises exponentially with the bend angle θ (degrees).
+ * [alphaPerDegree] is α in 1/°, [betaKiloohms] is β, the resistance at 0°, in kΩ (Table 1 gives β = 16.17 and
+ * 16.24 without a unit, :259-262; kΩ matches a flex sensor's flat resistance, so that is the unit assumed here and
+ * everywhere in the glove model; see [FlexDivider.PAPER_PRINTED_FIXED_KILOOHMS]).
  *
  * Both must be finite and > 0: a sensor whose resistance does not rise with bending cannot be inverted.
  */
@@ -43,10 +44,10 @@ public data class FlexCalibration(val alphaPerDegree: Double, val betaKiloohms: 
     }
 
     public companion object {
-        /** The study's mean thumb calibration: α 0.016/°, β 16.17 kΩ. */
+        /** Table 1's mean thumb calibration over its six participants: α 0.016/°, β 16.17 kΩ (002_12aacdd60a14fec1.txt:259-260). */
         public val THUMB_DEFAULT: FlexCalibration = FlexCalibration(0.016, 16.17)
 
-        /** The study's mean middle-finger calibration: α 0.019/°, β 16.24 kΩ. */
+        /** Table 1's mean middle-finger calibration: α 0.019/°, β 16.24 kΩ (002_12aacdd60a14fec1.txt:261-262). */
         public val MIDDLE_DEFAULT: FlexCalibration = FlexCalibration(0.019, 16.24)
 
         /** The study's mean calibration for [finger]. */
@@ -56,7 +57,8 @@ public data class FlexCalibration(val alphaPerDegree: Double, val betaKiloohms: 
         }
 
         /**
-         * Fits ln R = α·θ + ln β to [points] by ordinary least squares on (θ, ln R):
+         * Fits ln R = α·θ + ln β to [points] by ordinary least squares on (θ, ln R), as the paper determined α and
+         * β ("the least squares method", 002_12aacdd60a14fec1.txt:84):
          * α = Σ(θ − θ̄)(y − ȳ)/Σ(θ − θ̄)², ln β = ȳ − α·θ̄ with y = ln R.
          *
          * Returns [FitResult.Rejected] (never throws) when the input is degenerate: fewer than 2 distinct

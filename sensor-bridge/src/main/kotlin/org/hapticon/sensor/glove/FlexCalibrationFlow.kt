@@ -60,14 +60,14 @@ public sealed interface CalibrationState {
 
 /**
  * The calibration procedure for one finger, as a state machine the app drives (one instance per finger):
- * for each pose in [posesDegrees] (default 0°, 30°, 50°, 70°, 90°) the app shows "hold θ", calls
- * [beginPose] once the person holds it, then feeds every reading to [offer]. Readings are collected until
- * the window is settled ([criterion]); the window's mean is that take of the pose and the flow moves on.
- * The poses are walked [takesPerPose] times (the tele-handshake paper took each pose twice and averaged; the paper
- * is "Tele Haptic Handshake Using Distributed Pressure Presentation Device and Mutual Interaction Pressure Model",
- * Electronics 14(3):537, 2025, doi:10.3390/electronics14030537; the two takes and the poses are the project's summary
- * of it, not re-checked against its Methods, which could not be reached: docs/replication.md, 004):
- * round 1 through every pose, then round 2, so the hand leaves each pose before it is taken again. A pose's
+ * for each pose in [posesDegrees] (default 0°, 30°, 50°, 70°, 90°, the tele-handshake paper's,
+ * 002_12aacdd60a14fec1.txt:77) the app shows "hold θ", calls [beginPose] once the person holds it, then feeds every
+ * reading to [offer]. Readings are collected until the window is settled ([criterion]; the paper read a goniometer,
+ * :71, :76, and is silent on how long a pose is held); the window's mean is that take of the pose and the flow moves
+ * on. The poses are walked [takesPerPose] times: the paper repeated the whole procedure twice per participant
+ * (:79) and used "the average of two trials" (:83). Round 1 through every pose, then round 2, so the hand leaves
+ * each pose before it is taken again (the paper's order is thumb, middle finger, then both again, :76-79; ours
+ * completes one finger's two rounds before the other's, one flow per finger). A pose's
  * [CalibrationPoint] is the mean resistance of its takes. After the last take of the last pose it fits
  * ([FlexCalibration.fit]) and ends in [CalibrationState.Calibrated] or [CalibrationState.Failed].
  *
@@ -81,7 +81,7 @@ public class FlexCalibrationFlow(
     public val posesDegrees: List<Double> = DEFAULT_POSES_DEGREES,
     /** When a held reading counts as settled. */
     public val criterion: SettleCriterion = SettleCriterion(),
-    /** How many times each pose is taken and averaged: 2, as the tele-handshake paper did. */
+    /** How many times each pose is taken and averaged: 2, as the tele-handshake paper did (002_12aacdd60a14fec1.txt:79, :83). */
     public val takesPerPose: Int = DEFAULT_TAKES_PER_POSE,
 ) {
     init {

@@ -3,7 +3,9 @@ package org.hapticon.sensor.glove
 /**
  * A flex sensor read through a voltage divider: the fixed resistor [fixedKiloohms] runs from the supply
  * [supplyVolts] to the output node and the flex sensor from the output node to ground, so
- * Vout = Vin·R/(R + Rfix) and the sensor's resistance is R = Vout/(Vin − Vout)·Rfix.
+ * Vout = Vin·R/(R + Rfix) and the sensor's resistance is R = Vout/(Vin − Vout)·Rfix, the tele-handshake paper's
+ * Eq. 4 (002_12aacdd60a14fec1.txt:63; its circuit is only its Figure 4, :231, so the topology is the one Eq. 4
+ * implies: R rises with Vout).
  *
  * Resistances are in kΩ throughout the glove model, the unit of the study's calibration constant β.
  * A reading at or below 0 V (sensor shorted to ground, R = 0), at or above the supply (sensor open or
@@ -52,6 +54,14 @@ public data class FlexDivider(
         return supplyVolts * kiloohms / (kiloohms + fixedKiloohms)
     }
 
+    /**
+     * How far the output moves while a finger following [calibration] bends from [fromDegrees] to [toDegrees]:
+     * Vout(to) − Vout(from), in volts. With the paper's printed 22 Ω and a 16 kΩ sensor this is about 5 mV over
+     * 0–90°, one count of a 10-bit ADC; with [DEFAULT_FIXED_KILOOHMS], 1.7 V.
+     */
+    public fun swingVolts(calibration: FlexCalibration, fromDegrees: Double = 0.0, toDegrees: Double = 90.0): Double =
+        voltsFor(calibration.resistanceAt(toDegrees)) - voltsFor(calibration.resistanceAt(fromDegrees))
+
     private fun faultOf(volts: Double): SensorFault? = when {
         volts.isNaN() -> SensorFault.NOT_A_NUMBER
         volts <= 0.0 -> SensorFault.SHORT_CIRCUIT
@@ -60,18 +70,39 @@ public data class FlexDivider(
     }
 
     public companion object {
-        /**
-         * The study's supply voltage, 5 V, as the project summarised the tele-handshake paper (Electronics
-         * 14(3):537, 2025); its circuit section could not be reached to re-check it (docs/replication.md, 004).
-         */
+        /** The tele-handshake paper's supply: "Input voltage V in is 5 V" (002_12aacdd60a14fec1.txt:62). */
         public const val DEFAULT_SUPPLY_VOLTS: Double = 5.0
 
         /**
-         * 33 kΩ: close to √(16 kΩ · 68 kΩ), the geometric mean of the study's flex resistances at 0° and 90°,
-         * which maximises the output swing over that range (a default, not from the study: the paper's own Rfix
-         * was searched for in issue 15 and not reached).
+         * The fixed resistor as the tele-handshake paper prints it, "the fixed resistance R fix is 22 Ω"
+         * (002_12aacdd60a14fec1.txt:62), in kΩ. Not usable with its own sensor: Table 1's β ≈ 16 kΩ at 0° and
+         * ≈ 68 kΩ at 90° (:259-262) put Vout within 7 mV of the 5 V supply over the whole bend, a swing of
+         * about 5 mV (one count of a 10-bit ADC, 90° per count). By Eq. 4 (:63) R comes out in Rfix's unit, and
+         * β ≈ 16 is a flex sensor's resistance only in kΩ, so "22 Ω" reads as a slip for 22 kΩ
+         * ([PAPER_READ_AS_KILOOHMS]); `hapticon replicate handshake` prints the swing of each.
+         */
+        public const val PAPER_PRINTED_FIXED_KILOOHMS: Double = 0.022
+
+        /** 22 kΩ: the paper's printed "22 Ω" (002_12aacdd60a14fec1.txt:62) read in the kΩ of its β (:259-262). */
+        public const val PAPER_READ_AS_KILOOHMS: Double = 22.0
+
+        /**
+         * Ours, 33 kΩ: the E6 value nearest [widestSwingKiloohms] of the paper's mean thumb at 0° and 90°,
+         * √(16.17 kΩ · 68.2 kΩ) = 33.2 kΩ (Table 1, 002_12aacdd60a14fec1.txt:259-260), which maximises the output
+         * swing over that bend: 1.73 V, 4 % more than [PAPER_READ_AS_KILOOHMS]'s 1.66 V.
          */
         public const val DEFAULT_FIXED_KILOOHMS: Double = 33.0
+
+        /**
+         * The fixed resistor that gives the widest swing between sensor resistances [lowKiloohms] and
+         * [highKiloohms]: √(low·high), where d/dRfix of Vin·(high/(high + Rfix) − low/(low + Rfix)) is zero.
+         */
+        public fun widestSwingKiloohms(lowKiloohms: Double, highKiloohms: Double): Double {
+            require(lowKiloohms > 0.0 && highKiloohms > 0.0 && lowKiloohms.isFinite() && highKiloohms.isFinite()) {
+                "resistances must be finite and > 0, were $lowKiloohms and $highKiloohms"
+            }
+            return kotlin.math.sqrt(lowKiloohms * highKiloohms)
+        }
 
         /** Largest fixed resistor accepted (1 GΩ); bounds R so that it stays finite. */
         public const val MAX_FIXED_KILOOHMS: Double = 1.0e6

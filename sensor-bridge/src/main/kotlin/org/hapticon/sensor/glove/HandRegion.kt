@@ -3,10 +3,12 @@ package org.hapticon.sensor.glove
 import org.hapticon.sensor.safety.SafetyLimits
 
 /**
- * A region of the hand that receives interaction pressure during a tele-handshake, with the study's
- * parameters: how much the own grip ([selfWeight], α) and the partner's grip ([partnerWeight], β) contribute,
- * and the pressure range [minPressureVolts]..[maxPressureVolts] (the study measured pressure as a sensor
- * voltage, so pressures are in volts throughout). α + β = 1 for every region.
+ * A region of the hand that receives interaction pressure during a tele-handshake, with the tele-handshake paper's
+ * parameters: how much the own grip ([selfWeight], α) and the partner's grip ([partnerWeight], β) contribute
+ * (Tables 3 and 5, 002_12aacdd60a14fec1.txt:271-278, :283-286), and the pressure range
+ * [minPressureVolts]..[maxPressureVolts] (Tables 2 and 4, :263-270, :279-282; the paper measured pressure as an FSR
+ * voltage, :158, so pressures are in volts throughout). α + β = 1 for every region. The paper's seven stimulus
+ * points (:90-93) are six actuators: the palm's two regions share one motor and one averaged table (:118, :162).
  *
  * [actuatorLimitDegrees] is the hard safety limit on the region's actuator ([SafetyLimits]);
  * [lucidGlovesIndex] is the finger's position in a LucidGloves force-feedback command (thumb 0 … pinky 4),

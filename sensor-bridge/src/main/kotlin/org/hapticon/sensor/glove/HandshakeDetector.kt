@@ -13,12 +13,14 @@ public enum class HandshakeEvent {
 }
 
 /**
- * Detects a handshake from one hand's middle-finger angle (the thumb has no threshold).
+ * Detects a handshake from one hand's middle-finger angle (the thumb has no threshold: 002_12aacdd60a14fec1.txt:167).
  *
- * It starts when the angle exceeds [startAboveDegrees] (the study's 30.9°) and ends when the angle falls to
- * or below [startAboveDegrees] − [hysteresisDegrees]. The hysteresis (default 2°, about twice the noise of a
- * settled flex reading, see [SettleCriterion]) keeps a finger resting at the threshold from producing a
- * burst of start/end events; 0 gives the study's plain threshold. Not thread-safe; allocation-free.
+ * It starts when the angle exceeds [startAboveDegrees] (the paper's 30.9°, the smallest of its three following
+ * participants' middle-finger angles in a weak face-to-face grip, Table 6, :287-292, chosen at :168-170: "Pressure
+ * presentation is triggered when the measured angle exceeds this value") and ends when the angle falls to or below
+ * [startAboveDegrees] − [hysteresisDegrees]. The paper is silent on the end; the hysteresis (ours, default 2°, about
+ * twice the noise of a settled flex reading, see [SettleCriterion]) keeps a finger resting at the threshold from
+ * producing a burst of start/end events; 0 gives a plain threshold. Not thread-safe; allocation-free.
  */
 public class HandshakeDetector(
     /** The angle the middle finger must exceed to start a handshake, in degrees. */
@@ -63,7 +65,7 @@ public class HandshakeDetector(
     }
 
     public companion object {
-        /** The study's start threshold on the middle finger: 30.9°. */
+        /** The paper's start threshold on the middle finger: 30.9° (002_12aacdd60a14fec1.txt:170, Table 7 :296). */
         public const val START_ABOVE_DEGREES: Double = 30.9
 
         /** Default hysteresis below the start threshold. */

@@ -12,7 +12,7 @@ public fun interface HandPoseSink {
  * Electronics 14(3):537, 2025, doi:10.3390/electronics14030537; docs/sensor-models.md, "Glove model"): each divider reading becomes an angle through the wearer's
  * [FlexCalibration] (a faulty finger counts as open, 0°, which releases the partner's actuators rather than
  * squeezing them); the [partner]'s angles are read at the same instant; [HandshakeSession] starts the handshake
- * when either middle finger exceeds the paper's 30.9° and mixes both hands into each region's interaction
+ * when the wearer's own middle finger exceeds the paper's 30.9° (002_12aacdd60a14fec1.txt:170) and mixes both hands into each region's interaction
  * pressure P = [α/2·nT(self) + α/2·nM(self) + β/2·nT(partner) + β/2·nM(partner)]·(Pmax − Pmin) + Pmin with the
  * paper's per-region α, β, Pmin, Pmax ([HandRegion]). From the pressures it drives:
  *

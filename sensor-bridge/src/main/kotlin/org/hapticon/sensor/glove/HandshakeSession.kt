@@ -77,10 +77,14 @@ public data class HandshakeFrame(
  * The pressures one hand's actuators receive during a tele-handshake, step by step.
  *
  * Each step takes both hands' thumb and middle angles ("self" is the hand whose actuators are driven,
- * "partner" the other). Each hand has its own [HandshakeDetector] on its middle finger; the handshake is
- * active while either hand's detector is (someone gripping a hand touches it even while the other hand is
- * still open). While active, each region gets P from [model], an angle from its [tables] entry, a servo value
- * and a vibration amplitude; while inactive every region gets [RegionCommand.rest].
+ * "partner" the other). Each hand has its own [HandshakeDetector] on its middle finger, and the handshake is
+ * active while the **self** hand's detector is: pressure presentation starts when the wearer's own middle finger
+ * exceeds the initiation angle θM0 = 30.9° (002_12aacdd60a14fec1.txt:138, "haptic feedback begins when this angle
+ * is exceeded"; :169, "pressure presentation begins when the participant's finger flexion reaches an angle";
+ * :170), whatever the partner's hand does. The partner's detector only reports [lastPartnerEvent] (for a display
+ * of the partner's grip); their angles still weigh in through β once the wearer's own handshake has started.
+ * While active, each region gets P from [model], an angle from its [tables] entry, a servo value and a vibration
+ * amplitude; while inactive every region gets [RegionCommand.rest].
  *
  * Not thread-safe. [computeInto] is the allocation-free form for a streaming loop; [step] builds checked
  * value objects on top of it.
@@ -118,8 +122,8 @@ public class HandshakeSession(
     public var lastPartnerEvent: HandshakeEvent = HandshakeEvent.NONE
         private set
 
-    /** Whether the handshake was active at the last step. */
-    public val isActive: Boolean get() = selfDetector.isActive || partnerDetector.isActive
+    /** Whether the handshake was active at the last step: the self hand's middle finger past the threshold. */
+    public val isActive: Boolean get() = selfDetector.isActive
 
     /**
      * Advances both detectors and writes, per region in [HandRegion.ALL] order, the pressure (V), actuator

@@ -1,7 +1,7 @@
 package org.hapticon.sensor.glove
 
 /**
- * The study's interaction pressure per hand region during a tele-handshake:
+ * The tele-handshake paper's interaction pressure per hand region (its Eq. 6, 002_12aacdd60a14fec1.txt:127):
  *
  * P = [α/2·nT(θself,T) + α/2·nM(θself,M) + β/2·nT(θpartner,T) + β/2·nM(θpartner,M)]·(Pmax − Pmin) + Pmin
  *
@@ -12,13 +12,18 @@ package org.hapticon.sensor.glove
  * Allocation-free; angles must be finite (a faulty sensor should be fed as 0°, see [AngleReading.Fault]).
  */
 public data class InteractionPressureModel(
-    /** θT0: thumb angle at which its contribution starts, in degrees (configurable; default 0°, an assumption). */
+    /**
+     * θT0: thumb angle at which its contribution starts, in degrees. Paper silent on a value: it sets "no handshake
+     * initiation angle" for the thumb (002_12aacdd60a14fec1.txt:167) yet Eq. 6 normalises from θT0 (:127), and
+     * Table 7 prints one value, 30.9°, under θT0 and θM0 (:295-296) that :168-170 give the middle finger. Ours: 0°,
+     * the thumb contributing from straight, which is what "no initiation angle" leaves.
+     */
     val thumbZeroDegrees: Double = DEFAULT_THUMB_ZERO_DEGREES,
-    /** θTmax: thumb angle of full contribution, in degrees (study: 100°). */
+    /** θTmax: thumb angle of full contribution, in degrees: 100° (002_12aacdd60a14fec1.txt:126). */
     val thumbMaxDegrees: Double = DEFAULT_THUMB_MAX_DEGREES,
-    /** θM0: middle-finger angle at which its contribution starts, in degrees (study: 30.9°, the handshake threshold). */
+    /** θM0: middle-finger angle at which its contribution starts: 30.9°, the initiation angle (002_12aacdd60a14fec1.txt:168-170). */
     val middleZeroDegrees: Double = DEFAULT_MIDDLE_ZERO_DEGREES,
-    /** θMmax: middle-finger angle of full contribution, in degrees (study: 105°). */
+    /** θMmax: middle-finger angle of full contribution, in degrees: 105° (002_12aacdd60a14fec1.txt:126). */
     val middleMaxDegrees: Double = DEFAULT_MIDDLE_MAX_DEGREES,
 ) {
     init {
@@ -93,16 +98,16 @@ public data class InteractionPressureModel(
     }
 
     public companion object {
-        /** Default θT0: the thumb contributes from straight (the study leaves it configurable). */
+        /** Default θT0, 0°: paper silent (the thumb has "no handshake initiation angle", 002_12aacdd60a14fec1.txt:167). */
         public const val DEFAULT_THUMB_ZERO_DEGREES: Double = 0.0
 
-        /** The study's θTmax. */
+        /** The paper's θTmax, 100° (002_12aacdd60a14fec1.txt:126). */
         public const val DEFAULT_THUMB_MAX_DEGREES: Double = 100.0
 
-        /** The study's θM0, equal to the handshake threshold. */
+        /** The paper's θM0, 30.9° (002_12aacdd60a14fec1.txt:168-170, Table 7 :296), equal to the handshake threshold. */
         public const val DEFAULT_MIDDLE_ZERO_DEGREES: Double = 30.9
 
-        /** The study's θMmax. */
+        /** The paper's θMmax, 105° (002_12aacdd60a14fec1.txt:126). */
         public const val DEFAULT_MIDDLE_MAX_DEGREES: Double = 105.0
 
         // A plain array for the per-sample loop (values() would copy on every call).

@@ -4,7 +4,6 @@ import org.hapticon.sensor.electrotactile.AmplitudeSteps
 import org.hapticon.sensor.electrotactile.ElectrodePattern
 import org.hapticon.sensor.electrotactile.ElectrotactileCalibration
 import org.hapticon.sensor.electrotactile.TimeDivisionScan
-import org.hapticon.sensor.electrotactile.PulseTrain
 import org.hapticon.sensor.protocol.framed.FramedEncoder
 
 /**
@@ -13,7 +12,10 @@ import org.hapticon.sensor.protocol.framed.FramedEncoder
  *
  * [grainCount] grains (bins = grains + 1, as [GrainSettings]) over [minForce]..[maxForce] in the force channel's
  * own units (the board bins what it samples), [pattern] with at least 4 electrodes, each electrode's amplitude
- * step in [steps] (0..200, 200 = 2.7 mA), a low-pass at [cutoffHz] and [grainMicros] of dead time per grain.
+ * step in [steps] (0..200, 200 = 2.7 mA), a low-pass at [cutoffHz] and [grainMicros] of dead time per grain: by
+ * default the grain's own delivery ([TimeDivisionScan.deliveryMicros], 9–10.25 ms), since Shaping Compliance fires no
+ * grain while one is being delivered (003_8ca1dc8f53472543.txt:97); a longer dead time may be asked for, never a
+ * shorter one.
  * Checked here as the firmware checks it, so a refused update never reaches the wire.
  * @throws IllegalArgumentException (or [org.hapticon.sensor.safety.SafetyLimitException] for a step past 200) when any is out of range.
  */
@@ -25,7 +27,7 @@ public data class FirmwareGrainParams(
     val pattern: ElectrodePattern,
     val steps: List<Int>,
     val cutoffHz: Double = GrainSettings.DEFAULT_CUTOFF_HZ,
-    val grainMicros: Int = (GrainSettings.DEFAULT_GRAIN_SECONDS * 1e6).toInt(),
+    val grainMicros: Int = TimeDivisionScan.deliveryMicros(pattern).toInt(),
 ) {
     init {
         require(grainCount in GrainSettings.MIN_GRAIN_COUNT..GrainSettings.MAX_GRAIN_COUNT) { "grain count must be in 0..99, was $grainCount" }
@@ -34,8 +36,8 @@ public data class FirmwareGrainParams(
         require(steps.size == ElectrodePattern.SIZE * ElectrodePattern.SIZE) { "need 9 steps, got ${steps.size}" }
         steps.forEach { AmplitudeSteps.requireStep(it) }
         require(cutoffHz > 0.0 && cutoffHz * 10 <= 0xFFFF) { "cutoffHz must be in (0, 6553.5], was $cutoffHz" }
-        val burst = (PulseTrain.GRAIN_PULSE_COUNT - 1) * 8000 + pattern.activeCount * TimeDivisionScan.SLOT_MICROS
-        require(grainMicros in burst..0xFFFF) { "grainMicros must be in $burst..65535 (longer than its own burst), was $grainMicros" }
+        val burst = TimeDivisionScan.deliveryMicros(pattern)
+        require(grainMicros in burst..0xFFFF) { "grainMicros must be in $burst..65535 (no shorter than its own burst), was $grainMicros" }
     }
 
     /** The 21-byte SET_GRAINS payload, little-endian, in grains.h's order. */
@@ -61,7 +63,7 @@ public data class FirmwareGrainParams(
 
     /**
      * The settings under which sensor-bridge's [GrainDecider] decides as the board does (grains.cpp is its twin): the
-     * same bins over the same range in the channel's units, filter and grain length. `replicate 001` runs a slow
+     * same bins over the same range in the channel's units, filter and grain length. `replicate 003` runs a slow
      * press through it to show what the board fires.
      */
     public fun deciderSettings(): GrainSettings =

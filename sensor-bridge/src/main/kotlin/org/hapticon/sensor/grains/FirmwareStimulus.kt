@@ -8,7 +8,7 @@ import org.hapticon.sensor.protocol.framed.FramedEncoder
 /**
  * One calibration stimulus for the reference firmware (firmware/hapticon_ref/grains.h `Stimulus`), sent with the
  * framed protocol's STIMULATE command ([stimulate]): the grain's pulses (200 µs, anodic) every 8 ms (125 Hz) for
- * [durationMillis] on [electrode] alone at amplitude [step]. Shaping Compliance calibrates each electrode alone
+ * [durationMillis] on [electrode] alone at amplitude [step]. Shaping Compliance (003_8ca1dc8f53472543.txt:152) calibrates each electrode alone
  * with a 200 ms stimulus rising from 0.8 mA, so this is the one command that drives fewer than 4 electrodes: the
  * 4-electrode minimum is the compliance grains' (too weak in the pilot), not a calibration's. The 2.7 mA cap holds.
  * Checked here as the firmware checks it, so a refused stimulus never reaches the wire.

@@ -1,6 +1,6 @@
 package org.hapticon.sensor.grains
 
-import kotlin.math.floor
+import kotlin.math.ceil
 
 /**
  * Decides, sample by sample, when a compliance grain starts.
@@ -28,8 +28,12 @@ public class GrainDecider(
     private val filter = LowPassFilter(settings.cutoffHz, sampleRateHz)
     private val bins = settings.bins
 
-    /** Samples per grain: round(grainSeconds·fs) (halves up), at least 1. */
-    public val grainSamples: Int = maxOf(1, floor(settings.grainSeconds * sampleRateHz + 0.5).toInt())
+    /**
+     * Samples per grain: ⌈grainSeconds·fs⌉, at least 1, so the next grain's sample is never inside the grain being
+     * delivered (Shaping Compliance, 003_8ca1dc8f53472543.txt:97): a 10.25 ms grain at 1 kHz holds 11 samples, not 10.
+     * The tolerance keeps an exact multiple (20 ms at 1 kHz = 20) from rounding up on binary error.
+     */
+    public val grainSamples: Int = maxOf(1, ceil(settings.grainSeconds * sampleRateHz - 1e-9).toInt())
 
     private var referenceBin = NO_BIN
     private var busySamples = 0

@@ -67,7 +67,7 @@ public sealed interface GrainOutput {
 
         /**
          * The electrotactile grain on any [pattern] of at least [ElectrodePattern.MIN_COMPLIANCE_ELECTRODES]
-         * electrodes (Shaping Compliance: fewer felt too weak).
+         * electrodes (Shaping Compliance: fewer felt too weak, 003_8ca1dc8f53472543.txt:107).
          * @throws IllegalArgumentException when [pattern] has fewer than 4 electrodes.
          * @throws org.hapticon.sensor.safety.SafetyLimitException when the current exceeds [userLimit] or 2.7 mA.
          */

@@ -6,9 +6,11 @@ package org.hapticon.sensor.grains
  * [grainCount] grains over [[minNewtons], [maxNewtons]]: the range is cut into [binCount] = [grainCount] + 1 bins
  * placed by [distribution] (see [GrainBins]), so a slow press across the whole range crosses exactly
  * [grainCount] inner edges and fires [grainCount] grains. Shaping Compliance: "(number of grains) = (number of
- * bins) − 1", its 9–39 grains are 10–40 bins. Grain count 0 is one bin: the study's no-grain condition.
- * The FSR force is smoothed by a first-order low-pass at [cutoffHz] (see [LowPassFilter]), and each grain
- * lasts [grainSeconds], during which no other grain may start.
+ * bins) − 1", its 9–39 grains are 10–40 bins (003_8ca1dc8f53472543.txt:95, :97). Grain count 0 is one bin, nothing
+ * fires: the reference the paper adds to its analysis (:161).
+ * The FSR force is smoothed by a first-order low-pass at [cutoffHz] (see [LowPassFilter]; the paper low-passes the FSR,
+ * :123, and gives no cutoff: paper silent, ours 20 Hz), and each grain takes [grainSeconds] to deliver, during which
+ * no other grain starts ("We did not trigger a new grain while a previous one was still being delivered", :97).
  */
 public data class GrainSettings(
     val grainCount: Int = DEFAULT_GRAIN_COUNT,
@@ -27,7 +29,7 @@ public data class GrainSettings(
         require(grainCount in MIN_GRAIN_COUNT..MAX_GRAIN_COUNT) { "grain count must be in $MIN_GRAIN_COUNT..$MAX_GRAIN_COUNT, was $grainCount" }
     }
 
-    /** Number of force bins: [grainCount] + 1 (grains = bins − 1, Shaping Compliance). */
+    /** Number of force bins: [grainCount] + 1 (grains = bins − 1, Shaping Compliance, 003_8ca1dc8f53472543.txt:95). */
     val binCount: Int get() = grainCount + 1
 
     /** The [binCount] bins; throws from the constructor like [GrainBins] when the range is invalid. */
@@ -55,7 +57,11 @@ public data class GrainSettings(
         /** Default low-pass cutoff: 20 Hz passes a finger's pressing (< 10 Hz) and removes FSR and ADC noise. */
         public const val DEFAULT_CUTOFF_HZ: Double = 20.0
 
-        /** Default grain length: 20 ms, the middle of the usual 10–30 ms. */
+        /**
+         * Default grain length on the phone's LRA: 20 ms. Paper silent (its grains are electrotactile, 8 ms + 250 µs per
+         * electrode: [org.hapticon.sensor.electrotactile.TimeDivisionScan.deliveryMicros], which the board uses); ours is
+         * a few periods of a phone LRA's resonance (about 175 Hz), and, as published, no grain starts while it plays.
+         */
         public const val DEFAULT_GRAIN_SECONDS: Double = 0.020
 
         /** Longest grain accepted: 0.5 s (longer is no longer a grain). */

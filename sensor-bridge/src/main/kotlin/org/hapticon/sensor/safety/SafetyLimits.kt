@@ -18,10 +18,10 @@ public object SafetyLimits {
     /** Highest LucidGloves force-feedback value: full force (the firmware's fully restricting position). */
     public const val SERVO_MAX: Int = 1000
 
-    /** Largest actuator angle a finger region's calibration table may command, in degrees. */
+    /** Largest actuator angle a finger region's calibration table may command, in degrees: the tele-handshake paper's finger motors' maximum (002_12aacdd60a14fec1.txt:112). */
     public const val FINGER_ACTUATOR_MAX_DEGREES: Double = 190.0
 
-    /** Largest actuator angle the palm's calibration table may command, in degrees. */
+    /** Largest actuator angle the palm's calibration table may command, in degrees: the paper's palm motor maximum (002_12aacdd60a14fec1.txt:112). */
     public const val PALM_ACTUATOR_MAX_DEGREES: Double = 310.0
 
     /** Hard cap on electrotactile current, in milliamperes; no per-user calibration may exceed it. */

@@ -67,6 +67,42 @@ class ElectrotactileCalibrationTest {
     }
 
     @Test
+    fun wholeArrayCheck_oneElectrodeAdjusted_forAUniformSensation() {
+        val calibration = ElectrotactileCalibration()
+        repeat(9) { calibration.clearAndPainFree() }
+        // The person feels electrode 5 stand out and electrode 1 faint (003_8ca1dc8f53472543.txt:152: "uniform").
+        calibration.weaker(4)
+        calibration.weaker(4)
+        calibration.stronger(0)
+        assertEquals(listOf(61, 60, 60, 60, 58, 60, 60, 60, 60), calibration.stimulus()!!.steps)
+        calibration.tooStrong()
+        assertEquals(listOf(60, 59, 59, 59, 57, 59, 59, 59, 59), calibration.stimulus()!!.steps)
+        calibration.wholeArrayOk()
+        assertEquals(listOf(60, 59, 59, 59, 57, 59, 59, 59, 59), calibration.result().steps)
+    }
+
+    @Test
+    fun wholeArrayCheck_adjustments_stopAtTheCapAndZero_andOnlyInTheCheck() {
+        val calibration = ElectrotactileCalibration()
+        try {
+            calibration.weaker(0)
+            fail("accepted before the check")
+        } catch (_: IllegalStateException) {
+        }
+        repeat(9) { calibration.clearAndPainFree() }
+        repeat(300) { calibration.stronger(8) }
+        repeat(100) { calibration.weaker(0) }
+        assertEquals(200, calibration.steps()[8])
+        assertEquals(0, calibration.steps()[0])
+        try {
+            calibration.stronger(9)
+            fail("accepted electrode 9")
+        } catch (e: IllegalArgumentException) {
+            assertEquals("electrode must be in 0..8, was 9", e.message)
+        }
+    }
+
+    @Test
     fun calibration_raisingPastTheCap_staysAt2point7mA() {
         val calibration = ElectrotactileCalibration()
         repeat(500) { calibration.notYet() }

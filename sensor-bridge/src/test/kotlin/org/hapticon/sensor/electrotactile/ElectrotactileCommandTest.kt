@@ -25,8 +25,8 @@ class ElectrotactileCommandTest {
         assertEquals(listOf("XX.", "XX.", "..."), ElectrodeMask.SMALL_SQUARE.pattern.rows())
         assertEquals(listOf("XXX", "XXX", "..."), ElectrodeMask.HORIZONTAL_LINE.pattern.rows())
         assertEquals(listOf("XX.", "XX.", "XX."), ElectrodeMask.VERTICAL_LINE.pattern.rows())
-        assertEquals(listOf(".X.", "X.X", "XXX"), ElectrodeMask.TRIANGLE.pattern.rows())
-        // Shaping Compliance: large square 9, small square 4, horizontal line 6, vertical line 6, triangle 6.
+        assertEquals(listOf("X..", "XX.", "XXX"), ElectrodeMask.TRIANGLE.pattern.rows())
+        // Shaping Compliance (003_8ca1dc8f53472543.txt:107, :144): large square 9, small square 4, lines 6, triangle 6.
         assertEquals(listOf(9, 4, 6, 6, 6), ElectrodeMask.entries.map { it.pattern.activeCount })
     }
 
@@ -36,7 +36,7 @@ class ElectrotactileCommandTest {
         assertEquals(listOf(0, 1, 3, 4), ElectrodeMask.SMALL_SQUARE.pattern.electrodes())
         assertEquals(listOf(0, 1, 2, 3, 4, 5), ElectrodeMask.HORIZONTAL_LINE.pattern.electrodes())
         assertEquals(listOf(0, 1, 3, 4, 6, 7), ElectrodeMask.VERTICAL_LINE.pattern.electrodes())
-        assertEquals(listOf(1, 3, 5, 6, 7, 8), ElectrodeMask.TRIANGLE.pattern.electrodes())
+        assertEquals(listOf(0, 3, 4, 6, 7, 8), ElectrodeMask.TRIANGLE.pattern.electrodes())
         assertTrue(ElectrodeMask.entries.all { it.pattern.isStrongEnoughForCompliance })
     }
 
@@ -52,9 +52,10 @@ class ElectrotactileCommandTest {
         // Electrode 3·row + column: the top two rows are bits 0..5 = 0b000111111 = 63.
         assertEquals(63, ElectrodeMask.HORIZONTAL_LINE.pattern.bits)
         assertEquals(0b011011011, ElectrodeMask.VERTICAL_LINE.pattern.bits)
-        assertTrue(ElectrodeMask.TRIANGLE.pattern.isOn(0, 1))
-        assertFalse(ElectrodeMask.TRIANGLE.pattern.isOn(1, 1))
-        assertEquals(".X./X.X/XXX", ElectrodeMask.TRIANGLE.pattern.toString())
+        assertTrue(ElectrodeMask.TRIANGLE.pattern.isOn(1, 1))
+        assertFalse(ElectrodeMask.TRIANGLE.pattern.isOn(0, 1))
+        assertEquals(0b111011001, ElectrodeMask.TRIANGLE.pattern.bits)
+        assertEquals("X../XX./XXX", ElectrodeMask.TRIANGLE.pattern.toString())
     }
 
     @Test

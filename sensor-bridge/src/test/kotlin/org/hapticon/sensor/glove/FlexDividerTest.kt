@@ -24,6 +24,37 @@ class FlexDividerTest {
     }
 
     @Test
+    fun papersPrinted22Ohms_givesAbout5MillivoltsOver90Degrees_oneCountOfATenBitAdc() {
+        // 002_12aacdd60a14fec1.txt:62 prints Rfix = 22 Ω; Table 1's mean thumb (:259-260) is 16.17 kΩ at 0°,
+        // 16.17·e^(0.016·90) = 68.25 kΩ at 90°: Vout = 5·16.17/16.192 = 4.99321 V and 5·68.25/68.27 = 4.99839 V.
+        val printed = FlexDivider(fixedKiloohms = FlexDivider.PAPER_PRINTED_FIXED_KILOOHMS)
+        val thumb = FlexCalibration.THUMB_DEFAULT
+        assertEquals(4.993206521739131, printed.voltsFor(thumb.resistanceAt(0.0)), 1e-12)
+        assertEquals(4.998388765921997, printed.voltsFor(thumb.resistanceAt(90.0)), 1e-12)
+        val swing = printed.swingVolts(thumb)
+        assertEquals(0.005182244182866, swing, 1e-12)
+        // One 10-bit count is 5/1023 V = 4.89 mV: the whole 90° bend moves the reading by 1.06 counts.
+        assertEquals(1.06, swing / AdcScale.TEN_BIT.voltsOf(1), 0.005)
+        // Ours: 1.726 V, 353 counts, 0.25° a count; the paper's value read as 22 kΩ: 1.663 V.
+        assertEquals(1.7260533615755, FlexDivider().swingVolts(thumb), 1e-12)
+        assertEquals(353.15, FlexDivider().swingVolts(thumb) / AdcScale.TEN_BIT.voltsOf(1), 0.01)
+        assertEquals(1.6629896015083, FlexDivider(fixedKiloohms = FlexDivider.PAPER_READ_AS_KILOOHMS).swingVolts(thumb), 1e-12)
+    }
+
+    @Test
+    fun default33Kiloohms_isTheE6ValueNearestTheWidestSwingForThePapersMeanThumb() {
+        val thumb = FlexCalibration.THUMB_DEFAULT
+        val widest = FlexDivider.widestSwingKiloohms(thumb.resistanceAt(0.0), thumb.resistanceAt(90.0))
+        assertEquals(33.220185016111664, widest, 1e-9)
+        // The swing peaks there: 1 % either side swings less, and 33 kΩ is within 0.01 % of the peak.
+        val peak = FlexDivider(fixedKiloohms = widest).swingVolts(thumb)
+        assertTrue(FlexDivider(fixedKiloohms = widest * 0.99).swingVolts(thumb) < peak)
+        assertTrue(FlexDivider(fixedKiloohms = widest * 1.01).swingVolts(thumb) < peak)
+        assertEquals(peak, FlexDivider().swingVolts(thumb), peak * 1e-4)
+        assertEquals(33.0, FlexDivider.DEFAULT_FIXED_KILOOHMS, 0.0)
+    }
+
+    @Test
     fun resistanceOf_oneVoltOnFive_isAQuarterOfTheFixedResistor() {
         // R = 1/(5 − 1)·10 = 2.5 kΩ.
         assertEquals(2.5, kiloohms(FlexDivider(fixedKiloohms = 10.0).resistanceOf(1.0)), 1e-15)

@@ -72,6 +72,16 @@ class HandshakeLoopTest {
     }
 
     @Test
+    fun partnerGripping_wearersOwnFingerOpen_nothingIsPresented() {
+        loop.partner = partner.apply { thumb = 60.0; middle = 105.0 }
+        assertEquals(0, sample(20.0, 25.0, 0))
+        assertFalse(loop.active)
+        assertEquals(0.0, loop.pressureVolts(HandRegion.PALM), 0.0)
+        // The glove's first command is a release: no finger is held.
+        assertEquals(listOf(listOf(0, 0, 0, 0, 0)), servoCommands)
+    }
+
+    @Test
     fun forceFeedback_changesOnlyAtMost20PerSecond_andReleasedAtOnce() {
         loop.partner = partner.apply { thumb = 0.0; middle = 67.95 }
         sample(50.0, 105.0, 0)

@@ -124,17 +124,14 @@ class HandshakeLoopbackTest {
     }
 
     @Test
-    fun aGripStart_onlyAAboveThreshold_bothHandsAlreadyFeelPressure() {
-        // t = 1.10 s: A at 24°, 31.5° (just past 30.9°); B still approaching at 18.33°, 22.92°.
+    fun aGripStart_onlyAAboveThreshold_onlyAFeelsPressure() {
+        // t = 1.10 s: A at 24°, 31.5° (just past 30.9°); B still approaching at 18.33°, 22.92°. Pressure starts on
+        // one's own middle finger (002_12aacdd60a14fec1.txt:138, :169-170): A's actuators start, B's rest.
         assertEquals(HandshakeEvent.STARTED, toA[110].selfEvent)
         assertEquals(HandshakeEvent.STARTED, toB[110].partnerEvent)
         assertFalse(toA[109].active)
-        assertFrame(
-            toB[110],
-            listOf(1.0925477921727396, 0.4632707422402159, 0.7837922914979757, 0.29577326315789476, 0.4661290897435898, 1.5702202962213225),
-            intArrayOf(99, 101, 97, 102, 102), listOf(61, 62, 61, 62, 62, 65),
-            thumbDegrees = 18.83175641025641, palmDegrees = 36.74853373819164,
-        )
+        assertFalse(toB[110].active)
+        assertEquals(HandRegion.ALL.map { RegionCommand.rest(it) }, toB[110].commands)
         assertFrame(
             toA[110],
             listOf(1.121225217273954, 0.4751872874493927, 0.8186093279352227, 0.3085705964912281, 0.4807721923076923, 1.5088824703103914),
@@ -144,10 +141,12 @@ class HandshakeLoopbackTest {
     }
 
     @Test
-    fun bGripStart_isReportedOnceOnEachPhone() {
-        // B's middle finger passes 30.9° at t = 1.31 s (25 + 55·0.11 = 31.05°).
+    fun bGripStart_startsBsPressure_andIsReportedOnceOnEachPhone() {
+        // B's middle finger passes 30.9° at t = 1.31 s (25 + 55·0.11 = 31.05°): only then do B's actuators start.
         assertEquals(HandshakeEvent.STARTED, toB[131].selfEvent)
         assertEquals(HandshakeEvent.STARTED, toA[131].partnerEvent)
+        assertFalse(toB[130].active)
+        assertTrue(toB[131].active)
         assertEquals(1, toA.count { it.selfEvent == HandshakeEvent.STARTED })
         assertEquals(1, toA.count { it.partnerEvent == HandshakeEvent.STARTED })
     }
@@ -187,10 +186,11 @@ class HandshakeLoopbackTest {
     }
 
     @Test
-    fun release_endsWhenTheLastMiddleFingerFallsBelowTheHysteresis() {
-        // A falls to 28.8° ≤ 28.9° at t = 3.68 s; B (80·0.36 = 28.8°) at t = 3.84 s, and only then does it stop.
+    fun release_eachSideEndsWhenItsOwnMiddleFingerFallsBelowTheHysteresis() {
+        // A falls to 28.8° ≤ 28.9° at t = 3.68 s: A's actuators rest from then; B (80·0.36 = 28.8°) at t = 3.84 s.
         assertEquals(HandshakeEvent.ENDED, toA[368].selfEvent)
-        assertTrue(toA[368].active)
+        assertTrue(toA[367].active)
+        assertFalse(toA[368].active)
         assertEquals(HandshakeEvent.ENDED, toA[384].partnerEvent)
         assertEquals(HandshakeEvent.ENDED, toB[384].selfEvent)
         assertTrue(toB[383].active)

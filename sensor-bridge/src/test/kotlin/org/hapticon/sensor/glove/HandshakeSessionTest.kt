@@ -41,14 +41,45 @@ class HandshakeSessionTest {
     }
 
     @Test
-    fun step_partnerOnlyGripping_isActive() {
+    fun step_partnerOnlyGripping_isRestUntilTheOwnMiddleFingerPasses30_9() {
+        // The paper starts pressure on one's own middle finger (002_12aacdd60a14fec1.txt:138, :169-170): a partner
+        // gripping at 90° does not start it while the wearer's middle finger is at 30.9° (not above it).
         val session = HandshakeSession()
-        val frame = session.step(0.0, 0.0, 0.0, 40.0)
+        val open = session.step(0.0, 30.9, 60.0, 90.0)
+        assertFalse(open.active)
+        assertEquals(HandshakeEvent.NONE, open.selfEvent)
+        assertEquals(HandshakeEvent.STARTED, open.partnerEvent)
+        assertEquals(HandRegion.ALL.map { RegionCommand.rest(it) }, open.commands)
+        // One step later the wearer's own finger is at 31°: started, and the partner's grip now weighs in through β.
+        val own = session.step(0.0, 31.0, 60.0, 90.0)
+        assertTrue(own.active)
+        assertEquals(HandshakeEvent.STARTED, own.selfEvent)
+        // Palm: (α/2·nM(31) + β/2·(nT(60) + nM(90)))·2.87 + 1.23 with α 0.17, β 0.83.
+        val expected = (0.085 * 0.1 / 74.1 + 0.415 * (0.6 + 59.1 / 74.1)) * 2.87 + 1.23
+        assertEquals(expected, own.command(HandRegion.PALM).pressureVolts, 1e-12)
+    }
+
+    @Test
+    fun step_ownMiddleOnly_isActiveWithThePartnersHandOpen() {
+        val frame = HandshakeSession().step(0.0, 40.0, 0.0, 0.0)
         assertTrue(frame.active)
-        assertEquals(HandshakeEvent.NONE, frame.selfEvent)
-        assertEquals(HandshakeEvent.STARTED, frame.partnerEvent)
-        // Palm: β/2·nM(40) = 0.415·9.1/74.1 of 2.87 V above 1.23 V.
-        assertEquals(0.415 * 9.1 / 74.1 * 2.87 + 1.23, frame.command(HandRegion.PALM).pressureVolts, 1e-12)
+        assertEquals(HandshakeEvent.STARTED, frame.selfEvent)
+        assertEquals(HandshakeEvent.NONE, frame.partnerEvent)
+        // Palm: α/2·nM(40) = 0.085·9.1/74.1 of 2.87 V above 1.23 V.
+        assertEquals(0.085 * 9.1 / 74.1 * 2.87 + 1.23, frame.command(HandRegion.PALM).pressureVolts, 1e-12)
+    }
+
+    @Test
+    fun step_partnerLetsGo_theHandshakeEndsOnlyWithTheOwnFinger() {
+        val session = HandshakeSession()
+        assertTrue(session.step(0.0, 50.0, 0.0, 50.0).active)
+        val partnerOpen = session.step(0.0, 50.0, 0.0, 0.0)
+        assertEquals(HandshakeEvent.ENDED, partnerOpen.partnerEvent)
+        assertTrue(partnerOpen.active)
+        // Own finger at 28.9° = 30.9° − the 2° hysteresis: ended.
+        val ownOpen = session.step(0.0, 28.9, 0.0, 0.0)
+        assertEquals(HandshakeEvent.ENDED, ownOpen.selfEvent)
+        assertFalse(ownOpen.active)
     }
 
     @Test

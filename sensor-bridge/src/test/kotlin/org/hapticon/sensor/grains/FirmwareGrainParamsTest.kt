@@ -20,9 +20,22 @@ class FirmwareGrainParamsTest {
     fun payload_isTheBytesTheFirmwareSketchTestSends() {
         // sensor-bridge/firmware/test/sketch_test.cpp sends exactly these 21 bytes and expects 9 grains on electrodes 0, 1, 3, 4.
         assertArrayEquals(
-            bytes(9, 0, 0x00, 0x00, 0xe8, 0x03, 0x1b, 0x00, 200, 200, 0, 200, 200, 0, 0, 0, 0, 0xc8, 0x00, 0x20, 0x4e),
+            bytes(9, 0, 0x00, 0x00, 0xe8, 0x03, 0x1b, 0x00, 200, 200, 0, 200, 200, 0, 0, 0, 0, 0xc8, 0x00, 0x28, 0x23),
             smallSquareAtCap.payload(),
         )
+    }
+
+    @Test
+    fun grainMicros_defaultsToTheGrainsOwnDelivery_asTheBoardsDeadTime() {
+        // No grain while one is being delivered (003_8ca1dc8f53472543.txt:97): 8 ms to the second pulse + 250 µs per electrode.
+        val range = FirmwareForceRange(0, 1023)
+        val expected = mapOf(ElectrodeMask.SMALL_SQUARE to 9000, ElectrodeMask.HORIZONTAL_LINE to 9500, ElectrodeMask.VERTICAL_LINE to 9500, ElectrodeMask.TRIANGLE to 9500, ElectrodeMask.LARGE_SQUARE to 10250)
+        for ((mask, micros) in expected) {
+            assertEquals(mask.name, micros, FirmwareGrainParams.of(19, BinDistribution.LINEAR, range, mask.pattern, List(9) { 60 }).grainMicros)
+        }
+        // The Kotlin twin holds the same grains back: 10.25 ms at 1 kHz is 11 samples, so the next grain's sample is after the last pulse.
+        val large = FirmwareGrainParams.of(19, BinDistribution.LINEAR, range, ElectrodeMask.LARGE_SQUARE.pattern, List(9) { 60 })
+        assertEquals(11, GrainDecider(large.deciderSettings(), 1000.0).grainSamples)
     }
 
     @Test

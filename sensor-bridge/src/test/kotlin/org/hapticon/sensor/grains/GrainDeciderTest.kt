@@ -71,11 +71,14 @@ class GrainDeciderTest {
     }
 
     @Test
-    fun grainSamples_isTheDurationRoundedToSamples() {
+    fun grainSamples_isTheDurationRoundedUpToSamples() {
         assertEquals(20, GrainDecider(GrainSettings(grainSeconds = 0.020), 1000.0).grainSamples)
         assertEquals(13, GrainDecider(GrainSettings(grainSeconds = 0.0125), 1000.0).grainSamples)
         assertEquals(1, GrainDecider(GrainSettings(grainSeconds = 0.0001), 1000.0).grainSamples)
         assertEquals(3, decider(0.003).grainSamples)
+        // Never rounded down into the grain being delivered: 10.25 ms at 1 kHz holds 11 samples, 9 ms exactly 9.
+        assertEquals(11, GrainDecider(GrainSettings(grainSeconds = 0.01025), 1000.0).grainSamples)
+        assertEquals(9, GrainDecider(GrainSettings(grainSeconds = 0.009), 1000.0).grainSamples)
     }
 
     @Test

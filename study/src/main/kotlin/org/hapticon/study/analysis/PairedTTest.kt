@@ -21,6 +21,15 @@ public data class PairedTTest(
     val undefinedReason: String?,
 ) {
     public companion object {
+        /**
+         * The two-sided p of a t statistic [t] with [df] degrees of freedom, as [of] computes it: the check of a
+         * published "t(15) = 2.423, p < 0.05".
+         */
+        public fun twoSidedP(t: Double, df: Int): Double {
+            require(t.isFinite() && df >= 1) { "need a finite t and df >= 1, were $t and $df" }
+            return SpecialFunctions.studentTTwoSided(t, df.toDouble())
+        }
+
         /** Tests [a] against [b], paired by index; both must be the same size and finite. */
         public fun of(a: List<Double>, b: List<Double>): PairedTTest {
             val differences = pairedDifferences(a, b)

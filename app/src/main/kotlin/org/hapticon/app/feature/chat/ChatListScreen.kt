@@ -66,13 +66,18 @@ import org.hapticon.core.io.IconJson
 /** What the chat list can ask for. */
 data class ChatListActions(
     val onOpen: (String) -> Unit = {},
-    /** Starts a conversation; returns why not (an invalid user name), null when started. */
-    val onNewChat: (String) -> String? = { null },
+    /**
+     * Starts a conversation with the name typed, even with one the broker never saw when the second argument is true;
+     * returns why not, null when started.
+     */
+    val onNewChat: (peer: String, evenIfUnknown: Boolean) -> NewChatProblem? = { _, _ -> null },
     val onArchive: (String) -> Unit = {},
     val onUnarchive: (String) -> Unit = {},
     val onDelete: (String) -> Unit = {},
     val onSettings: () -> Unit = {},
     val onInvite: () -> Unit = {},
+    /** The button of the note on reaching this user with the app closed ([ReachableNoteRow]). */
+    val onReachableNote: (ReachableNote) -> Unit = {},
 )
 
 /**
@@ -80,7 +85,8 @@ data class ChatListActions(
  * glyph when the last message carried one), relative time and an unread badge; a "New chat" button;
  * swipe a row away (or long-press it) to archive or delete, with an undo snackbar. Deletion waits for
  * the snackbar: undone, nothing was deleted; leaving the list while it shows deletes at once (the undo
- * went with the snackbar). Archiving takes effect at once and undo brings the chat back.
+ * went with the snackbar). Archiving takes effect at once and undo brings the chat back. While messages cannot move
+ * (offline, broker unreachable) a line under the top bar says so; the list itself comes from Room as always.
  */
 @OptIn(ExperimentalMaterial3Api::class)
 @Composable
@@ -128,16 +134,19 @@ fun ChatListScreen(
     val archivedCount = uiState.conversations.count { it.peer in uiState.archived }
     Scaffold(
         topBar = {
-            TopAppBar(
-                title = { Text(if (showArchived) "Archived chats" else "Chats") },
-                navigationIcon = {
-                    if (showArchived) IconButton(onClick = { showArchived = false }) { Icon(HapticonIcons.ArrowBack, contentDescription = "Back to chats") }
-                },
-                actions = {
-                    IconButton(onClick = actions.onInvite) { Icon(HapticonIcons.PersonAdd, contentDescription = "Invite someone") }
-                    IconButton(onClick = actions.onSettings) { Icon(HapticonIcons.Settings, contentDescription = "Settings") }
-                },
-            )
+            Column {
+                TopAppBar(
+                    title = { Text(if (showArchived) "Archived chats" else "Chats") },
+                    navigationIcon = {
+                        if (showArchived) IconButton(onClick = { showArchived = false }) { Icon(HapticonIcons.ArrowBack, contentDescription = "Back to chats") }
+                    },
+                    actions = {
+                        IconButton(onClick = actions.onInvite) { Icon(HapticonIcons.PersonAdd, contentDescription = "Invite someone") }
+                        IconButton(onClick = actions.onSettings) { Icon(HapticonIcons.Settings, contentDescription = "Settings") }
+                    },
+                )
+                uiState.connection.line()?.let { ConnectionLine(it) }
+            }
         },
         floatingActionButton = {
             if (!showArchived) {
@@ -152,29 +161,37 @@ fun ChatListScreen(
         },
         snackbarHost = { SnackbarHost(snackbar) },
     ) { padding ->
-        if (visible.isEmpty() && !showArchived) {
-            EmptyChats(uiState.user, Modifier.fillMaxSize().padding(padding), onInvite = actions.onInvite, onNewChat = { newChat = true })
-        } else {
-            LazyColumn(Modifier.fillMaxSize().padding(padding), contentPadding = PaddingValues(bottom = 88.dp)) {
-                items(visible, key = { it.peer }) { summary ->
-                    ConversationRow(
-                        summary, clock.relative(summary.lastAtMillis ?: 0, nowMillis).takeIf { summary.lastAtMillis != null },
-                        archived = showArchived, onOpen = actions.onOpen,
-                        onArchive = { if (showArchived) actions.onUnarchive(it) else archive(it) }, onDelete = ::delete,
-                    )
-                }
-                if (!showArchived && archivedCount > 0) {
-                    item {
-                        TextButton(onClick = { showArchived = true }, modifier = Modifier.padding(horizontal = 8.dp)) {
-                            Icon(HapticonIcons.Archive, contentDescription = null)
-                            Text("Archived ($archivedCount)", Modifier.padding(start = 8.dp))
+        Column(Modifier.fillMaxSize().padding(padding)) {
+            uiState.reachableNote?.let { ReachableNoteRow(it, actions.onReachableNote) }
+            if (visible.isEmpty() && !showArchived) {
+                EmptyChats(uiState.user, Modifier.fillMaxWidth().weight(1f), onInvite = actions.onInvite, onNewChat = { newChat = true })
+            } else {
+                LazyColumn(Modifier.fillMaxWidth().weight(1f), contentPadding = PaddingValues(bottom = 88.dp)) {
+                    items(visible, key = { it.peer }) { summary ->
+                        ConversationRow(
+                            summary, clock.relative(summary.lastAtMillis ?: 0, nowMillis).takeIf { summary.lastAtMillis != null },
+                            archived = showArchived, onOpen = actions.onOpen,
+                            onArchive = { if (showArchived) actions.onUnarchive(it) else archive(it) }, onDelete = ::delete,
+                        )
+                    }
+                    if (!showArchived && archivedCount > 0) {
+                        item {
+                            TextButton(onClick = { showArchived = true }, modifier = Modifier.padding(horizontal = 8.dp)) {
+                                Icon(HapticonIcons.Archive, contentDescription = null)
+                                Text("Archived ($archivedCount)", Modifier.padding(start = 8.dp))
+                            }
                         }
                     }
                 }
             }
         }
     }
-    if (newChat) NewChatDialog(onStart = { peer -> actions.onNewChat(peer).also { if (it == null) newChat = false } }, onDismiss = { newChat = false })
+    if (newChat) {
+        NewChatDialog(
+            onStart = { peer, evenIfUnknown -> actions.onNewChat(peer, evenIfUnknown).also { if (it == null) newChat = false } },
+            onDismiss = { newChat = false },
+        )
+    }
 }
 
 @Composable
@@ -312,10 +329,15 @@ fun previewOf(summary: ConversationSummary): String {
     return if (summary.lastOutgoing && summary.lastAtMillis != null) "You: $body" else body
 }
 
+/**
+ * Asks for the peer's user name. A name the broker never saw is said so under the field, and the button becomes
+ * "Start anyway" (they may set up the app later; messages reach them once they connect) until the name changes.
+ */
 @Composable
-private fun NewChatDialog(onStart: (String) -> String?, onDismiss: () -> Unit) {
+private fun NewChatDialog(onStart: (peer: String, evenIfUnknown: Boolean) -> NewChatProblem?, onDismiss: () -> Unit) {
     var peer by rememberSaveable { mutableStateOf("") }
-    var error by rememberSaveable { mutableStateOf<String?>(null) }
+    var error by remember { mutableStateOf<NewChatProblem?>(null) }
+    val unknown = error is NewChatProblem.NeverConnected
     AlertDialog(
         onDismissRequest = onDismiss,
         title = { Text("New chat") },
@@ -323,10 +345,10 @@ private fun NewChatDialog(onStart: (String) -> String?, onDismiss: () -> Unit) {
             OutlinedTextField(
                 peer, { peer = it; error = null }, label = { Text("Their user name") }, singleLine = true,
                 modifier = Modifier.semantics { contentDescription = "Their user name" },
-                isError = error != null, supportingText = { Text(error ?: "As they chose it on their phone, e.g. bob") },
+                isError = error != null, supportingText = { Text(error?.message ?: "As they chose it on their phone, e.g. bob") },
             )
         },
-        confirmButton = { TextButton(onClick = { error = onStart(peer) }) { Text("Start chat") } },
+        confirmButton = { TextButton(onClick = { error = onStart(peer, unknown) }) { Text(if (unknown) "Start anyway" else "Start chat") } },
         dismissButton = { TextButton(onClick = onDismiss) { Text("Cancel") } },
     )
 }

@@ -18,6 +18,9 @@ import androidx.compose.runtime.remember
 import androidx.compose.runtime.rememberCoroutineScope
 import androidx.compose.runtime.saveable.rememberSaveable
 import androidx.compose.runtime.setValue
+import androidx.compose.runtime.Stable
+import androidx.compose.runtime.saveable.Saver
+import kotlinx.coroutines.flow.Flow
 import androidx.compose.ui.platform.LocalContext
 import androidx.core.content.ContextCompat
 import androidx.lifecycle.compose.collectAsStateWithLifecycle
@@ -33,6 +36,7 @@ import org.hapticon.app.data.ChatExport
 import org.hapticon.app.feature.iconeditor.IconEditorRoute
 import org.hapticon.app.playback.RendererChoice
 import org.hapticon.app.sync.ChatComponent
+import org.hapticon.app.sync.KeepAlive
 import org.hapticon.app.sync.MessageNotifier
 import org.hapticon.app.sync.ReachableService
 import org.hapticon.messaging.ConnectionState
@@ -41,7 +45,29 @@ import org.hapticon.messaging.Topics
 import org.hapticon.messaging.BrokerAddress
 
 /** The screens of the Chats destination. */
-private enum class ChatScreen { LIST, CONVERSATION, SETTINGS, INVITE, EDITOR }
+enum class ChatScreen { LIST, CONVERSATION, SETTINGS, INVITE, EDITOR }
+
+/**
+ * Which screen the Chats destination shows, held by the app frame: it shows its tab bar only over the chat list
+ * (and first launch), as Signal does; a conversation and the screens opened from the list take the whole height.
+ */
+@Stable
+class ChatsNavigation(initial: ChatScreen = ChatScreen.LIST) {
+    /** The screen shown. */
+    var screen: ChatScreen by mutableStateOf(initial)
+
+    /** True on the chat list, the one Chats screen under the app's tab bar. */
+    val atTopLevel: Boolean get() = screen == ChatScreen.LIST
+
+    companion object {
+        /** Keeps the screen across configuration changes and process death, by name. */
+        val Saver: Saver<ChatsNavigation, String> = Saver({ it.screen.name }, { ChatsNavigation(ChatScreen.valueOf(it)) })
+    }
+}
+
+/** A [ChatsNavigation] that survives configuration changes and process death. */
+@Composable
+fun rememberChatsNavigation(): ChatsNavigation = rememberSaveable(saver = ChatsNavigation.Saver) { ChatsNavigation() }
 
 /**
  * The Chats destination: first launch, the conversation list, a conversation, settings, the invite and
@@ -50,8 +76,8 @@ private enum class ChatScreen { LIST, CONVERSATION, SETTINGS, INVITE, EDITOR }
  * applied here and its outcome shown in one line.
  */
 @Composable
-fun ChatsRoute(component: ChatComponent, onOpenStudy: () -> Unit = {}) {
-    var screen by rememberSaveable { mutableStateOf(ChatScreen.LIST) }
+fun ChatsRoute(component: ChatComponent, onOpenStudy: () -> Unit = {}, navigation: ChatsNavigation = rememberChatsNavigation()) {
+    var screen by navigation::screen
     var peer by rememberSaveable { mutableStateOf<String?>(null) }
     var inviteMessage by rememberSaveable { mutableStateOf<String?>(null) }
     val pendingInvite by component.pendingInvite.collectAsStateWithLifecycle()
@@ -84,6 +110,8 @@ fun ChatsRoute(component: ChatComponent, onOpenStudy: () -> Unit = {}) {
             text = { Text(message) },
         )
     }
+    // A scanned invite goes the way of an opened link: checked, applied, its outcome said in the dialog.
+    val scanInvite = rememberInviteScanner(onScanned = { component.pendingInvite.value = it }, onFailed = { inviteMessage = it })
     val back = { screen = ChatScreen.LIST }
     when (screen) {
         ChatScreen.EDITOR -> {
@@ -105,48 +133,76 @@ fun ChatsRoute(component: ChatComponent, onOpenStudy: () -> Unit = {}) {
         }
         ChatScreen.INVITE -> {
             BackHandler(onBack = back)
-            InviteRoute(component, onBack = back)
+            InviteRoute(component, onBack = back, onScan = scanInvite)
         }
         ChatScreen.LIST -> ChatListRoute(
             component,
             onOpen = { peer = it; screen = ChatScreen.CONVERSATION },
             onSettings = { screen = ChatScreen.SETTINGS },
             onInvite = { screen = ChatScreen.INVITE },
+            onScanInvite = scanInvite,
         )
     }
 }
 
 @Composable
-fun ChatListRoute(component: ChatComponent, onOpen: (String) -> Unit, onSettings: () -> Unit, onInvite: () -> Unit) {
+fun ChatListRoute(
+    component: ChatComponent,
+    onOpen: (String) -> Unit,
+    onSettings: () -> Unit,
+    onInvite: () -> Unit,
+    onScanInvite: () -> Unit = {},
+) {
+    val context = LocalContext.current
     val viewModel: ChatListViewModel = viewModel(
-        factory = viewModelFactory { initializer { ChatListViewModel(component.repository, component.settings, component.probe) } },
+        factory = viewModelFactory {
+            initializer {
+                val app = context.applicationContext
+                ChatListViewModel(
+                    component.repository, component.settings, component.probe, batteryExempt = { KeepAlive.isBatteryExempt(app) },
+                    connection = connectionOf(component), knownUsers = component.sync.knownUsers,
+                )
+            }
+        },
     )
     val uiState by viewModel.uiState.collectAsStateWithLifecycle()
     val check by viewModel.accountCheck.collectAsStateWithLifecycle()
-    // Android 13+: notifications are asked for when they are first needed, right after the account is saved.
-    // Refused, messages still arrive and show in the list; Settings says so and links to Android's page.
-    val notificationPermission = rememberLauncherForActivityResult(ActivityResultContracts.RequestPermission()) { }
-    val context = LocalContext.current
     LaunchedEffect(check) {
-        if (check != AccountCheck.Saved) return@LaunchedEffect
-        viewModel.accountCheck.value = AccountCheck.Idle
-        if (Build.VERSION.SDK_INT >= 33 &&
-            ContextCompat.checkSelfPermission(context, Manifest.permission.POST_NOTIFICATIONS) != PackageManager.PERMISSION_GRANTED
-        ) notificationPermission.launch(Manifest.permission.POST_NOTIFICATIONS)
+        if (check == AccountCheck.Saved) viewModel.accountCheck.value = AccountCheck.Idle
+    }
+    // Android's answers (notifications, the battery exemption) come back as the app's state: asked again on return.
+    val requests = rememberReachableRequests(onAnswered = viewModel::refreshBatteryExemption)
+    androidx.lifecycle.compose.LifecycleResumeEffect(Unit) {
+        viewModel.refreshBatteryExemption()
+        onPauseOrDispose { }
     }
     when (val state = uiState) {
         ChatListUiState.Loading -> ChatLoading()
-        is ChatListUiState.NeedsAccount -> FirstLaunchScreen(state.brokerUrl, check, viewModel::saveAccount)
+        is ChatListUiState.NeedsAccount -> FirstLaunchScreen(state.brokerUrl, check, onScanInvite, viewModel::saveAccount)
+        // Notifications are asked for here, whatever the answer: from now on messages can arrive.
+        is ChatListUiState.OfferReachable -> ReachableOfferScreen(state.user) { stayReachable, autoPlay ->
+            viewModel.answerReachableOffer(stayReachable, autoPlay)
+            requests.afterChoice(stayReachable)
+        }
         is ChatListUiState.Success -> ChatListScreen(
             state,
             ChatListActions(
                 onOpen = onOpen,
-                onNewChat = { viewModel.startConversation(it, onOpen) },
+                onNewChat = { peer, evenIfUnknown -> viewModel.startConversation(peer, evenIfUnknown, onOpen) },
                 onArchive = viewModel::archive,
                 onUnarchive = viewModel::unarchive,
                 onDelete = viewModel::delete,
                 onSettings = onSettings,
                 onInvite = onInvite,
+                onReachableNote = { note ->
+                    when (note) {
+                        ReachableNote.OFF -> {
+                            viewModel.turnOnStayReachable()
+                            requests.afterChoice(true)
+                        }
+                        ReachableNote.BATTERY_OPTIMISED -> requests.askBatteryExemption()
+                    }
+                },
             ),
         )
     }
@@ -162,6 +218,7 @@ fun ConversationRoute(component: ChatComponent, peer: String, onBack: () -> Unit
                     peer, { component.settings.preferences.value.userName }, component.repository, component.icons,
                     component.player, component.sync.peerCapabilities, component.sync::wake, component.sync::felt,
                     component.patterns?.patterns()?.map { stored -> stored.map { it.pattern } } ?: flowOf(emptyList()),
+                    connectionOf(component), component.sync.knownUsers,
                 )
             }
         },
@@ -184,7 +241,7 @@ fun ConversationRoute(component: ChatComponent, peer: String, onBack: () -> Unit
     ConversationScreen(
         uiState,
         ConversationActions(
-            onBack = onBack, onSend = { viewModel.send(it) }, onSelectIcon = viewModel::selectIcon,
+            onBack = onBack, onSend = viewModel::send, onSelectIcon = viewModel::selectIcon,
             onSelectSticker = viewModel::selectSticker, onFeel = viewModel::feel, onPreview = viewModel::play,
             onRetry = viewModel::retry, onEditIcon = onEditIcon,
             onSelectPattern = viewModel::selectPattern, onPreviewPattern = viewModel::play,
@@ -192,6 +249,10 @@ fun ConversationRoute(component: ChatComponent, peer: String, onBack: () -> Unit
         enterSends = prefs.enterSends,
     )
 }
+
+/** Whether [component]'s messages can move now, for the line under the chat screens' top bars. */
+private fun connectionOf(component: ChatComponent): Flow<ChatConnection> =
+    ChatConnection.flow(component.sync.connection, component.online, component.settings.preferences.map { it.brokerUrl })
 
 @Composable
 private fun SettingsRoute(component: ChatComponent, onBack: () -> Unit, onOpenStudy: () -> Unit) {
@@ -219,17 +280,16 @@ private fun SettingsRoute(component: ChatComponent, onBack: () -> Unit, onOpenSt
         viewModel.refreshNotifications()
         onPauseOrDispose { }
     }
-    val setReachable = { on: Boolean ->
-        viewModel.setStayReachable(on)
-        if (on) ReachableService.start(context) else ReachableService.stop(context)
-    }
     // Android 13+: the ongoing and message notifications need the permission; it is asked when the user
-    // turns "Stay reachable" on. Refused, the service still keeps the connection (Android lets a
-    // foreground service run without it), and the settings say that nothing will be announced.
-    val permission = rememberLauncherForActivityResult(ActivityResultContracts.RequestPermission()) { granted ->
-        setReachable(true)
-        viewModel.permissionAnswered(granted)
-    }
+    // turns "Stay reachable" on, then the battery exemption, as on first launch. Refused, the service still keeps
+    // the connection (Android lets a foreground service run without it), and the settings say that nothing will
+    // be announced.
+    val requests = rememberReachableRequests(onAnswered = {
+        viewModel.permissionAnswered(
+            Build.VERSION.SDK_INT < 33 ||
+                ContextCompat.checkSelfPermission(context, Manifest.permission.POST_NOTIFICATIONS) == PackageManager.PERMISSION_GRANTED,
+        )
+    })
     val export = rememberLauncherForActivityResult(ActivityResultContracts.CreateDocument("application/json")) { uri ->
         if (uri == null) return@rememberLauncherForActivityResult
         viewModel.export(uri.lastPathSegment.orEmpty()) { checkNotNull(context.contentResolver.openOutputStream(uri)) { "cannot write $uri" } }
@@ -260,9 +320,8 @@ private fun SettingsRoute(component: ChatComponent, onBack: () -> Unit, onOpenSt
             onPassword = viewModel::setPassword,
             onUserName = viewModel::setUserName,
             onStayReachable = { on ->
-                val needsPermission = on && Build.VERSION.SDK_INT >= 33 &&
-                    ContextCompat.checkSelfPermission(context, Manifest.permission.POST_NOTIFICATIONS) != PackageManager.PERMISSION_GRANTED
-                if (needsPermission) permission.launch(Manifest.permission.POST_NOTIFICATIONS) else setReachable(on)
+                viewModel.setStayReachable(on)
+                if (on) requests.afterChoice(true) else ReachableService.stop(context)
             },
             onAllowNotifications = {
                 val page = Intent(android.provider.Settings.ACTION_APP_NOTIFICATION_SETTINGS)
@@ -283,15 +342,15 @@ private fun SettingsRoute(component: ChatComponent, onBack: () -> Unit, onOpenSt
 }
 
 @Composable
-private fun InviteRoute(component: ChatComponent, onBack: () -> Unit) {
+private fun InviteRoute(component: ChatComponent, onBack: () -> Unit, onScan: () -> Unit) {
     val context = LocalContext.current
     val prefs by component.settings.preferences.collectAsStateWithLifecycle()
     val link = remember(prefs.userName, prefs.brokerUrl) {
         val broker = runCatching { BrokerAddress.parse(prefs.brokerUrl) }.getOrNull()
         broker?.let { InviteLink(prefs.userName, it) }
     }
-    InviteScreen(link, onBack) { text ->
+    InviteScreen(link, onBack, onShare = { text ->
         val send = Intent(Intent.ACTION_SEND).setType("text/plain").putExtra(Intent.EXTRA_TEXT, text)
         context.startActivity(Intent.createChooser(send, "Share invite").addFlags(Intent.FLAG_ACTIVITY_NEW_TASK))
-    }
+    }, onScan = onScan)
 }

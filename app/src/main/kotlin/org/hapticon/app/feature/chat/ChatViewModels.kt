@@ -47,22 +47,74 @@ sealed interface ChatListUiState {
     /** First launch: [brokerUrl] is what an opened invite filled in (empty otherwise). */
     data class NeedsAccount(val brokerUrl: String) : ChatListUiState
 
+    /** First launch, right after the account was saved: "Stay reachable" and autoplay are offered once ([ReachableOfferScreen]). */
+    data class OfferReachable(val user: String) : ChatListUiState
+
     data class Success(
         val user: String,
         val conversations: List<ConversationSummary>,
         val archived: Set<String> = emptySet(),
+        /**
+         * What the chat list says about reaching this user with the app closed ([reachableNote]); null when
+         * nothing needs saying (Stay reachable on and Android lets it run).
+         */
+        val reachableNote: ReachableNote? = null,
+        /** Whether messages can move now; the list says so in a line under its top bar when they cannot. */
+        val connection: ChatConnection = ChatConnection.Online,
     ) : ChatListUiState
+}
+
+/** Why "New chat" did not open a conversation, in one line for the dialog. */
+sealed interface NewChatProblem {
+    val message: String
+
+    /** Not a possible user name. */
+    data class InvalidName(override val message: String) : NewChatProblem
+
+    /** The broker's directory is loaded and [peer] is not in it: a typo, or someone who has not set up the app yet. */
+    data class NeverConnected(val peer: String) : NewChatProblem {
+        override val message: String
+            get() = "No one called $peer has connected to this broker yet. Check the spelling, or show them your invite code."
+    }
 }
 
 class ChatListViewModel(
     private val repository: ChatRepository,
     private val settings: ChatSettingsRepository,
     private val probe: BrokerProbe,
+    /**
+     * Whether Android exempts this app from battery optimisation (PowerManager.isIgnoringBatteryOptimizations),
+     * asked again on every resume ([refreshBatteryExemption]): the user can change it in Android's settings.
+     */
+    private val batteryExempt: () -> Boolean = { true },
+    /** Whether messages can move now ([ChatConnection.flow]). */
+    connection: Flow<ChatConnection> = flowOf(ChatConnection.Online),
+    /** The users who ever connected to the broker, null until known ([org.hapticon.app.sync.ChatSync.knownUsers]). */
+    private val knownUsers: StateFlow<Set<String>?> = MutableStateFlow(null),
 ) : ViewModel() {
-    val uiState: StateFlow<ChatListUiState> = combine(settings.preferences, repository.conversations()) { prefs, conversations ->
+    private val exempt = MutableStateFlow(batteryExempt())
+
+    val uiState: StateFlow<ChatListUiState> = combine(settings.preferences, repository.conversations(), exempt, connection) { prefs, conversations, exempt, line ->
         val user = prefs.userName
-        if (user == null) ChatListUiState.NeedsAccount(prefs.brokerUrl) else ChatListUiState.Success(user, conversations, prefs.archived)
+        when {
+            user == null -> ChatListUiState.NeedsAccount(prefs.brokerUrl)
+            prefs.reachableOfferPending -> ChatListUiState.OfferReachable(user)
+            else -> ChatListUiState.Success(user, conversations, prefs.archived, reachableNote(prefs.stayReachable, exempt), line)
+        }
     }.stateIn(viewModelScope, SharingStarted.WhileSubscribed(5_000), ChatListUiState.Loading)
+
+    /** Asks Android again whether the app is exempt from battery optimisation (the screen came back). */
+    fun refreshBatteryExemption() {
+        exempt.value = batteryExempt()
+    }
+
+    /**
+     * The first-launch offer's answer: "Stay reachable" (with restarts: a participant who said yes expects it
+     * after a reboot too) and autoplay as chosen; the offer is not shown again. Both stay in Settings.
+     */
+    fun answerReachableOffer(stayReachable: Boolean, autoPlay: Boolean) = settings.update {
+        it.copy(stayReachable = stayReachable, reachableAfterBoot = stayReachable, autoPlay = autoPlay, reachableOfferPending = false)
+    }
 
     /** The first-launch form's progress: null idle, else testing or the last failure. */
     val accountCheck = MutableStateFlow<AccountCheck>(AccountCheck.Idle)
@@ -90,16 +142,26 @@ class ChatListViewModel(
             if (problem != null) {
                 accountCheck.value = AccountCheck.Failed(problem)
             } else {
-                settings.update { it.copy(userName = name, brokerUrl = address.toString(), brokerPassword = secret) }
+                // In the same main-thread turn as the probe's own save: the list never shows between form and offer.
+                settings.update { it.copy(userName = name, brokerUrl = address.toString(), brokerPassword = secret, reachableOfferPending = true) }
                 accountCheck.value = AccountCheck.Saved
             }
         }
     }
 
-    /** Starts a conversation; returns why not when [peer] is not a valid user name. */
-    fun startConversation(peer: String, onStarted: (String) -> Unit): String? {
+    /** The chat list's note asked for "Stay reachable": on, with restarts, as the first-launch offer sets it. */
+    fun turnOnStayReachable() = settings.update { it.copy(stayReachable = true, reachableAfterBoot = true) }
+
+    /**
+     * Starts a conversation with [peer] and calls [onStarted]; returns why not instead when the name is not valid, or
+     * when the broker's directory says [peer] never connected and the user did not ask to start [evenIfUnknown]. While
+     * the directory is not known (offline, still connecting) the conversation starts: its screen says so once known.
+     */
+    fun startConversation(peer: String, evenIfUnknown: Boolean = false, onStarted: (String) -> Unit): NewChatProblem? {
         val name = peer.trim()
-        if (!Topics.isValidUserName(name)) return "Use 1 to 32 letters, digits, '.', '_' or '-'"
+        if (!Topics.isValidUserName(name)) return NewChatProblem.InvalidName("Use 1 to 32 letters, digits, '.', '_' or '-'")
+        val known = knownUsers.value
+        if (!evenIfUnknown && known != null && name !in known) return NewChatProblem.NeverConnected(name)
         viewModelScope.launch {
             repository.startConversation(name)
             onStarted(name)
@@ -130,7 +192,7 @@ sealed interface AccountCheck {
     data class Testing(val broker: String) : AccountCheck
     data class Failed(val reason: String) : AccountCheck
 
-    /** The account was just saved: from now on messages can arrive, so this is when to ask for notifications. */
+    /** The account was just saved; the offer of "Stay reachable" follows. */
     data object Saved : AccountCheck
 }
 
@@ -245,6 +307,10 @@ sealed interface ConversationUiState {
         /** The user's imported patterns, offered after the icons; a message carries an icon or a pattern. */
         val patterns: List<HapticPattern> = emptyList(),
         val selectedPattern: HapticPattern? = null,
+        /** Whether messages can move now; the screen says so in a line under its top bar when they cannot. */
+        val connection: ChatConnection = ChatConnection.Online,
+        /** True once the broker's directory is loaded and [peer] is not in it: they never connected to this broker. */
+        val peerNeverConnected: Boolean = false,
     ) : ConversationUiState
 }
 
@@ -261,6 +327,10 @@ class ConversationViewModel(
     private val onFelt: (peer: String, messageId: String) -> Unit = { _, _ -> },
     /** The user's patterns ([org.hapticon.app.data.RoomPatternRepository]); none where the app has no pattern store. */
     patterns: Flow<List<HapticPattern>> = flowOf(emptyList()),
+    /** Whether messages can move now ([ChatConnection.flow]). */
+    connection: Flow<ChatConnection> = flowOf(ChatConnection.Online),
+    /** The users who ever connected to the broker, null until known ([org.hapticon.app.sync.ChatSync.knownUsers]). */
+    knownUsers: Flow<Set<String>?> = flowOf(null),
 ) : ViewModel() {
     /** The message being composed: at most one of [icon] and [pattern], as [org.hapticon.messaging.ChatMessage] requires. */
     private data class Draft(
@@ -305,11 +375,14 @@ class ConversationViewModel(
         draft to feel
     }
 
+    private val reach: Flow<Pair<ChatConnection, Boolean>> =
+        combine(connection, knownUsers) { line, known -> line to (known != null && peer !in known) }
+
     val uiState: StateFlow<ConversationUiState> = combine(
-        repository.messages(peer), icons.icons(), patterns, composer,
-    ) { messages, iconList, patternList, (draft, feel) ->
+        repository.messages(peer), icons.icons(), patterns, composer, reach,
+    ) { messages, iconList, patternList, (draft, feel), (line, neverConnected) ->
         ConversationUiState.Success(
-            peer, messages, iconList, draft.icon, draft.sticker, feel, draft.error, patternList, draft.pattern,
+            peer, messages, iconList, draft.icon, draft.sticker, feel, draft.error, patternList, draft.pattern, line, neverConnected,
         )
     }.stateIn(viewModelScope, SharingStarted.WhileSubscribed(5_000), ConversationUiState.Loading)
 
@@ -351,7 +424,7 @@ class ConversationViewModel(
         }
     }
 
-    /** Sends a failed or waiting own message now. */
+    /** Sends a failed or waiting own message now: the same row and id, shown as sending again until the broker has it. */
     fun retry(message: StoredMessage) {
         if (!message.outgoing) return
         viewModelScope.launch {
@@ -360,9 +433,16 @@ class ConversationViewModel(
         }
     }
 
-    /** Stores the message with the selected sticker and icon or pattern (into the outbox), then clears the selection. */
+    /**
+     * Stores the message with the selected sticker and icon or pattern (into the outbox), then clears the selection and
+     * calls [onStored]. A message that cannot be stored keeps the draft and says why in [ConversationUiState.Success.error];
+     * [onStored] is not called, so the composer keeps the text.
+     */
     fun send(text: String, onStored: () -> Unit = {}) {
-        val sender = user() ?: return
+        val sender = user() ?: run {
+            draft.value = draft.value.copy(error = "Set up your account first: Chats, then Settings")
+            return
+        }
         val current = draft.value
         viewModelScope.launch {
             try {

@@ -2,6 +2,7 @@ package org.hapticon.app.feature.chat
 
 import androidx.compose.foundation.ExperimentalFoundationApi
 import androidx.compose.foundation.Image
+import androidx.compose.foundation.background
 import androidx.compose.foundation.border
 import androidx.compose.foundation.clickable
 import androidx.compose.foundation.combinedClickable
@@ -14,7 +15,10 @@ import androidx.compose.foundation.layout.fillMaxSize
 import androidx.compose.foundation.layout.fillMaxWidth
 import androidx.compose.foundation.layout.height
 import androidx.compose.foundation.layout.heightIn
+import androidx.compose.foundation.layout.ExperimentalLayoutApi
+import androidx.compose.foundation.layout.WindowInsets
 import androidx.compose.foundation.layout.imePadding
+import androidx.compose.foundation.layout.isImeVisible
 import androidx.compose.foundation.layout.padding
 import androidx.compose.foundation.layout.size
 import androidx.compose.foundation.layout.widthIn
@@ -61,9 +65,14 @@ import androidx.compose.ui.graphics.Brush
 import androidx.compose.ui.graphics.Color
 import androidx.compose.ui.graphics.CompositingStrategy
 import androidx.compose.ui.graphics.graphicsLayer
-import androidx.compose.ui.graphics.vector.ImageVector
 import androidx.compose.ui.res.painterResource
+import androidx.compose.ui.semantics.CustomAccessibilityAction
+import androidx.compose.ui.semantics.LiveRegionMode
 import androidx.compose.ui.semantics.Role
+import androidx.compose.ui.semantics.customActions
+import androidx.compose.ui.semantics.hideFromAccessibility
+import androidx.compose.ui.semantics.liveRegion
+import androidx.compose.ui.semantics.onClick
 import androidx.compose.ui.semantics.clearAndSetSemantics
 import androidx.compose.ui.semantics.collapse
 import androidx.compose.ui.semantics.expand
@@ -97,7 +106,11 @@ import org.hapticon.core.pattern.HapticPattern
 /** What the conversation screen can ask for; the route wires each to the view model. */
 data class ConversationActions(
     val onBack: () -> Unit = {},
-    val onSend: (String) -> Unit = {},
+    /**
+     * Send the text with the chosen icon or pattern; the composer empties its field only when [onSend]'s second
+     * argument is called (the message is stored), so a send that fails keeps what was typed.
+     */
+    val onSend: (text: String, onStored: () -> Unit) -> Unit = { _, onStored -> onStored() },
     val onSelectIcon: (HapticIcon?) -> Unit = {},
     val onSelectSticker: (Sticker?) -> Unit = {},
     /** Feel a message's icon (a received one also sends a felt receipt). */
@@ -119,6 +132,11 @@ data class ConversationActions(
  * message and follows new ones unless the user scrolled up, when a "new messages" button jumps back.
  * The composer sits below the list in the same column with [imePadding], so neither it nor the keyboard
  * ever covers the last bubble.
+ *
+ * For TalkBack each message is one stop that says who wrote it, its words, its icon, the time and (own messages)
+ * its state; double-tap feels the icon or, for a message not sent, sends it again. A message arriving while the
+ * conversation is open is announced politely ([ArrivalAnnouncer]). A line under the top bar says when messages
+ * cannot move now ([ConversationUiState.Success.connection]) or when the peer has never connected to the broker.
  */
 @OptIn(ExperimentalMaterial3Api::class)
 @Composable
@@ -147,6 +165,13 @@ fun ConversationScreen(
         when (uiState) {
             ConversationUiState.Loading -> Box(Modifier.fillMaxSize().padding(padding), Alignment.Center) { CircularProgressIndicator() }
             is ConversationUiState.Success -> Column(Modifier.fillMaxSize().padding(padding).imePadding()) {
+                // Nothing moving at all matters more than whether this peer ever connected.
+                val connectionLine = uiState.connection.line()
+                when {
+                    connectionLine != null -> ConnectionLine(connectionLine)
+                    uiState.peerNeverConnected -> ConnectionLine(neverConnectedLine(uiState.peer), HapticonIcons.Info)
+                }
+                ArrivalAnnouncer(uiState.messages, clock)
                 MessageList(uiState, actions, clock, nowMillis, Modifier.weight(1f).fillMaxWidth())
                 Composer(uiState, actions, enterSends)
             }
@@ -194,7 +219,8 @@ private fun MessageList(
             reverseLayout = true,
             modifier = Modifier.fillMaxSize().testTag(MESSAGE_LIST_TAG),
             contentPadding = PaddingValues(horizontal = 12.dp, vertical = 8.dp),
-            verticalArrangement = Arrangement.spacedBy(6.dp),
+            // Bottom: a short conversation sits on the composer, as in Messages (spacedBy alone would align it to the top).
+            verticalArrangement = Arrangement.spacedBy(6.dp, Alignment.Bottom),
         ) {
             items(items, key = { it.key }) { item ->
                 when (item) {
@@ -239,6 +265,18 @@ private fun DaySeparator(label: String) {
     }
 }
 
+/** Hides a drawn part of a bubble from accessibility services: the bubble says it whole ([spokenBubble]). */
+private val HiddenFromTalkBack: Modifier = Modifier.semantics { hideFromAccessibility() }
+
+/**
+ * One message: the bubble, and under it the time and, for an own message, its state. To TalkBack the whole is one
+ * stop ([spokenBubble]) with at most two actions: a tap feels the icon or pattern or, for a message not sent, sends
+ * it again (then "Feel …" is a custom action). Its drawn parts are hidden from accessibility services, so nothing is
+ * said twice, but they stay in the semantics tree for the contrast and touch-target checks.
+ *
+ * For a finger the same actions are where they are drawn: the bubble and its "Feel …" chip feel, and a message not
+ * sent is resent by a tap on the bubble or on the red "Not sent, tap to retry" line, itself a 48 dp target.
+ */
 @Composable
 private fun MessageBubble(message: StoredMessage, time: String, actions: ConversationActions) {
     val own = message.outgoing
@@ -248,74 +286,114 @@ private fun MessageBubble(message: StoredMessage, time: String, actions: Convers
     // The corner nearest the sender's side is tighter, as in Messages.
     val shape = if (own) RoundedCornerShape(20.dp, 20.dp, 4.dp, 20.dp) else RoundedCornerShape(20.dp, 20.dp, 20.dp, 4.dp)
     val failed = own && message.state == MessageState.FAILED
-    Column(Modifier.fillMaxWidth(), horizontalAlignment = if (own) Alignment.End else Alignment.Start) {
-        Surface(
-            shape = shape, color = container, contentColor = content,
-            modifier = Modifier.widthIn(max = 300.dp)
-                .then(if (failed) Modifier.clickable(onClickLabel = "Retry sending") { actions.onRetry(message) } else Modifier),
+    val feelLabel = feelLabelOf(message)
+    val feel = { actions.onFeel(message) }
+    val retry = { actions.onRetry(message) }
+    val tap: (() -> Unit)? = when {
+        failed -> retry
+        feelLabel != null -> feel
+        else -> null
+    }
+    Box(Modifier.fillMaxWidth(), contentAlignment = if (own) Alignment.CenterEnd else Alignment.CenterStart) {
+        Column(
+            Modifier.widthIn(min = 48.dp).semantics(mergeDescendants = true) {
+                contentDescription = spokenBubble(message, time)
+                if (tap != null) onClick(label = if (failed) "Retry sending" else feelLabel) { tap(); true }
+                if (failed && feelLabel != null) customActions = listOf(CustomAccessibilityAction(feelLabel) { feel(); true })
+            },
+            horizontalAlignment = if (own) Alignment.End else Alignment.Start,
         ) {
-            Column(Modifier.padding(horizontal = 14.dp, vertical = 10.dp)) {
-                Sticker.of(message.sticker)?.let {
-                    Image(painterResource(it.drawable), contentDescription = "Sticker: ${it.label}", modifier = Modifier.size(72.dp))
-                } ?: message.sticker?.let { Text("[$it]") }
-                if (message.text.isNotEmpty()) Text(message.text, style = MaterialTheme.typography.bodyLarge)
-                message.icon?.let { icon ->
-                    FeelChip("Feel ${icon.name}", onClick = { actions.onFeel(message) }, labelColor = content) {
-                        EnvelopeThumbnail(icon, Modifier.clearAndSetSemantics {}.width(32.dp).height(16.dp))
+            Surface(
+                shape = shape, color = container, contentColor = content,
+                modifier = Modifier.widthIn(max = 300.dp)
+                    .then(if (tap != null) Modifier.clickable(onClick = tap).then(HiddenFromTalkBack) else Modifier),
+            ) {
+                Column(Modifier.padding(horizontal = 14.dp, vertical = 10.dp)) {
+                    Sticker.of(message.sticker)?.let {
+                        Image(painterResource(it.drawable), contentDescription = "Sticker: ${it.label}", modifier = HiddenFromTalkBack.size(72.dp))
+                    } ?: message.sticker?.let { Text("[$it]", HiddenFromTalkBack) }
+                    if (message.text.isNotEmpty()) Text(message.text, HiddenFromTalkBack, style = MaterialTheme.typography.bodyLarge)
+                    message.icon?.let { icon ->
+                        FeelChip("Feel ${icon.name}", onClick = feel, labelColor = content) {
+                            EnvelopeThumbnail(icon, Modifier.clearAndSetSemantics {}.width(32.dp).height(16.dp))
+                        }
                     }
-                }
-                message.pattern?.let { pattern ->
-                    FeelChip("Feel ${pattern.name}", onClick = { actions.onFeel(message) }, labelColor = content) {
-                        PatternThumbnail(pattern, Modifier.clearAndSetSemantics {}.width(32.dp).height(16.dp), showFrequency = false)
+                    message.pattern?.let { pattern ->
+                        FeelChip("Feel ${pattern.name}", onClick = feel, labelColor = content) {
+                            PatternThumbnail(pattern, Modifier.clearAndSetSemantics {}.width(32.dp).height(16.dp), showFrequency = false)
+                        }
                     }
                 }
             }
-        }
-        Row(
-            Modifier.padding(horizontal = 6.dp, vertical = 2.dp),
-            verticalAlignment = Alignment.CenterVertically,
-            horizontalArrangement = Arrangement.spacedBy(4.dp),
-        ) {
-            Text(time, style = MaterialTheme.typography.labelSmall, color = colors.onSurfaceVariant)
-            if (own) StateIcon(message.state)
+            Row(
+                Modifier
+                    .then(
+                        if (failed) {
+                            // Compose widens a pointer target to 48 dp (ViewConfiguration.minimumTouchTargetSize) where there is
+                            // room, so the line keeps its drawn height under its bubble and is still a 48 dp target.
+                            Modifier.clip(RoundedCornerShape(8.dp)).clickable(onClick = retry).then(HiddenFromTalkBack)
+                        } else {
+                            Modifier
+                        },
+                    )
+                    .padding(horizontal = 6.dp, vertical = 2.dp),
+                verticalAlignment = Alignment.CenterVertically,
+                horizontalArrangement = Arrangement.spacedBy(4.dp),
+            ) {
+                Text(time, HiddenFromTalkBack, style = MaterialTheme.typography.labelSmall, color = colors.onSurfaceVariant)
+                if (own) StateMark(message.state)
+            }
         }
     }
+}
+
+/** "Feel hug" for a message with the hug, "Feel ramp" for one with that pattern; null for one without either. */
+private fun feelLabelOf(message: StoredMessage): String? = (message.icon?.name ?: message.pattern?.name)?.let { "Feel $it" }
+
+/**
+ * What TalkBack says for a message: who wrote it ("You" for own messages), then what the bubble shows in its order
+ * (sticker, text, the "Feel …" chip that names its icon or pattern), the time and, for own messages, the state, e.g.
+ * "bob: Try this one, Feel hug, 14:52" or "You: Lovely, 15:12, Read". The drawn words come verbatim, so a
+ * voice-control user who says "Feel hug" reaches the bubble (WCAG 2.5.3 Label in Name).
+ */
+fun spokenBubble(message: StoredMessage, time: String): String {
+    val parts = listOfNotNull(
+        message.sticker?.let { name -> Sticker.of(name)?.let { "Sticker: ${it.label}" } ?: "[$name]" },
+        message.text.takeIf { it.isNotEmpty() },
+        feelLabelOf(message),
+        time,
+        stateLabel(message.state).takeIf { message.outgoing },
+    )
+    return (if (message.outgoing) "You" else message.sender) + ": " + parts.joinToString(", ")
 }
 
 /**
- * A message's "Feel …" chip. TalkBack names it by its visible [label] alone ("Feel hug, button"), so a voice-control
- * user who says what they see reaches it (WCAG 2.5.3 Label in Name; it used to be "Play haptic icon hug"). No
- * description is added: Compose reads a merging node's description BEFORE its children's text (its fake description
- * node comes first, TalkBackNodeTreeTest), so any addition would push the label off the start of the name. The
- * [thumbnail] is for sight only and must clear its own description.
+ * The mark of an own message's state, told apart by shape and not by colour alone (WCAG 1.4.1): a clock while
+ * sending, one tick once the broker has it, two ticks delivered, two ticks on a filled disc read, the vibration
+ * glyph felt, and the red error glyph with its words when not sent. Drawn only: the bubble says the state.
  */
 @Composable
-private fun FeelChip(label: String, onClick: () -> Unit, labelColor: Color, thumbnail: @Composable () -> Unit) {
-    AssistChip(
-        onClick = onClick,
-        label = { Text(label) },
-        leadingIcon = thumbnail,
-        colors = AssistChipDefaults.assistChipColors(labelColor = labelColor),
-    )
+private fun StateMark(state: MessageState) {
+    val colors = MaterialTheme.colorScheme
+    val size = Modifier.testTag(STATE_MARK_TAG).size(16.dp)
+    when (state) {
+        MessageState.SENDING -> Icon(HapticonIcons.Schedule, null, HiddenFromTalkBack.then(size), tint = colors.onSurfaceVariant)
+        MessageState.SENT -> Icon(HapticonIcons.Check, null, HiddenFromTalkBack.then(size), tint = colors.onSurfaceVariant)
+        MessageState.DELIVERED -> Icon(HapticonIcons.DoneAll, null, HiddenFromTalkBack.then(size), tint = colors.onSurfaceVariant)
+        MessageState.READ -> Box(HiddenFromTalkBack.then(size).background(colors.primary, CircleShape), contentAlignment = Alignment.Center) {
+            Icon(HapticonIcons.DoneAll, null, Modifier.size(12.dp), tint = colors.onPrimary)
+        }
+        MessageState.FELT -> Icon(HapticonIcons.Vibration, null, HiddenFromTalkBack.then(size), tint = colors.primary)
+        MessageState.FAILED -> {
+            Icon(HapticonIcons.Error, null, HiddenFromTalkBack.then(size), tint = colors.error)
+            Text(stateLabel(state), HiddenFromTalkBack, style = MaterialTheme.typography.labelMedium, color = colors.error)
+        }
+        MessageState.RECEIVED -> Unit
+    }
 }
 
-/** The icon of an own message's state; its description is what a screen reader says. */
-@Composable
-private fun StateIcon(state: MessageState) {
-    val colors = MaterialTheme.colorScheme
-    val (vector: ImageVector, tint: Color) = when (state) {
-        MessageState.SENDING -> HapticonIcons.Schedule to colors.onSurfaceVariant
-        MessageState.SENT -> HapticonIcons.Check to colors.onSurfaceVariant
-        MessageState.DELIVERED -> HapticonIcons.DoneAll to colors.onSurfaceVariant
-        MessageState.READ -> HapticonIcons.DoneAll to colors.primary
-        MessageState.FELT -> HapticonIcons.Vibration to colors.primary
-        MessageState.FAILED -> HapticonIcons.Error to colors.error
-        MessageState.RECEIVED -> return
-    }
-    val label = stateLabel(state)
-    Icon(vector, contentDescription = "Message state: $label", tint = tint, modifier = Modifier.size(16.dp))
-    if (state == MessageState.FAILED) Text(label, style = MaterialTheme.typography.labelSmall, color = colors.error)
-}
+/** The test tag of an own message's state mark. */
+const val STATE_MARK_TAG: String = "state-mark"
 
 /** The spoken (and for failures, visible) label of an own message's state. */
 fun stateLabel(state: MessageState): String = when (state) {
@@ -328,13 +406,68 @@ fun stateLabel(state: MessageState): String = when (state) {
     MessageState.RECEIVED -> "Received"
 }
 
-@OptIn(ExperimentalFoundationApi::class)
+/** The test tag of the node that announces arriving messages. */
+const val ARRIVAL_ANNOUNCER_TAG: String = "arrival-announcer"
+
+/**
+ * Announces a message that arrives while the conversation is open, as TalkBack users expect of a messenger: a polite
+ * live region (Android's `View.ACCESSIBILITY_LIVE_REGION_POLITE`: said after what is being said, without taking the
+ * focus) whose words change to the new message's ("bob: on my way, Feel knock"). The messages there when the screen
+ * opened and the user's own are not announced. The words go after [ANNOUNCEMENT_MILLIS], so the node is no extra
+ * stop when the user later swipes through the conversation: an empty node is no stop.
+ */
+@Composable
+private fun ArrivalAnnouncer(messages: List<StoredMessage>, clock: ChatClock) {
+    // The newest message when the screen opened; everything after it arrived while open.
+    val openedWith = rememberSaveable { mutableStateOf(messages.lastOrNull()?.id) }
+    var announcement by remember { mutableStateOf("") }
+    val newest = messages.lastOrNull()
+    LaunchedEffect(newest?.id) {
+        if (newest == null || newest.id == openedWith.value) return@LaunchedEffect
+        openedWith.value = newest.id
+        if (newest.outgoing) return@LaunchedEffect
+        announcement = spokenBubble(newest, clock.timeOfDay(newest.sentAtMillis)).substringBeforeLast(", ")
+        kotlinx.coroutines.delay(ANNOUNCEMENT_MILLIS)
+        announcement = ""
+    }
+    Box(
+        Modifier.fillMaxWidth().height(1.dp).testTag(ARRIVAL_ANNOUNCER_TAG).semantics {
+            liveRegion = LiveRegionMode.Polite
+            if (announcement.isNotEmpty()) contentDescription = announcement
+        },
+    )
+}
+
+/** How long an announcement stays in its live region: long enough for TalkBack to read it after what it is saying. */
+private const val ANNOUNCEMENT_MILLIS = 15_000L
+
+/**
+ * A message's "Feel …" chip, for a finger: TalkBack reaches it as its bubble's action, whose spoken words include
+ * [label] ([spokenBubble]). The [thumbnail] is for sight only and must clear its own description.
+ */
+@Composable
+private fun FeelChip(label: String, onClick: () -> Unit, labelColor: Color, thumbnail: @Composable () -> Unit) {
+    AssistChip(
+        onClick = onClick,
+        label = { Text(label) },
+        leadingIcon = thumbnail,
+        colors = AssistChipDefaults.assistChipColors(labelColor = labelColor),
+        modifier = HiddenFromTalkBack,
+    )
+}
+
+@OptIn(ExperimentalFoundationApi::class, ExperimentalLayoutApi::class)
 @Composable
 private fun Composer(uiState: ConversationUiState.Success, actions: ConversationActions, enterSends: Boolean) {
     var text by rememberSaveable { mutableStateOf("") }
     // The send button and, when the user chose so, the keyboard's Enter: the field keeps the focus (and the
     // keyboard stays up) for the next message, as in Google Messages.
-    val send = { actions.onSend(text); text = "" }
+    // The field empties once the message is stored; a send that fails (too long, say) keeps the text under its error.
+    // Only what was sent is cleared: words typed meanwhile stay.
+    val send = {
+        val sent = text
+        actions.onSend(sent) { if (text == sent) text = "" }
+    }
     Surface(color = MaterialTheme.colorScheme.surfaceContainer) {
         Column(Modifier.fillMaxWidth().padding(horizontal = 8.dp, vertical = 6.dp), verticalArrangement = Arrangement.spacedBy(4.dp)) {
             val iconRow = rememberLazyListState()
@@ -354,8 +487,11 @@ private fun Composer(uiState: ConversationUiState.Success, actions: Conversation
                 }
                 item { TextButton(onClick = actions.onEditIcon) { Text("New icon…") } }
             }
+            // With the keyboard up the stickers wait (as Signal's sticker panel takes the keyboard's place), and the
+            // "how it will feel there" line keeps to one line: at 360 dp and font 2.0 the latest message keeps its room.
+            val keyboardUp = WindowInsets.isImeVisible
             val stickerRow = rememberLazyListState()
-            LazyRow(
+            if (!keyboardUp) LazyRow(
                 state = stickerRow,
                 horizontalArrangement = Arrangement.spacedBy(6.dp),
                 contentPadding = PaddingValues(horizontal = 4.dp),
@@ -374,7 +510,7 @@ private fun Composer(uiState: ConversationUiState.Success, actions: Conversation
                 }
             }
             (uiState.selectedIcon?.name ?: uiState.selectedPattern?.name)?.let { name ->
-                PeerFeelLines(name, uiState.peer, uiState.peerFeel)
+                PeerFeelLines(name, uiState.peer, uiState.peerFeel, oneLine = keyboardUp)
             }
             uiState.error?.let { Text(it, color = MaterialTheme.colorScheme.error, modifier = Modifier.padding(horizontal = 4.dp)) }
             Row(verticalAlignment = Alignment.CenterVertically) {
@@ -419,7 +555,7 @@ const val PEER_FEEL_TAG: String = "peer-feel"
  * (`AccessibilityNodeInfo.ACTION_EXPAND` / `ACTION_COLLAPSE` in TalkBack's actions menu).
  */
 @Composable
-private fun PeerFeelLines(name: String, peer: String, feel: PeerFeel?) {
+private fun PeerFeelLines(name: String, peer: String, feel: PeerFeel?, oneLine: Boolean = false) {
     val summary = if (feel == null) "How $name will feel there: unknown until $peer connects"
     else "How $name will feel there: ${feel.renderer.label}" + (feel.alternative?.let { " or ${it.label}" } ?: "") +
         (feel.fidelityPercent?.let { ", $it% fidelity" } ?: "")
@@ -432,7 +568,11 @@ private fun PeerFeelLines(name: String, peer: String, feel: PeerFeel?) {
     val style = MaterialTheme.typography.bodySmall
     val color = MaterialTheme.colorScheme.onSurfaceVariant
     if (details.isEmpty()) {
-        Text(summary, style = style, color = color, modifier = Modifier.padding(horizontal = 4.dp))
+        if (oneLine) {
+            Text(collapsedSummary, style = style, color = color, maxLines = 1, overflow = TextOverflow.Ellipsis, modifier = Modifier.padding(horizontal = 4.dp))
+        } else {
+            Text(summary, style = style, color = color, modifier = Modifier.padding(horizontal = 4.dp))
+        }
         return
     }
     // Collapsed whenever a new choice brings the lines back (they leave the composition with the choice).

@@ -51,12 +51,19 @@ import org.hapticon.app.designsystem.HapticonIcons
 import org.hapticon.messaging.InviteLink
 
 /**
- * First launch: says in two sentences what the broker is and where to get one, then tests the
- * connection before anything is saved; a failure gives its reason and keeps what was typed.
- * [prefilledBroker] is what an opened invite link filled in (empty otherwise: no address suits every phone).
+ * First launch, written for a study participant: what the app does and that the invite from the study team
+ * fills everything in (scan its QR code, [onScanInvite], or open its link); then the connection is tested before
+ * anything is saved. A failure gives its reason and keeps what was typed (the screen stays: the test saves
+ * nothing, [org.hapticon.app.sync.ChatComponent.probeBroker]). [prefilledBroker] is what an opened or scanned
+ * invite filled in (empty otherwise: no address suits every phone).
  */
 @Composable
-fun FirstLaunchScreen(prefilledBroker: String, check: AccountCheck, onSave: (String, String, String) -> Unit) {
+fun FirstLaunchScreen(
+    prefilledBroker: String,
+    check: AccountCheck,
+    onScanInvite: () -> Unit = {},
+    onSave: (String, String, String) -> Unit,
+) {
     var name by rememberSaveable { mutableStateOf("") }
     var password by rememberSaveable { mutableStateOf("") }
     var broker by rememberSaveable(prefilledBroker) { mutableStateOf(prefilledBroker) }
@@ -68,28 +75,32 @@ fun FirstLaunchScreen(prefilledBroker: String, check: AccountCheck, onSave: (Str
         Icon(HapticonIcons.Vibration, contentDescription = null, tint = MaterialTheme.colorScheme.primary, modifier = Modifier.size(48.dp))
         Text("Welcome to Hapticon", style = MaterialTheme.typography.headlineMedium)
         Text(
-            "Hapticon passes messages through a broker, a small server you run yourself, so no company sees them. " +
-                "Run `hapticon broker --host ADDRESS` on a computer on the same Wi-Fi and add yourself with `hapticon broker adduser NAME`: " +
-                "it prints the address to type here and an invite link to open instead.",
+            "Send messages you can feel: each can carry a stroke, a hit, a knock or a hug, played on your phone's vibration motor. " +
+                "Messages go through your study's own server, so no company sees them. " +
+                "If the study team gave you an invite, scan its code: it fills in the server for you.",
             style = MaterialTheme.typography.bodyLarge,
         )
+        OutlinedButton(onClick = onScanInvite, enabled = !testing, modifier = Modifier.fillMaxWidth()) {
+            Icon(HapticonIcons.QrCodeScanner, contentDescription = null)
+            Text("Scan invite code", Modifier.padding(start = 8.dp))
+        }
         OutlinedTextField(
             name, { name = it }, label = { Text("Your user name") }, singleLine = true, enabled = !testing,
             supportingText = { Text("Others start a chat with you by this name") },
             modifier = Modifier.fillMaxWidth().semantics { contentDescription = "Your user name" },
         )
         OutlinedTextField(
-            broker, { broker = it }, label = { Text("Broker address") }, singleLine = true, enabled = !testing,
+            broker, { broker = it }, label = { Text("Server address") }, singleLine = true, enabled = !testing,
             placeholder = { Text("192.168.1.20:1883") },
-            supportingText = { Text("As `hapticon broker` prints it") },
-            modifier = Modifier.fillMaxWidth().semantics { contentDescription = "Broker address" },
+            supportingText = { Text("From your invite or the study team") },
+            modifier = Modifier.fillMaxWidth().semantics { contentDescription = "Server address" },
         )
         OutlinedTextField(
-            password, { password = it }, label = { Text("Broker password") }, singleLine = true, enabled = !testing,
+            password, { password = it }, label = { Text("Password") }, singleLine = true, enabled = !testing,
             visualTransformation = androidx.compose.ui.text.input.PasswordVisualTransformation(),
             keyboardOptions = androidx.compose.foundation.text.KeyboardOptions(keyboardType = androidx.compose.ui.text.input.KeyboardType.Password),
-            supportingText = { Text("Set with `hapticon broker adduser NAME`; empty for a broker run with --allow-anonymous") },
-            modifier = Modifier.fillMaxWidth().semantics { contentDescription = "Broker password" },
+            supportingText = { Text("From the study team; leave it empty if you were given none") },
+            modifier = Modifier.fillMaxWidth().semantics { contentDescription = "Password" },
         )
         when (check) {
             is AccountCheck.Failed -> Text(check.reason, color = MaterialTheme.colorScheme.error, style = MaterialTheme.typography.bodyMedium)
@@ -100,6 +111,10 @@ fun FirstLaunchScreen(prefilledBroker: String, check: AccountCheck, onSave: (Str
             AccountCheck.Idle, AccountCheck.Saved -> Unit
         }
         Button(onClick = { onSave(name, broker, password) }, enabled = !testing, modifier = Modifier.fillMaxWidth()) { Text("Test connection and start") }
+        Text(
+            "Running a study yourself? The Hapticon command on your computer starts the server and prints each participant's invite.",
+            style = MaterialTheme.typography.bodyMedium, color = MaterialTheme.colorScheme.onSurfaceVariant,
+        )
     }
 }
 
@@ -109,7 +124,7 @@ fun FirstLaunchScreen(prefilledBroker: String, check: AccountCheck, onSave: (Str
  */
 @OptIn(ExperimentalMaterial3Api::class)
 @Composable
-fun InviteScreen(link: InviteLink?, onBack: () -> Unit, onShare: (String) -> Unit) {
+fun InviteScreen(link: InviteLink?, onBack: () -> Unit, onShare: (String) -> Unit, onScan: () -> Unit = {}) {
     Scaffold(
         topBar = {
             TopAppBar(
@@ -143,6 +158,10 @@ fun InviteScreen(link: InviteLink?, onBack: () -> Unit, onShare: (String) -> Uni
             OutlinedButton(onClick = { onShare(link.toString()) }) {
                 Icon(HapticonIcons.Share, contentDescription = null)
                 Text("Share link", Modifier.padding(start = 8.dp))
+            }
+            OutlinedButton(onClick = onScan) {
+                Icon(HapticonIcons.QrCodeScanner, contentDescription = null)
+                Text("Scan someone's code", Modifier.padding(start = 8.dp))
             }
         }
     }

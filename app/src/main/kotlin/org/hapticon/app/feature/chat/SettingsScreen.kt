@@ -7,6 +7,7 @@ import androidx.compose.foundation.layout.fillMaxWidth
 import androidx.compose.foundation.layout.padding
 import androidx.compose.foundation.rememberScrollState
 import androidx.compose.foundation.verticalScroll
+import androidx.compose.material3.AlertDialog
 import androidx.compose.material3.ExperimentalMaterial3Api
 import androidx.compose.material3.HorizontalDivider
 import androidx.compose.material3.Icon
@@ -152,11 +153,7 @@ fun SettingsScreen(
             Section("Typing")
             SwitchRow("Enter key sends", prefs.enterSends, onCheckedChange = { on -> actions.update { it.copy(enterSends = on) } })
             Section("Privacy")
-            SwitchRow("Encrypt messages end to end", prefs.endToEnd, onCheckedChange = { on -> actions.update { it.copy(endToEnd = on) } })
-            Text(
-                "Only you and your peer can read or write your messages, not whoever runs the broker. Your peers need it on too.",
-                style = MaterialTheme.typography.bodyMedium, color = MaterialTheme.colorScheme.onSurfaceVariant,
-            )
+            EndToEndRow(prefs.endToEnd) { on -> actions.update { it.copy(endToEnd = on) } }
             for (warning in uiState.securityWarnings) {
                 Text("⚠ $warning", style = MaterialTheme.typography.bodyMedium, color = MaterialTheme.colorScheme.error)
             }
@@ -187,6 +184,41 @@ val PitchFit.label: String
         PitchFit.OCTAVES -> "Shift by octaves into range"
         PitchFit.CLAMP -> "Clamp to the nearest edge"
     }
+
+/**
+ * The end-to-end switch. Turning it off is an explicit choice confirmed in a dialog (a study that needs the broker to
+ * see content); while off, a warning in the error colour says who can read the messages.
+ */
+@Composable
+private fun EndToEndRow(on: Boolean, onChange: (Boolean) -> Unit) {
+    var confirming by rememberSaveable { mutableStateOf(false) }
+    SwitchRow("Encrypt messages end to end", on, onCheckedChange = { wanted -> if (wanted) onChange(true) else confirming = true })
+    if (on) {
+        Text(
+            "Only you and your peer can read or write your messages, not whoever runs the broker.",
+            style = MaterialTheme.typography.bodyMedium, color = MaterialTheme.colorScheme.onSurfaceVariant,
+        )
+    } else {
+        Text(PLAINTEXT_WARNING, style = MaterialTheme.typography.bodyMedium, color = MaterialTheme.colorScheme.error)
+    }
+    if (confirming) {
+        AlertDialog(
+            onDismissRequest = { confirming = false },
+            title = { Text("Send messages unencrypted?") },
+            text = {
+                Text(
+                    "Whoever runs the broker can then read every message you send and receive, and change them. " +
+                        "Turn encryption off only for a study that needs the broker to see what participants write.",
+                )
+            },
+            confirmButton = { TextButton(onClick = { confirming = false; onChange(false) }) { Text("Turn encryption off") } },
+            dismissButton = { TextButton(onClick = { confirming = false }) { Text("Keep encryption") } },
+        )
+    }
+}
+
+/** What Settings says while end-to-end encryption is off. */
+const val PLAINTEXT_WARNING: String = "⚠ Encryption is off: whoever runs the broker can read and change your messages."
 
 @Composable
 private fun Section(title: String, first: Boolean = false) {

@@ -132,7 +132,7 @@ private fun TeachSection(state: SocialTouchUiState.Ready, actions: SocialTouchAc
     Text("Teach", style = MaterialTheme.typography.titleMedium, modifier = Modifier.semantics { heading() })
     SwitchRow("Touches become examples instead of being recognised", state.teaching, actions.onTeaching)
     if (state.teaching) {
-        OutlinedTextField(state.teachLabel, actions.onTeachLabel, label = { Text("Class, e.g. sympathy") }, singleLine = true, modifier = Modifier.fillMaxWidth())
+        OutlinedTextField(state.teachLabel, actions.onTeachLabel, label = { Text("Class, e.g. surprise") }, singleLine = true, modifier = Modifier.fillMaxWidth())
     }
     if (state.examples.isNotEmpty()) {
         Text(state.examples.entries.joinToString(" · ") { "${it.key}: ${it.value}" }, style = MaterialTheme.typography.bodyMedium)

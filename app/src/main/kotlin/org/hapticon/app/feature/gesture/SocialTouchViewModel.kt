@@ -21,7 +21,7 @@ import org.hapticon.app.data.ChatRepository
 import org.hapticon.app.gesture.SocialTouchModelStore
 import org.hapticon.app.gesture.readLimited
 import org.hapticon.core.HapticIcon
-import org.hapticon.gesture.social.ContactCsv
+import org.hapticon.gesture.social.MessageFiles
 import org.hapticon.gesture.social.ContactFrame
 import org.hapticon.gesture.social.LogitBoost
 import org.hapticon.gesture.social.SocialTouchFeatures
@@ -67,9 +67,10 @@ sealed interface SocialTouchUiState {
  * Social-touch recognition (the EIT-skin paper: the 13 [SocialTouchFeatures] of a touch message, LogitBoost over
  * decision stumps) on the phone: the touch pad's contact frames are cut into messages ([SocialTouchMessages]) and
  * each is classified with the stored model, or, while teaching, kept as an example of a class to train a model
- * here ([LogitBoost.train], [LogitBoost.DEFAULT_ITERATIONS] rounds as Weka's default). A contact CSV (`hapticon`'s
- * [ContactCsv] layout, e.g. a pressure grid) is classified as one message. With sending on, a message whose class
- * names a preset icon (stroke, hit, knock, hug) is sent to the chosen conversation as that icon.
+ * here ([LogitBoost.train] with WEKA's defaults, [LogitBoost.WEKA_DEFAULTS]). A message file ([MessageFiles]: a
+ * `ContactCsv` pointer stream, or a skin's or pressure grid's `SkinCsv` recording) is classified as one message. With
+ * sending on, a message whose class names a preset icon (stroke, hit, knock, hug) is sent to the chosen conversation
+ * as that icon.
  * [clockSeconds] is the pad's time base (the events' uptime); [work] runs training and file reading.
  */
 class SocialTouchViewModel(
@@ -157,16 +158,15 @@ class SocialTouchViewModel(
         }
     }
 
-    /** Classifies a contact CSV (`time_s,intensity,x,y,area`) as one message; a bad file says why and changes nothing. */
+    /** Classifies a message file ([MessageFiles]) as one message; a bad file says why and changes nothing. */
     fun classifyFile(open: () -> InputStream, source: String) {
         viewModelScope.launch {
             val outcome = withContext(work) {
                 runCatching {
-                    val frames = ContactCsv.read(open().use { readLimited(it, MAX_FILE_BYTES, source) }.toString(Charsets.UTF_8), source)
                     // The whole file is one message, as the paper's trials were: no cutting at pauses.
-                    val cut = SocialTouchMessages()
-                    frames.forEach(cut::offer)
-                    cut.finish() ?: throw IllegalArgumentException("$source has no contact")
+                    val file = MessageFiles.read(open().use { readLimited(it, MAX_FILE_BYTES, source) }.toString(Charsets.UTF_8), source)
+                    if (file.touches == 0) throw IllegalArgumentException("$source has no contact")
+                    TouchMessage(file.features, file.touches, file.seconds)
                 }
             }
             outcome.fold({ onMessage(it, source) }, { e -> fail(e.message ?: "Could not read $source") })

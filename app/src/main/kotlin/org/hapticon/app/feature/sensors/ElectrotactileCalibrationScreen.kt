@@ -34,7 +34,9 @@ import androidx.compose.runtime.remember
 import androidx.compose.ui.Alignment
 import androidx.compose.ui.Modifier
 import androidx.compose.ui.text.style.TextAlign
+import androidx.compose.foundation.selection.selectable
 import androidx.compose.ui.semantics.LiveRegionMode
+import androidx.compose.ui.semantics.Role
 import androidx.compose.ui.semantics.contentDescription
 import androidx.compose.ui.semantics.heading
 import androidx.compose.ui.semantics.liveRegion
@@ -74,6 +76,9 @@ fun ElectrotactileCalibrationRoute(viewModel: ElectrotactileCalibrationViewModel
             onTooStrong = viewModel::tooStrong,
             onSendWholeArrayCheck = viewModel::sendWholeArrayCheck,
             onWholeArrayOk = viewModel::wholeArrayOk,
+            onSelectElectrode = viewModel::selectElectrode,
+            onWeaker = viewModel::weaker,
+            onStronger = viewModel::stronger,
             onRestart = viewModel::restart,
             onBack = onBack,
             onExport = { exportFile.launch(CALIBRATION_FILE_NAME) },
@@ -98,6 +103,12 @@ class ElectrotactileActions(
     val onTooStrong: () -> Unit = {},
     val onSendWholeArrayCheck: () -> Unit = {},
     val onWholeArrayOk: () -> Unit = {},
+    /** Whole-array check: the electrode the person says stands out (0..8). */
+    val onSelectElectrode: (Int) -> Unit = {},
+    /** Whole-array check: the selected electrode a step weaker. */
+    val onWeaker: () -> Unit = {},
+    /** Whole-array check: the selected electrode a step stronger. */
+    val onStronger: () -> Unit = {},
     val onRestart: () -> Unit = {},
     val onBack: () -> Unit = {},
     /** Save the stored calibration to a file the researcher picks. */
@@ -132,7 +143,7 @@ fun ElectrotactileCalibrationScreen(uiState: ElectrotactileUiState, actions: Ele
                     "${mA(AmplitudeSteps.milliampsOf(AmplitudeSteps.STEPS))} is the hard cap.",
                 style = MaterialTheme.typography.bodyMedium,
             )
-            ElectrodeGrid(uiState)
+            ElectrodeGrid(uiState, actions.onSelectElectrode)
             when (uiState) {
                 is ElectrotactileUiState.Electrode -> ElectrodeStep(uiState, actions)
                 is ElectrotactileUiState.WholeArrayCheck -> WholeArrayStep(uiState, actions)
@@ -186,19 +197,23 @@ private fun StoredCalibrationSection(stored: StoredCalibration?, actions: Electr
     }
 }
 
-/** The 3×3 array, row by row as the electrodes are numbered: each cell shows its current; the one being calibrated is outlined. */
+/**
+ * The 3×3 array, row by row as the electrodes are numbered: each cell shows its current; the one being calibrated (or, in
+ * the whole-array check, the one selected) is outlined. In the check each cell is a button that selects its electrode.
+ */
 @Composable
-private fun ElectrodeGrid(uiState: ElectrotactileUiState) {
-    val current = (uiState as? ElectrotactileUiState.Electrode)?.electrode
+private fun ElectrodeGrid(uiState: ElectrotactileUiState, onSelect: (Int) -> Unit) {
+    val check = uiState as? ElectrotactileUiState.WholeArrayCheck
+    val current = (uiState as? ElectrotactileUiState.Electrode)?.electrode ?: check?.selected
     val size = ElectrodePattern.SIZE
-    Column(verticalArrangement = Arrangement.spacedBy(6.dp), modifier = Modifier.semantics(mergeDescendants = true) {}) {
+    Column(verticalArrangement = Arrangement.spacedBy(6.dp), modifier = if (check == null) Modifier.semantics(mergeDescendants = true) {} else Modifier) {
         for (row in 0 until size) {
             Row(Modifier.fillMaxWidth(), horizontalArrangement = Arrangement.spacedBy(6.dp)) {
                 for (column in 0 until size) {
                     val e = row * size + column
                     val step = uiState.steps[e]
                     val active = e == current
-                    val pending = current != null && e > current
+                    val pending = check == null && current != null && e > current
                     Box(
                         // Grows with the font: the current must stay readable at the largest text size.
                         Modifier
@@ -209,6 +224,7 @@ private fun ElectrodeGrid(uiState: ElectrotactileUiState) {
                                 MaterialTheme.shapes.small,
                             )
                             .then(if (active) Modifier.border(2.dp, MaterialTheme.colorScheme.primary, MaterialTheme.shapes.small) else Modifier)
+                            .then(if (check != null) Modifier.selectable(active, role = Role.RadioButton, onClick = { onSelect(e) }) else Modifier)
                             .semantics { contentDescription = "Electrode ${e + 1}: ${if (pending) "not yet calibrated" else mA(AmplitudeSteps.milliampsOf(step))}" },
                         contentAlignment = Alignment.Center,
                     ) {
@@ -256,15 +272,21 @@ private fun ElectrodeStep(state: ElectrotactileUiState.Electrode, actions: Elect
 private fun WholeArrayStep(state: ElectrotactileUiState.WholeArrayCheck, actions: ElectrotactileActions) {
     Text("Whole-array check", style = MaterialTheme.typography.titleMedium, modifier = Modifier.semantics { heading() })
     Text(
-        "All nine electrodes at their levels, ${ElectrotactileCalibration.CHECK_GRAINS} grains over a full press. Send it to the board, " +
-            "ask the person to press, and lower every electrode while it is too strong.",
+        "All nine electrodes at their levels, ${ElectrotactileCalibration.CHECK_GRAINS} grains over a full press. Send it to the board " +
+            "and ask the person to press until it feels pain-free and uniform over the whole area: tap the electrode that stands out " +
+            "and make it weaker or stronger, or lower all while it is too strong.",
         style = MaterialTheme.typography.bodyMedium,
     )
     if (!state.boardReady) Text("No framed board is streaming: connect one on the Sensors screen.", style = MaterialTheme.typography.bodySmall)
+    val selected = state.selected
+    FlowRow(horizontalArrangement = Arrangement.spacedBy(12.dp), verticalArrangement = Arrangement.spacedBy(8.dp)) {
+        OutlinedButton(onClick = actions.onWeaker, enabled = selected != null) { Text(selected?.let { "Electrode ${it + 1} weaker" } ?: "Tap an electrode to adjust it") }
+        if (selected != null) OutlinedButton(onClick = actions.onStronger, enabled = state.steps[selected] < AmplitudeSteps.STEPS) { Text("Electrode ${selected + 1} stronger") }
+    }
     FlowRow(horizontalArrangement = Arrangement.spacedBy(12.dp), verticalArrangement = Arrangement.spacedBy(8.dp)) {
         Button(onClick = actions.onSendWholeArrayCheck, enabled = state.boardReady) { Text(if (state.sent) "Send again" else "Send to board") }
         OutlinedButton(onClick = actions.onTooStrong) { Text("Too strong: all weaker") }
-        Button(onClick = actions.onWholeArrayOk) { Text("Feels right") }
+        Button(onClick = actions.onWholeArrayOk) { Text("Uniform and pain-free") }
     }
 }
 

@@ -58,10 +58,14 @@ sealed interface ElectrotactileUiState {
         override val problem: Boolean = false,
     ) : ElectrotactileUiState
 
-    /** All nine electrodes at their levels while the person presses, [ElectrotactileCalibration.CHECK_GRAINS] grains per press. */
+    /**
+     * All nine electrodes at their levels while the person presses, [ElectrotactileCalibration.CHECK_GRAINS] grains per
+     * press, adjusted until the sensation is uniform: [selected] is the electrode the person says stands out (0..8), or null.
+     */
     data class WholeArrayCheck(
         /** Whether the check's SET_GRAINS command was queued for the board since the levels last changed. */
         val sent: Boolean,
+        val selected: Int? = null,
         override val steps: List<Int>,
         override val boardReady: Boolean,
         override val message: String?,
@@ -82,7 +86,8 @@ sealed interface ElectrotactileUiState {
 /**
  * Drives Shaping Compliance's per-person electrotactile calibration ([ElectrotactileCalibration], sensor-bridge):
  * each electrode from step 60 (0.81 mA) up one hardware step (13.5 µA) per "not yet" until clear and pain-free,
- * then the whole-array check with 39 grains on all nine electrodes. The 2.7 mA cap is enforced three times over:
+ * then the whole-array check with 39 grains on all nine electrodes, adjusted electrode by electrode until the sensation is
+ * uniform (003_8ca1dc8f53472543.txt:152). The 2.7 mA cap is enforced three times over:
  * the state machine never raises past step 200, [AmplitudeSteps.requireStep] refuses anything else, and
  * [FirmwareGrainParams] and [FirmwareStimulus] check every step before a command exists. Each electrode's 200 ms
  * stimulus ([giveStimulus]) and the check go to the board through [link], and a NACK (with the firmware's reason) or a
@@ -139,6 +144,27 @@ class ElectrotactileCalibrationViewModel(
         if (calibration.isDone) return@change null
         calibration.tooStrong()
         null
+    }
+
+    /** Whole-array check: [electrode] (0..8) is the one the person says stands out; [weaker] and [stronger] move it. */
+    fun selectElectrode(electrode: Int) {
+        if (!calibration.isCheckingWholeArray || electrode !in 0 until ElectrotactileCalibration.ELECTRODES) return
+        progress.update { it.copy(selected = electrode) }
+    }
+
+    /** Whole-array check: the selected electrode one step weaker (it stood out as stronger). */
+    fun weaker() = adjustSelected { calibration.weaker(it) }
+
+    /** Whole-array check: the selected electrode one step stronger (it was felt less), never past 2.7 mA. */
+    fun stronger() = adjustSelected { calibration.stronger(it) }
+
+    private fun adjustSelected(adjust: (Int) -> Unit) {
+        val electrode = progress.value.selected ?: return
+        if (!calibration.isCheckingWholeArray) return
+        adjust(electrode)
+        // The board's check is stale: send it again with the new level, keeping the electrode selected.
+        progress.update { Progress(it.revision + 1, sent = false, message = null, problem = false, selected = electrode) }
+        sendWholeArrayCheck()
     }
 
     /** The whole-array check felt right: calibration is done. */
@@ -284,7 +310,7 @@ class ElectrotactileCalibrationViewModel(
     private fun change(action: () -> String?) {
         val message = action()
         // Any level change makes what the board has stale.
-        progress.update { Progress(it.revision + 1, sent = false, message = message, problem = false) }
+        progress.update { Progress(it.revision + 1, sent = false, message = message, problem = false, selected = it.selected) }
     }
 
     private fun snapshot(p: Progress, ready: Boolean): ElectrotactileUiState {
@@ -295,7 +321,7 @@ class ElectrotactileCalibrationViewModel(
                 val step = steps[electrode]
                 ElectrotactileUiState.Electrode(electrode, step, AmplitudeSteps.milliampsOf(step), step == AmplitudeSteps.STEPS, steps, ready, p.message, p.problem)
             }
-            calibration.isCheckingWholeArray -> ElectrotactileUiState.WholeArrayCheck(p.sent, steps, ready, p.message, p.problem)
+            calibration.isCheckingWholeArray -> ElectrotactileUiState.WholeArrayCheck(p.sent, p.selected, steps, ready, p.message, p.problem)
             else -> {
                 val result = calibration.result()
                 val limit = if (result.steps.all { it == 0 }) null else result.userLimit().maxMilliamps
@@ -304,7 +330,7 @@ class ElectrotactileCalibrationViewModel(
         }
     }
 
-    private data class Progress(val revision: Int, val sent: Boolean, val message: String?, val problem: Boolean)
+    private data class Progress(val revision: Int, val sent: Boolean, val message: String?, val problem: Boolean, val selected: Int? = null)
 
     companion object {
         /** Shown when the view model was made without a store (a preview or a test). */

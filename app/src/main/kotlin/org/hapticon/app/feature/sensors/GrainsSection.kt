@@ -58,7 +58,7 @@ internal fun GrainsSection(grains: GrainUi, actions: SensorsActions) {
                 }
             }
             grains.deviceSampleRateHz?.let { Text("Sample rate from the board: $it Hz", style = MaterialTheme.typography.bodySmall) }
-            // Shaping Compliance: grains = bins − 1, so a full press fires exactly this many grains.
+            // Shaping Compliance: grains = bins − 1 (003_8ca1dc8f53472543.txt:95), so a full press fires exactly this many grains.
             Text("Grains per full press: ${grains.count} (${grains.count + 1} force bins)", style = MaterialTheme.typography.labelMedium)
             Slider(
                 value = grains.count.toFloat(),

@@ -31,6 +31,7 @@ import androidx.compose.material3.Text
 import androidx.compose.material3.TextButton
 import androidx.compose.runtime.Composable
 import androidx.compose.runtime.Immutable
+import androidx.compose.runtime.LaunchedEffect
 import androidx.compose.runtime.getValue
 import androidx.compose.runtime.mutableStateOf
 import androidx.compose.runtime.remember
@@ -61,6 +62,8 @@ import org.hapticon.app.di.AppContainer
 import org.hapticon.app.designsystem.HapticonIcons
 import org.hapticon.app.feature.chat.Sticker
 import org.hapticon.app.feature.sensors.ElectrodeLevelsStore
+import org.hapticon.app.feature.sensors.ElectrotactileCalibrationRoute
+import org.hapticon.app.feature.sensors.ElectrotactileCalibrationViewModel
 import org.hapticon.study.LikertScale
 import org.hapticon.study.Stimulus
 import org.hapticon.study.StudyStep
@@ -77,6 +80,9 @@ fun StudyRoute(container: AppContainer) {
     val state by researcher.uiState.collectAsStateWithLifecycle()
     var editing by rememberSaveable { mutableStateOf<String?>(null) }
     var compliance by rememberSaveable { mutableStateOf(false) }
+    // The compliance study's calibration, opened from its runner; each opening is a new round (a fresh calibration).
+    var calibrating by rememberSaveable { mutableStateOf(false) }
+    var calibrationRound by rememberSaveable { mutableStateOf(0) }
     // Until the stored sessions are read it is not known whether a session is running: the researcher screen's spinner.
     val ready = state as? ResearcherUiState.Success
     val active = ready?.activeSessionId
@@ -105,21 +111,37 @@ fun StudyRoute(container: AppContainer) {
             SessionScreen(sessionState, actions, pinError = state.pinError)
         }
         state.lock != LockState.UNLOCKED -> PinScreen(state.lock, state.pinError, onSetPin = researcher::setPin, onUnlock = { researcher.unlock(it) })
-        compliance -> {
+        compliance && calibrating -> {
+            // The calibration the study redoes before each repetition: a fresh one each time (keyed by the round).
             val files = LocalContext.current.filesDir
+            val calibration: ElectrotactileCalibrationViewModel = viewModel(
+                key = "compliance-calibration-$calibrationRound",
+                factory = viewModelFactory { initializer { ElectrotactileCalibrationViewModel(container.stimulator, ElectrodeLevelsStore.inFolder(files)) } },
+            )
+            ElectrotactileCalibrationRoute(calibration, onBack = { calibrating = false })
+        }
+        compliance -> {
+            val context = LocalContext.current
             val runner: ComplianceViewModel = viewModel(
                 factory = viewModelFactory {
                     initializer {
-                        val levels = ElectrodeLevelsStore.inFolder(files)
-                        ComplianceViewModel(container.stimulator, levels::load, File(files, "compliance"))
+                        val levels = ElectrodeLevelsStore.inFolder(context.filesDir)
+                        ComplianceViewModel(container.stimulator, levels::stored, File(context.filesDir, "compliance"), File(context.cacheDir, "exports"))
                     }
                 },
             )
+            // Back from the calibration: read what it stored.
+            LaunchedEffect(calibrationRound) { runner.refreshCalibration() }
             ComplianceRoute(
                 runner,
+                onCalibrate = {
+                    calibrationRound++
+                    calibrating = true
+                },
                 onBack = {
                     // Leaving a running session asks for the PIN again, as the Likert sessions' way out does.
-                    if (runner.uiState.value is ComplianceUiState.Trial) researcher.lock()
+                    val running = runner.uiState.value
+                    if (running is ComplianceUiState.Trial || running is ComplianceUiState.Calibrate) researcher.lock()
                     runner.finish()
                     compliance = false
                 },

@@ -40,23 +40,23 @@ class ChatListScreenTest {
     @Test
     fun firstLaunch_noBrokerPrefilled_savesWhatWasTypedWithThePassword() {
         val saved = mutableListOf<Triple<String, String, String>>()
-        compose.setContent { FirstLaunchScreen("", AccountCheck.Idle) { user, broker, password -> saved += Triple(user, broker, password) } }
+        compose.setContent { FirstLaunchScreen("", AccountCheck.Idle, onSave = { user, broker, password -> saved += Triple(user, broker, password) }) }
 
         compose.onNodeWithText("Your user name").performTextInput("alice")
-        compose.onNodeWithText("Broker address").performTextInput("192.168.1.20")
-        compose.onNodeWithText("Broker password").performTextInput("alice-secret")
+        compose.onNodeWithText("Server address").performTextInput("192.168.1.20")
+        compose.onNodeWithText("Password").performTextInput("alice-secret")
         compose.onNodeWithText("Test connection and start").performScrollTo().performClick()
 
         assertEquals(listOf(Triple("alice", "192.168.1.20", "alice-secret")), saved)
         // The password field is a password field (masked on screen, announced as a password by TalkBack).
-        compose.onNodeWithContentDescription("Broker password")
+        compose.onNodeWithContentDescription("Password")
             .assert(androidx.compose.ui.test.SemanticsMatcher.keyIsDefined(androidx.compose.ui.semantics.SemanticsProperties.Password))
         assertEquals("", ChatPreferences().brokerUrl)
     }
 
     @Test
     fun firstLaunch_failedTest_showsTheReason() {
-        compose.setContent { FirstLaunchScreen("", AccountCheck.Failed("No answer from tcp://10.1.1.1:1883 within 5 s")) { _, _, _ -> } }
+        compose.setContent { FirstLaunchScreen("", AccountCheck.Failed("No answer from tcp://10.1.1.1:1883 within 5 s"), onSave = { _, _, _ -> }) }
         compose.onNodeWithText("No answer from tcp://10.1.1.1:1883 within 5 s").performScrollTo().assertIsDisplayed()
     }
 

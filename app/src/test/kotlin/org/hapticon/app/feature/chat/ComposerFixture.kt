@@ -74,7 +74,7 @@ class ComposerFixture(
             ConversationScreen(
                 state,
                 ConversationActions(
-                    onSend = { viewModel.send(it) }, onSelectIcon = viewModel::selectIcon, onSelectSticker = viewModel::selectSticker,
+                    onSend = viewModel::send, onSelectIcon = viewModel::selectIcon, onSelectSticker = viewModel::selectSticker,
                     onPreview = viewModel::play, onFeel = viewModel::feel,
                     onSelectPattern = viewModel::selectPattern, onPreviewPattern = viewModel::play,
                 ),

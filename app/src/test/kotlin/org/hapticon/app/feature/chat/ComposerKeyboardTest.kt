@@ -20,9 +20,6 @@ import androidx.compose.ui.test.performKeyInput
 import androidx.compose.ui.test.performTextInput
 import androidx.compose.ui.test.pressKey
 import androidx.compose.ui.text.input.ImeAction
-import androidx.core.graphics.Insets
-import androidx.core.view.ViewCompat
-import androidx.core.view.WindowInsetsCompat
 import org.hapticon.app.data.database.MessageState
 import org.hapticon.app.data.database.StoredMessage
 import org.hapticon.core.HapticIcon
@@ -55,7 +52,7 @@ class ComposerKeyboardTest {
         view = LocalView.current
         ConversationScreen(
             ConversationUiState.Success("bob", messages, HapticIcon.PRESETS, null, null, null, null),
-            ConversationActions(onSend = { sent += it }),
+            ConversationActions(onSend = { text, stored -> sent += text; stored() }),
             enterSends = enterSends,
         )
     }
@@ -111,15 +108,7 @@ class ComposerKeyboardTest {
     fun keyboardShown_composerAndLatestMessageStayAboveIt() {
         show(enterSends = false, messages = (1..30).map(::message))
         val windowHeight = compose.onRoot().fetchSemanticsNode().boundsInRoot.bottom
-        val density = view.resources.displayMetrics.density
-        val keyboardPx = (300 * density).toInt()
-        compose.runOnIdle {
-            val insets = WindowInsetsCompat.Builder()
-                .setInsets(WindowInsetsCompat.Type.ime(), Insets.of(0, 0, 0, keyboardPx))
-                .setVisible(WindowInsetsCompat.Type.ime(), true)
-                .build()
-            ViewCompat.dispatchApplyWindowInsets(view, insets)
-        }
+        val keyboardPx = compose.runOnIdle { openKeyboard(view) }
         compose.waitForIdle()
 
         val composer: Rect = field().fetchSemanticsNode().boundsInRoot

@@ -7,6 +7,9 @@ import androidx.compose.ui.test.junit4.createComposeRule
 import androidx.compose.ui.test.onNodeWithContentDescription
 import androidx.compose.ui.test.performClick
 import androidx.compose.ui.test.performTextInput
+import androidx.compose.ui.test.performTextReplacement
+import androidx.compose.ui.test.onAllNodesWithText
+import org.hapticon.messaging.MessageLimits
 import androidx.compose.ui.test.performTouchInput
 import androidx.compose.ui.test.longClick
 import androidx.compose.ui.test.SemanticsMatcher
@@ -91,4 +94,23 @@ class ComposerSendTest {
         assertEquals("hug", message.sticker)
         assertEquals(HapticIcon.HUG, message.icon)
     }
+
+    /** A send that cannot be stored (too long) keeps what was typed under the reason; once fixed, it goes and the field empties. */
+    @Test
+    fun sendFails_textTooLong_keepsTheTextAndSaysWhy_thenSendsOnceShortened() {
+        val long = "a".repeat(MessageLimits.MAX_TEXT_LENGTH + 1)
+        compose.onNode(hasSetTextAction()).performTextInput(long)
+        compose.onNodeWithContentDescription("Send").performClick()
+        compose.waitUntil(5_000) { compose.onAllNodesWithText("exceed the limit", substring = true).fetchSemanticsNodes().isNotEmpty() }
+        assertEquals(long, fieldText())
+        assertEquals(emptyList<Any>(), stored())
+
+        compose.onNode(hasSetTextAction()).performTextReplacement("short")
+        compose.onNodeWithContentDescription("Send").performClick()
+        compose.waitUntil(5_000) { stored().isNotEmpty() }
+        assertEquals("short", stored().single().text)
+        compose.waitUntil(5_000) { fieldText().isEmpty() }
+    }
+
+    private fun fieldText(): String = compose.onNode(hasSetTextAction()).fetchSemanticsNode().config[SemanticsProperties.EditableText].text
 }

@@ -6,7 +6,11 @@ import org.hapticon.app.playback.usageVibrator
 import android.os.Vibrator
 import androidx.compose.runtime.collectAsState
 import androidx.compose.runtime.getValue
+import androidx.compose.ui.semantics.SemanticsActions
 import androidx.compose.ui.test.assertIsDisplayed
+import androidx.compose.ui.test.hasContentDescription
+import androidx.compose.ui.test.performSemanticsAction
+import androidx.compose.ui.unit.dp
 import androidx.compose.ui.test.onNodeWithTag
 import androidx.compose.ui.test.junit4.createComposeRule
 import androidx.compose.ui.test.performScrollToIndex
@@ -26,6 +30,7 @@ import org.hapticon.core.HapticIcon
 import org.hapticon.core.pattern.PitchFit
 import org.hapticon.messaging.Capabilities
 import org.junit.Assert.assertEquals
+import org.junit.Assert.assertTrue
 import org.junit.Rule
 import org.junit.Test
 import org.junit.runner.RunWith
@@ -67,18 +72,32 @@ class ConversationScreenTest {
 
     @Test
     @Config(qualifiers = "w400dp-h2000dp") // tall enough for every bubble above the composer
-    fun ownMessages_everyState_visible() {
+    fun ownMessages_everyState_saidByTheBubble() {
         val states = listOf(MessageState.SENDING, MessageState.SENT, MessageState.DELIVERED, MessageState.READ, MessageState.FELT, MessageState.FAILED)
+        val utc = ChatClock(java.time.ZoneOffset.UTC, java.util.Locale.UK)
         compose.setContent {
-            ConversationScreen(state(states.mapIndexed { i, s -> message(i, true, s) }), ConversationActions())
+            ConversationScreen(state(states.mapIndexed { i, s -> message(i, true, s) }), ConversationActions(), utc)
         }
-        for (label in listOf("Sending", "Sent", "Delivered", "Read", "Felt", "Not sent, tap to retry")) {
-            compose.onNodeWithContentDescription("Message state: $label").assertExists()
+        for ((i, label) in listOf("Sending", "Sent", "Delivered", "Read", "Felt", "Not sent, tap to retry").withIndex()) {
+            compose.onNodeWithContentDescription("You: m$i, 00:00, $label").assertExists()
         }
     }
 
     @Test
-    fun failedMessage_tapped_retriesThatMessage() {
+    fun receivedMessage_bubbleSaysWhoWhatWhichIconAndWhen_andItsTapFeelsIt() {
+        val felt = mutableListOf<String>()
+        val hug = message(1, false, MessageState.RECEIVED, HapticIcon.HUG, sticker = "heart")
+        compose.setContent {
+            ConversationScreen(state(listOf(hug)), ConversationActions(onFeel = { felt += it.id }), ChatClock(java.time.ZoneOffset.UTC, java.util.Locale.UK))
+        }
+        val bubble = compose.onNodeWithContentDescription("bob: Sticker: Heart, m1, Feel hug, 00:00")
+        assertEquals("Feel hug", bubble.fetchSemanticsNode().config[SemanticsActions.OnClick].label)
+        bubble.performSemanticsAction(SemanticsActions.OnClick)
+        assertEquals(listOf(hug.id), felt)
+    }
+
+    @Test
+    fun failedMessage_bubbleTapped_retriesThatMessage() {
         val failed = message(2, true, MessageState.FAILED)
         val retried = mutableListOf<String>()
         compose.setContent {
@@ -86,6 +105,38 @@ class ConversationScreenTest {
         }
         compose.onNodeWithText("m2").performClick()
         assertEquals(listOf(failed.id), retried)
+    }
+
+    /** The red words are themselves the target, at least 48 dp high, and TalkBack's double-tap on the bubble retries. */
+    @Test
+    fun failedMessage_redLineIsA48dpTarget_andTheBubblesTalkBackActionRetries() {
+        val failed = message(2, true, MessageState.FAILED, HapticIcon.KNOCK)
+        val retried = mutableListOf<String>()
+        val felt = mutableListOf<String>()
+        compose.setContent {
+            ConversationScreen(
+                state(listOf(message(1, true, MessageState.SENT), failed)),
+                ConversationActions(onRetry = { retried += it.id }, onFeel = { felt += it.id }),
+            )
+        }
+        // Drawn as a line under the bubble; Compose widens its touch target to 48 dp.
+        val line = compose.onNodeWithText("Not sent, tap to retry")
+        val touch = line.fetchSemanticsNode().touchBoundsInRoot
+        val minimum = with(compose.density) { 48.dp.toPx() }
+        assertTrue("touch target ${touch.width} × ${touch.height} px, under 48 dp ($minimum px)", touch.height >= minimum && touch.width >= minimum)
+        line.performClick()
+        assertEquals(listOf(failed.id), retried)
+
+        val bubble = compose.onNode(hasContentDescription("You: m2, ", substring = true) and hasContentDescription(", Not sent, tap to retry", substring = true))
+        val config = bubble.fetchSemanticsNode().config
+        assertEquals("Retry sending", config[SemanticsActions.OnClick].label)
+        bubble.performSemanticsAction(SemanticsActions.OnClick)
+        assertEquals(listOf(failed.id, failed.id), retried)
+        // Its icon can still be felt, from TalkBack's actions menu.
+        val feel = config[SemanticsActions.CustomActions].single()
+        assertEquals("Feel knock", feel.label)
+        feel.action()
+        assertEquals(listOf(failed.id), felt)
     }
 
     @Test

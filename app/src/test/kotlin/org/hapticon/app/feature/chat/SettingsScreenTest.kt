@@ -81,8 +81,18 @@ class SettingsScreenTest {
                 SettingsActions(update = settings::update, onTrustKey = { trusted += it }),
             )
         }
-        compose.onNodeWithText("Encrypt messages end to end").performScrollTo().assertIsOff().performClick()
+        // On by default; off only through the dialog, and then the warning says so.
+        compose.onNodeWithText("Encrypt messages end to end").performScrollTo().assertIsOn().performClick()
+        compose.onNodeWithText("Keep encryption").performClick()
         assertEquals(true, settings.preferences.value.endToEnd)
+        compose.onNodeWithText("Encrypt messages end to end").performScrollTo().assertIsOn().performClick()
+        compose.onNodeWithText("Send messages unencrypted?").assertExists()
+        compose.onNodeWithText("Turn encryption off").performClick()
+        assertEquals(false, settings.preferences.value.endToEnd)
+        compose.onNodeWithText(PLAINTEXT_WARNING).performScrollTo().assertExists()
+        compose.onNodeWithText("Encrypt messages end to end").performScrollTo().assertIsOff().performClick() // on again: no question
+        assertEquals(true, settings.preferences.value.endToEnd)
+        compose.onNodeWithText(PLAINTEXT_WARNING).assertDoesNotExist()
         compose.onNodeWithText("⚠ $warning").performScrollTo().assertExists()
         compose.onNodeWithText("Trust bob's new key (safety numbers compared)").performScrollTo().performClick()
         assertEquals(listOf("bob"), trusted)

@@ -5,6 +5,7 @@ import android.graphics.Rect
 import android.os.Bundle
 import android.view.View
 import android.view.ViewGroup
+import android.view.accessibility.AccessibilityEvent
 import android.view.accessibility.AccessibilityManager
 import android.view.accessibility.AccessibilityNodeInfo
 import android.view.accessibility.AccessibilityNodeProvider
@@ -228,16 +229,19 @@ class TalkBackNodeTreeTest {
     }
 
     @Test
-    fun receivedIcon_clickedThroughTheNodeProvider_playsItsWaveformAndTellsTheSender() {
+    fun receivedIcon_bubbleClickedThroughTheNodeProvider_playsItsWaveformAndTellsTheSender() {
         val hug = ChatMessage("0b7e7c1e-3f7b-4a57-9d3e-2f1c5a6b7c8d", "bob", 1_767_225_500_000, "hug", icon = HapticIcon.HUG)
         runBlocking { fixture.repository.receive(hug) }
-        compose.waitUntil(5_000) { focusStops().any { it.spoken == "Feel hug" } }
-        val chip = control("Feel hug")
-        assertTalkBackTarget(chip)
-        assertTrue(chip.info.isClickable)
+        val spoken = "bob: hug, Feel hug, ${time(hug.sentAtMillis)}"
+        compose.waitUntil(5_000) { focusStops().any { it.spoken == spoken } }
+        val bubble = control(spoken)
+        assertTalkBackTarget(bubble)
+        assertTrue(bubble.info.isClickable)
+        // "…, double-tap to Feel hug".
+        assertEquals("Feel hug", bubble.actionLabel(AccessibilityNodeInfo.ACTION_CLICK))
         assertNull(lastVibration(fixture.vibrator))
 
-        perform(chip, AccessibilityNodeInfo.ACTION_CLICK)
+        perform(bubble, AccessibilityNodeInfo.ACTION_CLICK)
         compose.waitUntil(5_000) { lastVibration(fixture.vibrator) != null }
         // The hug's own step waveform, timings and amplitudes, as the player renders it for this vibrator.
         val waveform = VibrationWaveform.render(HapticIcon.HUG)
@@ -263,7 +267,7 @@ class TalkBackNodeTreeTest {
             putCharSequence(AccessibilityNodeInfo.ACTION_ARGUMENT_SET_TEXT_CHARSEQUENCE, "for you")
         })
         perform(control("Send"), AccessibilityNodeInfo.ACTION_CLICK)
-        compose.waitUntil(5_000) { focusStops().any { it.spoken == "Feel knock" } }
+        compose.waitUntil(5_000) { focusStops().any { it.spoken.startsWith("You: for you, Feel knock, ") } }
 
         val checked = mutableMapOf<String, String>()
         fun checkVisibleChips() {
@@ -278,12 +282,99 @@ class TalkBackNodeTreeTest {
         while (focusStops().none { it.spoken == "ramp, pattern" }) perform(row, AccessibilityNodeInfo.ACTION_SCROLL_FORWARD)
         checkVisibleChips()
 
-        // Each kind of chip was found by its drawn words, and TalkBack names it by them alone.
-        val expected = mapOf(
-            "Feel hug" to "Feel hug", "Feel ramp" to "Feel ramp", "Feel knock" to "Feel knock",
-            "knock" to "knock", "hug" to "hug", "ramp, pattern" to "ramp, pattern",
-        )
+        // Each kind of composer chip was found by its drawn words, and TalkBack names it by them alone.
+        val expected = mapOf("knock" to "knock", "hug" to "hug", "ramp, pattern" to "ramp, pattern")
         assertEquals(expected, checked.filterKeys { it in expected })
+        // A message's "Feel …" chip is its bubble's action, and the bubble's name says the chip's words as drawn.
+        for (words in listOf("Feel hug", "Feel ramp", "Feel knock")) {
+            val bubble = focusStops().single { it.spoken.contains(", $words, ") }
+            assertEquals(words, bubble.actionLabel(AccessibilityNodeInfo.ACTION_CLICK))
+        }
+    }
+
+    /** The time under a bubble as the screen writes it (the fixture's screen uses the default zone and locale). */
+    private fun time(millis: Long) = ChatClock().timeOfDay(millis)
+
+    /**
+     * TalkBack's stops as TalkBack finds them: [Node.isFocusStop] nodes, and also a node with words of its own that no
+     * stop contains (TalkBack `AccessibilityNodeInfoUtils.shouldFocusNode`: text without a focusable ancestor is read
+     * on its own).
+     */
+    private fun talkBackStops(node: Node, insideStop: Boolean = false): List<Node> {
+        val own = node.info.isVisibleToUser && (node.isFocusStop ||
+            (!insideStop && (!node.info.text.isNullOrEmpty() || !node.info.contentDescription.isNullOrEmpty())))
+        return (if (own) listOf(node) else emptyList()) + node.children.flatMap { talkBackStops(it, insideStop || own) }
+    }
+
+    /**
+     * The stops of the message list, top to bottom, by what TalkBack says for each: those under the smallest node that
+     * holds every message's stop (the list), empty while there are none.
+     */
+    private fun messageListStops(): List<String> {
+        fun isMessage(node: Node) = node.isFocusStop && (node.spoken.startsWith("You: ") || node.spoken.startsWith("bob: "))
+        val nodes = tree().all()
+        val count = nodes.count(::isMessage)
+        val list = nodes.filter { node -> node.all().count(::isMessage) == count }.minByOrNull { it.all().size } ?: return emptyList()
+        if (count == 0) return emptyList()
+        return talkBackStops(list).filter { it !== list }.sortedBy { Rect().also(it.info::getBoundsInScreen).top }.map { it.spoken }
+    }
+
+    /**
+     * Each message is ONE stop that says who wrote it, its words, its icon, the time and (own messages) the state;
+     * nothing of a bubble (its time, its chip, its state mark) is a stop of its own. Delivered and read differ in words.
+     */
+    @Test
+    fun eachBubble_isOneStop_sayingWhoWhatIconTimeAndState() {
+        val hug = ChatMessage("0b7e7c1e-3f7b-4a57-9d3e-2f1c5a6b7c8d", "bob", 1_767_225_500_000, "Try this one", icon = HapticIcon.HUG)
+        val own = ChatMessage("0b7e7c1e-3f7b-4a57-9d3e-2f1c5a6b7c8e", "alice", 1_767_225_510_000, "Lovely")
+        val second = ChatMessage("0b7e7c1e-3f7b-4a57-9d3e-2f1c5a6b7c8f", "alice", 1_767_225_520_000, "And another")
+        runBlocking {
+            fixture.repository.receive(hug)
+            fixture.repository.enqueue("bob", own)
+            fixture.repository.enqueue("bob", second)
+            fixture.repository.applyReceipt(org.hapticon.messaging.Receipt(own.id, "bob", org.hapticon.messaging.ReceiptState.READ, own.sentAtMillis + 1))
+            fixture.repository.applyReceipt(org.hapticon.messaging.Receipt(second.id, "bob", org.hapticon.messaging.ReceiptState.DELIVERED, second.sentAtMillis + 1))
+        }
+        val expected = listOf(
+            "bob: Try this one, Feel hug, ${time(hug.sentAtMillis)}",
+            "You: Lovely, ${time(own.sentAtMillis)}, Read",
+            "You: And another, ${time(second.sentAtMillis)}, Delivered",
+        )
+        compose.waitUntil(5_000) { messageListStops().containsAll(expected) }
+        // Above them only the day's separator, read as it is.
+        assertEquals(listOf(ChatClock().dayLabel(hug.sentAtMillis, System.currentTimeMillis())) + expected, messageListStops())
+    }
+
+    /**
+     * A message arriving while the conversation is open is announced: a polite live region (TalkBack says it after
+     * what it is saying, without moving the focus) changes to the message's words, and the view tells the accessibility
+     * manager its content changed. Messages there when the screen opened, and the user's own, are not announced.
+     */
+    @Test
+    fun messageArrivingWhileOpen_isAnnouncedByAPoliteLiveRegion() {
+        fun announcer() = tree().all().single { it.info.liveRegion == View.ACCESSIBILITY_LIVE_REGION_POLITE && it.info.className == "android.view.View" }
+        assertEquals(null, announcer().info.contentDescription)
+        val manager = compose.activity.getSystemService(AccessibilityManager::class.java)
+        val eventsBefore = shadowOf(manager).sentAccessibilityEvents.size
+
+        val knock = ChatMessage("0b7e7c1e-3f7b-4a57-9d3e-2f1c5a6b7c90", "bob", 1_767_225_530_000, "on my way", icon = HapticIcon.KNOCK)
+        runBlocking { fixture.repository.receive(knock) }
+        compose.waitUntil(5_000) { announcer().info.contentDescription?.toString() == "bob: on my way, Feel knock" }
+        compose.waitUntil(5_000) {
+            shadowOf(manager).sentAccessibilityEvents.drop(eventsBefore).any { event ->
+                event.eventType == AccessibilityEvent.TYPE_WINDOW_CONTENT_CHANGED &&
+                    event.contentChangeTypes and AccessibilityEvent.CONTENT_CHANGE_TYPE_CONTENT_DESCRIPTION != 0
+            }
+        }
+
+        // The user's own message is not announced: the live region keeps the last arrival's words.
+        perform(control("Message"), AccessibilityNodeInfo.ACTION_SET_TEXT, Bundle().apply {
+            putCharSequence(AccessibilityNodeInfo.ACTION_ARGUMENT_SET_TEXT_CHARSEQUENCE, "coming")
+        })
+        perform(control("Send"), AccessibilityNodeInfo.ACTION_CLICK)
+        compose.waitUntil(5_000) { fixture.stored().size == 2 }
+        compose.waitForIdle()
+        assertEquals("bob: on my way, Feel knock", announcer().info.contentDescription?.toString())
     }
 
     private companion object {

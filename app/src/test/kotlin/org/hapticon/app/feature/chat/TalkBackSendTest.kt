@@ -6,6 +6,7 @@ import androidx.compose.ui.semantics.SemanticsProperties
 import androidx.compose.ui.semantics.getOrNull
 import androidx.compose.ui.test.SemanticsMatcher
 import androidx.compose.ui.test.SemanticsNodeInteraction
+import androidx.compose.ui.test.hasClickAction
 import androidx.compose.ui.test.hasContentDescription
 import androidx.compose.ui.test.hasSetTextAction
 import androidx.compose.ui.test.junit4.createComposeRule
@@ -94,15 +95,16 @@ class TalkBackSendTest {
     }
 
     @Test
-    fun receivedIconChip_throughItsAccessibilityAction_isFelt() {
+    fun receivedIcon_throughItsBubblesAccessibilityAction_isFelt() {
         val hug = ChatMessage("0b7e7c1e-3f7b-4a57-9d3e-2f1c5a6b7c8d", "bob", 1_767_225_500_000, "hug", icon = HapticIcon.HUG)
         runBlocking { fixture.repository.receive(hug) }
-        compose.waitUntil(5_000) {
-            compose.onAllNodes(feelChip("hug")).fetchSemanticsNodes().isNotEmpty()
-        }
+        // The bubble is one stop for TalkBack ("bob: hug, Feel hug, 23:58"); its double-tap feels the hug.
+        val bubble = hasContentDescription("bob: hug, Feel hug, ", substring = true) and hasClickAction()
+        compose.waitUntil(5_000) { compose.onAllNodes(bubble).fetchSemanticsNodes().isNotEmpty() }
+        assertEquals("Feel hug", compose.onNode(bubble).clickLabel())
         assertNull(lastVibration(fixture.vibrator))
 
-        control(feelChip("hug"), Role.Button).performSemanticsAction(SemanticsActions.OnClick)
+        compose.onNode(bubble).performSemanticsAction(SemanticsActions.OnClick)
         compose.waitUntil(5_000) { lastVibration(fixture.vibrator) != null }
         // The hug's own step waveform, as the player renders it for an amplitude-controlled vibrator.
         assertEquals(VibrationWaveform.render(HapticIcon.HUG).timings().toList(), lastVibration(fixture.vibrator)!!.timings)

@@ -79,7 +79,7 @@ class SocialTouchViewModelTest {
         assertNull(cut.endIfQuiet(lifted + 0.999))
         val message = cut.endIfQuiet(lifted + 1.0)!!
         assertEquals(3, message.touches)
-        // message_s runs from the first to the last frame in contact: 10.0 to 10.65 s.
+        // A message runs from the first to the last frame in contact: 10.0 to 10.65 s.
         assertEquals(0.65, message.seconds, 1e-9)
         assertEquals(3.0, message.features[SocialTouchFeatures.NAMES.indexOf("touch_count")], 0.0)
         // The next message starts empty; nothing without a touch, and a NaN frame is skipped.
@@ -133,7 +133,7 @@ class SocialTouchViewModelTest {
     fun classifyFile_badCsvSaysWhere_goodCsvIsOneMessage() = runTest(dispatcher) {
         val store = FileSocialTouchModelStore(File(folder.root, "social.json"))
         // A model that splits on touch_count: 1 touch is "stroke", more is "pat".
-        val examples = listOf(pat(0.0), pat(0.0, taps = 4), squeeze(0.0), squeeze(2.0)).map { SocialTouchFeatures.of(it.asSequence()) }
+        val examples = listOf(pat(0.0), pat(0.0, taps = 4), squeeze(0.0), squeeze(2.0)).map { SocialTouchFeatures.ofContacts(it.asSequence()) }
         store.save(SocialTouchModel(listOf("pat", "stroke"), LogitBoost.train(examples, intArrayOf(0, 0, 1, 1), 2)))
         val viewModel = viewModel(store)
         advanceUntilIdle()
@@ -167,7 +167,7 @@ class SocialTouchViewModelTest {
         assertEquals(HapticIcon.HUG, SocialTouchViewModel.iconFor("hug"))
         assertEquals(HapticIcon.STROKE, SocialTouchViewModel.iconFor("Gentle-Stroke"))
         assertNull(SocialTouchViewModel.iconFor("hugging"))
-        assertNull(SocialTouchViewModel.iconFor("sympathy"))
+        assertNull(SocialTouchViewModel.iconFor("surprise"))
     }
 
     @Test

@@ -6,6 +6,7 @@ import org.hapticon.core.platform.VibrationUsage
 import androidx.compose.ui.semantics.SemanticsProperties
 import androidx.compose.ui.test.SemanticsMatcher
 import androidx.compose.ui.test.assert
+import androidx.compose.ui.test.hasClickAction
 import androidx.compose.ui.test.hasContentDescription
 import androidx.compose.ui.test.hasScrollToNodeAction
 import androidx.compose.ui.test.hasText
@@ -33,6 +34,8 @@ class IconsScreenTest {
     private val vibrator get() = rule.activity.getSystemService(Vibrator::class.java)
 
     private fun scrollTo(matcher: SemanticsMatcher) {
+        // The app opens on Chats.
+        rule.onNode(hasText("Icons") and hasClickAction()).performClick()
         // The list comes from Room (presets plus custom icons): wait until it is on screen.
         rule.waitUntil(5_000) { rule.onAllNodes(hasScrollToNodeAction()).fetchSemanticsNodes().isNotEmpty() }
         rule.onNode(hasScrollToNodeAction()).performScrollToNode(matcher)

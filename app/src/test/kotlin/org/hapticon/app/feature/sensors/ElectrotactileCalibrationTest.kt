@@ -16,6 +16,11 @@ import androidx.compose.ui.test.assertIsNotEnabled
 import androidx.compose.ui.test.junit4.createComposeRule
 import androidx.compose.ui.test.onNodeWithContentDescription
 import androidx.compose.ui.test.onNodeWithText
+import androidx.compose.ui.test.performClick
+import androidx.compose.ui.test.performScrollTo
+import androidx.compose.runtime.getValue
+import androidx.compose.runtime.mutableStateOf
+import androidx.compose.runtime.setValue
 import org.hapticon.app.gesture.MainDispatcherRule
 import org.hapticon.testing.TEST_UNO
 import org.hapticon.testing.TestUsbDevices
@@ -112,6 +117,46 @@ class ElectrotactileCalibrationTest {
         viewModel.wholeArrayOk()
         val done = viewModel.state() as ElectrotactileUiState.Done
         assertEquals(67 * 0.0135, done.limitMilliamps!!, 1e-12)
+    }
+
+    @Test
+    fun wholeArrayCheck_theElectrodeThatStandsOut_isAdjusted_andResent() {
+        // The check is adjusted until the sensation is uniform (003_8ca1dc8f53472543.txt:152).
+        val link = TestStimulatorLink(ready = true)
+        val viewModel = ElectrotactileCalibrationViewModel(link)
+        repeat(9) { viewModel.clearAndPainFree() }
+        viewModel.weaker() // nothing selected: nothing changes
+        assertEquals(List(9) { 60 }, viewModel.state().steps)
+        viewModel.selectElectrode(4)
+        viewModel.weaker()
+        viewModel.weaker()
+        viewModel.selectElectrode(0)
+        viewModel.stronger()
+        val state = viewModel.state() as ElectrotactileUiState.WholeArrayCheck
+        assertEquals(0, state.selected)
+        assertEquals(listOf(61, 60, 60, 60, 58, 60, 60, 60, 60), state.steps)
+        // Each adjustment went to the board at once, the last with both changes.
+        assertEquals(3, link.sent.size)
+        assertEquals(listOf(61, 60, 60, 60, 58, 60, 60, 60, 60), link.sent.last().steps)
+        assertTrue(state.sent)
+        viewModel.wholeArrayOk()
+        assertEquals(listOf(61, 60, 60, 60, 58, 60, 60, 60, 60), viewModel.state().steps)
+    }
+
+    @Test
+    fun wholeArrayCheckScreen_tappingACellSelectsIt_andTheButtonsNameIt() {
+        var selected = -1
+        var weaker = 0
+        val state = ElectrotactileUiState.WholeArrayCheck(sent = true, selected = null, steps = List(9) { 60 }, boardReady = true, message = null)
+        var shown by mutableStateOf(state)
+        compose.setContent { ElectrotactileCalibrationScreen(shown, ElectrotactileActions(onSelectElectrode = { selected = it }, onWeaker = { weaker++ })) }
+        compose.onNodeWithText("Tap an electrode to adjust it").assertIsNotEnabled()
+        compose.onNodeWithContentDescription("Electrode 5: 0.810 mA").performScrollTo().performClick()
+        assertEquals(4, selected)
+        shown = state.copy(selected = 4)
+        compose.onNodeWithText("Electrode 5 weaker").performScrollTo().assertIsEnabled().performClick()
+        compose.onNodeWithText("Electrode 5 stronger").assertIsEnabled()
+        assertEquals(1, weaker)
     }
 
     @Test

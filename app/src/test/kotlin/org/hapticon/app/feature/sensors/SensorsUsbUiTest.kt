@@ -103,7 +103,8 @@ class SensorsUsbUiTest {
     @Test
     fun attachIntent_whileRunning_arrivesAsNewIntentAndListsTheBoard() {
         launch()
-        rule.onNode(hasText("Icons") and isSelected()).assertExists()
+        // The app opens on its chats.
+        rule.onNode(hasText("Chats") and isSelected()).assertExists()
 
         plugIn(uno)
         // What the system does for a singleTop activity that is already on top.

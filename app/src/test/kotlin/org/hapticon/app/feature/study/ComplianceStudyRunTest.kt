@@ -1,14 +1,23 @@
 package org.hapticon.app.feature.study
 
+import androidx.compose.ui.test.assertIsEnabled
 import androidx.compose.ui.test.assertIsNotEnabled
 import androidx.compose.ui.test.junit4.createComposeRule
+import androidx.compose.ui.test.onNodeWithTag
 import androidx.compose.ui.test.onNodeWithText
+import androidx.compose.ui.test.performClick
+import androidx.compose.ui.test.performScrollTo
+import androidx.compose.ui.test.performTouchInput
+import androidx.compose.ui.test.swipe
+import androidx.compose.ui.geometry.Offset
 import org.hapticon.app.feature.sensors.ElectrodeLevelsStore
 import org.hapticon.app.sensors.HubStimulatorLink
 import org.hapticon.app.sensors.StimulatorLink
 import org.hapticon.app.feature.sensors.TestStimulatorLink
 import org.hapticon.testing.TEST_UNO
 import org.hapticon.testing.TestUsbDevices
+import org.hapticon.sensor.electrotactile.ElectrotactileCalibrationResult
+import org.hapticon.sensor.electrotactile.StoredCalibration
 import org.hapticon.sensor.grains.FirmwareForceRange
 import org.hapticon.sensor.live.CommandWriter
 import org.hapticon.sensor.live.SensorSession
@@ -19,12 +28,14 @@ import org.hapticon.sensor.protocol.framed.DeviceInfo
 import org.hapticon.sensor.protocol.framed.FramedEncoder
 import org.hapticon.sensor.protocol.framed.FramedProtocol
 import org.hapticon.app.gesture.MainDispatcherRule
-import org.hapticon.sensor.safety.SafetyLimitException
+import org.hapticon.study.compliance.ComplianceAnswersCsv
 import org.hapticon.study.compliance.ComplianceStudy
+import org.hapticon.study.compliance.DrawingPoint
+import org.hapticon.study.compliance.ShapeDrawings
 import org.junit.Assert.assertEquals
 import org.junit.Assert.assertFalse
+import org.junit.Assert.assertNotNull
 import org.junit.Assert.assertNull
-import org.junit.Assert.assertThrows
 import org.junit.Assert.assertTrue
 import org.junit.Rule
 import org.junit.Test
@@ -32,8 +43,9 @@ import org.junit.rules.TemporaryFolder
 import org.junit.runner.RunWith
 import org.robolectric.RobolectricTestRunner
 import java.io.File
+import java.time.Instant
 
-/** Shaping Compliance's study run from the Study tab: conditions on the board at the calibrated levels, answers on disk. */
+/** Shaping Compliance's study run from the Study tab: calibrated before each repetition, conditions on the board, answers on disk. */
 @RunWith(RobolectricTestRunner::class)
 class ComplianceStudyRunTest {
     @get:Rule
@@ -45,7 +57,20 @@ class ComplianceStudyRunTest {
     @get:Rule
     val compose = createComposeRule()
 
-    private val levels = listOf(70, 71, 72, 73, 74, 75, 76, 77, 78)
+    /** The time the view model sees, moved on by the test. */
+    private var now = Instant.parse("2026-12-01T10:00:00Z")
+
+    /** The stored calibration the view model reads. */
+    private var stored: StoredCalibration? = null
+
+    /** A calibration finished now, every electrode at [step]. */
+    private fun calibrate(step: Int) {
+        now = now.plusSeconds(60)
+        stored = StoredCalibration(ElectrotactileCalibrationResult(List(9) { step }), now)
+    }
+
+    private fun viewModel(link: StimulatorLink, dir: File = File(folder.root, "compliance")) =
+        ComplianceViewModel(link, { stored }, dir, File(folder.root, "exports"), io = main.dispatcher, clock = { now })
 
     private fun ComplianceViewModel.state(): ComplianceUiState {
         main.dispatcher.scheduler.runCurrent()
@@ -53,120 +78,153 @@ class ComplianceStudyRunTest {
     }
 
     @Test
-    fun session_everyConditionOnceOnTheBoard_answersSyncedToCsv_meansAtTheEnd() {
+    fun published_threeBlocks_eachAfterAFreshCalibration_answersSigned_syncedToCsv() {
         val link = TestStimulatorLink(ready = true)
-        val dir = File(folder.root, "compliance")
-        val viewModel = ComplianceViewModel(link, { levels }, dir, io = main.dispatcher)
+        val viewModel = viewModel(link)
+        calibrate(60) // an old calibration: the session must not use it
+        now = now.plusSeconds(30)
         viewModel.setParticipant("p7")
         viewModel.setParticipantIndex(2)
-        viewModel.setRepetitions(1)
         viewModel.start()
 
-        val expectedOrder = ComplianceStudy.PROTOCOL.copy(repetitions = 1).trials(2)
-        for ((i, trial) in expectedOrder.withIndex()) {
+        val order = ComplianceStudy.PROTOCOL.trials(2)
+        for ((i, trial) in order.withIndex()) {
+            if (i % 12 == 0) {
+                val calibrate = viewModel.state() as ComplianceUiState.Calibrate
+                assertEquals(trial, calibrate.next)
+                assertEquals(i > 0, calibrate.isBreak)
+                assertFalse("the stored calibration is older than this step", calibrate.fresh)
+                viewModel.continueAfterCalibration()
+                assertEquals("Calibrate the electrodes first: the study recalibrates before this repetition", viewModel.state().message)
+                // Each repetition at its own calibration's levels (003_8ca1dc8f53472543.txt:152).
+                calibrate(70 + i)
+                viewModel.refreshCalibration()
+                assertTrue((viewModel.state() as ComplianceUiState.Calibrate).fresh)
+                viewModel.continueAfterCalibration()
+            }
             val state = viewModel.state() as ComplianceUiState.Trial
             assertEquals(trial, state.trial)
             assertTrue(state.sent)
-            val params = link.sent[i]
+            val params = link.sent.last()
             assertEquals(trial.condition.grains, params.grainCount)
             assertEquals(trial.condition.mask.pattern, params.pattern)
-            assertEquals(levels, params.steps)
-            viewModel.answer(if (trial.condition.grains == 39) "20" else "10")
+            assertEquals(List(9) { 70 + i / 12 * 12 }, params.steps)
+            now = now.plusSeconds(20)
+            // Signed ratings against the desk: more compliant positive, less negative, the same 0.
+            viewModel.answer(
+                when (trial.condition.grains) {
+                    39 -> "4"
+                    19 -> "1,5"
+                    else -> if (trial.repetition == 0) "-1" else "0"
+                },
+            )
         }
         val done = viewModel.state() as ComplianceUiState.Done
-        assertEquals(20, done.answers)
-        assertEquals(20, link.sent.size)
-        // One participant: normalised by their own geometric mean times the grand one, i.e. unchanged.
-        assertEquals(20.0, done.means.getValue("g39-triangle"), 1e-9)
-        assertEquals(10.0, done.means.getValue("g0-large-square"), 1e-9)
+        assertEquals(36, done.answers)
+        assertEquals(36, link.sent.size)
+        assertEquals("p7-shaping-compliance.csv", done.file.name)
+        val lines = done.file.readLines()
+        assertEquals(ComplianceAnswersCsv.HEADER, lines[0])
+        assertEquals(37, lines.size)
+        val first = order[0]
+        assertTrue(lines[1], lines[1].startsWith("shaping-compliance,p7,1,1,${first.condition.id},${first.condition.grains},"))
+        // Read back as the analysis reads it: 36 ratings, 12 per repetition.
+        val read = ComplianceAnswersCsv.read(done.file.readText(), "p7")
+        assertEquals(listOf(12, 12, 12), read.ratings.groupBy { it.repetition }.values.map { it.size })
+        assertEquals(12, done.medians.size)
+        assertNull(done.summaryProblem)
+        assertTrue(done.medians.getValue("g39-small-square") > done.medians.getValue("g9-small-square"))
 
-        val lines = File(dir, "p7.csv").readLines()
-        assertEquals(ComplianceViewModel.CSV_HEADER, lines[0])
-        val first = expectedOrder[0]
-        assertEquals("p7,0,${first.condition.id},${first.condition.grains},${first.condition.mask.name.lowercase()},0,${if (first.condition.grains == 39) 20.0 else 10.0}", lines[1])
-        assertEquals(21, lines.size)
+        viewModel.exportAnswers()
+        val exported = (viewModel.state() as ComplianceUiState.Done).exported
+        assertNotNull(exported)
+        assertEquals(done.file.readText(), exported!!.readText())
+        assertEquals(File(folder.root, "exports"), exported.parentFile)
     }
 
     @Test
-    fun answer_notANumberZeroOrUnsent_isRefusedAndNothingIsWritten() {
+    fun answer_notANumberOrUnsent_isRefused_zeroAndNegativeAccepted() {
         val link = TestStimulatorLink(ready = false)
         val dir = File(folder.root, "compliance")
-        val viewModel = ComplianceViewModel(link, { levels }, dir, io = main.dispatcher)
+        val viewModel = viewModel(link, dir)
         viewModel.setParticipant("p1")
         viewModel.start()
+        calibrate(60)
+        viewModel.continueAfterCalibration()
         assertEquals("Connect the board (Framed protocol) to render the condition", viewModel.state().message)
         viewModel.answer("5")
         assertEquals("The condition has not reached the board yet", viewModel.state().message)
 
         link.ready.value = true
         viewModel.sendCondition()
-        for (bad in listOf("soft", "0", "-3", "NaN", "Infinity")) {
+        for (bad in listOf("soft", "NaN", "Infinity", "1.2.3", " ")) {
             viewModel.answer(bad)
-            assertEquals(bad, "Type a positive number, e.g. 10", viewModel.state().message)
+            assertEquals(bad, "Type a number: positive if more compliant than the desk, negative if less, 0 if the same", viewModel.state().message)
             assertEquals(0, (viewModel.state() as ComplianceUiState.Trial).trial.index)
         }
-        assertTrue(!File(dir, "p1.csv").exists())
+        assertFalse(File(dir, "p1-shaping-compliance.csv").exists())
+        viewModel.answer("0")
+        viewModel.state()
+        viewModel.answer("-3")
+        assertEquals(2, (viewModel.state() as ComplianceUiState.Trial).trial.index)
+        assertEquals(listOf("0.0", "-3.0"), File(dir, "p1-shaping-compliance.csv").readLines().drop(1).map { it.split(',')[8] })
     }
 
     @Test
-    fun start_withoutCalibrationOrName_isRefused() {
-        val store = ElectrodeLevelsStore(File(folder.root, ElectrodeLevelsStore.FILE_NAME))
-        val viewModel = ComplianceViewModel(TestStimulatorLink(ready = true), store::load, folder.root, io = main.dispatcher)
+    fun task2_yesNoThenDrawing_storedWithTheTrial() {
+        val link = TestStimulatorLink(ready = true)
+        val viewModel = viewModel(link)
+        viewModel.selectProtocol(ComplianceStudy.SHAPES_ID)
+        viewModel.setParticipant("p3")
         viewModel.start()
-        assertEquals("Name the participant with letters, digits, - or _", viewModel.state().message)
-        viewModel.setParticipant("p2")
-        viewModel.start()
-        assertEquals("Calibrate the electrodes first: Sensors → Electrotactile array", viewModel.state().message)
+        calibrate(80)
+        viewModel.continueAfterCalibration()
+        val first = viewModel.state() as ComplianceUiState.Trial
+        assertEquals(ComplianceStudy.SHAPES_PROTOCOL, first.protocol)
+        assertEquals(39, link.sent.single().grainCount)
 
-        store.save(levels)
-        viewModel.setParticipant("p2")
-        assertEquals(levels, (viewModel.state() as ComplianceUiState.Setup).levels)
-        viewModel.start()
-        assertTrue(viewModel.state() is ComplianceUiState.Trial)
+        val outline = listOf(DrawingPoint(0.3, 0.3), DrawingPoint(0.7, 0.3), DrawingPoint(0.7, 0.7), DrawingPoint(0.3, 0.7))
+        viewModel.answerDrawing(null, listOf(outline))
+        assertEquals("First answer: did it feel more compliant than the desk?", viewModel.state().message)
+        viewModel.answerDrawing(true, listOf(outline.take(2)))
+        assertEquals("Draw the outline of the area where you felt compliance", viewModel.state().message)
+        viewModel.answerDrawing(true, listOf(outline, outline.take(2)))
+        assertEquals(1, (viewModel.state() as ComplianceUiState.Trial).trial.index)
+        // Felt less compliant: kept, without a drawing (the analysis leaves it out, as the paper removed its one).
+        viewModel.answerDrawing(false, emptyList())
+        val third = viewModel.state() as ComplianceUiState.Trial
+        assertEquals(2, third.trial.index)
+
+        val read = ComplianceAnswersCsv.read(File(folder.root, "compliance/p3-shaping-compliance-shapes.csv").readText(), "p3")
+        assertEquals(listOf(true, false), read.drawings.map { it.moreCompliant })
+        assertEquals(listOf(outline), read.drawings[0].contours)
+        assertEquals(first.trial.condition, read.drawings[0].condition)
+        assertEquals(ShapeDrawings.encode(listOf(outline)), File(folder.root, "compliance/p3-shaping-compliance-shapes.csv").readLines()[1].split(',')[10])
     }
 
     @Test
-    fun levelsStore_refusesPastTheCapAndReadsADamagedFileAsNone() {
-        val file = File(folder.root, ElectrodeLevelsStore.FILE_NAME)
-        val store = ElectrodeLevelsStore(file)
-        assertNull(store.load())
-        store.save(List(9) { 200 })
-        assertEquals(List(9) { 200 }, store.load())
-        assertThrows(SafetyLimitException::class.java) { store.save(List(8) { 60 } + 201) }
-        assertEquals(List(9) { 200 }, store.load())
-        file.writeText("60,60,60,60,60,60,60,60,201")
-        assertNull(store.load())
-        file.writeText("60,60,NaN")
-        assertNull(store.load())
-    }
-
-    @Test
-    fun answer_isSyncedOffMain_aDoubleTapWritesOnce_aFailedWriteKeepsTheTrial() {
+    fun answer_failedWrite_keepsTheTrial_doubleTapWritesOnce() {
         val link = TestStimulatorLink(ready = true)
         val dir = File(folder.root, "compliance")
-        var stored: List<Int> = levels
-        val viewModel = ComplianceViewModel(link, { stored }, dir, io = main.dispatcher)
+        val viewModel = viewModel(link, dir)
         viewModel.setParticipant("p5")
         viewModel.start()
+        calibrate(65)
+        viewModel.continueAfterCalibration()
         val first = viewModel.state() as ComplianceUiState.Trial
-        // Two taps before the first answer is synced: one line, one step forward.
         viewModel.answer("10")
         viewModel.answer("12")
-        val second = viewModel.state() as ComplianceUiState.Trial
-        assertEquals(first.trial.index + 1, second.trial.index)
-        assertEquals(listOf(ComplianceViewModel.CSV_HEADER), File(dir, "p5.csv").readLines().take(1))
-        assertEquals(2, File(dir, "p5.csv").readLines().size)
-        assertTrue(File(dir, "p5.csv").readLines()[1].endsWith(",10.0"))
-        // A calibration stored mid-session applies to the next session, not to this one's remaining trials.
-        stored = List(9) { 90 }
-        viewModel.sendCondition()
-        assertEquals(levels, link.sent.last().steps)
+        assertEquals(first.trial.index + 1, (viewModel.state() as ComplianceUiState.Trial).trial.index)
+        assertEquals(2, File(dir, "p5-shaping-compliance.csv").readLines().size)
 
         // The answers folder cannot be written (a file stands where it should be): the trial stays, and says so.
         val blocked = folder.newFile("blocked")
-        val failing = ComplianceViewModel(link, { levels }, blocked, io = main.dispatcher)
+        val failing = viewModel(link, blocked)
         failing.setParticipant("p6")
         failing.start()
+        failing.continueAfterCalibration() // p5's calibration is older than this step
+        calibrate(66)
+        failing.continueAfterCalibration()
         val trial = failing.state() as ComplianceUiState.Trial
         failing.answer("10")
         val after = failing.state() as ComplianceUiState.Trial
@@ -175,16 +233,31 @@ class ComplianceStudyRunTest {
     }
 
     @Test
+    fun start_withoutName_isRefused_andTheStoredCalibrationIsShown() {
+        val store = ElectrodeLevelsStore(File(folder.root, ElectrodeLevelsStore.FILE_NAME))
+        val viewModel = ComplianceViewModel(TestStimulatorLink(ready = true), store::stored, folder.root, io = main.dispatcher)
+        viewModel.start()
+        assertEquals("Name the participant with letters, digits, - or _", viewModel.state().message)
+        assertNull((viewModel.state() as ComplianceUiState.Setup).calibration)
+        store.save(List(9) { 70 })
+        viewModel.refreshCalibration()
+        assertEquals(List(9) { 70 }, (viewModel.state() as ComplianceUiState.Setup).calibration!!.result.steps)
+    }
+
+    @Test
     fun condition_usesTheBoardsAnnouncedRange_andNoRangeSendsNothing() {
         val link = TestStimulatorLink(ready = true, range = FirmwareForceRange.ofAdcBits(12))
-        val viewModel = ComplianceViewModel(link, { levels }, File(folder.root, "compliance"), io = main.dispatcher)
+        val viewModel = viewModel(link)
         viewModel.setParticipant("p3")
         viewModel.start()
-        viewModel.state() // the calibration is read off the main thread, then the first condition goes out
+        calibrate(60)
+        viewModel.continueAfterCalibration()
+        viewModel.state()
         val first = link.sent.single()
         assertEquals(0 to 4095, first.minForce to first.maxForce)
+        // The dead time is the grain's own delivery on its electrodes (003_8ca1dc8f53472543.txt:97).
+        assertEquals(8000 + 250 * first.pattern.activeCount, first.grainMicros)
 
-        // A board whose force channel is in physical units announces no full scale: nothing is guessed or sent.
         link.range = null
         viewModel.sendCondition()
         assertEquals(1, link.sent.size)
@@ -206,16 +279,20 @@ class ComplianceStudyRunTest {
             while (hub.currentInfo()?.adcBits != 12 && System.nanoTime() < deadline) Thread.sleep(5)
             assertEquals(12, hub.currentInfo()?.adcBits)
 
-            val viewModel = ComplianceViewModel(HubStimulatorLink(hub), { levels }, File(folder.root, "compliance"), io = main.dispatcher)
+            val viewModel = viewModel(HubStimulatorLink(hub))
             viewModel.setParticipant("p4")
-            viewModel.setRepetitions(1)
             viewModel.start()
-            viewModel.state()
-            val order = ComplianceStudy.PROTOCOL.copy(repetitions = 1).trials(0)
-            repeat(order.size - 1) {
-                viewModel.answer("10")
-                viewModel.state() // synced off the main thread, then the next condition goes out
+            val order = ComplianceStudy.PROTOCOL.trials(0)
+            for ((i, _) in order.withIndex()) {
+                viewModel.state() // the last answer synced, then the next trial or calibration
+                if (i % 12 == 0) {
+                    calibrate(60 + i)
+                    viewModel.continueAfterCalibration()
+                    viewModel.state()
+                }
+                viewModel.answer("1")
             }
+            assertTrue(viewModel.state() is ComplianceUiState.Done)
 
             val frames = splitFrames(port.writtenBytes())
             assertEquals(order.size, frames.size)
@@ -226,9 +303,9 @@ class ComplianceStudyRunTest {
                 val payload = frame.subList(4, frame.size - 2)
                 assertEquals(trial.condition.id, trial.condition.grains, payload[0])
                 assertEquals(4095, payload[4] or (payload[5] shl 8))
-                val bits = payload[6] or (payload[7] shl 8)
-                assertEquals(trial.condition.id, trial.condition.mask.pattern.bits, bits)
-                assertEquals(levels, payload.subList(8, 17))
+                assertEquals(trial.condition.id, trial.condition.mask.pattern.bits, payload[6] or (payload[7] shl 8))
+                assertEquals(List(9) { 60 + i / 12 * 12 }, payload.subList(8, 17))
+                assertEquals(8000 + 250 * trial.condition.mask.pattern.activeCount, payload[19] or (payload[20] shl 8))
             }
         } finally {
             hub.disconnect()
@@ -274,11 +351,33 @@ class ComplianceStudyRunTest {
     @Test
     fun screen_trialNotSent_nextIsDisabled() {
         val trial = ComplianceStudy.PROTOCOL.trials(0).first()
-        val state = ComplianceUiState.Trial("p1", trial, 60, ComplianceStudy.PROTOCOL.instructions, sent = false, boardReady = false, message = null)
+        val state = ComplianceUiState.Trial("p1", ComplianceStudy.PROTOCOL, trial, 36, sent = false, boardReady = false, message = null)
         compose.setContent { ComplianceScreen(state, ComplianceActions()) }
-        compose.onNodeWithText("p1 · trial 1 of 60").assertExists()
+        compose.onNodeWithText("p1 · repetition 1 of 3 · trial 1 of 36").assertExists()
         compose.onNodeWithText("Next").assertIsNotEnabled()
         compose.onNodeWithText("Waiting for the board…").assertExists()
+        compose.onNodeWithText("Compliance (bare desk = 0)").assertExists()
         compose.onNodeWithText("Researcher: end the session").assertExists()
+    }
+
+    @Test
+    fun screen_drawing_aSwipeIsOneClosedContour_savedWithTheAnswer() {
+        val trial = ComplianceStudy.SHAPES_PROTOCOL.trials(0).first()
+        val state = ComplianceUiState.Trial("p3", ComplianceStudy.SHAPES_PROTOCOL, trial, 15, sent = true, boardReady = true, message = null)
+        var saved: Pair<Boolean?, List<List<DrawingPoint>>>? = null
+        compose.setContent { ComplianceScreen(state, ComplianceActions(onDrawing = { more, contours -> saved = more to contours })) }
+        compose.onNodeWithText("Save drawing").assertIsNotEnabled()
+        compose.onNodeWithText("Yes").performScrollTo().performClick()
+        compose.onNodeWithTag(DRAWING_TAG).performScrollTo().performTouchInput {
+            swipe(Offset(width * 0.3f, height * 0.3f), Offset(width * 0.7f, height * 0.7f), durationMillis = 400)
+        }
+        compose.onNodeWithText("Save drawing").performScrollTo().assertIsEnabled().performClick()
+        val (more, contours) = saved!!
+        assertEquals(true, more)
+        assertEquals(1, contours.size)
+        val c = contours.single()
+        assertTrue("${c.size} points", c.size >= 3)
+        assertEquals(0.3, c.first().x, 0.05)
+        assertEquals(0.7, c.last().y, 0.05)
     }
 }

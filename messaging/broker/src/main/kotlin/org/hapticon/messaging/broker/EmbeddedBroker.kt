@@ -45,6 +45,8 @@ import java.util.concurrent.ExecutionException
  *   reach a laptop, or `0.0.0.0` for every interface.
  * @property tls TLS listeners next to the plain one (see [BrokerTls]), each with its own client-certificate
  *   mode; none by default.
+ * @property limits what one participant may ask of the broker (its share of others' queues, failed logins,
+ *   retained publishes); applied with [BrokerSecurity.Authenticated] only.
  */
 public class EmbeddedBroker(
     public val dataDirectory: File,
@@ -52,6 +54,7 @@ public class EmbeddedBroker(
     public val security: BrokerSecurity,
     public val host: String = HOST,
     public val tls: List<BrokerTls> = emptyList(),
+    public val limits: BrokerLimits = BrokerLimits(),
 ) : AutoCloseable {
     private var broker: EmbeddedHiveMQ? = null
     private var boundPort: Int = requestedPort
@@ -136,7 +139,7 @@ public class EmbeddedBroker(
                 EmbeddedExtension.builder()
                     .withId("hapticon-security").withName("Hapticon users and ACL").withVersion("1")
                     .withPriority(1000).withStartPriority(1000)
-                    .withExtensionMain(SecurityExtension(security))
+                    .withExtensionMain(SecurityExtension(security, limits))
                     .build(),
             )
             .build()

@@ -49,9 +49,13 @@ public class PasswordFile(public val file: File) {
      * [IOException] when the file cannot be read.
      */
     public fun verify(user: String, password: ByteArray): Boolean {
-        val line = synchronized(this) { current()[user] } ?: return false
+        val line = hashOf(user) ?: return false
         return matches(line, password)
     }
+
+    /** [user]'s hash as the file has it now, or null when [user] is not in it. Throws [IOException] when it cannot be read. */
+    @Synchronized
+    internal fun hashOf(user: String): String? = current()[user]
 
     /**
      * Adds [user] with [password], or replaces its password, creating the file (mode 600) when missing.

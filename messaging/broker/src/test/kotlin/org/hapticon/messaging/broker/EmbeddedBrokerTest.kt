@@ -41,7 +41,10 @@ class EmbeddedBrokerTest {
         assertArrayEquals(CONNACK_ACCEPTED, connect(InetAddress.getByName(EmbeddedBroker.HOST), broker.port))
         assertArrayEquals(CONNACK_NOT_AUTHORIZED, connect(InetAddress.getByName(EmbeddedBroker.HOST), broker.port, user = null))
         assertArrayEquals(CONNACK_BAD_PASSWORD, connect(InetAddress.getByName(EmbeddedBroker.HOST), broker.port, password = "guess"))
-        assertArrayEquals(CONNACK_IDENTIFIER_REJECTED, connect(InetAddress.getByName(EmbeddedBroker.HOST), broker.port, clientId = "bob"))
+        // Only USER:DEVICE of the user itself: not its bare name, not another user's device, not a short device id.
+        for (foreign in listOf("alice", "bob", "bob:$DEVICE", "alice:${DEVICE.drop(1)}", "alice:${DEVICE.uppercase()}")) {
+            assertArrayEquals(foreign, CONNACK_IDENTIFIER_REJECTED, connect(InetAddress.getByName(EmbeddedBroker.HOST), broker.port, clientId = foreign))
+        }
         val other = NetworkInterface.networkInterfaces().toList()
             .flatMap { it.inetAddresses.toList() }
             .firstOrNull { it is Inet4Address && !it.isLoopbackAddress }
@@ -101,7 +104,7 @@ class EmbeddedBrokerTest {
         assertEquals(emptyMap<String, Boolean>(), broker.sessions())
 
         assertArrayEquals(CONNACK_ACCEPTED, connect(loopback, broker.port, clean = false))
-        assertEquals(mapOf("alice" to false), awaitSessions(broker) { it == mapOf("alice" to false) })
+        assertEquals(mapOf("alice:$DEVICE" to false), awaitSessions(broker) { it == mapOf("alice:$DEVICE" to false) })
     }
 
     /** The broker's sessions once [done] holds (a closed socket takes the broker a moment to notice), or the last seen. */
@@ -123,7 +126,7 @@ class EmbeddedBrokerTest {
 
     /** Sends an MQTT 3.1.1 CONNECT ([clean] session or not) as [user] (none when null) and returns the 4-byte reply. */
     private fun connect(
-        host: InetAddress, port: Int, user: String? = "alice", password: String = "alice-secret", clientId: String = user ?: "t",
+        host: InetAddress, port: Int, user: String? = "alice", password: String = "alice-secret", clientId: String = user?.let { "$it:$DEVICE" } ?: "t",
         clean: Boolean = true,
     ): ByteArray =
         Socket(host, port).use { socket ->
@@ -139,6 +142,7 @@ class EmbeddedBrokerTest {
         }
 
     private companion object {
+        const val DEVICE = "0123456789abcdef0123456789abcdef"
         val CONNACK_ACCEPTED = byteArrayOf(0x20, 0x02, 0x00, 0x00)
         val CONNACK_IDENTIFIER_REJECTED = byteArrayOf(0x20, 0x02, 0x00, 0x02)
         val CONNACK_BAD_PASSWORD = byteArrayOf(0x20, 0x02, 0x00, 0x04)
