@@ -73,6 +73,9 @@ class ChatComponent(
     /** A conversation to open (a tapped message notification), waiting for the Chats screen. */
     val pendingConversation: MutableStateFlow<String?> = MutableStateFlow(null)
 
+    /** Text shared to Hapticon from another app, waiting for the Chats screen to put it in a conversation's composer. */
+    val pendingShare: MutableStateFlow<SharedText?> = MutableStateFlow(null)
+
     /** What this phone can do now (the vibrator is asked again each time: cheap, and a test may change it). */
     val device: DeviceCapabilities get() = detectDevice()
 
@@ -272,6 +275,12 @@ class ChatComponent(
 
     }
 }
+
+/**
+ * [text] shared from another app's share sheet, for [peer]'s conversation when the user picked it there (a sharing
+ * shortcut, `Intent.EXTRA_SHORTCUT_ID`), else for the chat the user opens next.
+ */
+data class SharedText(val peer: String?, val text: String)
 
 /** What [ChatComponent.peerKeys] knows of a peer's end-to-end keys. */
 enum class PeerKeys {

@@ -288,13 +288,20 @@ class MessageNotifier(
         const val EXTRA_PEER: String = "peer"
         const val EXTRA_MESSAGE: String = "message"
         const val KEY_REPLY: String = "reply"
-        /** The category of the conversation shortcuts. */
+        /**
+         * The category of the conversation shortcuts: the share target's in `res/xml/shortcuts.xml`, which makes them
+         * sharing shortcuts (Direct Share offers each chat; AOSP `ShortcutService` matches a shortcut's categories
+         * against the manifest's share targets).
+         */
         const val SHORTCUT_CATEGORY: String = "org.hapticon.app.category.CONVERSATION"
         private const val MAX_LINES = 8
         private const val MAX_REMEMBERED = 500
 
         /** The id of [peer]'s conversation: its shortcut's and its [LocusIdCompat]'s (user names are valid ids as they are). */
         fun shortcutId(peer: String): String = "chat-$peer"
+
+        /** The peer whose conversation shortcut [id] is ([shortcutId]), or null for another id. */
+        fun peerOfShortcut(id: String?): String? = id?.takeIf { it.startsWith("chat-") }?.removePrefix("chat-")?.takeIf { it.isNotEmpty() }
 
         /** The id of [peer]'s channel of [kind]. */
         fun channelId(peer: String, kind: AlertChannel): String = when (kind) {

@@ -105,6 +105,8 @@ class MessageNotifierTest {
         // What AOSP ShortcutHelper.isConversationShortcut checks: long-lived and enabled (isLongLived is hidden API).
         assertTrue(ShortcutInfo::class.java.getMethod("isLongLived").invoke(shortcut) as Boolean)
         assertTrue(shortcut.isEnabled)
+        // A sharing shortcut: its category is the manifest's share target's (ShareToChatTest reads that).
+        assertEquals(setOf(MessageNotifier.SHORTCUT_CATEGORY), shortcut.categories)
         assertEquals(MessageNotifier.ACTION_OPEN_CHAT, shortcut.intent!!.action)
         assertEquals("bob", shortcut.intent!!.getStringExtra(MessageNotifier.EXTRA_PEER))
     }

@@ -102,6 +102,31 @@ fun ChatsRoute(component: ChatComponent, onOpenStudy: () -> Unit = {}, navigatio
             screen = ChatScreen.CONVERSATION
         }
     }
+    // Shared text: straight into the picked conversation's composer, or held for the chat the user opens next.
+    var sharedDraft by rememberSaveable { mutableStateOf<String?>(null) }
+    var choosingForShare by rememberSaveable { mutableStateOf(false) }
+    val pendingShare by component.pendingShare.collectAsStateWithLifecycle()
+    LaunchedEffect(pendingShare) {
+        val share = pendingShare ?: return@LaunchedEffect
+        component.pendingShare.value = null
+        sharedDraft = share.text
+        val to = share.peer
+        if (to != null && Topics.isValidUserName(to)) {
+            peer = to
+            screen = ChatScreen.CONVERSATION
+        } else {
+            screen = ChatScreen.LIST
+            choosingForShare = true
+        }
+    }
+    if (choosingForShare) {
+        AlertDialog(
+            onDismissRequest = { choosingForShare = false },
+            confirmButton = { TextButton(onClick = { choosingForShare = false }) { Text("OK") } },
+            title = { Text("Share") },
+            text = { Text("Open a chat: the shared text will be in its message field, ready to send.") },
+        )
+    }
     inviteMessage?.let { message ->
         AlertDialog(
             onDismissRequest = { inviteMessage = null },
@@ -124,7 +149,10 @@ fun ChatsRoute(component: ChatComponent, onOpenStudy: () -> Unit = {}, navigatio
                 screen = ChatScreen.LIST
             } else {
                 BackHandler(onBack = back)
-                ConversationRoute(component, current, onBack = back, onEditIcon = { screen = ChatScreen.EDITOR })
+                ConversationRoute(
+                    component, current, onBack = back, onEditIcon = { screen = ChatScreen.EDITOR },
+                    sharedText = sharedDraft, onSharedTextUsed = { sharedDraft = null },
+                )
             }
         }
         ChatScreen.SETTINGS -> {
@@ -209,7 +237,14 @@ fun ChatListRoute(
 }
 
 @Composable
-fun ConversationRoute(component: ChatComponent, peer: String, onBack: () -> Unit, onEditIcon: () -> Unit) {
+fun ConversationRoute(
+    component: ChatComponent,
+    peer: String,
+    onBack: () -> Unit,
+    onEditIcon: () -> Unit,
+    sharedText: String? = null,
+    onSharedTextUsed: () -> Unit = {},
+) {
     val viewModel: ConversationViewModel = viewModel(
         key = "conversation-$peer",
         factory = viewModelFactory {
@@ -247,6 +282,8 @@ fun ConversationRoute(component: ChatComponent, peer: String, onBack: () -> Unit
             onSelectPattern = viewModel::selectPattern, onPreviewPattern = viewModel::play,
         ),
         enterSends = prefs.enterSends,
+        sharedText = sharedText,
+        onSharedTextUsed = onSharedTextUsed,
     )
 }
 
