@@ -528,6 +528,13 @@ class AndroidApp:
         jvm_args = [
             "-Drobolectric.offline=true", f"-Drobolectric.dependency.dir={self.tools.robolectric_sdk_dir}",
             "-Drobolectric.logging.enabled=false",
+            # Closing a ParcelFileDescriptor (a content URI read, e.g. a photo of an invite code) goes through
+            # Robolectric's FileDescriptorInterceptor, which moves FileDescriptor.fd by reflection.
+            "--add-opens=java.base/java.io=ALL-UNNAMED",
+            # JDK 17.0.15's C2 crashed (SIGSEGV in Node::uncast) compiling this Robolectric-instrumented method and
+            # took the whole test JVM with it; this one method is interpreted instead (it is short and rarely hot).
+            "-XX:CompileCommand=quiet",
+            "-XX:CompileCommand=exclude,android.database.sqlite.SQLiteConnection::*applyBlockGuardPolicy",
             f"-Droborazzi.test.{mode}=true", f"-Droborazzi.output.dir={roborazzi}",
             f"-Droborazzi.compare.output.dir={roborazzi}", f"-Droborazzi.result.dir={roborazzi}/results",
             f"-Dhapticon.screens.dir={os.path.join(self.b.root, 'docs', 'images', 'screens')}"]

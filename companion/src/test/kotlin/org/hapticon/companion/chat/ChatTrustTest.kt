@@ -38,7 +38,7 @@ class ChatTrustTest {
     )
 
     /** A raw MQTT client logged in as [user]: it publishes exactly the bytes a test gives it. */
-    private fun raw(user: String): Mqtt3BlockingClient = MqttClient.builder().useMqttVersion3().identifier(user)
+    private fun raw(user: String): Mqtt3BlockingClient = MqttClient.builder().useMqttVersion3().identifier("$user:" + org.hapticon.messaging.mqtt.DeviceId.generate().value)
         .serverHost("127.0.0.1").serverPort(fixture.broker.port)
         .simpleAuth().username(user).password(ChatFixture.register(user).toByteArray()).applySimpleAuth()
         .buildBlocking().also { it.connect() }
