@@ -247,7 +247,11 @@ class TalkBackNodeTreeTest {
         val waveform = VibrationWaveform.render(HapticIcon.HUG)
         assertEquals(RecordedVibration(waveform.timings().toList(), waveform.amplitudes().toList()), lastVibration(fixture.vibrator))
         // Told once Android played it: after the vibration, not with the press.
-        compose.waitUntil(5_000) { felt.isNotEmpty() }
+        // After the play: its continuation runs on the main looper.
+        compose.waitUntil(10_000) {
+            org.robolectric.Shadows.shadowOf(android.os.Looper.getMainLooper()).idle()
+            felt.isNotEmpty()
+        }
         assertEquals(listOf("bob" to hug.id), felt.toList())
     }
 
