@@ -119,13 +119,18 @@ class AndroidApp:
             os.replace(z + ".tmp", z)
         procs.clear()
 
-    def _merge_manifest(self, libs: list[dict], out: str) -> str:
+    def _main_manifest(self) -> str:
+        """The module's own manifest, before the libraries' are merged into it."""
         main = os.path.join(self.src, "AndroidManifest.xml")
         if not os.path.exists(main):
             raise BuildError(f"{main} not found")
         text = open(main).read()
         if "<uses-sdk" in text:
             raise BuildError(f"{main}: declare minSdk/targetSdk in build.gradle.kts, not <uses-sdk>")
+        return text
+
+    def _merge_manifest(self, libs: list[dict], out: str) -> str:
+        text = self._main_manifest()
         # AGP injects the namespace as the package; the merger needs it on the main manifest.
         text = re.sub(r"<manifest\b", f'<manifest package="{self.namespace}"', text, count=1)
         os.makedirs(out, exist_ok=True)
@@ -214,8 +219,7 @@ class AndroidApp:
         runtime = self.b.runtime_classpath(self.m, "main")
         project_entries = [e for e in runtime if e.startswith(self.b.out) or os.path.isdir(e)]
         library_jars, consumer_rules = self._library_inputs()
-        rules = [os.path.join(self.m.directory, f) for f in ("proguard-rules.pro", "proguard-debug-rules.pro")]
-        rules += [os.path.join(os.path.dirname(self.res_apk), "aapt2-rules.pro")] + consumer_rules
+        rules = self._debug_rules(consumer_rules)
         stamp = self.apk + ".stamp"
         fp = fingerprint(project_entries, library_jars, self.res_apk, self.r_jar, *rules)
         if os.path.exists(self.apk) and os.path.exists(stamp) and open(stamp).read() == fp:
@@ -239,6 +243,11 @@ class AndroidApp:
         with open(stamp, "w") as f:
             f.write(fp)
         return self.apk
+
+    def _debug_rules(self, consumer_rules: list[str]) -> list[str]:
+        """The keep rules of the debug APK's library shrinking ([_dex])."""
+        rules = [os.path.join(self.m.directory, f) for f in ("proguard-rules.pro", "proguard-debug-rules.pro")]
+        return rules + [os.path.join(os.path.dirname(self.res_apk), "aapt2-rules.pro")] + consumer_rules
 
     # -- release APK -------------------------------------------------------------------------------
     def assemble_release(self, signing: "Signing") -> str:
@@ -324,6 +333,20 @@ class AndroidApp:
         run([self.tools.java, "-Xmx3g", "-cp", self.tools.r8, "com.android.tools.r8.D8", "--release",
              "--min-api", self.min_sdk, "--lib", self.tools.android_jar, "--lib", self.tools.java_home, *args], what)
 
+    def _dex_program(self, program: str, library_jars: list[str], library_dex: list[str], out: str) -> list[str]:
+        """The module's own classes ([program], a jar) dexed by D8 into [out] against the libraries, unshrunk; the two dex
+        sets must not define one class twice (e.g. a global synthetic made for both)."""
+        shutil.rmtree(out, ignore_errors=True)
+        os.makedirs(out)
+        self._d8([*_each("--classpath", library_jars), "--output", out, program], f"D8 of {self.m.path}'s classes")
+        program_dex = sorted((os.path.join(out, f) for f in os.listdir(out)), key=_dex_order)
+        library_types = set().union(*(dex_type_names(open(d, "rb").read()) for d in library_dex))
+        program_types = set().union(*(dex_type_names(open(d, "rb").read()) for d in program_dex))
+        clash = library_types & program_types
+        if clash:
+            raise BuildError(f"classes defined by both {self.m.path} and its libraries: {sorted(clash)[:5]}")
+        return program_dex
+
     def _library_inputs(self) -> tuple[list[str], list[str]]:
         """The libraries' jars (an AAR's classes.jar and libs/*.jar) and the consumer keep rules their AARs ship."""
         library_jars, consumer_rules = [], []
@@ -389,20 +412,7 @@ class AndroidApp:
         if lost:
             raise BuildError(f"the shrunk libraries lack classes the app uses: {', '.join(lost[:5])}")
         info(f"{len(named)} library classes the app uses are in the shrunk libraries")
-        program_out = os.path.join(work, "program")
-        shutil.rmtree(program_out, ignore_errors=True)
-        os.makedirs(program_out)
-        classpath = []
-        for j in library_jars:
-            classpath += ["--classpath", j]
-        self._d8([*classpath, "--output", program_out, program], "D8 of app classes")
-        program_dex = sorted((os.path.join(program_out, f) for f in os.listdir(program_out)), key=_dex_order)
-        # Two dex sets must not define one class twice (e.g. a global synthetic made for both).
-        library_types = set().union(*(dex_type_names(open(d, "rb").read()) for d in library_dex))
-        program_types = set().union(*(dex_type_names(open(d, "rb").read()) for d in program_dex))
-        clash = library_types & program_types
-        if clash:
-            raise BuildError(f"classes defined by both the app and its libraries: {sorted(clash)[:5]}")
+        program_dex = self._dex_program(program, library_jars, library_dex, os.path.join(work, "program"))
         manifest = os.path.join(os.path.dirname(self.res_apk), "AndroidManifest.xml")
         classes, members, _ = smoke_check(library_dex + program_dex, required_classes(program, manifest),
                                           required_members(program, library_jars, os.path.join(self.b.cache, "field-lookups")))
