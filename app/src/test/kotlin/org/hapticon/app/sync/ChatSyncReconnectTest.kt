@@ -136,7 +136,7 @@ class ChatSyncReconnectTest {
         val sync = ChatSync(
             repository, repository, settings,
             { user, url, password -> MqttMessenger(MqttSettings(BrokerAddress.parse(url), user, password, phoneDevice, reconnectPolicy = twoMinutes)).also { made += it } },
-            AdaptiveHapticPlayer(vibrator, { device }, { null }, renderContext = EmptyCoroutineContext), VibrationRateLimiter(Clock.MONOTONIC),
+            AdaptiveHapticPlayer(usageVibrator(vibrator), { device }, { null }, renderContext = EmptyCoroutineContext), VibrationRateLimiter(Clock.MONOTONIC),
             { user -> RendererChoice.capabilitiesOf(user, device, null) }, scope,
         )
         sync.start()
