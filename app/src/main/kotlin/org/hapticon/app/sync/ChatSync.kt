@@ -201,7 +201,18 @@ class ChatSync(
                     // Set before the session starts, so a waiter never takes the previous session's state for this one's.
                     connectionState.value = ConnectionState.Connecting(null)
                     sessionTarget.value = SessionTarget(user, broker, password)
-                    val messenger = messengerFactory(user, broker, password) ?: return@collectLatest
+                    val messenger = try {
+                        messengerFactory(user, broker, password)
+                    } catch (e: Exception) {
+                        if (e is kotlinx.coroutines.CancellationException) throw e
+                        // E.g. no Keystore to unwrap the end-to-end keys: say so, and keep the sync alive for the next account.
+                        Log.w(TAG, "no messenger for $user: ${e.message}")
+                        null
+                    }
+                    if (messenger == null) {
+                        connectionState.value = ConnectionState.Failed("this phone cannot open a session as $user (see the log)")
+                        return@collectLatest
+                    }
                     runSession(messenger)
                 }
         }
