@@ -72,6 +72,14 @@ class MainActivity : ComponentActivity() {
                 container.chat?.pendingInvite?.value = link
                 destination = TopLevelDestination.CHATS
             }
+            // Text shared from another app: to the conversation picked in the share sheet (a sharing shortcut), else to
+            // the chat the user opens next.
+            Intent.ACTION_SEND if intent.type == "text/plain" && intent.getStringExtra(Intent.EXTRA_TEXT) != null -> {
+                val text = intent.getStringExtra(Intent.EXTRA_TEXT).orEmpty()
+                val peer = MessageNotifier.peerOfShortcut(intent.getStringExtra(androidx.core.content.pm.ShortcutManagerCompat.EXTRA_SHORTCUT_ID))
+                container.chat?.pendingShare?.value = org.hapticon.app.sync.SharedText(peer, text)
+                destination = TopLevelDestination.CHATS
+            }
             // A pattern file shared to Hapticon from another app's share sheet.
             Intent.ACTION_SEND -> sharedStream(intent)?.let { uri ->
                 container.pendingPatternFile.value = uri

@@ -22,6 +22,8 @@ import org.hapticon.core.io.WavWriter
 import org.hapticon.core.pattern.HapticPattern
 import org.hapticon.core.pattern.PatternJson
 import org.hapticon.core.pattern.signal
+import org.hapticon.core.platform.AndroidVibrationRules
+import org.hapticon.core.platform.VibrationUsage
 import org.hapticon.core.render.stream
 import org.hapticon.core.render.EnvelopeModel
 import org.hapticon.core.render.Fidelity
@@ -36,8 +38,11 @@ interface AudioCoupledOutput {
     /** Whether this phone can play audio-coupled haptics now. */
     val isAvailable: Boolean
 
-    /** Plays [wav] (a PCM16 WAV file), replacing whatever this output plays. */
-    fun play(wav: File)
+    /**
+     * Plays [wav] (a PCM16 WAV file) as [usage], replacing whatever this output plays. Android judges the haptic channel
+     * by the vibration usage it derives from the stream's audio usage ([AndroidVibrationRules.audioUsageFor]).
+     */
+    fun play(wav: File, usage: VibrationUsage)
 
     /** Stops playback. */
     fun stop()
@@ -162,22 +167,28 @@ class Media3AudioCoupledOutput(private val context: Context) : AudioCoupledOutpu
     override val isAvailable: Boolean
         get() = Build.VERSION.SDK_INT >= 31 && hapticsAvailable()
 
-    override fun play(wav: File) = files.play(wav)
+    override fun play(wav: File, usage: VibrationUsage) = files.play(wav) { it.setAudioAttributes(audioAttributesFor(usage), false) }
 
     override fun stop() = files.stop()
 
     /** The file playing or last played, for the screens' diagnostics and tests; main thread only. */
     val currentFile: File? get() = files.currentFile
 
-    /** The audio attributes the player uses: sonification with haptic channels unmuted. */
-    val audioAttributes: AudioAttributes = AudioAttributes.Builder()
-        .setUsage(C.USAGE_ASSISTANCE_SONIFICATION)
+    /** The audio attributes of the last play ([audioAttributesFor] its usage), for diagnostics and tests; main thread only. */
+    val audioAttributes: AudioAttributes? get() = files.player?.audioAttributes
+
+    /**
+     * The audio attributes a play of [usage] uses, haptic channels unmuted: sonification for a press (Android's
+     * `VibrationAttributes.Builder(AudioAttributes)` makes the haptic channel TOUCH), an instant-message notification
+     * for a received icon (NOTIFICATION: allowed from the background). No audio focus: the icon must not pause music.
+     */
+    fun audioAttributesFor(usage: VibrationUsage): AudioAttributes = AudioAttributes.Builder()
+        .setUsage(AndroidVibrationRules.audioUsageFor(usage).platformValue)
         .setContentType(C.AUDIO_CONTENT_TYPE_SONIFICATION)
         .setHapticChannelsMuted(false)
         .build()
 
     private fun configure(exo: ExoPlayer) {
-        exo.setAudioAttributes(audioAttributes, false)
         if (Build.VERSION.SDK_INT >= 31) {
             val audio = context.getSystemService(AudioManager::class.java)
             val session = audio.generateAudioSessionId()

@@ -5,6 +5,7 @@ import android.os.Build
 import android.os.VibrationEffect
 import android.os.Vibrator
 import android.os.VibratorManager
+import org.hapticon.core.platform.VibrationUsage
 import org.hapticon.core.render.VibrationWaveform
 import org.hapticon.sensor.grains.GrainSink
 import org.hapticon.sensor.safety.SafetyLimits
@@ -31,14 +32,21 @@ interface VibrationOutput : GrainSink {
     fun stop()
 }
 
-/** [VibrationOutput] on a [Vibrator]; every effect passes the safety limits before it reaches it. */
-class VibratorVibrationOutput(private val vibrator: Vibrator) : VibrationOutput {
+/**
+ * [VibrationOutput] on the phone's vibrator; every effect passes the safety limits before it reaches it. What a sensor
+ * renders under the user's finger (a compliance grain, the partner's grip) is `USAGE_PHYSICAL_EMULATION`: "vibrations
+ * which emulate physical hardware reactions" (AOSP `VibrationAttributes`). Android lets that usage play from the
+ * background and in Battery Saver ("the trigger process might still be in the background when the user interaction
+ * wakes the device", `VibrationSettings.BACKGROUND_PROCESS_USAGE_ALLOWLIST`), and it follows the user's hardware
+ * feedback intensity, not the touch feedback switch.
+ */
+class VibratorVibrationOutput(private val vibrator: UsageVibrator) : VibrationOutput {
     override val capabilities: PlaybackCapabilities
         get() = PlaybackCapabilities(vibrator.hasVibrator(), vibrator.hasAmplitudeControl(), Build.VERSION.SDK_INT)
 
     override fun play(waveform: VibrationWaveform) {
         if (!vibrator.hasVibrator()) return
-        vibrator.vibrate(waveform.toVibrationEffect())
+        vibrator.vibrate(waveform.toVibrationEffect(), USAGE)
     }
 
     override fun playLevel(amplitude: Int, durationMillis: Long) {
@@ -46,14 +54,17 @@ class VibratorVibrationOutput(private val vibrator: Vibrator) : VibrationOutput 
         SafetyLimits.requireVibrationSeconds(durationMillis / 1000.0)
         require(amplitude >= 1) { "a level needs an amplitude >= 1, was $amplitude" }
         if (!vibrator.hasVibrator()) return
-        vibrator.vibrate(VibrationEffect.createOneShot(durationMillis, amplitude))
+        vibrator.vibrate(VibrationEffect.createOneShot(durationMillis, amplitude), USAGE)
     }
 
     override fun stop() = vibrator.cancel()
 
     companion object {
+        /** The usage of every vibration this output makes. */
+        val USAGE: VibrationUsage = VibrationUsage.PHYSICAL_EMULATION
+
         /** An output on the phone's default vibrator. */
-        fun create(context: Context): VibratorVibrationOutput = VibratorVibrationOutput(defaultVibrator(context))
+        fun create(context: Context): VibratorVibrationOutput = VibratorVibrationOutput(UsageVibrator.create(context))
     }
 }
 

@@ -4,20 +4,21 @@ import org.hapticon.messaging.RendererKind
 import android.content.Context
 import android.os.Build
 import android.os.VibrationEffect
-import android.os.Vibrator
 import org.hapticon.core.HapticIcon
+import org.hapticon.core.platform.VibrationUsage
+import org.hapticon.core.platform.VibrationVerdict
 import org.hapticon.core.render.EnvelopeModel
 import org.hapticon.core.pattern.HapticPattern
 import org.hapticon.core.render.VibrationWaveform
 import kotlin.coroutines.CoroutineContext
 
 /**
- * Plays icons through [Vibrator] as `VibrationEffect.createWaveform` step waveforms rendered by
+ * Plays icons through the phone's vibrator as `VibrationEffect.createWaveform` step waveforms rendered by
  * haptics-core ([VibrationWaveform]): amplitude steps where the vibrator supports amplitude
- * control, an on/off pattern otherwise.
+ * control, an on/off pattern otherwise; each with its usage ([UsageVibrator]).
  */
 class VibratorHapticPlayer(
-    private val vibrator: Vibrator,
+    private val vibrator: UsageVibrator,
     override val renderContext: CoroutineContext = DefaultRenderContext,
 ) : HapticPlayer {
 
@@ -29,9 +30,11 @@ class VibratorHapticPlayer(
             apiLevel = Build.VERSION.SDK_INT,
         )
 
-    override fun play(icon: HapticIcon): Playback = play(icon, EnvelopeModel.DEFAULT)
+    override fun play(icon: HapticIcon, usage: VibrationUsage): Playback = play(icon, EnvelopeModel.DEFAULT, usage)
 
-    override fun play(icon: HapticIcon, model: EnvelopeModel): Playback {
+    override fun verdict(usage: VibrationUsage): VibrationVerdict = vibrator.verdict(usage)
+
+    override fun play(icon: HapticIcon, model: EnvelopeModel, usage: VibrationUsage): Playback {
         noteRendering("render ${icon.name}")
         val renderer = capabilities.renderer
         val waveform = when (renderer) {
@@ -41,15 +44,17 @@ class VibratorHapticPlayer(
             RendererKind.AUDIO_COUPLED, RendererKind.ENVELOPE -> VibrationWaveform.render(icon, model)
             RendererKind.NONE, RendererKind.AUDIO, RendererKind.UNKNOWN -> return Playback.Unsupported
         }
-        vibrator.vibrate(waveform.toVibrationEffect())
+        val verdict = vibrator.vibrate(waveform.toVibrationEffect(), usage)
+        if (!verdict.plays) return Playback.Ignored(verdict)
         return Playback.Playing(renderer, waveform.totalMillis, waveform.fidelity)
     }
 
     /** [pattern] as amplitude steps, or on/off steps without amplitude control; the frequency curve is not played. */
-    override fun play(pattern: HapticPattern): Playback {
+    override fun play(pattern: HapticPattern, usage: VibrationUsage): Playback {
         val plan = PatternPlan.of(DeviceCapabilities(vibrator.hasVibrator(), vibrator.hasAmplitudeControl(), Build.VERSION.SDK_INT), pattern)
         val steps = plan as? PatternPlan.Steps ?: return Playback.Unsupported
-        vibrator.vibrate(steps.waveform.toVibrationEffect())
+        val verdict = vibrator.vibrate(steps.waveform.toVibrationEffect(), usage)
+        if (!verdict.plays) return Playback.Ignored(verdict)
         return Playback.Playing(steps.renderer, steps.waveform.totalMillis, steps.waveform.fidelity)
     }
 
@@ -57,7 +62,7 @@ class VibratorHapticPlayer(
 
     companion object {
         /** A player on the phone's default vibrator. */
-        fun create(context: Context): VibratorHapticPlayer = VibratorHapticPlayer(defaultVibrator(context))
+        fun create(context: Context): VibratorHapticPlayer = VibratorHapticPlayer(UsageVibrator.create(context))
     }
 }
 

@@ -14,6 +14,8 @@ import org.hapticon.app.data.RoomIconRepository
 import org.hapticon.app.data.SharedPreferencesChatSettings
 import org.hapticon.app.data.database.HapticonDatabase
 import org.hapticon.app.playback.AdaptiveHapticPlayer
+import org.hapticon.app.playback.AndroidVibrationGate
+import org.hapticon.app.playback.UsageVibrator
 import org.hapticon.app.playback.IconAudioCache
 import org.hapticon.app.playback.Media3AudioCoupledOutput
 import org.hapticon.messaging.RendererKind
@@ -71,6 +73,9 @@ class ChatComponent(
     /** A conversation to open (a tapped message notification), waiting for the Chats screen. */
     val pendingConversation: MutableStateFlow<String?> = MutableStateFlow(null)
 
+    /** Text shared to Hapticon from another app, waiting for the Chats screen to put it in a conversation's composer. */
+    val pendingShare: MutableStateFlow<SharedText?> = MutableStateFlow(null)
+
     /** What this phone can do now (the vibrator is asked again each time: cheap, and a test may change it). */
     val device: DeviceCapabilities get() = detectDevice()
 
@@ -95,10 +100,12 @@ class ChatComponent(
                 DeviceCapabilities.detect(context, vibrator, audio.hapticPlaybackSupported, audio.hapticGeneratorAvailable)
             }
             val player = chatPlayer(
-                vibrator, device, settings,
+                UsageVibrator(vibrator, AndroidVibrationGate(context, vibrator)), device, settings,
                 audio = Media3AudioCoupledOutput(context),
                 audioCache = IconAudioCache(java.io.File(context.cacheDir, "icon-audio")),
             )
+            val notifier = MessageNotifier(context) { settings.preferences.value.userName }
+            val power = context.getSystemService(android.os.PowerManager::class.java)
             val sync = ChatSync(
                 repository = repository,
                 outbox = repository,
@@ -113,10 +120,10 @@ class ChatComponent(
                 rateLimiter = VibrationRateLimiter(Clock.MONOTONIC),
                 localCapabilities = localCapabilities(device, settings),
                 scope = scope,
-                quietNow = { doNotDisturb(context) },
+                arrivalConditions = notifier::arrivalConditions,
+                screenOn = { power?.isInteractive ?: true },
             )
-            val notifier = MessageNotifier(context) { settings.preferences.value.userName }
-            sync.onIncoming = { message, _ -> notifier.show(message) }
+            sync.onIncoming = { message, alert -> notifier.show(message, alert) }
             // Lives as long as the process, like the sync it nudges.
             val network = NetworkWatcher(context, sync).also { it.start() }
             val probe: BrokerProbe = { user, broker, password -> probeBroker(settings, sync, user, broker, password) }
@@ -150,7 +157,7 @@ class ChatComponent(
          * Settings applies to the next icon or pattern.
          */
         internal fun chatPlayer(
-            vibrator: android.os.Vibrator,
+            vibrator: UsageVibrator,
             device: () -> DeviceCapabilities,
             settings: ChatSettingsRepository,
             audio: org.hapticon.app.playback.AudioCoupledOutput? = null,
@@ -266,13 +273,14 @@ class ChatComponent(
             }
         }
 
-        /** Do-not-disturb is on when the interruption filter lets less than everything through. */
-        private fun doNotDisturb(context: Context): Boolean {
-            val manager = context.getSystemService(android.app.NotificationManager::class.java) ?: return false
-            return manager.currentInterruptionFilter > android.app.NotificationManager.INTERRUPTION_FILTER_ALL
-        }
     }
 }
+
+/**
+ * [text] shared from another app's share sheet, for [peer]'s conversation when the user picked it there (a sharing
+ * shortcut, `Intent.EXTRA_SHORTCUT_ID`), else for the chat the user opens next.
+ */
+data class SharedText(val peer: String?, val text: String)
 
 /** What [ChatComponent.peerKeys] knows of a peer's end-to-end keys. */
 enum class PeerKeys {

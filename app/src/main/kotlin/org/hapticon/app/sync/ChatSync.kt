@@ -19,7 +19,13 @@ import org.hapticon.app.data.ChatPreferences
 import org.hapticon.app.data.ChatRepository
 import org.hapticon.app.data.ChatSettingsRepository
 import org.hapticon.app.playback.HapticPlayer
+import org.hapticon.app.playback.Playback
+import org.hapticon.app.playback.messageUsage
 import org.hapticon.app.playback.playMessageOffMain
+import org.hapticon.core.platform.VibrationUsage
+import org.hapticon.messaging.ArrivalAlert
+import org.hapticon.messaging.ArrivalAlerts
+import org.hapticon.messaging.ArrivalConditions
 import kotlinx.coroutines.flow.Flow
 import org.hapticon.app.sensors.HandshakeLink
 import org.hapticon.app.sensors.NetworkPartnerHand
@@ -37,7 +43,6 @@ import org.hapticon.messaging.Receipt
 import org.hapticon.messaging.ReceiptState
 import org.hapticon.messaging.RejectionReason
 import org.hapticon.messaging.RetryPolicy
-import org.hapticon.messaging.VibrationDecision
 import org.hapticon.messaging.VibrationRateLimiter
 import kotlinx.coroutines.coroutineScope
 
@@ -45,10 +50,14 @@ import kotlinx.coroutines.coroutineScope
  * The background sync: while the user has an account, keeps a [Messenger] connected, drains the Room
  * outbox through an [OutboxSender] (retries with backoff; a message stays in the outbox until the
  * receiver's receipt arrives and is sent again meanwhile), stores what arrives exactly once, answers with
- * delivered receipts (and read receipts for the open conversation; a receipt that cannot go out now is
+ * delivered receipts (and read receipts for the conversation on screen; a receipt that cannot go out now is
  * kept in Room and sent when the connection returns), records receipts for own messages,
- * remembers peers' capabilities and, when the user enabled it, plays arriving icons within
- * [rateLimiter]'s limits. Runs in the application scope from app start ([start]).
+ * remembers peers' capabilities and, when the user enabled it, plays arriving icons after their notification, as
+ * [ArrivalAlerts] decides (ringer, Do Not Disturb, the conversation's channel, what Android's vibrator would do, and
+ * [rateLimiter]'s limits). Runs in the application scope from app start ([start]).
+ *
+ * Every receipt is true: "read" only for a conversation on screen ([openConversation] while the screen is on), "felt"
+ * only for an icon Android played ([Playback.Playing] from the player, which checks Android's vibrator rules).
  *
  * Hostile input never gets past the messaging codec: a rejected payload is logged and has no effect.
  */
@@ -66,15 +75,18 @@ class ChatSync(
     private val clock: Clock = Clock.SYSTEM,
     private val retryPolicy: RetryPolicy = RetryPolicy(),
     private val nanoClock: () -> Long = System::nanoTime,
-    /** True while the phone is in Do-not-disturb: then nothing vibrates unasked. */
-    private val quietNow: () -> Boolean = { false },
+    /** The phone's ringer, Do Not Disturb and the icon channel of a peer's conversation, read when its message arrives. */
+    private val arrivalConditions: (peer: String) -> ArrivalConditions = { ArrivalConditions.UNRESTRICTED },
+    /** `PowerManager.isInteractive()`: a conversation counts as read only while the screen is on. */
+    private val screenOn: () -> Boolean = { true },
 ) : HandshakeLink {
     /**
-     * Told once per newly stored message while its conversation is not on screen (the notifier);
-     * [played] says whether its icon was felt on arrival. Set before [start].
+     * Told once per newly stored message while its conversation is not on screen (the notifier), before its icon plays:
+     * [alert] is how it alerts ([ArrivalAlerts]), so the notification is posted on the channel that fits and the icon
+     * follows it. Set before [start].
      */
     @Volatile
-    var onIncoming: (message: ChatMessage, played: Boolean) -> Unit = { _, _ -> }
+    var onIncoming: (message: ChatMessage, alert: ArrivalAlert) -> Unit = { _, _ -> }
 
     private val connectionState = MutableStateFlow<ConnectionState>(ConnectionState.Disconnected)
     // The user, broker and password that connectionState belongs to; null before the first session.
@@ -281,10 +293,13 @@ class ChatSync(
         session?.sender?.wake()
     }
 
-    /** The conversation with [peer] is on screen: marks its messages read (with read receipts) until [closeConversation]. */
+    /**
+     * The conversation with [peer] is on screen (its screen RESUMED): marks its messages read (with read receipts), and
+     * those arriving while the screen is on, until [closeConversation] (the screen paused: another app, or the screen off).
+     */
     fun openConversation(peer: String) {
         openConversations.update { it + peer }
-        scope.launch { markReadAndReceipt(peer) }
+        scope.launch { if (screenOn()) markReadAndReceipt(peer) }
     }
 
     /** Marks [peer]'s messages read with read receipts without opening the conversation (the notification's "Mark as read"). */
@@ -333,7 +348,7 @@ class ChatSync(
                             runCatching { messenger.publishCapabilities(localCapabilities(messenger.user)) }
                                 .onFailure { if (it is kotlinx.coroutines.CancellationException) throw it else Log.w(TAG, "publishing capabilities failed: ${it.message}") }
                             sendOwedReceipts(messenger)
-                            for (peer in openConversations.value) markReadAndReceipt(peer)
+                            for (peer in onScreen()) markReadAndReceipt(peer)
                         }
                     }
                 }
@@ -400,35 +415,37 @@ class ChatSync(
         if (!first) return
         // A new message brings an archived conversation back to the list, as in Signal.
         if (message.sender in settings.preferences.value.archived) settings.update { it.copy(archived = it.archived - message.sender) }
-        val open = message.sender in openConversations.value
+        val open = message.sender in onScreen()
         if (open) markReadAndReceipt(message.sender)
-        val played = autoPlay(messenger, message)
-        if (!open) onIncoming(message, played)
+        val seconds = message.icon?.duration ?: message.pattern?.duration
+        val plan = ArrivalAlerts.plan(
+            carriesHaptic = seconds != null,
+            autoPlay = settings.preferences.value.autoPlay,
+            conditions = arrivalConditions(message.sender),
+            vibration = player.verdict(RECEIVED),
+        ) { rateLimiter.tryAcquire(message.sender, ((seconds ?: 0.0) * 1000).toLong()) }
+        if (plan.alert != ArrivalAlert.ICON && seconds != null) Log.i(TAG, "${message.id} does not play on arrival: ${plan.reason}")
+        // The notification first, on the channel that fits; the icon follows it, once.
+        if (!open) onIncoming(message, plan.alert)
+        if (plan.alert.playsIcon) autoPlay(messenger, message)
     }
 
-    /** Plays an arriving icon or pattern when the user enabled it, within the body limits and never in Do-not-disturb. */
-    private suspend fun autoPlay(messenger: Messenger, message: ChatMessage): Boolean {
-        val icon = message.icon
-        val pattern = message.pattern
-        val seconds = icon?.duration ?: pattern?.duration ?: return false
-        if (!settings.preferences.value.autoPlay) return false
-        if (quietNow()) {
-            Log.i(TAG, "auto-play of ${message.id} skipped: Do-not-disturb")
-            return false
+    /** Plays an arriving icon or pattern; the sender is told it was felt only when Android played it. */
+    private suspend fun autoPlay(messenger: Messenger, message: ChatMessage) {
+        val playback = player.playMessageOffMain(message.icon, message.pattern, RECEIVED)
+        if (playback is Playback.Playing) {
+            sendFelt(messenger, message.sender, message.id)
+        } else {
+            Log.i(TAG, "${message.id} did not play: $playback")
         }
-        val decision = rateLimiter.tryAcquire(message.sender, (seconds * 1000).toLong())
-        if (decision != VibrationDecision.VIBRATE) {
-            Log.i(TAG, "auto-play of ${message.id} skipped: $decision")
-            return false
-        }
-        player.playMessageOffMain(icon, pattern)
-        sendFelt(messenger, message.sender, message.id)
-        return true
     }
+
+    // The conversations on screen now: open in a resumed screen, and the screen on.
+    private fun onScreen(): Set<String> = if (screenOn()) openConversations.value else emptySet()
 
     /**
-     * The user played the icon of [messageId] from [peer] (a press on the bubble or "Feel again"):
-     * tells the sender with a felt receipt unless the user switched those off.
+     * Android played the icon of [messageId] from [peer] at the user's request (a press on the bubble or "Feel again";
+     * callers tell only of a [Playback.Playing]): tells the sender with a felt receipt unless the user switched those off.
      */
     fun felt(peer: String, messageId: String) {
         scope.launch {
@@ -490,6 +507,9 @@ class ChatSync(
 
     private companion object {
         const val TAG = "ChatSync"
+
+        /** A received icon or pattern, however it plays ([messageUsage]). */
+        val RECEIVED: VibrationUsage = messageUsage(outgoing = false)
         const val MAX_SECURITY_WARNINGS = 20
         val SECURITY_REASONS = setOf(
             RejectionReason.KEY_CHANGED, RejectionReason.FORGED, RejectionReason.UNDECRYPTABLE,

@@ -1,6 +1,7 @@
 package org.hapticon.app.playback
 
 import org.hapticon.messaging.RendererKind
+import org.hapticon.core.platform.VibrationUsage
 import android.content.Context
 import android.os.Looper
 import android.os.Vibrator
@@ -22,6 +23,7 @@ import org.junit.Assert.assertFalse
 import org.junit.Assert.assertNull
 import org.junit.Assert.assertSame
 import org.junit.Assert.assertTrue
+import androidx.media3.common.C
 import org.junit.Before
 import org.junit.Rule
 import org.junit.Test
@@ -33,10 +35,12 @@ import org.robolectric.Shadows.shadowOf
 /** An [AudioCoupledOutput] that records what it was asked to play. */
 private class RecordingAudioOutput(override var isAvailable: Boolean = true) : AudioCoupledOutput {
     val played = ArrayList<File>()
+    val usages = ArrayList<VibrationUsage>()
     var stops = 0
 
-    override fun play(wav: File) {
+    override fun play(wav: File, usage: VibrationUsage) {
         played += wav
+        usages += usage
     }
 
     override fun stop() {
@@ -64,11 +68,11 @@ class AudioCoupledHapticsTest {
     }
 
     private fun player(output: AudioCoupledOutput = audio, audioCache: IconAudioCache = cache) =
-        AdaptiveHapticPlayer(vibrator, { audioPhone }, { null }, output, audioCache)
+        AdaptiveHapticPlayer(usageVibrator(vibrator), { audioPhone }, { null }, output, audioCache)
 
     @Test
     fun knock_playsItsPcm16RenderingAt48kHzThroughTheAudioPath() {
-        val playback = player().play(HapticIcon.KNOCK) as Playback.Playing
+        val playback = player().play(HapticIcon.KNOCK, VibrationUsage.TOUCH) as Playback.Playing
 
         assertEquals(RendererKind.AUDIO_COUPLED, playback.renderer)
         // Knock lasts 2 · 0.27 + 0.02 = 0.56 s: 26 880 samples at 48 kHz.
@@ -87,12 +91,12 @@ class AudioCoupledHapticsTest {
     @Test
     fun sameIconTwice_rendersOnceAndPlaysTheCachedFile() {
         val player = player()
-        val firstPlayback = player.play(HapticIcon.HIT) as Playback.Playing
+        val firstPlayback = player.play(HapticIcon.HIT, VibrationUsage.TOUCH) as Playback.Playing
         val first = audio.played.single()
         val written = first.lastModified()
         first.setLastModified(written - 10_000)
 
-        val secondPlayback = player.play(HapticIcon.HIT) as Playback.Playing
+        val secondPlayback = player.play(HapticIcon.HIT, VibrationUsage.TOUCH) as Playback.Playing
 
         assertEquals(listOf(first, first), audio.played)
         // Measured once: the second press reuses the first press's fidelity.
@@ -104,9 +108,9 @@ class AudioCoupledHapticsTest {
     @Test
     fun knockUnderEachModel_rendersOneFilePerModelWithThatModelsSamples() {
         val player = player()
-        player.play(HapticIcon.KNOCK, EnvelopeModel.PAPER)
-        player.play(HapticIcon.KNOCK, EnvelopeModel.PROCESSING)
-        player.play(HapticIcon.KNOCK, EnvelopeModel.PAPER)
+        player.play(HapticIcon.KNOCK, EnvelopeModel.PAPER, VibrationUsage.TOUCH)
+        player.play(HapticIcon.KNOCK, EnvelopeModel.PROCESSING, VibrationUsage.TOUCH)
+        player.play(HapticIcon.KNOCK, EnvelopeModel.PAPER, VibrationUsage.TOUCH)
 
         // The model is part of the cache key: two files, and the third press reuses the first.
         val (paperFile, processingFile, again) = audio.played
@@ -126,7 +130,7 @@ class AudioCoupledHapticsTest {
 
     @Test
     fun paperModelWithoutAudio_vibratesThePaperWaveform() {
-        val playback = player(RecordingAudioOutput(isAvailable = false)).play(HapticIcon.KNOCK, EnvelopeModel.PAPER) as Playback.Playing
+        val playback = player(RecordingAudioOutput(isAvailable = false)).play(HapticIcon.KNOCK, EnvelopeModel.PAPER, VibrationUsage.TOUCH) as Playback.Playing
 
         assertEquals(RendererKind.AMPLITUDE_WAVEFORM, playback.renderer)
         val paper = VibrationWaveform.render(HapticIcon.KNOCK, EnvelopeModel.PAPER)
@@ -144,7 +148,7 @@ class AudioCoupledHapticsTest {
 
     @Test
     fun pattern_playsItsOwnSignalAsPcm16At48kHzThroughTheAudioPath() {
-        val playback = player().play(chirp) as Playback.Playing
+        val playback = player().play(chirp, VibrationUsage.TOUCH) as Playback.Playing
 
         assertEquals(RendererKind.AUDIO_COUPLED, playback.renderer)
         assertEquals(40L, playback.durationMillis)
@@ -167,7 +171,7 @@ class AudioCoupledHapticsTest {
 
     @Test
     fun pattern_audioUnavailable_vibratesItsSteps() {
-        val playback = player(RecordingAudioOutput(isAvailable = false)).play(chirp) as Playback.Playing
+        val playback = player(RecordingAudioOutput(isAvailable = false)).play(chirp, VibrationUsage.TOUCH) as Playback.Playing
         assertEquals(RendererKind.AMPLITUDE_WAVEFORM, playback.renderer)
         val steps = chirp.vibrationWaveform()
         assertEquals(RecordedVibration(steps.timings().toList(), steps.amplitudes().toList()), lastVibration(vibrator))
@@ -186,7 +190,7 @@ class AudioCoupledHapticsTest {
 
     @Test
     fun outputUnavailable_fallsBackToTheAmplitudeWaveformOnTheVibrator() {
-        val playback = player(RecordingAudioOutput(isAvailable = false)).play(HapticIcon.KNOCK) as Playback.Playing
+        val playback = player(RecordingAudioOutput(isAvailable = false)).play(HapticIcon.KNOCK, VibrationUsage.TOUCH) as Playback.Playing
 
         assertEquals(RendererKind.AMPLITUDE_WAVEFORM, playback.renderer)
         assertEquals(RecordedVibration(listOf(10L, 10L, 250L, 10L, 10L, 250L, 10L, 10L), listOf(175, 111, 0, 175, 111, 0, 175, 111)), lastVibration(vibrator))
@@ -195,7 +199,7 @@ class AudioCoupledHapticsTest {
     @Test
     fun cacheNotWritable_vibratesInsteadSoThePressIsNotLost() {
         val blocked = File(folder.root, "blocked").apply { writeText("a file where the directory should be") }
-        val playback = player(audioCache = IconAudioCache(File(blocked, "icon-audio"))).play(HapticIcon.KNOCK) as Playback.Playing
+        val playback = player(audioCache = IconAudioCache(File(blocked, "icon-audio"))).play(HapticIcon.KNOCK, VibrationUsage.TOUCH) as Playback.Playing
 
         assertTrue(audio.played.isEmpty())
         assertEquals(RendererKind.AMPLITUDE_WAVEFORM, playback.renderer)
@@ -205,7 +209,7 @@ class AudioCoupledHapticsTest {
     @Test
     fun stop_stopsTheAudioAndTheVibrator() {
         val player = player()
-        player.play(HapticIcon.HUG)
+        player.play(HapticIcon.HUG, VibrationUsage.TOUCH)
         player.stop()
         assertEquals(1, audio.stops)
     }
@@ -215,11 +219,20 @@ class AudioCoupledHapticsTest {
         val output = Media3AudioCoupledOutput(context)
         val file = cache.fileFor(HapticIcon.KNOCK)
 
-        output.play(file)
+        output.play(file, VibrationUsage.TOUCH)
         shadowOf(Looper.getMainLooper()).idle()
 
-        assertFalse(output.audioAttributes.hapticChannelsMuted)
+        // A press: sonification, which Android's VibrationAttributes.Builder(AudioAttributes) makes a TOUCH vibration.
+        assertEquals(C.USAGE_ASSISTANCE_SONIFICATION, output.audioAttributes!!.usage)
+        assertFalse(output.audioAttributes!!.hapticChannelsMuted)
         assertEquals(file.path, output.currentFile!!.path)
+
+        // A received icon: an instant message's notification (NOTIFICATION for the vibrator: allowed in the background).
+        output.play(file, VibrationUsage.COMMUNICATION_REQUEST)
+        shadowOf(Looper.getMainLooper()).idle()
+        assertEquals(C.USAGE_NOTIFICATION_COMMUNICATION_INSTANT, output.audioAttributes!!.usage)
+        assertEquals(C.AUDIO_CONTENT_TYPE_SONIFICATION, output.audioAttributes!!.contentType)
+        assertFalse(output.audioAttributes!!.hapticChannelsMuted)
         output.stop()
     }
 
@@ -227,6 +240,6 @@ class AudioCoupledHapticsTest {
     fun media3Output_onAPhoneWithoutHapticPlayback_isUnavailable() {
         // Robolectric's audio system reports no haptic playback, as most phones do.
         assertFalse(Media3AudioCoupledOutput(context).isAvailable)
-        assertSame(RendererKind.AMPLITUDE_WAVEFORM, AdaptiveHapticPlayer(vibrator, { audioPhone }, { null }, Media3AudioCoupledOutput(context), cache).rendererFor(HapticIcon.KNOCK))
+        assertSame(RendererKind.AMPLITUDE_WAVEFORM, AdaptiveHapticPlayer(usageVibrator(vibrator), { audioPhone }, { null }, Media3AudioCoupledOutput(context), cache).rendererFor(HapticIcon.KNOCK))
     }
 }

@@ -1,6 +1,7 @@
 package org.hapticon.app.playback
 
 import android.content.Context
+import org.hapticon.core.platform.VibrationUsage
 import android.os.Build
 import android.os.Vibrator
 import androidx.test.core.app.ApplicationProvider
@@ -67,7 +68,7 @@ class EnvelopeEffectApi36Test {
     }
 
     private fun play(device: DeviceCapabilities, pattern: HapticPattern, fit: PitchFit = PitchFit.OCTAVES): Playback =
-        AdaptiveHapticPlayer(vibrator, device = { device }, override = { null }, pitchFit = { fit }).play(pattern)
+        AdaptiveHapticPlayer(usageVibrator(vibrator), device = { device }, override = { null }, pitchFit = { fit }).play(pattern, VibrationUsage.TOUCH)
 
     private fun waveform(startAmplitude: Float, endAmplitude: Float, startHz: Float, endHz: Float, millis: Long) =
         EnvelopeSegment.Waveform(startAmplitude, endAmplitude, startHz, endHz, millis)
@@ -194,7 +195,7 @@ class EnvelopeEffectApi36Test {
             settings.update { it.copy(pitchFit = fit) }
             val device = phone(profile)
             val pattern = HapticPattern("note $note", swell.amplitude, listOf(FrequencyKey(0.0, midiNoteToHz(note.toDouble()))))
-            ChatComponent.chatPlayer(vibrator, { device }, settings).play(pattern)
+            ChatComponent.chatPlayer(usageVibrator(vibrator), { device }, settings).play(pattern, VibrationUsage.TOUCH)
             return lastEnvelopeSegments().map { it as EnvelopeSegment.Waveform }.flatMap { listOf(it.startHz, it.endHz) }.distinct().single()
         }
         val notes = listOf(0, 57, 65, 127)
@@ -209,15 +210,17 @@ class EnvelopeEffectApi36Test {
     fun icon_envelopePhone_theNoteReachesTheActuator() {
         // Hug (note 50, 146.8 Hz) on a narrow profile: every point at the note, not a fixed sharpness.
         val device = phone(narrow)
-        val player = AdaptiveHapticPlayer(vibrator, device = { device }, override = { null })
-        assertEquals(RendererKind.ENVELOPE, (player.play(HapticIcon.HUG) as Playback.Playing).renderer)
+        val player = AdaptiveHapticPlayer(usageVibrator(vibrator), device = { device }, override = { null })
+        assertEquals(RendererKind.ENVELOPE, (player.play(HapticIcon.HUG, VibrationUsage.TOUCH) as Playback.Playing).renderer)
+        // The envelope effect carries its usage too (VibrationAttributes on API 36).
+        assertEquals(VibrationUsage.TOUCH, lastUsage(vibrator))
         val segments = lastEnvelopeSegments().map { it as EnvelopeSegment.Waveform }
         assertEquals(setOf(146.83238f), segments.flatMap { listOf(it.startHz, it.endHz) }.toSet())
         assertEquals(3000L, segments.sumOf { it.millis })
         assertEquals(0f, segments.last().endAmplitude, 0f)
         // Without a profile the note becomes sharpness (50 − 36) / 36 on the C2..C5 scale.
         val basic = phone(null)
-        AdaptiveHapticPlayer(vibrator, device = { basic }, override = { null }).play(HapticIcon.HUG)
+        AdaptiveHapticPlayer(usageVibrator(vibrator), device = { basic }, override = { null }).play(HapticIcon.HUG, VibrationUsage.TOUCH)
         val sharpness = lastEnvelopeSegments().map { it as EnvelopeSegment.Basic }.flatMap { listOf(it.startSharpness, it.endSharpness) }.toSet()
         assertEquals(setOf((14.0 / 36).toFloat()), sharpness)
     }

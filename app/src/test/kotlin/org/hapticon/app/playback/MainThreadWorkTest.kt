@@ -1,6 +1,7 @@
 package org.hapticon.app.playback
 
 import android.os.Looper
+import org.hapticon.core.platform.VibrationUsage
 import java.util.concurrent.CountDownLatch
 import java.util.concurrent.Executors
 import java.util.concurrent.TimeUnit
@@ -45,17 +46,19 @@ class MainThreadWorkTest {
         override val renderContext: CoroutineContext = renderThread.asCoroutineDispatcher()
         override val capabilities = PlaybackCapabilities(hasVibrator = true, hasAmplitudeControl = true, apiLevel = 35)
 
-        override fun play(icon: HapticIcon): Playback {
+        override fun play(icon: HapticIcon, usage: VibrationUsage): Playback {
             renderedOn += Thread.currentThread().name
             onMainLooper += Looper.myLooper() == Looper.getMainLooper()
             played.countDown()
             return Playback.Playing(RendererKind.AMPLITUDE_WAVEFORM, 10, Fidelity(0.0, 0.0, "exact"))
         }
 
-        override fun play(pattern: HapticPattern): Playback {
+        override fun play(pattern: HapticPattern, usage: VibrationUsage): Playback {
             renderedOn += "${Thread.currentThread().name}: pattern ${pattern.name}"
             return Playback.Unsupported
         }
+
+        override fun verdict(usage: VibrationUsage) = org.hapticon.core.platform.VibrationVerdict.PLAYS
 
         override fun stop() {}
     }
@@ -81,9 +84,9 @@ class MainThreadWorkTest {
     @Test
     fun playMessageOffMain_iconElsePatternOnTheRenderThread() = runBlocking {
         val player = ThreadRecordingPlayer()
-        assertEquals(Playback.Playing(RendererKind.AMPLITUDE_WAVEFORM, 10, Fidelity(0.0, 0.0, "exact")), player.playMessageOffMain(HapticIcon.KNOCK, null))
-        assertEquals(Playback.Unsupported, player.playMessageOffMain(null, pattern))
-        assertEquals(null, player.playMessageOffMain(null, null))
+        assertEquals(Playback.Playing(RendererKind.AMPLITUDE_WAVEFORM, 10, Fidelity(0.0, 0.0, "exact")), player.playMessageOffMain(HapticIcon.KNOCK, null, VibrationUsage.TOUCH))
+        assertEquals(Playback.Unsupported, player.playMessageOffMain(null, pattern, VibrationUsage.TOUCH))
+        assertEquals(null, player.playMessageOffMain(null, null, VibrationUsage.TOUCH))
         assertEquals(listOf("test-render", "test-render: pattern ramp"), player.renderedOn)
     }
 
@@ -91,7 +94,7 @@ class MainThreadWorkTest {
     fun realPlayers_renderContext_isTheDefaultPoolNotTheCaller() {
         val vibrator = androidx.test.core.app.ApplicationProvider.getApplicationContext<android.content.Context>()
             .getSystemService(android.os.Vibrator::class.java)
-        assertEquals(Dispatchers.Default, VibratorHapticPlayer(vibrator).renderContext)
-        assertEquals(Dispatchers.Default, AdaptiveHapticPlayer(vibrator, { DeviceCapabilities(true, true, 35) }, { null }).renderContext)
+        assertEquals(Dispatchers.Default, VibratorHapticPlayer(usageVibrator(vibrator)).renderContext)
+        assertEquals(Dispatchers.Default, AdaptiveHapticPlayer(usageVibrator(vibrator), { DeviceCapabilities(true, true, 35) }, { null }).renderContext)
     }
 }

@@ -1,6 +1,7 @@
 package org.hapticon.app.playback
 
 import android.content.Context
+import org.hapticon.core.platform.VibrationUsage
 import android.os.Build
 import android.os.Vibrator
 import androidx.test.core.app.ApplicationProvider
@@ -58,12 +59,12 @@ class PatternPlaybackTest {
         val context = ApplicationProvider.getApplicationContext<Context>()
         vibrator = context.getSystemService(Vibrator::class.java)
         shadowOf(vibrator).setHasAmplitudeControl(true)
-        player = AdaptiveHapticPlayer(vibrator, device = { device }, override = { override })
+        player = AdaptiveHapticPlayer(usageVibrator(vibrator), device = { device }, override = { override })
     }
 
     @Test
     fun play_amplitudeControlBelowApi36_exactStepsOfTheDriveEnvelope() {
-        val playback = player.play(ramp) as Playback.Playing
+        val playback = player.play(ramp, VibrationUsage.TOUCH) as Playback.Playing
         // 10 ms steps: the rising ramp averages 0.25 then 0.75 (→ 64, 191 of 255), the hold is full.
         assertEquals(RecordedVibration(listOf(10L, 10L, 20L), listOf(64, 191, 255)), lastVibration(vibrator))
         assertEquals(RendererKind.AMPLITUDE_WAVEFORM, playback.renderer)
@@ -73,7 +74,7 @@ class PatternPlaybackTest {
     @Test
     fun play_noAmplitudeControl_onOffAtHalfThePeak() {
         device = device.copy(hasAmplitudeControl = false)
-        val playback = player.play(ramp) as Playback.Playing
+        val playback = player.play(ramp, VibrationUsage.TOUCH) as Playback.Playing
         assertEquals(RecordedVibration(listOf(10L, 30L), listOf(0, 255)), lastVibration(vibrator))
         assertEquals(RendererKind.ON_OFF, playback.renderer)
     }
@@ -81,14 +82,14 @@ class PatternPlaybackTest {
     @Test
     fun play_overrideOnOff_honouredOnAnAmplitudePhone() {
         override = RendererKind.ON_OFF
-        assertEquals(RendererKind.ON_OFF, (player.play(ramp) as Playback.Playing).renderer)
+        assertEquals(RendererKind.ON_OFF, (player.play(ramp, VibrationUsage.TOUCH) as Playback.Playing).renderer)
         assertEquals(listOf(0, 255), lastVibration(vibrator)!!.amplitudes)
     }
 
     @Test
     fun play_noVibrator_unsupportedAndNothingSent() {
         device = device.copy(hasVibrator = false)
-        assertEquals(Playback.Unsupported, player.play(ramp))
+        assertEquals(Playback.Unsupported, player.play(ramp, VibrationUsage.TOUCH))
         assertNull(lastVibration(vibrator))
     }
 
@@ -98,7 +99,7 @@ class PatternPlaybackTest {
         assertEquals(35, Build.VERSION.SDK_INT)
         device = envelopePhone.copy(frequencyRangeHz = 50.0..300.0)
         assertTrue(player.planFor(swell) is PatternPlan.Envelope)
-        player.play(ramp)
+        player.play(ramp, VibrationUsage.TOUCH)
         assertEquals(RecordedVibration(listOf(10L, 10L, 20L), listOf(64, 191, 255)), lastVibration(vibrator))
     }
 
@@ -119,7 +120,7 @@ class PatternPlaybackTest {
         val stroke = HapticIcon.STROKE.toPattern()
         val octaves = (player.planFor(stroke) as PatternPlan.Envelope).envelope as PatternEnvelope.Waveform
         octaves.points.forEach { assertEquals(HapticIcon.STROKE.frequency / 2, it.hertz, 1e-9) }
-        val clamped = AdaptiveHapticPlayer(vibrator, { device }, { null }, pitchFit = { PitchFit.CLAMP })
+        val clamped = AdaptiveHapticPlayer(usageVibrator(vibrator), { device }, { null }, pitchFit = { PitchFit.CLAMP })
         val clampedEnvelope = (clamped.planFor(stroke) as PatternPlan.Envelope).envelope as PatternEnvelope.Waveform
         clampedEnvelope.points.forEach { assertEquals(240.0, it.hertz, 0.0) }
         assertEquals("clamped to 120–240 Hz", clampedEnvelope.pitch.summary)
@@ -147,7 +148,7 @@ class PatternPlaybackTest {
         // The hardest pattern a file may hold: 4096 keys alternating silence and full drive over the 30 s cap.
         val keys = (0 until HapticPattern.MAX_KEYS).map { AmplitudeKey(it * 30.0 / (HapticPattern.MAX_KEYS - 1), (it % 2).toDouble()) }
         val hostile = HapticPattern("hostile", keys, listOf(FrequencyKey(0.0, 20_000.0)))
-        player.play(hostile)
+        player.play(hostile, VibrationUsage.TOUCH)
         val recorded = lastVibration(vibrator)!!
         assertEquals(30_000L, recorded.timings.sum())
         assertTrue(recorded.amplitudes.all { it in 0..255 })

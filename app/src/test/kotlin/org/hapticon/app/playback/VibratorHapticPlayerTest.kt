@@ -1,6 +1,7 @@
 package org.hapticon.app.playback
 
 import org.hapticon.messaging.RendererKind
+import org.hapticon.core.platform.VibrationUsage
 import android.content.Context
 import android.os.Vibrator
 import androidx.test.core.app.ApplicationProvider
@@ -30,7 +31,7 @@ class VibratorHapticPlayerTest {
     fun play_knockWithAmplitudeControl_handsExactStepWaveformToVibrator() {
         shadowOf(vibrator).setHasAmplitudeControl(true)
 
-        val playback = player.play(HapticIcon.KNOCK)
+        val playback = player.play(HapticIcon.KNOCK, VibrationUsage.TOUCH)
 
         // Knock: three 20 ms pulses (0.005 + 0.01 + 0.005 s) every 270 ms at mean envelope 0.375 → 96/255.
         assertEquals(
@@ -46,7 +47,7 @@ class VibratorHapticPlayerTest {
     fun play_hugWithAmplitudeControl_rampsOverThreeSeconds() {
         shadowOf(vibrator).setHasAmplitudeControl(true)
 
-        player.play(HapticIcon.HUG)
+        player.play(HapticIcon.HUG, VibrationUsage.TOUCH)
 
         val recorded = lastVibration(vibrator)!!
         assertEquals(3000L, recorded.timings.sum())
@@ -60,7 +61,7 @@ class VibratorHapticPlayerTest {
     fun play_withoutAmplitudeControl_fallsBackToFullStrengthOnOff() {
         shadowOf(vibrator).setHasAmplitudeControl(false)
 
-        val playback = player.play(HapticIcon.KNOCK)
+        val playback = player.play(HapticIcon.KNOCK, VibrationUsage.TOUCH)
 
         assertEquals(RendererKind.ON_OFF, (playback as Playback.Playing).renderer)
         assertEquals(
@@ -74,7 +75,7 @@ class VibratorHapticPlayerTest {
     fun play_withoutVibrator_isUnsupportedAndVibratesNothing() {
         shadowOf(vibrator).setHasVibrator(false)
 
-        val playback = player.play(HapticIcon.STROKE)
+        val playback = player.play(HapticIcon.STROKE, VibrationUsage.TOUCH)
 
         assertEquals(Playback.Unsupported, playback)
         assertNull(lastVibration(vibrator))
@@ -83,7 +84,7 @@ class VibratorHapticPlayerTest {
     @Test
     fun stop_afterPlay_cancelsVibration() {
         shadowOf(vibrator).setHasAmplitudeControl(true)
-        player.play(HapticIcon.STROKE)
+        player.play(HapticIcon.STROKE, VibrationUsage.TOUCH)
 
         player.stop()
 

@@ -1,6 +1,7 @@
 package org.hapticon.app.screenshots
 
 import androidx.compose.runtime.getValue
+import org.hapticon.app.playback.usageVibrator
 import androidx.lifecycle.compose.collectAsStateWithLifecycle
 import androidx.test.core.app.ApplicationProvider
 import org.hapticon.app.feature.glove.HandshakeActions
@@ -20,7 +21,7 @@ import org.junit.Test
 class HandshakeScreenshotTest : ScreenshotTest() {
     private val glove = TestGloveSource()
     private val viewModel = HandshakeViewModel(
-        glove, TestCalibrationStore(), VibratorVibrationOutput(defaultVibrator(ApplicationProvider.getApplicationContext())),
+        glove, TestCalibrationStore(), VibratorVibrationOutput(usageVibrator(defaultVibrator(ApplicationProvider.getApplicationContext()))),
         simulatedPartner = TestPartnerHand(thumbDegrees = 0.0, middleDegrees = 67.95), clock = TestClock(),
         link = TestHandshakeLink(),
     )

@@ -1,6 +1,7 @@
 package org.hapticon.app.study
 
 import kotlinx.coroutines.flow.MutableStateFlow
+import org.hapticon.core.platform.VibrationUsage
 import kotlinx.coroutines.flow.StateFlow
 import kotlinx.coroutines.flow.asStateFlow
 import org.hapticon.app.playback.HapticPlayer
@@ -19,19 +20,26 @@ class TestHapticPlayer(private val durationMillis: Long = 560) : HapticPlayer {
     /** The envelope model of each entry of [played]. */
     val models = ArrayList<EnvelopeModel>()
     val playedPatterns = ArrayList<HapticPattern>()
+
+    /** The usage of every play, icons and patterns, in order. */
+    val usages = ArrayList<VibrationUsage>()
     var stops = 0
 
     override val capabilities = PlaybackCapabilities(hasVibrator = true, hasAmplitudeControl = true, apiLevel = 35)
 
-    override fun play(icon: HapticIcon): Playback = play(icon, EnvelopeModel.DEFAULT)
+    override fun play(icon: HapticIcon, usage: VibrationUsage): Playback = play(icon, EnvelopeModel.DEFAULT, usage)
 
-    override fun play(icon: HapticIcon, model: EnvelopeModel): Playback {
+    override fun play(icon: HapticIcon, model: EnvelopeModel, usage: VibrationUsage): Playback {
         played += icon
         models += model
+        usages += usage
         return Playback.Playing(RendererKind.AMPLITUDE_WAVEFORM, durationMillis, Fidelity(0.0, 0.0, "exact"))
     }
 
-    override fun play(pattern: HapticPattern): Playback {
+    override fun verdict(usage: VibrationUsage) = org.hapticon.core.platform.VibrationVerdict.PLAYS
+
+    override fun play(pattern: HapticPattern, usage: VibrationUsage): Playback {
+        usages += usage
         playedPatterns += pattern
         return Playback.Playing(RendererKind.AMPLITUDE_WAVEFORM, durationMillis, Fidelity(0.0, 0.0, "exact"))
     }

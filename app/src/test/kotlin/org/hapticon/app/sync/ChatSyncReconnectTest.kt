@@ -1,6 +1,7 @@
 package org.hapticon.app.sync
 
 import androidx.room.Room
+import org.hapticon.app.playback.usageVibrator
 import androidx.test.core.app.ApplicationProvider
 import android.content.Context
 import android.os.Vibrator
@@ -100,7 +101,7 @@ class ChatSyncReconnectTest {
             { user, url, password ->
                 KilledMidPublish(MqttMessenger(MqttSettings(BrokerAddress.parse(url), user, password, phoneDevice, reconnectPolicy = twoMinutes))).also { made.complete(it) }
             },
-            AdaptiveHapticPlayer(vibrator, { device }, { null }, renderContext = EmptyCoroutineContext), VibrationRateLimiter(Clock.MONOTONIC),
+            AdaptiveHapticPlayer(usageVibrator(vibrator), { device }, { null }, renderContext = EmptyCoroutineContext), VibrationRateLimiter(Clock.MONOTONIC),
             { user -> RendererChoice.capabilitiesOf(user, device, null) }, scope,
         )
         sync.start()
@@ -135,7 +136,7 @@ class ChatSyncReconnectTest {
         val sync = ChatSync(
             repository, repository, settings,
             { user, url, password -> MqttMessenger(MqttSettings(BrokerAddress.parse(url), user, password, phoneDevice, reconnectPolicy = twoMinutes)).also { made += it } },
-            AdaptiveHapticPlayer(vibrator, { device }, { null }, renderContext = EmptyCoroutineContext), VibrationRateLimiter(Clock.MONOTONIC),
+            AdaptiveHapticPlayer(usageVibrator(vibrator), { device }, { null }, renderContext = EmptyCoroutineContext), VibrationRateLimiter(Clock.MONOTONIC),
             { user -> RendererChoice.capabilitiesOf(user, device, null) }, scope,
         )
         sync.start()

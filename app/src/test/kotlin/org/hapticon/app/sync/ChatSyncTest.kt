@@ -1,6 +1,7 @@
 package org.hapticon.app.sync
 
 import kotlin.coroutines.EmptyCoroutineContext
+import org.hapticon.app.playback.usageVibrator
 import android.content.Context
 import android.os.Vibrator
 import androidx.room.Room
@@ -24,6 +25,17 @@ import org.hapticon.app.playback.DeviceCapabilities
 import org.hapticon.app.playback.RecordedVibration
 import org.hapticon.app.playback.RendererChoice
 import org.hapticon.app.playback.lastVibration
+import org.hapticon.app.playback.lastUsage
+import org.hapticon.app.playback.PROCESSING_KNOCK
+import org.hapticon.app.playback.setProcessImportance
+import org.hapticon.app.playback.setScreenOn
+import org.hapticon.core.platform.AndroidVibrationRules
+import org.hapticon.core.platform.VibrationUsage
+import org.hapticon.core.platform.VibrationVerdict
+import org.hapticon.messaging.ArrivalAlert
+import org.hapticon.messaging.ArrivalConditions
+import org.hapticon.messaging.DoNotDisturb
+import org.hapticon.messaging.RingerMode
 import org.hapticon.core.HapticIcon
 import org.hapticon.core.io.IconJson
 import org.hapticon.messaging.ChatMessage
@@ -70,17 +82,19 @@ class ChatSyncTest {
         sync.start()
     }
 
-    /** A sync over this test's repository, settings and vibrator; [factory] and [quietNow] as a test needs them. */
+    /** A sync over this test's repository, settings and vibrator; [factory], [arrival] and [screenOn] as a test needs them. */
     private fun newSync(
         limiter: VibrationRateLimiter = VibrationRateLimiter(Clock { now }),
         factory: (String, String, String?) -> org.hapticon.messaging.Messenger? = { _, _, _ -> messenger },
-        quietNow: () -> Boolean = { false },
+        arrival: ArrivalConditions = ArrivalConditions.UNRESTRICTED,
+        screenOn: () -> Boolean = { true },
     ) = ChatSync(
         repository, repository, settings, factory,
         // Rendered on the test's own thread: this test is about the sync (threading: MainThreadWorkTest).
-        AdaptiveHapticPlayer(vibrator, { device }, { null }, renderContext = EmptyCoroutineContext), limiter,
+        AdaptiveHapticPlayer(usageVibrator(vibrator), { device }, { null }, renderContext = EmptyCoroutineContext), limiter,
         { user -> RendererChoice.capabilitiesOf(user, device, null, settings.preferences.value.pitchFit) }, scope, clock = { now },
-        retryPolicy = RetryPolicy(initialDelayMillis = 10, maxDelayMillis = 10, jitter = 0.0), quietNow = quietNow,
+        retryPolicy = RetryPolicy(initialDelayMillis = 10, maxDelayMillis = 10, jitter = 0.0),
+        arrivalConditions = { arrival }, screenOn = screenOn,
     )
 
     @After
@@ -287,15 +301,19 @@ class ChatSyncTest {
     fun autoPlay_played_sendsAFeltReceiptAndTellsTheNotifierItWasFelt() = runBlocking {
         await(messenger.state) { it == org.hapticon.messaging.ConnectionState.Connected }
         settings.update { it.copy(autoPlay = true) }
-        val incoming = mutableListOf<Pair<String, Boolean>>()
-        sync.onIncoming = { m, played -> incoming += m.id to played }
+        // What the notifier is told, and whether anything had vibrated by then: the notification comes first.
+        val incoming = mutableListOf<Triple<String, ArrivalAlert, RecordedVibration?>>()
+        sync.onIncoming = { m, alert -> incoming += Triple(m.id, alert, lastVibration(vibrator)) }
         val id = "0b7e7c1e-3f7b-4a57-9d3e-2f1c5a6b7c8d"
 
         messenger.deliver(InboxEvent.MessageReceived(ChatMessage(id, "bob", now, "", icon = HapticIcon.KNOCK)))
         messenger.deliver(InboxEvent.MessageReceived(ChatMessage(id, "bob", now, "", icon = HapticIcon.KNOCK)))
 
         assertEquals(listOf("bob" to Receipt(id, "alice", ReceiptState.FELT, now)), felt())
-        assertEquals(listOf(id to true), incoming)
+        assertEquals(listOf(Triple(id, ArrivalAlert.ICON, null)), incoming)
+        // Then the icon, once, as the received communication it is.
+        assertEquals(PROCESSING_KNOCK, lastVibration(vibrator))
+        assertEquals(VibrationUsage.COMMUNICATION_REQUEST, lastUsage(vibrator))
     }
 
     @Test
@@ -310,20 +328,72 @@ class ChatSyncTest {
         assertEquals(emptyList<Pair<String, Receipt>>(), felt())
     }
 
-    @Test
-    fun autoPlay_doNotDisturb_nothingVibratesAndNoFeltReceipt() = runBlocking {
+    /** A knock from bob to a sync restarted under [arrival] and [screenOn]; what the notifier was told. */
+    private fun knockUnder(arrival: ArrivalConditions, screenOn: () -> Boolean = { true }, open: Boolean = false): List<ArrivalAlert> = runBlocking {
         scope.coroutineContext[kotlinx.coroutines.Job]!!.children.forEach { it.cancelAndJoin() }
-        val quiet = newSync(quietNow = { true })
-        quiet.start()
+        val restarted = newSync(arrival = arrival, screenOn = screenOn)
+        restarted.start()
         await(messenger.state) { it == org.hapticon.messaging.ConnectionState.Connected }
         settings.update { it.copy(autoPlay = true) }
-        val incoming = mutableListOf<Boolean>()
-        quiet.onIncoming = { _, played -> incoming += played }
+        val incoming = mutableListOf<ArrivalAlert>()
+        restarted.onIncoming = { _, alert -> incoming += alert }
+        if (open) restarted.openConversation("bob")
         messenger.deliver(InboxEvent.MessageReceived(ChatMessage("0b7e7c1e-3f7b-4a57-9d3e-2f1c5a6b7c8d", "bob", now, "", icon = HapticIcon.KNOCK)))
+        incoming
+    }
+
+    @Test
+    fun autoPlay_doNotDisturb_nothingVibratesAndNoFeltReceipt() {
+        val incoming = knockUnder(ArrivalConditions.UNRESTRICTED.copy(doNotDisturb = DoNotDisturb(DoNotDisturb.Filter.NONE)))
 
         assertNull(lastVibration(vibrator))
         assertEquals(emptyList<Pair<String, Receipt>>(), felt())
-        assertEquals(listOf(false), incoming)
+        // On the message channel, which Android itself intercepts in Do Not Disturb: no ring either.
+        assertEquals(listOf(ArrivalAlert.NOTIFICATION), incoming)
+    }
+
+    @Test
+    fun autoPlay_silentPhone_nothingVibratesAndNoFeltReceipt() {
+        val incoming = knockUnder(ArrivalConditions.UNRESTRICTED.copy(ringer = RingerMode.SILENT))
+
+        assertNull(lastVibration(vibrator))
+        assertEquals(emptyList<Pair<String, Receipt>>(), felt())
+        assertEquals(listOf(ArrivalAlert.NOTIFICATION), incoming)
+    }
+
+    @Test
+    fun autoPlay_appSwipedAwayScreenOff_playsAsACommunicationRequestAndIsFelt() {
+        // The process Android's vibrator sees: cached (no activity, no service), the screen off.
+        setProcessImportance(AndroidVibrationRules.IMPORTANCE_CACHED)
+        setScreenOn(false)
+        assertEquals(VibrationVerdict.BACKGROUND, usageVibrator(vibrator).verdict(VibrationUsage.TOUCH))
+
+        val incoming = knockUnder(ArrivalConditions.UNRESTRICTED, screenOn = { false })
+
+        assertEquals(listOf(ArrivalAlert.ICON), incoming)
+        assertEquals(PROCESSING_KNOCK, lastVibration(vibrator))
+        assertEquals(VibrationUsage.COMMUNICATION_REQUEST, lastUsage(vibrator))
+        assertEquals(listOf("bob" to Receipt("0b7e7c1e-3f7b-4a57-9d3e-2f1c5a6b7c8d", "alice", ReceiptState.FELT, now)), felt())
+    }
+
+    @Test
+    fun autoPlay_noVibrator_theMessageChannelAlertsAndNothingIsFelt() {
+        shadowOf(vibrator).setHasVibrator(false)
+
+        val incoming = knockUnder(ArrivalConditions.UNRESTRICTED)
+
+        assertEquals(listOf(ArrivalAlert.NOTIFICATION), incoming)
+        assertNull(lastVibration(vibrator))
+        assertEquals(emptyList<Pair<String, Receipt>>(), felt())
+    }
+
+    @Test
+    fun conversationOpenButScreenOff_notReadAndStillNotified() = runBlocking {
+        val incoming = knockUnder(ArrivalConditions.UNRESTRICTED, screenOn = { false }, open = true)
+
+        assertEquals(listOf(ArrivalAlert.ICON), incoming)
+        assertEquals(MessageState.RECEIVED, repository.messages("bob").first().single().state)
+        assertEquals(emptyList<Receipt>(), messenger.sentReceipts.value.map { it.second }.filter { it.state == ReceiptState.READ })
     }
 
     @Test

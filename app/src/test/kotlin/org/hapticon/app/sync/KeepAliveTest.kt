@@ -204,7 +204,7 @@ class ChatSyncKeepAliveTest {
     private val sync = ChatSync(
         repository, repository, InMemoryChatSettings(ChatPreferences(userName = "alice", brokerUrl = "tcp://192.168.1.20:1883")),
         { user, _, _ -> TestMessenger(user).also { synchronized(made) { made += it } } },
-        AdaptiveHapticPlayer(context.getSystemService(Vibrator::class.java), { device }, { null }), VibrationRateLimiter(Clock.MONOTONIC),
+        AdaptiveHapticPlayer(org.hapticon.app.playback.usageVibrator(context.getSystemService(Vibrator::class.java)), { device }, { null }), VibrationRateLimiter(Clock.MONOTONIC),
         { user -> RendererChoice.capabilitiesOf(user, device, null) }, scope,
         retryPolicy = RetryPolicy(initialDelayMillis = 10, maxDelayMillis = 10, jitter = 0.0),
     )

@@ -1,6 +1,7 @@
 package org.hapticon.app.sync
 
 import android.content.Context
+import org.hapticon.app.playback.usageVibrator
 import android.net.ConnectivityManager
 import android.os.Vibrator
 import androidx.room.Room
@@ -57,7 +58,7 @@ class NetworkWatcherTest {
 
     private fun sync(brokerUrl: String, password: String?, factory: (String, String, String?) -> Messenger?) = ChatSync(
         repository, repository, InMemoryChatSettings(ChatPreferences(userName = "alice", brokerUrl = brokerUrl, brokerPassword = password)),
-        factory, AdaptiveHapticPlayer(vibrator, { device }, { null }), VibrationRateLimiter(Clock.MONOTONIC),
+        factory, AdaptiveHapticPlayer(usageVibrator(vibrator), { device }, { null }), VibrationRateLimiter(Clock.MONOTONIC),
         { user -> RendererChoice.capabilitiesOf(user, device, null) }, scope,
     )
 

@@ -14,6 +14,11 @@ import org.hapticon.app.HapticonApplication
 import org.hapticon.app.data.database.MessageState
 import org.hapticon.app.playback.RecordedVibration
 import org.hapticon.app.playback.lastVibration
+import org.hapticon.app.playback.lastUsage
+import org.hapticon.app.playback.setProcessImportance
+import org.hapticon.app.playback.setScreenOn
+import org.hapticon.core.platform.AndroidVibrationRules
+import org.hapticon.core.platform.VibrationUsage
 import org.hapticon.core.HapticIcon
 import org.hapticon.core.pattern.AmplitudeKey
 import org.hapticon.core.pattern.FrequencyKey
@@ -86,6 +91,44 @@ class NotificationActionTest {
 
         awaitTrue("the vibration") { lastVibration(vibrator) != null }
         assertEquals(RecordedVibration(listOf(10L, 10L, 250L, 10L, 10L, 250L, 10L, 10L), listOf(175, 111, 0, 175, 111, 0, 175, 111)), lastVibration(vibrator))
+        // The sender's icon, replayed: a communication request, as on arrival.
+        assertEquals(VibrationUsage.COMMUNICATION_REQUEST, lastUsage(vibrator))
+    }
+
+    private fun owedFelt(id: String) = runBlocking { chat.repository.pendingReceipts() }.filter { it.receipt.messageId == id && it.receipt.state.name == "FELT" }
+
+    @Test
+    fun feelAgain_fromTheShadeWithTheAppSwipedAwayAndTheScreenOff_playsAndIsFelt() {
+        chat.settings.update { it.copy(userName = "alice") }
+        val vibrator = app.getSystemService(Vibrator::class.java)
+        shadowOf(vibrator).setHasAmplitudeControl(true)
+        // What Android's vibrator sees of a process woken by the shade's broadcast: not foreground, screen off.
+        setProcessImportance(AndroidVibrationRules.IMPORTANCE_CACHED)
+        setScreenOn(false)
+        val message = ChatMessage("0b7e7c1e-3f7b-4a57-9d3e-2f1c5a6b7c9a", "bob", 1_767_225_600_000, "", icon = HapticIcon.KNOCK)
+        runBlocking { chat.repository.receive(message) }
+
+        broadcast(Intent(MessageNotifier.ACTION_FEEL).putExtra(MessageNotifier.EXTRA_PEER, "bob").putExtra(MessageNotifier.EXTRA_MESSAGE, message.id))
+
+        awaitTrue("the vibration") { lastVibration(vibrator) != null }
+        assertEquals(VibrationUsage.COMMUNICATION_REQUEST, lastUsage(vibrator))
+        // No broker here: the felt receipt waits in Room for the next connection.
+        awaitTrue("the owed felt receipt") { owedFelt(message.id).isNotEmpty() }
+    }
+
+    @Test
+    fun feelAgain_whenAndroidWouldNotPlay_noFeltReceipt() {
+        chat.settings.update { it.copy(userName = "alice") }
+        val vibrator = app.getSystemService(Vibrator::class.java)
+        shadowOf(vibrator).setHasVibrator(false)
+        val message = ChatMessage("0b7e7c1e-3f7b-4a57-9d3e-2f1c5a6b7c9b", "bob", 1_767_225_600_000, "", icon = HapticIcon.KNOCK)
+        runBlocking { chat.repository.receive(message) }
+
+        broadcast(Intent(MessageNotifier.ACTION_FEEL).putExtra(MessageNotifier.EXTRA_PEER, "bob").putExtra(MessageNotifier.EXTRA_MESSAGE, message.id))
+        Thread.sleep(1_000) // time enough for a receipt to be queued, were one sent
+
+        assertEquals(null, lastVibration(vibrator))
+        assertEquals(emptyList<Any>(), owedFelt(message.id))
     }
 
     @Test

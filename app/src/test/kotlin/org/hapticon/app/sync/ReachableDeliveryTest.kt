@@ -1,6 +1,7 @@
 package org.hapticon.app.sync
 
 import kotlin.coroutines.EmptyCoroutineContext
+import org.hapticon.app.playback.usageVibrator
 import android.Manifest
 import android.app.Application
 import android.app.NotificationManager
@@ -29,6 +30,8 @@ import org.hapticon.app.playback.DeviceCapabilities
 import org.hapticon.app.playback.RecordedVibration
 import org.hapticon.app.playback.RendererChoice
 import org.hapticon.app.playback.lastVibration
+import org.hapticon.app.playback.lastUsage
+import org.hapticon.core.platform.VibrationUsage
 import org.hapticon.core.HapticIcon
 import org.hapticon.messaging.ChatMessage
 import org.hapticon.messaging.Clock
@@ -96,11 +99,11 @@ class ReachableDeliveryTest {
             repository, repository, settings,
             { user, url, password -> MqttMessenger(MqttSettings(BrokerAddress.parse(url), user, password, phoneDevice, reconnectPolicy = fastReconnect)) },
             // Rendered on the calling thread: this test is about delivery (threading: MainThreadWorkTest).
-            AdaptiveHapticPlayer(vibrator, { device }, { null }, renderContext = EmptyCoroutineContext), VibrationRateLimiter(Clock.MONOTONIC),
+            AdaptiveHapticPlayer(usageVibrator(vibrator), { device }, { null }, renderContext = EmptyCoroutineContext), VibrationRateLimiter(Clock.MONOTONIC),
             { user -> RendererChoice.capabilitiesOf(user, device, null) }, scope,
         )
         val notifier = MessageNotifier(context) { "alice" }
-        sync.onIncoming = { message, _ -> notifier.show(message) }
+        sync.onIncoming = { message, alert -> notifier.show(message, alert) }
         sync.start()
         await(sync.connection) { it == ConnectionState.Connected }
         bob = MqttMessenger(MqttSettings(address, "bob", "bob-secret", DeviceId.generate(), reconnectPolicy = fastReconnect))
@@ -139,10 +142,13 @@ class ReachableDeliveryTest {
         awaitTrue("notification") { lines().isNotEmpty() }
         assertEquals(listOf("〰 knock · feel this"), lines())
         val posted = shadowOf(notifications).getNotification("bob", MessageNotifier.NOTIFICATION_ID)
-        assertEquals("chat-bob", posted.channelId)
+        // On bob's icon channel, which neither rings nor vibrates: the knock that follows is the message's vibration.
+        assertEquals("icons-bob", posted.channelId)
         assertEquals(listOf("Reply", "Mark as read", "Feel knock again"), posted.actions.map { it.title.toString() })
-        // Autoplay felt it through the normal renderer: the knock's exact amplitude steps.
+        // Autoplay felt it through the normal renderer: the knock's exact amplitude steps, as a received communication.
+        awaitTrue("the knock") { lastVibration(vibrator) != null }
         assertEquals(RecordedVibration(listOf(10L, 10L, 250L, 10L, 10L, 250L, 10L, 10L), listOf(175, 111, 0, 175, 111, 0, 175, 111)), lastVibration(vibrator))
+        assertEquals(VibrationUsage.COMMUNICATION_REQUEST, lastUsage(vibrator))
         awaitTrue("felt receipt") { receipts(ReceiptState.FELT) == listOf(first.id) }
 
         // MQTT is at-least-once: the same message again is stored, shown and felt no second time.

@@ -54,7 +54,7 @@ class RetryAndDirectoryTest {
     private val repository = OfflineFirstChatRepository(db, clock = { now })
     private val messenger = TestMessenger("alice")
     private val scope = CoroutineScope(SupervisorJob() + Dispatchers.Default)
-    private val player = AdaptiveHapticPlayer(context.getSystemService(Vibrator::class.java), { device }, { null }, renderContext = EmptyCoroutineContext)
+    private val player = AdaptiveHapticPlayer(org.hapticon.app.playback.usageVibrator(context.getSystemService(Vibrator::class.java)), { device }, { null }, renderContext = EmptyCoroutineContext)
     private val sync = ChatSync(
         repository, repository, InMemoryChatSettings(ChatPreferences(userName = "alice")), { _, _, _ -> messenger },
         player, VibrationRateLimiter(Clock { now }), { user -> RendererChoice.capabilitiesOf(user, device, null) }, scope,

@@ -11,7 +11,6 @@ import androidx.compose.material3.AlertDialog
 import androidx.compose.material3.Text
 import androidx.compose.material3.TextButton
 import androidx.compose.runtime.Composable
-import androidx.compose.runtime.DisposableEffect
 import androidx.compose.runtime.LaunchedEffect
 import androidx.compose.runtime.getValue
 import androidx.compose.runtime.mutableStateOf
@@ -38,6 +37,7 @@ import org.hapticon.app.feature.iconeditor.IconEditorRoute
 import org.hapticon.app.playback.RendererChoice
 import org.hapticon.app.sync.ChatComponent
 import org.hapticon.app.sync.KeepAlive
+import org.hapticon.app.sync.MessageNotifier
 import org.hapticon.app.sync.ReachableService
 import org.hapticon.messaging.ConnectionState
 import org.hapticon.messaging.InviteLink
@@ -102,6 +102,31 @@ fun ChatsRoute(component: ChatComponent, onOpenStudy: () -> Unit = {}, navigatio
             screen = ChatScreen.CONVERSATION
         }
     }
+    // Shared text: straight into the picked conversation's composer, or held for the chat the user opens next.
+    var sharedDraft by rememberSaveable { mutableStateOf<String?>(null) }
+    var choosingForShare by rememberSaveable { mutableStateOf(false) }
+    val pendingShare by component.pendingShare.collectAsStateWithLifecycle()
+    LaunchedEffect(pendingShare) {
+        val share = pendingShare ?: return@LaunchedEffect
+        component.pendingShare.value = null
+        sharedDraft = share.text
+        val to = share.peer
+        if (to != null && Topics.isValidUserName(to)) {
+            peer = to
+            screen = ChatScreen.CONVERSATION
+        } else {
+            screen = ChatScreen.LIST
+            choosingForShare = true
+        }
+    }
+    if (choosingForShare) {
+        AlertDialog(
+            onDismissRequest = { choosingForShare = false },
+            confirmButton = { TextButton(onClick = { choosingForShare = false }) { Text("OK") } },
+            title = { Text("Share") },
+            text = { Text("Open a chat: the shared text will be in its message field, ready to send.") },
+        )
+    }
     inviteMessage?.let { message ->
         AlertDialog(
             onDismissRequest = { inviteMessage = null },
@@ -124,7 +149,10 @@ fun ChatsRoute(component: ChatComponent, onOpenStudy: () -> Unit = {}, navigatio
                 screen = ChatScreen.LIST
             } else {
                 BackHandler(onBack = back)
-                ConversationRoute(component, current, onBack = back, onEditIcon = { screen = ChatScreen.EDITOR })
+                ConversationRoute(
+                    component, current, onBack = back, onEditIcon = { screen = ChatScreen.EDITOR },
+                    sharedText = sharedDraft, onSharedTextUsed = { sharedDraft = null },
+                )
             }
         }
         ChatScreen.SETTINGS -> {
@@ -209,7 +237,14 @@ fun ChatListRoute(
 }
 
 @Composable
-fun ConversationRoute(component: ChatComponent, peer: String, onBack: () -> Unit, onEditIcon: () -> Unit) {
+fun ConversationRoute(
+    component: ChatComponent,
+    peer: String,
+    onBack: () -> Unit,
+    onEditIcon: () -> Unit,
+    sharedText: String? = null,
+    onSharedTextUsed: () -> Unit = {},
+) {
     val viewModel: ConversationViewModel = viewModel(
         key = "conversation-$peer",
         factory = viewModelFactory {
@@ -223,11 +258,18 @@ fun ConversationRoute(component: ChatComponent, peer: String, onBack: () -> Unit
             }
         },
     )
-    // Read receipts go out while the conversation is on screen; its notification goes away.
-    DisposableEffect(peer) {
+    // On screen means RESUMED: the app left with the chat open (another app, the screen off) pauses it, so later
+    // messages are neither marked read nor kept from notifying. The notification goes away; Android learns which
+    // conversation is shown (its LocusId, the same as its shortcut's and notification's).
+    val activity = androidx.activity.compose.LocalActivity.current
+    androidx.lifecycle.compose.LifecycleResumeEffect(peer) {
         component.sync.openConversation(peer)
         component.notifier?.clear(peer)
-        onDispose { component.sync.closeConversation(peer) }
+        if (android.os.Build.VERSION.SDK_INT >= 29) activity?.setLocusContext(android.content.LocusId(MessageNotifier.shortcutId(peer)), null)
+        onPauseOrDispose {
+            component.sync.closeConversation(peer)
+            if (android.os.Build.VERSION.SDK_INT >= 29) activity?.setLocusContext(null, null)
+        }
     }
     val uiState by viewModel.uiState.collectAsStateWithLifecycle()
     val prefs by component.settings.preferences.collectAsStateWithLifecycle()
@@ -240,6 +282,8 @@ fun ConversationRoute(component: ChatComponent, peer: String, onBack: () -> Unit
             onSelectPattern = viewModel::selectPattern, onPreviewPattern = viewModel::play,
         ),
         enterSends = prefs.enterSends,
+        sharedText = sharedText,
+        onSharedTextUsed = onSharedTextUsed,
     )
 }
 

@@ -24,6 +24,9 @@ import org.hapticon.app.data.database.StoredMessage
 import org.hapticon.app.playback.HapticPlayer
 import org.hapticon.app.playback.playMessageOffMain
 import org.hapticon.app.playback.playOffMain
+import org.hapticon.app.playback.Playback
+import org.hapticon.app.playback.messageUsage
+import org.hapticon.core.platform.VibrationUsage
 import org.hapticon.app.playback.PeerPitch
 import org.hapticon.app.playback.RendererChoice
 import org.hapticon.app.sync.BrokerProbe
@@ -320,7 +323,7 @@ class ConversationViewModel(
     peerCapabilities: StateFlow<Map<String, Capabilities>>,
     /** Wakes the outbox sender after a message was stored or a retry asked for. */
     private val onSent: () -> Unit,
-    /** Tells the sync that the user felt a received message's icon (the felt receipt). */
+    /** Tells the sync that Android played a received message's icon at the user's press (the felt receipt). */
     private val onFelt: (peer: String, messageId: String) -> Unit = { _, _ -> },
     /** The user's patterns ([org.hapticon.app.data.RoomPatternRepository]); none where the app has no pattern store. */
     patterns: Flow<List<HapticPattern>> = flowOf(emptyList()),
@@ -399,21 +402,26 @@ class ConversationViewModel(
         draft.value = draft.value.copy(sticker = sticker, error = null)
     }
 
-    /** Feels [icon] on this phone (a long press in the composer): a press by the user, so not rate-limited. */
+    /** Feels [icon] on this phone (a long press in the composer): a press by the user (a touch), so not rate-limited. */
     fun play(icon: HapticIcon) {
-        viewModelScope.launch { player.playOffMain(icon) }
+        viewModelScope.launch { player.playOffMain(icon, VibrationUsage.TOUCH) }
     }
 
     /** Feels [pattern] on this phone (a long press in the composer), planned for this phone as a received one is. */
     fun play(pattern: HapticPattern) {
-        viewModelScope.launch { player.playOffMain(pattern) }
+        viewModelScope.launch { player.playOffMain(pattern, VibrationUsage.TOUCH) }
     }
 
-    /** Feels a message's icon or pattern; for a received message the sender learns it was felt. */
+    /**
+     * Feels a message's icon or pattern. A received one plays as what it is, the peer's communication
+     * ([messageUsage]); its sender learns it was felt only once Android played it ([Playback.Playing]).
+     */
     fun feel(message: StoredMessage) {
         if (message.icon == null && message.pattern == null) return
-        viewModelScope.launch { player.playMessageOffMain(message.icon, message.pattern) }
-        if (!message.outgoing) onFelt(peer, message.id)
+        viewModelScope.launch {
+            val playback = player.playMessageOffMain(message.icon, message.pattern, messageUsage(message.outgoing))
+            if (!message.outgoing && playback is Playback.Playing) onFelt(peer, message.id)
+        }
     }
 
     /** Sends a failed or waiting own message now: the same row and id, shown as sending again until the broker has it. */

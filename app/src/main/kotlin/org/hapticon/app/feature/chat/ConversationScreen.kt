@@ -147,6 +147,9 @@ fun ConversationScreen(
     nowMillis: Long = System.currentTimeMillis(),
     /** The keyboard's Enter sends (the user's "Enter key sends" setting); otherwise it starts a new line. */
     enterSends: Boolean = false,
+    /** Text shared from another app: it goes into the message field once, then [onSharedTextUsed]. */
+    sharedText: String? = null,
+    onSharedTextUsed: () -> Unit = {},
 ) {
     val title = (uiState as? ConversationUiState.Success)?.peer ?: ""
     Scaffold(
@@ -173,7 +176,7 @@ fun ConversationScreen(
                 }
                 ArrivalAnnouncer(uiState.messages, clock)
                 MessageList(uiState, actions, clock, nowMillis, Modifier.weight(1f).fillMaxWidth())
-                Composer(uiState, actions, enterSends)
+                Composer(uiState, actions, enterSends, sharedText, onSharedTextUsed)
             }
         }
     }
@@ -458,8 +461,20 @@ private fun FeelChip(label: String, onClick: () -> Unit, labelColor: Color, thum
 
 @OptIn(ExperimentalFoundationApi::class, ExperimentalLayoutApi::class)
 @Composable
-private fun Composer(uiState: ConversationUiState.Success, actions: ConversationActions, enterSends: Boolean) {
+private fun Composer(
+    uiState: ConversationUiState.Success,
+    actions: ConversationActions,
+    enterSends: Boolean,
+    sharedText: String? = null,
+    onSharedTextUsed: () -> Unit = {},
+) {
     var text by rememberSaveable { mutableStateOf("") }
+    // Shared text joins what is typed already, and is not sent until the user sends it.
+    LaunchedEffect(sharedText) {
+        if (sharedText == null) return@LaunchedEffect
+        text = if (text.isBlank()) sharedText else "$text $sharedText"
+        onSharedTextUsed()
+    }
     // The send button and, when the user chose so, the keyboard's Enter: the field keeps the focus (and the
     // keyboard stays up) for the next message, as in Google Messages.
     // The field empties once the message is stored; a send that fails (too long, say) keeps the text under its error.

@@ -24,6 +24,7 @@ import org.hapticon.app.gesture.SavedRecording
 import org.hapticon.app.gesture.SourceRecorder
 import org.hapticon.app.playback.HapticPlayer
 import org.hapticon.app.playback.playOffMain
+import org.hapticon.core.platform.VibrationUsage
 import org.hapticon.core.HapticIcon
 import org.hapticon.core.IconValidationException
 import org.hapticon.gesture.Recording
@@ -212,7 +213,7 @@ class RecorderViewModel(
 
     /** Plays the fitted icon. */
     fun play() {
-        namedIcon()?.let { viewModelScope.launch { player.playOffMain(it) } }
+        namedIcon()?.let { viewModelScope.launch { player.playOffMain(it, VibrationUsage.TOUCH) } }
     }
 
     /** Saves the fitted icon as a custom icon (replacing one of the same name). */

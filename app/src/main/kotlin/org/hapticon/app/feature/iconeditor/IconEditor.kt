@@ -26,6 +26,7 @@ import org.hapticon.app.data.RoomIconRepository
 import org.hapticon.app.playback.HapticPlayer
 import org.hapticon.app.ui.EditorScaffold
 import org.hapticon.app.playback.playOffMain
+import org.hapticon.core.platform.VibrationUsage
 import org.hapticon.app.ui.EnvelopeThumbnail
 import org.hapticon.app.ui.PlayAndSave
 import org.hapticon.app.ui.ValidatedField
@@ -95,7 +96,7 @@ class IconEditorViewModel(
     }
 
     fun play() {
-        uiState.value.icon?.let { viewModelScope.launch { player.playOffMain(it) } }
+        uiState.value.icon?.let { viewModelScope.launch { player.playOffMain(it, VibrationUsage.TOUCH) } }
     }
 
     fun save(onSaved: () -> Unit = {}) {

@@ -22,6 +22,7 @@ import org.hapticon.app.playback.PatternPlan
 import org.hapticon.app.playback.HapticPlayer
 import org.hapticon.app.playback.Playback
 import org.hapticon.app.playback.playOffMain
+import org.hapticon.core.platform.VibrationUsage
 import org.hapticon.messaging.RendererKind
 import org.hapticon.core.HapticIcon
 import org.hapticon.core.pattern.HapticPattern
@@ -54,11 +55,14 @@ class IconsViewModel(
             )
         }.stateIn(viewModelScope, SharingStarted.WhileSubscribed(5_000), IconsUiState.Loading)
 
-    /** Plays [icon] on the vibrator (rendered off the main thread); the UI shows it as playing until it ends. */
-    fun play(icon: HapticIcon) = show(icon.name, isPattern = false) { player.playOffMain(icon) }
+    /**
+     * Plays [icon] on the vibrator (rendered off the main thread) as a press in the open app ([VibrationUsage.TOUCH]);
+     * the UI shows it as playing until it ends, or why Android did not play it.
+     */
+    fun play(icon: HapticIcon) = show(icon.name, isPattern = false) { player.playOffMain(icon, VibrationUsage.TOUCH) }
 
-    /** Plays [pattern] on the vibrator (the best way this phone can: [AdaptiveHapticPlayer.planFor]), off the main thread. */
-    fun play(pattern: HapticPattern) = show(pattern.name, isPattern = true) { player.playOffMain(pattern) }
+    /** Plays [pattern] on the vibrator (the best way this phone can: [AdaptiveHapticPlayer.planFor]), off the main thread, as [play] does. */
+    fun play(pattern: HapticPattern) = show(pattern.name, isPattern = true) { player.playOffMain(pattern, VibrationUsage.TOUCH) }
 
     /** Imports a pattern file from outside; the screen shows what was imported, with notes, or the one-line error. */
     fun import(bytes: ByteArray, fileName: String) {
@@ -102,6 +106,10 @@ class IconsViewModel(
                     nowPlaying.value = null
                 }
                 Playback.Unsupported -> nowPlaying.value = null
+                is Playback.Ignored -> {
+                    nowPlaying.value = null
+                    importMessage.value = "$name did not play: ${playback.verdict.explanation}."
+                }
             }
         }
     }
@@ -123,7 +131,7 @@ sealed interface IconsUiState {
         val nowPlaying: NowPlaying?,
         /** The user's imported and edited patterns. */
         val patterns: List<PatternItem> = emptyList(),
-        /** What the last import did (one line, plus the reader's notes), until dismissed. */
+        /** What the last import did (one line, plus the reader's notes), or why Android did not play a pressed icon, until dismissed. */
         val importMessage: String? = null,
     ) : IconsUiState
 }

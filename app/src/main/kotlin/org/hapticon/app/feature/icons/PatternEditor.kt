@@ -72,7 +72,7 @@ class PatternEditorViewModel(
     }
 
     fun play() {
-        uiState.value.preview?.let { player.play(it) }
+        uiState.value.preview?.let { player.play(it, org.hapticon.core.platform.VibrationUsage.TOUCH) }
     }
 
     fun save(onSaved: () -> Unit = {}) {

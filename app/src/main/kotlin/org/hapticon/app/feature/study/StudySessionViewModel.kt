@@ -14,6 +14,7 @@ import kotlinx.coroutines.sync.Mutex
 import kotlinx.coroutines.sync.withLock
 import org.hapticon.app.playback.HapticPlayer
 import org.hapticon.app.playback.playOffMain
+import org.hapticon.core.platform.VibrationUsage
 import org.hapticon.app.playback.Playback
 import org.hapticon.app.study.MaskingNoisePlayer
 import org.hapticon.app.study.SessionRecord
@@ -101,7 +102,8 @@ class StudySessionViewModel(
             }
             append(StudyEvent.IconPressed(taskId, stimulus.id))
             // The protocol's envelope model: a paper-model protocol plays the paper's trapezoids, the default what the study's participants felt.
-            val playback = player.playOffMain(stimulus.icon, record.protocol.envelopeModel)
+            // The participant's press in the open app: a touch. One Android ignores (Battery Saver) is not logged as started.
+            val playback = player.playOffMain(stimulus.icon, record.protocol.envelopeModel, VibrationUsage.TOUCH)
             if (playback is Playback.Playing) {
                 append(StudyEvent.PlaybackStarted(taskId, stimulus.id))
                 playing = true

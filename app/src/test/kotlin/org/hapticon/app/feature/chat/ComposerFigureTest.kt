@@ -1,6 +1,7 @@
 package org.hapticon.app.feature.chat
 
 import android.content.Context
+import org.hapticon.core.platform.VibrationUsage
 import android.os.Looper
 import android.os.strictmode.Violation
 import androidx.room.Room
@@ -64,8 +65,9 @@ class ComposerFigureTest {
     private val player = object : HapticPlayer {
         override val capabilities = PlaybackCapabilities(hasVibrator = true, hasAmplitudeControl = true, apiLevel = 35)
         override val renderContext: CoroutineContext = renderThread.asCoroutineDispatcher()
-        override fun play(icon: HapticIcon): Playback = Playback.Unsupported
-        override fun play(pattern: HapticPattern): Playback = Playback.Unsupported
+        override fun play(icon: HapticIcon, usage: VibrationUsage): Playback = Playback.Unsupported
+        override fun play(pattern: HapticPattern, usage: VibrationUsage): Playback = Playback.Unsupported
+        override fun verdict(usage: VibrationUsage) = org.hapticon.core.platform.VibrationVerdict.PLAYS
         override fun stop() {}
     }
 
@@ -144,8 +146,9 @@ class ComposerFigureTest {
     fun control_figureOnTheCallersThread_isCaughtOnTheMainThread() {
         val onCaller = object : HapticPlayer {
             override val capabilities = PlaybackCapabilities(hasVibrator = true, hasAmplitudeControl = true, apiLevel = 35)
-            override fun play(icon: HapticIcon): Playback = Playback.Unsupported
-            override fun play(pattern: HapticPattern): Playback = Playback.Unsupported
+            override fun play(icon: HapticIcon, usage: VibrationUsage): Playback = Playback.Unsupported
+            override fun play(pattern: HapticPattern, usage: VibrationUsage): Playback = Playback.Unsupported
+            override fun verdict(usage: VibrationUsage) = org.hapticon.core.platform.VibrationVerdict.PLAYS
             override fun stop() {}
         }
         val hitFigure = RendererChoice.fidelityPercent(RendererKind.AMPLITUDE_WAVEFORM, HapticIcon.HIT)

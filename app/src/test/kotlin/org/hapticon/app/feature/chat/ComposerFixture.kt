@@ -1,6 +1,7 @@
 package org.hapticon.app.feature.chat
 
 import android.content.Context
+import org.hapticon.app.playback.usageVibrator
 import android.os.Vibrator
 import androidx.compose.runtime.collectAsState
 import androidx.compose.runtime.getValue
@@ -51,7 +52,7 @@ class ComposerFixture(
     }
 
     /** The app's player on this phone's vibrator. */
-    fun player(): HapticPlayer = AdaptiveHapticPlayer(vibrator, { device }, { null })
+    fun player(): HapticPlayer = AdaptiveHapticPlayer(usageVibrator(vibrator), { device }, { null })
 
     /**
      * Shows the conversation with bob, the ViewModel taking [onSent] (wakes the outbox), [onFelt] (the felt

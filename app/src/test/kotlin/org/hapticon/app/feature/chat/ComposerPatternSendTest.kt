@@ -1,6 +1,7 @@
 package org.hapticon.app.feature.chat
 
 import androidx.compose.ui.semantics.SemanticsProperties
+import org.hapticon.app.playback.usageVibrator
 import androidx.compose.ui.test.SemanticsMatcher
 import androidx.compose.ui.test.hasSetTextAction
 import androidx.compose.ui.test.junit4.createComposeRule
@@ -88,7 +89,7 @@ class ComposerPatternSendTest {
         messenger = TestMessenger("alice")
         sync = ChatSync(
             repository, repository, InMemoryChatSettings(ChatPreferences(userName = "alice")), { _, _, _ -> messenger },
-            AdaptiveHapticPlayer(vibrator, { device }, { null }, renderContext = EmptyCoroutineContext),
+            AdaptiveHapticPlayer(usageVibrator(vibrator), { device }, { null }, renderContext = EmptyCoroutineContext),
             VibrationRateLimiter(Clock { now }), { user -> RendererChoice.capabilitiesOf(user, device, null) }, scope,
             clock = { now },
         )

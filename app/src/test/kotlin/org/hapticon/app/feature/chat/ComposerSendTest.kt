@@ -1,6 +1,8 @@
 package org.hapticon.app.feature.chat
 
 import androidx.compose.ui.test.hasSetTextAction
+import org.hapticon.app.playback.lastUsage
+import org.hapticon.core.platform.VibrationUsage
 import androidx.compose.ui.test.junit4.createComposeRule
 import androidx.compose.ui.test.onNodeWithContentDescription
 import androidx.compose.ui.test.performClick
@@ -58,6 +60,7 @@ class ComposerSendTest {
         // A long press previews: the knock went to the vibrator, and nothing was chosen.
         // The processing knock (the default model): 10 ms at 175, 10 ms at 111, then 250 ms off, three times.
         assertEquals(RecordedVibration(listOf(10L, 10L, 250L, 10L, 10L, 250L, 10L, 10L), listOf(175, 111, 0, 175, 111, 0, 175, 111)), lastVibration(fixture.vibrator))
+        assertEquals(VibrationUsage.TOUCH, lastUsage(fixture.vibrator))
         compose.onNode(composerIconChip("knock")).assertStateDescription("not selected")
         compose.onNode(composerIconChip("knock")).performClick()
         compose.onNode(composerIconChip("knock")).assertStateDescription("selected")

@@ -1,6 +1,8 @@
 package org.hapticon.app.feature.chat
 
 import android.content.Context
+import org.hapticon.core.platform.VibrationUsage
+import org.hapticon.app.playback.usageVibrator
 import android.os.Vibrator
 import androidx.compose.runtime.collectAsState
 import androidx.compose.runtime.getValue
@@ -55,11 +57,11 @@ class ConversationScreenTest {
         val context = ApplicationProvider.getApplicationContext<Context>()
         val vibrator = context.getSystemService(Vibrator::class.java)
         shadowOf(vibrator).setHasAmplitudeControl(true)
-        val player = AdaptiveHapticPlayer(vibrator, { DeviceCapabilities(true, true, 35) }, { null })
+        val player = AdaptiveHapticPlayer(usageVibrator(vibrator), { DeviceCapabilities(true, true, 35) }, { null })
         compose.setContent {
             ConversationScreen(
                 state(listOf(message(1, false, MessageState.RECEIVED, HapticIcon.KNOCK))),
-                ConversationActions(onFeel = { player.play(it.icon!!) }),
+                ConversationActions(onFeel = { player.play(it.icon!!, VibrationUsage.TOUCH) }),
             )
         }
 

@@ -33,6 +33,7 @@ import org.hapticon.app.data.database.HapticonDatabase
 import org.hapticon.app.playback.AdaptiveHapticPlayer
 import org.hapticon.app.playback.DeviceCapabilities
 import org.hapticon.app.playback.RendererChoice
+import org.hapticon.app.playback.usageVibrator
 import org.hapticon.app.sync.ChatComponent
 import org.hapticon.app.sync.ChatSync
 import org.hapticon.app.sync.ReachableService
@@ -75,7 +76,7 @@ class FirstLaunchOfferTest {
     private fun component(): ChatComponent {
         val repository = OfflineFirstChatRepository(db)
         val device = DeviceCapabilities(hasVibrator = true, hasAmplitudeControl = true, apiLevel = 35)
-        val player = AdaptiveHapticPlayer(app.getSystemService(Vibrator::class.java), { device }, { null })
+        val player = AdaptiveHapticPlayer(usageVibrator(app.getSystemService(Vibrator::class.java)), { device }, { null })
         val sync = ChatSync(
             repository, repository, settings, { user, _, _ -> TestMessenger(user) }, player, VibrationRateLimiter(Clock.MONOTONIC),
             { user -> RendererChoice.capabilitiesOf(user, device, null) }, scope,

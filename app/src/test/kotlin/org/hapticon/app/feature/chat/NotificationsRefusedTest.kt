@@ -1,6 +1,7 @@
 package org.hapticon.app.feature.chat
 
 import android.Manifest
+import org.hapticon.app.playback.usageVibrator
 import android.app.Application
 import android.app.NotificationManager
 import android.content.Context
@@ -79,7 +80,7 @@ class NotificationsRefusedTest {
         val settings = InMemoryChatSettings(ChatPreferences(userName = "alice", brokerUrl = "tcp://192.168.1.20:1883"))
         val sync = ChatSync(
             repository, repository, settings, { _, _, _ -> messenger },
-            AdaptiveHapticPlayer(context.getSystemService(Vibrator::class.java), { device }, { null }), VibrationRateLimiter(Clock.MONOTONIC),
+            AdaptiveHapticPlayer(usageVibrator(context.getSystemService(Vibrator::class.java)), { device }, { null }), VibrationRateLimiter(Clock.MONOTONIC),
             { user -> RendererChoice.capabilitiesOf(user, device, null) }, scope,
         )
         val notifier = MessageNotifier(context) { "alice" }

@@ -246,6 +246,12 @@ class TalkBackNodeTreeTest {
         // The hug's own step waveform, timings and amplitudes, as the player renders it for this vibrator.
         val waveform = VibrationWaveform.render(HapticIcon.HUG)
         assertEquals(RecordedVibration(waveform.timings().toList(), waveform.amplitudes().toList()), lastVibration(fixture.vibrator))
+        // Told once Android played it: after the vibration, not with the press.
+        // After the play: its continuation runs on the main looper.
+        compose.waitUntil(10_000) {
+            org.robolectric.Shadows.shadowOf(android.os.Looper.getMainLooper()).idle()
+            felt.isNotEmpty()
+        }
         assertEquals(listOf("bob" to hug.id), felt.toList())
     }
 

@@ -109,6 +109,11 @@ class TalkBackSendTest {
         // The hug's own step waveform, as the player renders it for an amplitude-controlled vibrator.
         assertEquals(VibrationWaveform.render(HapticIcon.HUG).timings().toList(), lastVibration(fixture.vibrator)!!.timings)
         // And bob is told it was felt (the felt receipt the sync sends).
+        // Told once Android played it: after the vibration, not with the press (the play's continuation on the main looper).
+        compose.waitUntil(10_000) {
+            org.robolectric.Shadows.shadowOf(android.os.Looper.getMainLooper()).idle()
+            felt.isNotEmpty()
+        }
         assertEquals(listOf("bob" to hug.id), felt.toList())
     }
 }

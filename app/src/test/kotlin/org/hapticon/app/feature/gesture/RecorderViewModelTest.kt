@@ -1,6 +1,7 @@
 package org.hapticon.app.feature.gesture
 
 import androidx.room.Room
+import org.hapticon.core.platform.VibrationUsage
 import androidx.test.core.app.ApplicationProvider
 import kotlinx.coroutines.ExperimentalCoroutinesApi
 import kotlinx.coroutines.flow.first
@@ -44,15 +45,19 @@ class RecorderViewModelTest {
     private val dispatcher = main.dispatcher
     private lateinit var db: HapticonDatabase
     private val played = ArrayList<HapticIcon>()
+    private val usages = ArrayList<VibrationUsage>()
     private val player = object : HapticPlayer {
         override val capabilities = PlaybackCapabilities(hasVibrator = false, hasAmplitudeControl = false, apiLevel = 35)
 
-        override fun play(icon: HapticIcon): Playback {
+        override fun play(icon: HapticIcon, usage: VibrationUsage): Playback {
             played += icon
+            usages += usage
             return Playback.Unsupported
         }
 
-        override fun play(pattern: org.hapticon.core.pattern.HapticPattern): Playback = Playback.Unsupported
+        override fun play(pattern: org.hapticon.core.pattern.HapticPattern, usage: VibrationUsage): Playback = Playback.Unsupported
+
+        override fun verdict(usage: VibrationUsage) = org.hapticon.core.platform.VibrationVerdict.PLAYS
 
         override fun stop() = Unit
     }
@@ -113,6 +118,8 @@ class RecorderViewModelTest {
         advanceUntilIdle()
 
         assertEquals(listOf("my knock"), played.map { it.name })
+        // A press in the open app: a touch.
+        assertEquals(listOf(VibrationUsage.TOUCH), usages)
         val saved = db.iconDao().icons().first().single()
         assertEquals("my knock", saved.name)
         assertEquals(3, saved.count)

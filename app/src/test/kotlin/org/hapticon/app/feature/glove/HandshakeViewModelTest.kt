@@ -1,6 +1,9 @@
 package org.hapticon.app.feature.glove
 
 import android.content.Context
+import org.hapticon.app.playback.lastUsage
+import org.hapticon.core.platform.VibrationUsage
+import org.hapticon.app.playback.usageVibrator
 import android.os.Vibrator
 import androidx.test.core.app.ApplicationProvider
 import kotlinx.coroutines.Dispatchers
@@ -44,7 +47,7 @@ class HandshakeViewModelTest {
     private val dispatcher = StandardTestDispatcher()
     private val context = ApplicationProvider.getApplicationContext<Context>()
     private val vibrator: Vibrator = defaultVibrator(context)
-    private val output = RecordingVibrationOutput(VibratorVibrationOutput(vibrator)) { lastVibration(vibrator) }
+    private val output = RecordingVibrationOutput(VibratorVibrationOutput(usageVibrator(vibrator))) { lastVibration(vibrator) }
     private val glove = TestGloveSource()
     private val store = TestCalibrationStore()
     private val partner = TestPartnerHand(thumbDegrees = 0.0, middleDegrees = 67.95)
@@ -89,6 +92,8 @@ class HandshakeViewModelTest {
         // Middle: n = 0.66 → 40 + 215·0.66 = 181.9 → 182, the largest of the six regions.
         assertEquals(182, state.phoneAmplitude)
         assertEquals(listOf(RecordedVibration(listOf(250L), listOf(182))), output.played.toList())
+        // The partner's grip emulated on the vibrator.
+        assertEquals(VibrationUsage.PHYSICAL_EMULATION, lastUsage(vibrator))
     }
 
     @Test

@@ -1,6 +1,8 @@
 package org.hapticon.app.feature.icons
 
 import android.os.Vibrator
+import org.hapticon.app.playback.lastUsage
+import org.hapticon.core.platform.VibrationUsage
 import androidx.compose.ui.semantics.SemanticsProperties
 import androidx.compose.ui.test.SemanticsMatcher
 import androidx.compose.ui.test.assert
@@ -66,6 +68,8 @@ class IconsScreenTest {
             RecordedVibration(timings = listOf(10L, 10L, 250L, 10L, 10L, 250L, 10L, 10L), amplitudes = listOf(175, 111, 0, 175, 111, 0, 175, 111)),
             lastVibration(vibrator),
         )
+        // A press in the open app: a touch.
+        assertEquals(VibrationUsage.TOUCH, lastUsage(vibrator))
         rule.onNodeWithContentDescription("Play knock")
             .assert(SemanticsMatcher.expectValue(SemanticsProperties.StateDescription, "playing"))
         rule.onNodeWithText("Playing 560 ms as amplitude waveform", substring = true).assertExists()

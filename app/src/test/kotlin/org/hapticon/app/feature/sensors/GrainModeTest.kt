@@ -1,6 +1,9 @@
 package org.hapticon.app.feature.sensors
 
 import android.content.Context
+import org.hapticon.app.playback.lastUsage
+import org.hapticon.core.platform.VibrationUsage
+import org.hapticon.app.playback.usageVibrator
 import android.os.Vibrator
 import androidx.test.core.app.ApplicationProvider
 import java.util.Locale
@@ -46,7 +49,7 @@ class GrainModeTest {
     private val dispatcher = StandardTestDispatcher()
     private val context = ApplicationProvider.getApplicationContext<Context>()
     private val vibrator: Vibrator = defaultVibrator(context)
-    private val output = RecordingVibrationOutput(VibratorVibrationOutput(vibrator)) { lastVibration(vibrator) }
+    private val output = RecordingVibrationOutput(VibratorVibrationOutput(usageVibrator(vibrator))) { lastVibration(vibrator) }
     private val usb = TestUsbDevices()
     private val hub = SensorSession(usb)
     private val grains = GrainEngine(output).also { hub.addFrameListener(it) }
@@ -94,6 +97,8 @@ class GrainModeTest {
         val burst = RecordedVibration(timings = listOf(20L), amplitudes = listOf(200))
         assertEquals(List(4) { burst }, output.played.toList())
         assertEquals(burst, lastVibration(vibrator))
+        // A grain emulates the material under the finger: PHYSICAL_EMULATION, which Android plays in the background too.
+        assertEquals(VibrationUsage.PHYSICAL_EMULATION, lastUsage(vibrator))
         assertEquals(4L, state.grains.grainsPlayed)
         assertEquals(100.0, grains.status.value.sampleRateHz!!, 0.0)
     }

@@ -1,6 +1,8 @@
 package org.hapticon.app.feature.study
 
 import android.content.Context
+import org.hapticon.core.platform.VibrationUsage
+import org.hapticon.app.playback.usageVibrator
 import android.os.Vibrator
 import androidx.compose.ui.semantics.SemanticsProperties
 import androidx.compose.ui.test.SemanticsMatcher
@@ -104,6 +106,8 @@ class PaperProtocolSessionTest {
         assertTrue(active.step is StudyStep.Explore)
         assertEquals(setOf("hug", "stroke"), active.pressedStimuli)
         assertEquals(listOf(HapticIcon.HUG, HapticIcon.HUG, HapticIcon.STROKE), player.played)
+        // Each the participant's press in the open app: a touch.
+        assertEquals(List(3) { VibrationUsage.TOUCH }, player.usages)
         // The built-in paper protocol's stimuli are Processing-exact, as the participants felt them.
         assertEquals(List(3) { EnvelopeModel.PROCESSING }, player.models)
         vm.finishExploring().join()
@@ -126,7 +130,7 @@ class PaperProtocolSessionTest {
         // a processing one (the default) what the study's participants felt.
         val vibrator = context.getSystemService(Vibrator::class.java)
         shadowOf(vibrator).setHasAmplitudeControl(true)
-        val vibratorPlayer = VibratorHapticPlayer(vibrator)
+        val vibratorPlayer = VibratorHapticPlayer(usageVibrator(vibrator))
         val repository = RoomStudyRepository(db)
         for ((model, expected) in listOf(EnvelopeModel.PAPER to PAPER_KNOCK, EnvelopeModel.PROCESSING to PROCESSING_KNOCK)) {
             val protocol = StoredProtocol.PAPER.protocol.copy(id = "knock-${model.name.lowercase()}", envelopeModel = model)
@@ -136,6 +140,7 @@ class PaperProtocolSessionTest {
             vm.startTask().join()
             vm.pressIcon("knock").join()
             assertEquals("$model", expected, lastVibration(vibrator))
+            assertEquals("$model", VibrationUsage.TOUCH, org.hapticon.app.playback.lastUsage(vibrator))
             val events = repository.entries(record.id).map { it.event }
             assertTrue("$model", events.contains(StudyEvent.PlaybackStarted("icons", "knock")))
         }
