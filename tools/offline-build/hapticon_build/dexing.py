@@ -1,0 +1,184 @@
+"""The debug APK's library dex, as AGP builds it for a debuggable variant: each library jar dexed alone by D8 in
+intermediate mode (AGP's dexing transform), cached by the jar's content so that a jar is dexed once ever, then the
+jars' dex merged by D8 once per set of libraries (AGP's mergeExtDex). tools/offline-build/java/LibraryDexer.java
+does both in one JVM and reports each jar as it ends, from which the build prints its progress and estimate.
+"""
+from __future__ import annotations
+
+import hashlib
+import json
+import os
+import queue
+import re
+import shutil
+import subprocess
+import threading
+import time
+from dataclasses import dataclass
+
+from .errors import BuildError
+from .ui import info
+
+# Before any run on this machine has been timed: D8 wall time per MB of library jar, and of the merge, on two
+# idle cores (measured 2026-11-28 on the project's 101 jars; docs/build.md).
+DEFAULT_DEX_MS_PER_MB = 1500.0
+DEFAULT_MERGE_MS_PER_MB = 500.0
+PROGRESS_EVERY_S = 5.0
+MODE = "debug"  # D8's compilation mode, part of each cache key: LibraryDexer compiles in debug mode
+
+
+@dataclass(frozen=True)
+class D8Tool:
+    """What LibraryDexer runs with: the JVM, its classpath (the compiled helper and R8's jar), the library jars D8
+    resolves against, minSdk, the build cache and how many jars to dex at a time."""
+    java: str
+    classpath: list[str]
+    r8_jar: str
+    android_jar: str
+    java_home: str
+    min_sdk: str
+    cache: str
+    threads: int
+
+
+def jar_key(jar: str, tool: D8Tool) -> str:
+    """A jar's dex cache key: its content, the D8 (R8 jar name), minSdk and the mode; not its path, so a jar
+    copied or re-downloaded elsewhere is not dexed again."""
+    h = hashlib.sha1()
+    with open(jar, "rb") as f:
+        for block in iter(lambda: f.read(1 << 20), b""):
+            h.update(block)
+    h.update(f"\0{os.path.basename(tool.r8_jar)}\0{tool.min_sdk}\0{MODE}".encode())
+    return h.hexdigest()[:20]
+
+
+def dex_files(directory: str) -> list[str]:
+    """classes.dex, classes2.dex, … of a D8 output directory, in that order."""
+    found = [f for f in os.listdir(directory) if re.fullmatch(r"classes\d*\.dex", f)]
+    return [os.path.join(directory, f) for f in sorted(found, key=lambda f: int(f[7:-4] or 1))]
+
+
+def dex_libraries(jars: list[str], tool: D8Tool) -> list[str]:
+    """The merged dex files of `jars` (classpath order). Each jar's dex is kept in `cache/dex/jars/<jar key>/` and
+    the merged set in `cache/dex/libraries/<set key>/`; only what is missing is made."""
+    jar_root = os.path.join(tool.cache, "dex", "jars")
+    merged_root = os.path.join(tool.cache, "dex", "libraries")
+    keys = [jar_key(j, tool) for j in jars]
+    merged = os.path.join(merged_root, hashlib.sha1("\n".join(keys).encode()).hexdigest()[:20])
+    if os.path.isdir(merged):
+        info(f"library dex up to date ({len(jars)} jars, {os.path.relpath(merged, os.path.dirname(tool.cache))})")
+        return dex_files(merged)
+    os.makedirs(jar_root, exist_ok=True)
+    os.makedirs(merged_root, exist_ok=True)
+    tag = f".tmp{os.getpid()}"
+    jobs, pending = [], {}
+    for i, (jar, key) in enumerate(zip(jars, keys)):
+        final = os.path.join(jar_root, key)
+        if os.path.isdir(final):
+            jobs.append(("-", final))
+        else:
+            shutil.rmtree(final + tag, ignore_errors=True)
+            jobs.append((jar, final + tag))
+            pending[i] = final
+    jobs_file = os.path.join(merged_root, "jobs" + tag)
+    with open(jobs_file, "w") as f:
+        f.writelines(f"{jar}\t{out}\n" for jar, out in jobs)
+    timing = _read_timing(tool.cache)
+    sizes = {i: os.path.getsize(jars[i]) / 1e6 for i in pending}
+    total_mb = sum(os.path.getsize(j) for j in jars) / 1e6
+    merge_estimate = total_mb * timing["merge_ms_per_mb"] / 1000
+    info(f"D8: {len(pending)} of {len(jars)} library jars to dex ({sum(sizes.values()):.1f} MB, "
+         f"{len(jars) - len(pending)} cached), then their merge; "
+         f"~{sum(sizes.values()) * timing['dex_ms_per_mb'] / 1000 + merge_estimate:.0f} s")
+    out = merged + tag
+    shutil.rmtree(out, ignore_errors=True)
+    cmd = [tool.java, "-Xmx2g", "-XX:+UseParallelGC", "-cp", os.pathsep.join(tool.classpath), "LibraryDexer",
+           tool.min_sdk, tool.android_jar, tool.java_home, str(tool.threads), jobs_file, out]
+    log_lines, done, merge_ms = [], set(), None
+    started = time.monotonic()
+    merge_started = None
+    last_print = started
+    proc = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+    lines: queue.Queue = queue.Queue()
+    threading.Thread(target=_forward, args=(proc.stdout, lines), daemon=True).start()
+    while True:
+        try:
+            line = lines.get(timeout=1.0)
+        except queue.Empty:
+            line = ""
+        if line is None:
+            break
+        now = time.monotonic()
+        if line:
+            log_lines.append(line)
+            if m := re.match(r"DONE (\d+) \d+", line):
+                done.add(int(m.group(1)))
+                if len(done) == len(pending):
+                    merge_started = now
+            elif m := re.match(r"MERGED (\d+)", line):
+                merge_ms = int(m.group(1))
+        if not pending and merge_started is None:
+            merge_started = started
+        if now - last_print >= PROGRESS_EVERY_S:
+            last_print = now
+            if merge_started is None:
+                done_mb = sum(sizes[i] for i in done)
+                rate = (now - started) / done_mb if done_mb > 1 else timing["dex_ms_per_mb"] / 1000
+                left = (sum(sizes.values()) - done_mb) * rate + merge_estimate
+                info(f"D8: {len(done)}/{len(pending)} jars, ~{left:.0f} s left")
+            elif merge_ms is None:
+                info(f"D8 merge of {len(jars)} jars' dex: {now - merge_started:.0f} s, "
+                     f"~{max(0.0, merge_estimate - (now - merge_started)):.0f} s left")
+    proc.wait()
+    os.remove(jobs_file)
+    for i in done:  # a jar dexed is kept even if another failed or the merge did
+        shutil.rmtree(pending[i], ignore_errors=True)
+        os.replace(pending[i] + tag, pending[i])
+    for i in set(pending) - done:
+        shutil.rmtree(pending[i] + tag, ignore_errors=True)
+    if proc.returncode != 0 or merge_ms is None:
+        shutil.rmtree(out, ignore_errors=True)
+        # D8's own messages (e.g. "Type a.B is defined multiple times: …") and each failed jar by its path.
+        lines = [re.sub(r"^FAIL (\d+)", lambda m: f"FAIL {jars[int(m.group(1))]}:", l.rstrip())
+                 for l in log_lines if not l.startswith(("DONE", "\tat "))]
+        tail = "\n".join(lines[-30:])
+        raise BuildError(f"D8 of the library jars failed (exit {proc.returncode})\n{tail}")
+    for old in os.listdir(merged_root):  # one app: only the current set of libraries is worth keeping merged
+        if not old.startswith(("jobs", "timing")) and old != os.path.basename(out):
+            shutil.rmtree(os.path.join(merged_root, old), ignore_errors=True)
+    os.replace(out, merged)
+    dex_s = (merge_started or time.monotonic()) - started
+    dexed_mb = sum(sizes.values())
+    _write_timing(tool.cache, {
+        "dex_ms_per_mb": dex_s * 1000 / dexed_mb if dexed_mb > 5 else timing["dex_ms_per_mb"],
+        "merge_ms_per_mb": merge_ms / total_mb if total_mb > 0 else timing["merge_ms_per_mb"]})
+    info(f"D8: {len(pending)} jars dexed in {dex_s:.1f} s, merged in {merge_ms / 1000:.1f} s")
+    return dex_files(merged)
+
+
+def _forward(stream, lines: queue.Queue) -> None:
+    """Puts each line of `stream` on `lines`, then None: the build reads them with a timeout, to print progress
+    while D8 is silent (a large jar, the merge)."""
+    for line in stream:
+        lines.put(line)
+    lines.put(None)
+
+
+def _timing_path(cache: str) -> str:
+    return os.path.join(cache, "dex", "timing.json")
+
+
+def _read_timing(cache: str) -> dict[str, float]:
+    """The last run's rates on this machine (`cache/dex/timing.json`), else [DEFAULT_DEX_MS_PER_MB]'s."""
+    timing = {"dex_ms_per_mb": DEFAULT_DEX_MS_PER_MB, "merge_ms_per_mb": DEFAULT_MERGE_MS_PER_MB}
+    try:
+        with open(_timing_path(cache)) as f:
+            timing.update({k: float(v) for k, v in json.load(f).items() if k in timing})
+    except (OSError, ValueError):
+        pass
+    return timing
+
+
+def _write_timing(cache: str, timing: dict[str, float]) -> None:
+    with open(_timing_path(cache), "w") as f:
+        json.dump(timing, f)
