@@ -151,12 +151,18 @@ def run_tests(build: Build, rest: list[str]) -> int:
     modules = [build.project.module(m) for m in rest] if rest else build.project.in_dependency_order()
     results = []
     if not rest:
+        # Every test: then the APK comes next (the README's `./build demo`), and its library dex, minutes of D8
+        # once per set of libraries, runs beside the tests, which mostly leave a core idle.
+        from .android import AndroidApp
+        AndroidApp(build, app_module(build.project)).start_library_dex()
         results.append(build_tool_tests(build.root, name_filter))
     for m in modules:
         results.append(build.test_module(m, name_filter))
         if m.is_android_app:
             build.kotlinc.close()
     build.kotlinc.close()
+    from .dexing import finish_background
+    finish_background()
     passed = sum(r.passed for r in results)
     failed = sum(r.failed for r in results) + sum(1 for r in results if r.crashed)
     skipped = sum(r.skipped for r in results)

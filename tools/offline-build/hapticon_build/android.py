@@ -17,7 +17,7 @@ import zipfile
 from dataclasses import dataclass
 
 from .builder import Build, Outputs, TestResult
-from .dexing import D8Tool, dex_libraries
+from .dexing import D8Tool, dex_libraries, start_in_background
 from .errors import BuildError
 from .kotlin import fingerprint
 from .project import Module
@@ -208,6 +208,7 @@ class AndroidApp:
 
     # -- APK --------------------------------------------------------------------------------------
     def assemble(self) -> str:
+        self.start_library_dex()
         classes = self.b.compile_module(self.m, "main")
         if not hasattr(self, "r_jar"):
             self.compile_main()
@@ -319,7 +320,8 @@ class AndroidApp:
                  *library_jars], "R8", log=os.path.join(work, "r8.log"))
 
     def _d8(self, args: list[str], what: str) -> None:
-        run([self.tools.java, "-Xmx3g", "-cp", self.tools.r8, "com.android.tools.r8.D8", "--release",
+        # Debug mode, as AGP dexes a debuggable variant: no optimisation, every local kept for the debugger.
+        run([self.tools.java, "-Xmx3g", "-cp", self.tools.r8, "com.android.tools.r8.D8", "--debug",
              "--min-api", self.min_sdk, "--lib", self.tools.android_jar, "--lib", self.tools.java_home, *args], what)
 
     def _library_inputs(self) -> tuple[list[str], list[str]]:
@@ -353,11 +355,7 @@ class AndroidApp:
             with zipfile.ZipFile(self.r_jar) as r:
                 for n in r.namelist():
                     z.writestr(n, r.read(n))
-        helper = self.tools.helper_classes("LibraryDexer", [self.tools.r8])
-        library_dex = dex_libraries(library_jars, D8Tool(
-            java=self.tools.java, classpath=[helper, self.tools.r8], r8_jar=self.tools.r8,
-            android_jar=self.tools.android_jar, java_home=self.tools.java_home, min_sdk=self.min_sdk,
-            cache=self.b.cache, threads=max(1, os.cpu_count() or 1)))
+        library_dex = dex_libraries(library_jars, self._d8_tool())
         program_out = os.path.join(work, "program")
         shutil.rmtree(program_out, ignore_errors=True)
         os.makedirs(program_out)
@@ -373,18 +371,32 @@ class AndroidApp:
             raise BuildError(f"classes defined by both the app and its libraries: {sorted(clash)[:5]}")
         with zipfile.ZipFile(self.tools.android_jar) as z:
             platform = {"L" + n.removesuffix(".class") + ";" for n in z.namelist() if n.endswith(".class")}
-        named = app_class_references(program)
-        lost = sorted(n for n in named if n not in library_types | program_types | platform)
+        # The JDK's namespaces are left to the platform: Android's libcore provides java.*, and the shared modules
+        # name a few JDK-only classes (com.sun.management) on paths only the companion runs.
+        named = {n for n in app_class_references(program) if not n.startswith(JDK_PREFIXES)}
+        lost = sorted(named - library_types - program_types - platform)
         if lost:
             raise BuildError(f"the dex lacks {len(lost)} classes the app uses: {', '.join(lost[:5])}")
         manifest = os.path.join(os.path.dirname(self.res_apk), "AndroidManifest.xml")
         required = required_classes(program, manifest)
-        missing = [n for n in required if "L" + n.replace(".", "/") + ";" not in library_types | program_types]
+        missing = [n for n in required if "L" + n.replace(".", "/") + ";" not in library_types and
+                   "L" + n.replace(".", "/") + ";" not in program_types]
         if missing:
             raise BuildError(f"the dex lacks classes reached by name: {', '.join(missing)}")
         info(f"{len(named)} classes the app names and {len(required)} reached by name are defined; "
              f"{len(library_types)} library and {len(program_types)} app classes, none twice")
         return library_dex + program_dex
+
+    def _d8_tool(self) -> D8Tool:
+        helper = self.tools.helper_classes("LibraryDexer", [self.tools.r8])
+        return D8Tool(java=self.tools.java, classpath=[helper, self.tools.r8], r8_jar=self.tools.r8,
+                      android_jar=self.tools.android_jar, java_home=self.tools.java_home, min_sdk=self.min_sdk,
+                      cache=self.b.cache, threads=max(1, os.cpu_count() or 1))
+
+    def start_library_dex(self) -> None:
+        """Starts the debug APK's library dex in the background ([start_in_background]) when it is not cached: it
+        needs only the resolved libraries, so it runs beside the compilation (or tests) that come first."""
+        start_in_background(self._library_inputs()[0], self._d8_tool())
 
     def _add_java_resources(self, apk: zipfile.ZipFile, entries: list[str]) -> int:
         taken: dict[str, bytes] = {}
@@ -903,6 +915,9 @@ def _class_file(data: bytes) -> tuple[str, str | None, dict[int, tuple]]:
     this_class, super_class = struct.unpack_from(">HH", data, pos + 2)
     utf = lambda k: pool[k][1]
     return utf(pool[this_class][1]), utf(pool[super_class][1]) if super_class else None, pool
+
+
+JDK_PREFIXES = ("Ljava/", "Ljavax/", "Ljdk/", "Lsun/", "Lcom/sun/")
 
 
 def app_class_references(program_jar: str) -> set[str]:

@@ -58,16 +58,76 @@ def dex_files(directory: str) -> list[str]:
     return [os.path.join(directory, f) for f in sorted(found, key=lambda f: int(f[7:-4] or 1))]
 
 
+def _locate(jars: list[str], tool: D8Tool) -> tuple[list[str], str]:
+    """The jars' cache keys and the directory of their merged dex."""
+    keys = [jar_key(j, tool) for j in jars]
+    return keys, os.path.join(tool.cache, "dex", "libraries", hashlib.sha1("\n".join(keys).encode()).hexdigest()[:20])
+
+
+# Runs started by [start_in_background], by their merged directory: (thread, "print progress" flag, failure if any).
+_background: dict[str, tuple[threading.Thread, threading.Event, list]] = {}
+
+
+def start_in_background(jars: list[str], tool: D8Tool) -> None:
+    """Starts [dex_libraries] on a thread, silent, unless the set is merged already: a build runs it beside work
+    that leaves a core idle (Kotlin compiles one file set at a time, a test JVM mostly runs one test at a time), and
+    the APK's [dex_libraries] or [finish_background] waits for it, then printing its progress."""
+    _keys, merged = _locate(jars, tool)
+    if os.path.isdir(merged) or merged in _background:
+        return
+    loud, failure = threading.Event(), []
+
+    def work():
+        try:
+            _make(jars, tool, loud)
+        except (BuildError, OSError) as e:
+            failure.append(e)
+    thread = threading.Thread(target=work, name="library dex")
+    thread.start()
+    _background[merged] = (thread, loud, failure)
+    info(f"D8 of the app's {len(jars)} library jars (for the APK) runs in the background")
+
+
+def finish_background() -> None:
+    """Waits for the runs [start_in_background] started, showing their progress; a failure is only reported
+    here (the APK's build tries again and fails with it)."""
+    for merged, (thread, loud, failure) in list(_background.items()):
+        if thread.is_alive():
+            info("waiting for the library dex started in the background (the APK's)")
+            loud.set()
+            thread.join()
+        if failure:
+            info(f"the library dex started in the background failed; ./build apk will say why")
+        del _background[merged]
+
+
 def dex_libraries(jars: list[str], tool: D8Tool) -> list[str]:
     """The merged dex files of `jars` (classpath order). Each jar's dex is kept in `cache/dex/jars/<jar key>/` and
-    the merged set in `cache/dex/libraries/<set key>/`; only what is missing is made."""
-    jar_root = os.path.join(tool.cache, "dex", "jars")
-    merged_root = os.path.join(tool.cache, "dex", "libraries")
-    keys = [jar_key(j, tool) for j in jars]
-    merged = os.path.join(merged_root, hashlib.sha1("\n".join(keys).encode()).hexdigest()[:20])
+    the merged set in `cache/dex/libraries/<set key>/`; only what is missing is made, and a run of the same set
+    started in the background is waited for."""
+    _keys, merged = _locate(jars, tool)
+    if merged in _background:
+        thread, loud, failure = _background.pop(merged)
+        if thread.is_alive():
+            info("waiting for the library dex started in the background")
+            loud.set()
+            thread.join()
+        if failure:
+            raise failure[0]
     if os.path.isdir(merged):
         info(f"library dex up to date ({len(jars)} jars, {os.path.relpath(merged, os.path.dirname(tool.cache))})")
         return dex_files(merged)
+    loud = threading.Event()
+    loud.set()
+    _make(jars, tool, loud)
+    return dex_files(merged)
+
+
+def _make(jars: list[str], tool: D8Tool, loud: threading.Event) -> None:
+    """Dexes the jars not cached yet and merges the set; prints progress while `loud` is set."""
+    keys, merged = _locate(jars, tool)
+    jar_root = os.path.join(tool.cache, "dex", "jars")
+    merged_root = os.path.dirname(merged)
     os.makedirs(jar_root, exist_ok=True)
     os.makedirs(merged_root, exist_ok=True)
     tag = f".tmp{os.getpid()}"
@@ -87,7 +147,11 @@ def dex_libraries(jars: list[str], tool: D8Tool) -> list[str]:
     sizes = {i: os.path.getsize(jars[i]) / 1e6 for i in pending}
     total_mb = sum(os.path.getsize(j) for j in jars) / 1e6
     merge_estimate = total_mb * timing["merge_ms_per_mb"] / 1000
-    info(f"D8: {len(pending)} of {len(jars)} library jars to dex ({sum(sizes.values()):.1f} MB, "
+
+    def say(message: str) -> None:
+        if loud.is_set():
+            info(message)
+    say(f"D8: {len(pending)} of {len(jars)} library jars to dex ({sum(sizes.values()):.1f} MB, "
          f"{len(jars) - len(pending)} cached), then their merge; "
          f"~{sum(sizes.values()) * timing['dex_ms_per_mb'] / 1000 + merge_estimate:.0f} s")
     out = merged + tag
@@ -125,10 +189,11 @@ def dex_libraries(jars: list[str], tool: D8Tool) -> list[str]:
                 done_mb = sum(sizes[i] for i in done)
                 rate = (now - started) / done_mb if done_mb > 1 else timing["dex_ms_per_mb"] / 1000
                 left = (sum(sizes.values()) - done_mb) * rate + merge_estimate
-                info(f"D8: {len(done)}/{len(pending)} jars, ~{left:.0f} s left")
+                say(f"D8: {len(done)}/{len(pending)} jars, ~{left:.0f} s left")
             elif merge_ms is None:
-                info(f"D8 merge of {len(jars)} jars' dex: {now - merge_started:.0f} s, "
-                     f"~{max(0.0, merge_estimate - (now - merge_started)):.0f} s left")
+                left = merge_estimate - (now - merge_started)
+                say(f"D8 merge of {len(jars)} jars' dex: {now - merge_started:.0f} s, "
+                    + (f"~{left:.0f} s left" if left >= 1 else f"longer than the ~{merge_estimate:.0f} s expected"))
     proc.wait()
     os.remove(jobs_file)
     for i in done:  # a jar dexed is kept even if another failed or the merge did
@@ -152,8 +217,7 @@ def dex_libraries(jars: list[str], tool: D8Tool) -> list[str]:
     _write_timing(tool.cache, {
         "dex_ms_per_mb": dex_s * 1000 / dexed_mb if dexed_mb > 5 else timing["dex_ms_per_mb"],
         "merge_ms_per_mb": merge_ms / total_mb if total_mb > 0 else timing["merge_ms_per_mb"]})
-    info(f"D8: {len(pending)} jars dexed in {dex_s:.1f} s, merged in {merge_ms / 1000:.1f} s")
-    return dex_files(merged)
+    say(f"D8: {len(pending)} jars dexed in {dex_s:.1f} s, merged in {merge_ms / 1000:.1f} s")
 
 
 def _forward(stream, lines: queue.Queue) -> None:

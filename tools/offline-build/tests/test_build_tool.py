@@ -557,6 +557,25 @@ class DexParserTest(unittest.TestCase):
                          read_field_mapping(FIELDS_R8_MAPPING))
         self.assertEqual({}, read_field_mapping(None))
 
+    def test_dexTypeNames_fieldsFixture_theClassesDexClassesReads(self):
+        from hapticon_build.android import dex_type_names
+        self.assertEqual({"Lfixture/Fields;", "Lfixture/Fields$Child;"}, dex_type_names(read(FIELDS_DEX, "rb")))
+
+    def test_appClassReferences_javacOutput_classesNamedIncludingArrayElementsNotPrimitives(self):
+        import zipfile
+        from hapticon_build.android import app_class_references
+        tmp = tempfile.mkdtemp()
+        javac(os.path.join(tmp, "classes"), {
+            "app/Main.java": "package app; public class Main { Object run() { new lib.Helper(); int[] n = new int[2];"
+                             " return new lib.Item[n.length]; } }",
+            "lib/Helper.java": "package lib; public class Helper {}",
+            "lib/Item.java": "package lib; public class Item {}",
+        })
+        program = os.path.join(tmp, "program.jar")
+        with zipfile.ZipFile(program, "w") as z:
+            z.write(os.path.join(tmp, "classes", "app", "Main.class"), "app/Main.class")
+        self.assertEqual({"Lapp/Main;", "Llib/Helper;", "Llib/Item;", "Ljava/lang/Object;"}, app_class_references(program))
+
     def test_dexClasses_notDex_fails(self):
         with self.assertRaises(BuildError):
             dex_classes(b"PK\x03\x04" + bytes(200))
