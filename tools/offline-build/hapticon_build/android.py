@@ -17,7 +17,7 @@ import zipfile
 from dataclasses import dataclass
 
 from .builder import Build, Outputs, TestResult
-from .dexing import D8Tool, dex_libraries, start_in_background
+from .dexing import D8Tool, dex_libraries, library_globals, start_in_background
 from .errors import BuildError
 from .kotlin import fingerprint
 from .project import Module
@@ -359,9 +359,23 @@ class AndroidApp:
         program_out = os.path.join(work, "program")
         shutil.rmtree(program_out, ignore_errors=True)
         os.makedirs(program_out)
+        app_globals = os.path.join(work, "program-globals.zip")
+        if os.path.exists(app_globals):
+            os.remove(app_globals)
         with Stage("D8 of the app's classes"):
-            self._d8([*_each("--classpath", library_jars), "--output", program_out, program], "D8 of app classes")
+            self._d8([*_each("--classpath", library_jars), "--intermediate", "--globals-output", app_globals,
+                      "--output", program_out, program], "D8 of app classes")
+            # Global synthetics (e.g. the LambdaMethod annotation D8 adds to desugared lambdas) are made apart by
+            # each intermediate D8 run, the libraries' and the app's; compiled here once for all, as AGP's
+            # global-synthetics merge does.
+            globals_files = library_globals(library_dex) + ([app_globals] if os.path.exists(app_globals) else [])
+            globals_out = os.path.join(work, "globals")
+            shutil.rmtree(globals_out, ignore_errors=True)
+            os.makedirs(globals_out)
+            if globals_files:
+                self._d8([*_each("--globals", globals_files), "--output", globals_out], "D8 of the global synthetics")
         program_dex = sorted((os.path.join(program_out, f) for f in os.listdir(program_out)), key=_dex_order)
+        program_dex += sorted((os.path.join(globals_out, f) for f in os.listdir(globals_out)), key=_dex_order)
         library_types = set().union(*(dex_type_names(open(d, "rb").read()) for d in library_dex))
         program_types = set().union(*(dex_type_names(open(d, "rb").read()) for d in program_dex))
         # Two dex sets must not define one class twice (e.g. a global synthetic made for both); within the

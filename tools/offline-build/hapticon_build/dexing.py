@@ -24,6 +24,8 @@ from .ui import info
 DEFAULT_DEX_MS_PER_MB = 1500.0
 DEFAULT_MERGE_MS_PER_MB = 500.0
 PROGRESS_EVERY_S = 5.0
+# What a merged set's directory holds, part of its key: intermediate dex (classes*.dex) and globals/*.zip.
+MERGED_LAYOUT = "intermediate+globals"
 MODE = "debug"  # D8's compilation mode, part of each cache key: LibraryDexer compiles in debug mode
 
 
@@ -61,7 +63,8 @@ def dex_files(directory: str) -> list[str]:
 def _locate(jars: list[str], tool: D8Tool) -> tuple[list[str], str]:
     """The jars' cache keys and the directory of their merged dex."""
     keys = [jar_key(j, tool) for j in jars]
-    return keys, os.path.join(tool.cache, "dex", "libraries", hashlib.sha1("\n".join(keys).encode()).hexdigest()[:20])
+    set_key = hashlib.sha1("\n".join(keys + [MERGED_LAYOUT]).encode()).hexdigest()[:20]
+    return keys, os.path.join(tool.cache, "dex", "libraries", set_key)
 
 
 # Runs started by [start_in_background], by their merged directory: (thread, "print progress" flag, failure if any).
@@ -211,6 +214,12 @@ def _make(jars: list[str], tool: D8Tool, loud: threading.Event) -> None:
     for old in os.listdir(merged_root):  # one app: only the current set of libraries is worth keeping merged
         if not old.startswith(("jobs", "timing")) and old != os.path.basename(out):
             shutil.rmtree(os.path.join(merged_root, old), ignore_errors=True)
+    # The jars' global synthetics, beside their merged dex: compiled once, with the app's ([dex_globals]).
+    os.makedirs(os.path.join(out, "globals"))
+    for i, (_jar, directory) in enumerate(jobs):
+        directory = pending.get(i, directory)
+        if os.path.exists(os.path.join(directory, "globals.zip")):
+            shutil.copyfile(os.path.join(directory, "globals.zip"), os.path.join(out, "globals", f"{i}.zip"))
     os.replace(out, merged)
     dex_s = (merge_started or time.monotonic()) - started
     dexed_mb = sum(sizes.values())
@@ -218,6 +227,12 @@ def _make(jars: list[str], tool: D8Tool, loud: threading.Event) -> None:
         "dex_ms_per_mb": dex_s * 1000 / dexed_mb if dexed_mb > 5 else timing["dex_ms_per_mb"],
         "merge_ms_per_mb": merge_ms / total_mb if total_mb > 0 else timing["merge_ms_per_mb"]})
     say(f"D8: {len(pending)} jars dexed in {dex_s:.1f} s, merged in {merge_ms / 1000:.1f} s")
+
+
+def library_globals(dexes: list[str]) -> list[str]:
+    """The global synthetics files kept beside the merged library dex that [dex_libraries] returned."""
+    folder = os.path.join(os.path.dirname(dexes[0]), "globals") if dexes else ""
+    return sorted(os.path.join(folder, f) for f in os.listdir(folder)) if os.path.isdir(folder) else []
 
 
 def _forward(stream, lines: queue.Queue) -> None:

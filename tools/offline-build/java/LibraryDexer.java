@@ -30,8 +30,9 @@ import java.util.stream.Stream;
  * JOBS_FILE holds `jar<TAB>dir` lines, in classpath order; a jar of `-` means `dir` already holds that jar's dex.
  * Each jar is dexed into its directory (classes*.dex, and globals.zip when it needs global synthetics); "DONE i ms"
  * or "FAIL i message" is printed per job i (0-based line number) as it ends. Then every directory's dex files
- * and globals are merged by D8 into MERGE_OUT ("MERGED ms"); a class defined by two jars fails the merge. Exit 1 on
- * any failure. Debug mode throughout, as AGP's debuggable variants.
+ * are merged by D8, still in intermediate mode, into MERGE_OUT ("MERGED ms"); a class defined by two jars fails the
+ * merge. The global synthetics stay in each jar's globals.zip, for the build to compile once with the app's. Exit 1
+ * on any failure. Debug mode throughout, as AGP's debuggable variants.
  */
 public final class LibraryDexer {
     public static void main(String[] args) throws Exception {
@@ -92,9 +93,12 @@ public final class LibraryDexer {
         long start = System.nanoTime();
         try {
             Files.createDirectories(out);
+            // Still intermediate: the app's own dex may need the same global synthetics, so they are compiled
+            // once for both afterwards (globals.zip of every jar, collected by the build).
             D8Command.Builder builder = D8Command.builder()
                     .setMinApiLevel(minApi)
                     .setMode(CompilationMode.DEBUG)
+                    .setIntermediate(true)
                     .setOutput(out, OutputMode.DexIndexed);
             for (String[] job : jobs) {
                 Path dir = Path.of(job[1]);
@@ -102,7 +106,6 @@ public final class LibraryDexer {
                     files.filter(p -> p.getFileName().toString().matches("classes\\d*\\.dex")).sorted()
                             .forEach(builder::addProgramFiles);
                 }
-                if (Files.exists(dir.resolve("globals.zip"))) builder.addGlobalSyntheticsFiles(dir.resolve("globals.zip"));
             }
             D8.run(builder.build(), executor);
             report("MERGED " + (System.nanoTime() - start) / 1_000_000);

@@ -677,7 +677,7 @@ class LibraryDexTest(unittest.TestCase):
     def setUpClass(cls):
         import zipfile
         from hapticon_build.builder import Build
-        from hapticon_build.dexing import D8Tool, dex_libraries
+        from hapticon_build.dexing import D8Tool, dex_libraries, library_globals
         tools = Build(load_project(REPO)).tools
         cls.tmp = tempfile.mkdtemp()
         classes = os.path.join(cls.tmp, "classes")
@@ -700,6 +700,7 @@ class LibraryDexTest(unittest.TestCase):
                           java_home=tools.java_home, min_sdk="26", cache=cls.cache, threads=2)
         cls.first = dex_libraries(cls.jars[:2], cls.tool)
         cls.first_defined = cls.defined(cls.first)  # read now: a later test's set replaces this one
+        cls.first_globals = library_globals(cls.first)
         cls.cached_jars = sorted(os.listdir(os.path.join(cls.cache, "dex", "jars")))
         with mock.patch("subprocess.Popen", side_effect=AssertionError("D8 ran again")):
             cls.again = dex_libraries(cls.jars[:2], cls.tool)  # before any test dexes another set
@@ -724,10 +725,11 @@ class LibraryDexTest(unittest.TestCase):
     def test_dexLibraries_twoJars_mergedDexDefinesEveryClassAndEachJarIsCached(self):
         defined = self.first_defined
         self.assertLessEqual({"Llib/a/Greeter;", "Llib/a/Hello;", "Llib/b/Counter;"}, defined)
-        # Both jars' lambdas are desugared by D8, which marks each with one global synthetic annotation class: made
-        # apart for each jar (globals.zip), once in the merged dex (two would fail the merge).
-        self.assertIn("Lcom/android/tools/r8/annotations/LambdaMethod;", defined)
+        # Both jars' lambdas are desugared by D8, which marks each with a global synthetic annotation class: not in
+        # the merged dex, but kept apart for each jar, to be compiled once with the app's.
         self.assertTrue(any(d.startswith("Llib/b/Counter$") for d in defined))
+        self.assertNotIn("Lcom/android/tools/r8/annotations/LambdaMethod;", defined)
+        self.assertEqual(["0.zip", "1.zip"], [os.path.basename(g) for g in self.first_globals])
         self.assertEqual(2, len(self.cached_jars))
         self.assertIn("timing.json", os.listdir(os.path.join(self.cache, "dex")))
 
