@@ -20,9 +20,10 @@ from .errors import BuildError
 from .ui import info
 
 # Before any run on this machine has been timed: D8 wall time per MB of library jar, and of the merge, on two
-# idle cores (measured 2026-11-28 on the project's 101 jars; docs/build.md).
-DEFAULT_DEX_MS_PER_MB = 1500.0
-DEFAULT_MERGE_MS_PER_MB = 500.0
+# idle cores, from the CPU time of the project's 101 jars (44.9 MB) measured under load on 2026-11-28: 364 s of
+# CPU for the jars (docs/build.md), the merge about a minute.
+DEFAULT_DEX_MS_PER_MB = 4000.0
+DEFAULT_MERGE_MS_PER_MB = 1000.0
 PROGRESS_EVERY_S = 5.0
 # What a merged set's directory holds, part of its key: intermediate dex (classes*.dex) and globals/*.zip.
 MERGED_LAYOUT = "intermediate+globals"
@@ -214,7 +215,7 @@ def _make(jars: list[str], tool: D8Tool, loud: threading.Event) -> None:
     for old in os.listdir(merged_root):  # one app: only the current set of libraries is worth keeping merged
         if not old.startswith(("jobs", "timing")) and old != os.path.basename(out):
             shutil.rmtree(os.path.join(merged_root, old), ignore_errors=True)
-    # The jars' global synthetics, beside their merged dex: compiled once, with the app's ([dex_globals]).
+    # The jars' global synthetics, beside their merged dex: compiled once with the app's (AndroidApp._dex).
     os.makedirs(os.path.join(out, "globals"))
     for i, (_jar, directory) in enumerate(jobs):
         directory = pending.get(i, directory)
