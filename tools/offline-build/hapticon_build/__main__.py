@@ -86,6 +86,9 @@ def main(argv: list[str]) -> int:
         return 1
     except KeyboardInterrupt:
         return 130
+    finally:
+        from .dexing import finish_background
+        finish_background()  # a library dex started in the background ends (and is kept) before the build does
     ui.info(f"{command} done in {time.monotonic() - started:.1f} s")
     return 0
 
@@ -155,14 +158,17 @@ def run_tests(build: Build, rest: list[str]) -> int:
         # once per set of libraries, runs beside the tests, which mostly leave a core idle.
         from .android import AndroidApp
         AndroidApp(build, app_module(build.project)).start_library_dex()
-        results.append(build_tool_tests(build.root, name_filter))
-    for m in modules:
-        results.append(build.test_module(m, name_filter))
-        if m.is_android_app:
-            build.kotlinc.close()
-    build.kotlinc.close()
-    from .dexing import finish_background
-    finish_background()
+    try:
+        if not rest:
+            results.append(build_tool_tests(build.root, name_filter))
+        for m in modules:
+            results.append(build.test_module(m, name_filter))
+            if m.is_android_app:
+                build.kotlinc.close()
+        build.kotlinc.close()
+    finally:
+        from .dexing import finish_background
+        finish_background()  # also when a module fails to compile: the dex is kept for the next run
     passed = sum(r.passed for r in results)
     failed = sum(r.failed for r in results) + sum(1 for r in results if r.crashed)
     skipped = sum(r.skipped for r in results)
