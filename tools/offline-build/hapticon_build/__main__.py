@@ -25,6 +25,10 @@ USAGE = """usage: ./build COMMAND [options]
   screenshots [--tests REGEX]
                       run the app's screenshot tests recording docs/images/screens/*.png
                       (`./build test :app` compares against them instead)
+  device-check [--tests CLASS[#METHOD]]
+                      build the debug APK and the device check's test APK (device-check/); with a
+                      phone attached over adb, run the instrumented suite against a broker started
+                      here (docs/device-check.md); without one, say so and exit 0
   companion           build the companion command-line tool (used by ./hapticon)
   demo                build the APK, then run the companion demo into out/demo
   bench               build the companion and run `hapticon bench`
@@ -52,6 +56,9 @@ def main(argv: list[str]) -> int:
             return run_tests(build, rest)
         if command == "screenshots":
             return record_screenshots(build, rest)
+        if command == "device-check":
+            from .device_check import main as device_check
+            return device_check(build, rest)
         if command == "apk":
             from .android import AndroidApp, Signing
             app = AndroidApp(build, app_module(project))

@@ -120,13 +120,18 @@ class AndroidApp:
             os.replace(z + ".tmp", z)
         procs.clear()
 
-    def _merge_manifest(self, libs: list[dict], out: str) -> str:
+    def _main_manifest(self) -> str:
+        """The module's own manifest, before the libraries' are merged into it."""
         main = os.path.join(self.src, "AndroidManifest.xml")
         if not os.path.exists(main):
             raise BuildError(f"{main} not found")
         text = open(main).read()
         if "<uses-sdk" in text:
             raise BuildError(f"{main}: declare minSdk/targetSdk in build.gradle.kts, not <uses-sdk>")
+        return text
+
+    def _merge_manifest(self, libs: list[dict], out: str) -> str:
+        text = self._main_manifest()
         # AGP injects the namespace as the package; the merger needs it on the main manifest.
         text = re.sub(r"<manifest\b", f'<manifest package="{self.namespace}"', text, count=1)
         os.makedirs(out, exist_ok=True)
@@ -320,9 +325,22 @@ class AndroidApp:
                  *library_jars], "R8", log=os.path.join(work, "r8.log"))
 
     def _d8(self, args: list[str], what: str) -> None:
-        # Debug mode, as AGP dexes a debuggable variant: no optimisation, every local kept for the debugger.
-        run([self.tools.java, "-Xmx3g", "-cp", self.tools.r8, "com.android.tools.r8.D8", "--debug",
+        run([self.tools.java, "-Xmx3g", "-cp", self.tools.r8, "com.android.tools.r8.D8", "--release",
              "--min-api", self.min_sdk, "--lib", self.tools.android_jar, "--lib", self.tools.java_home, *args], what)
+
+    def _dex_program(self, program: str, library_jars: list[str], library_dex: list[str], out: str) -> list[str]:
+        """The module's own classes ([program], a jar) dexed by D8 into [out] against the libraries, unshrunk; the two dex
+        sets must not define one class twice (e.g. a global synthetic made for both)."""
+        shutil.rmtree(out, ignore_errors=True)
+        os.makedirs(out)
+        self._d8([*_each("--classpath", library_jars), "--output", out, program], f"D8 of {self.m.path}'s classes")
+        program_dex = sorted((os.path.join(out, f) for f in os.listdir(out)), key=_dex_order)
+        library_types = set().union(*(dex_type_names(open(d, "rb").read()) for d in library_dex))
+        program_types = set().union(*(dex_type_names(open(d, "rb").read()) for d in program_dex))
+        clash = library_types & program_types
+        if clash:
+            raise BuildError(f"classes defined by both {self.m.path} and its libraries: {sorted(clash)[:5]}")
+        return program_dex
 
     def _library_inputs(self) -> tuple[list[str], list[str]]:
         """The libraries' jars (an AAR's classes.jar and libs/*.jar) and the consumer keep rules their AARs ship."""
@@ -527,6 +545,13 @@ class AndroidApp:
         jvm_args = [
             "-Drobolectric.offline=true", f"-Drobolectric.dependency.dir={self.tools.robolectric_sdk_dir}",
             "-Drobolectric.logging.enabled=false",
+            # Closing a ParcelFileDescriptor (a content URI read, e.g. a photo of an invite code) goes through
+            # Robolectric's FileDescriptorInterceptor, which moves FileDescriptor.fd by reflection.
+            "--add-opens=java.base/java.io=ALL-UNNAMED",
+            # JDK 17.0.15's C2 crashed (SIGSEGV in Node::uncast) compiling this Robolectric-instrumented method and
+            # took the whole test JVM with it; this one method is interpreted instead (it is short and rarely hot).
+            "-XX:CompileCommand=quiet",
+            "-XX:CompileCommand=exclude,android.database.sqlite.SQLiteConnection::*applyBlockGuardPolicy",
             f"-Droborazzi.test.{mode}=true", f"-Droborazzi.output.dir={roborazzi}",
             f"-Droborazzi.compare.output.dir={roborazzi}", f"-Droborazzi.result.dir={roborazzi}/results",
             f"-Dhapticon.screens.dir={os.path.join(self.b.root, 'docs', 'images', 'screens')}"]

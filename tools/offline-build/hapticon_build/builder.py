@@ -179,9 +179,9 @@ class Build:
         key = (module.path, source_set)
         if key in self._outputs:
             return self._outputs[key]
-        if module.is_android_app and source_set == "main" and not extra_classpath:
-            from .android import AndroidApp
-            return AndroidApp(self, module).compile_main()
+        if (module.is_android_app or module.is_android_test) and source_set == "main" and not extra_classpath:
+            from .instrumentation import apk_builder
+            return apk_builder(self, module).compile_main()
         sources = self.sources(module, source_set) + list(extra_sources)
         out_dir = os.path.join(self.out, module.name, "classes", source_set)
         classpath = self.compile_classpath(module, source_set, list(extra_classpath))
@@ -256,6 +256,8 @@ class Build:
 
     # -- tests ------------------------------------------------------------------------------------
     def test_module(self, module: Module, name_filter: str | None = None) -> TestResult:
+        if module.is_android_test:
+            return TestResult(module.path)  # its tests run on a phone (./build device-check), never on the JVM
         if module.is_android:
             from .android import AndroidApp
             return AndroidApp(self, module).test(name_filter)

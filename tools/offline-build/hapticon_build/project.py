@@ -61,8 +61,13 @@ class Module:
         return "android-library" in self.plugins
 
     @property
+    def is_android_test(self) -> bool:
+        """A `com.android.test` module: an instrumentation APK of its own that tests another module's app."""
+        return "android-test" in self.plugins
+
+    @property
     def is_android(self) -> bool:
-        return self.is_android_app or self.is_android_library
+        return self.is_android_app or self.is_android_library or self.is_android_test
 
     @property
     def compiler_plugins(self) -> list[str]:
@@ -265,14 +270,23 @@ def parse_module(path: str, directory: str, catalog: Catalog, conventions: dict[
 
     android = _block(text, "android")
     if android is not None:
-        for key in ("namespace", "compileSdk", "minSdk", "targetSdk", "applicationId", "versionCode", "versionName"):
+        for key in ("namespace", "compileSdk", "minSdk", "targetSdk", "applicationId", "versionCode", "versionName",
+                    "testInstrumentationRunner", "targetProjectPath"):
             m = re.search(r"(?:^|[\s{;])" + key + r"\s*=\s*([^\n;}]+?)\s*(?=$|[;}\n])", android, re.M)
             if m:
                 module.android[key] = _value(m.group(1), catalog)
+        # AGP's experimental flag of a test module whose instrumentation targets its own package (macrobenchmark's
+        # setting): the tests run in a process and uid of their own, beside the app they drive.
+        for name, value in re.findall(r'experimentalProperties\["([\w.-]+)"\]\s*=\s*(true|false)', android):
+            module.android[name] = value
         # A library states the targetSdk its unit tests run with in testOptions { targetSdk = … }.
         for key in ("namespace", "compileSdk", "minSdk", "targetSdk"):
             if key not in module.android:
                 raise BuildError(f"{build_file}: android {{}} must set {key}")
+        if module.is_android_test:
+            for key in ("targetProjectPath", "testInstrumentationRunner"):
+                if key not in module.android:
+                    raise BuildError(f"{build_file}: a test module's android {{}} must set {key}")
     if module.is_android and android is None:
         raise BuildError(f"{build_file}: an Android module needs an android {{}} block")
     return module

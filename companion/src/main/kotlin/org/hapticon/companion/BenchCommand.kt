@@ -9,22 +9,30 @@ import org.hapticon.companion.bench.CpuLatencyRequest
 import org.hapticon.companion.bench.Renice
 import org.hapticon.companion.bench.Benchmark
 import org.hapticon.companion.bench.GrainLatency
+import org.hapticon.companion.chat.load.BROKER_LOAD_OPTIONS
+import org.hapticon.companion.chat.load.runBrokerLoadBench
 import org.hapticon.companion.chat.runMessagingBench
 import org.hapticon.companion.study.AnalysisBench
 import java.util.concurrent.atomic.AtomicReference
 
 /**
  * `hapticon bench [--json] [--quick] [--messaging | --analysis | --grain [--runs N] [--interval-us N] [--spin-us N]
- * [--cpu-latency-us N] [--reader-nice N]]`:
+ * [--cpu-latency-us N] [--reader-nice N] | --broker-load [options of runBrokerLoadBench]]`:
  * measurements to stdout, progress to stderr.
  */
 fun runBench(args: List<String>, console: Console) {
     val arguments = Arguments.parse(
         "bench", args,
-        valueOptions = GRAIN_OPTIONS.toSet(),
-        flagOptions = setOf("json", "quick", "messaging", "analysis", "grain"),
+        valueOptions = GRAIN_OPTIONS.toSet() + BROKER_LOAD_OPTIONS,
+        flagOptions = setOf("json", "quick", "messaging", "analysis", "grain", "broker-load"),
     )
     arguments.requireNoPositionals()
+    val loadOptions = BROKER_LOAD_OPTIONS.filter { arguments.value(it) != null }
+    if (arguments.flag("broker-load")) {
+        if (listOf("quick", "messaging", "analysis", "grain").any(arguments::flag)) throw UsageException("bench --broker-load takes its own options; leave out --quick, --messaging, --analysis and --grain")
+        return runBrokerLoadBench(arguments, console)
+    }
+    if (loadOptions.isNotEmpty()) throw UsageException("--${loadOptions[0]} goes with --broker-load")
     val grainOptions = GRAIN_OPTIONS.filter { arguments.value(it) != null }
     if (!arguments.flag("grain") && grainOptions.isNotEmpty()) throw UsageException("--${grainOptions[0]} goes with --grain")
     if (arguments.flag("grain")) return runGrainBench(arguments, console)

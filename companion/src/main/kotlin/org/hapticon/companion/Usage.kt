@@ -35,6 +35,14 @@ val USAGE: String = """
     |      on the reader's CPU (10 ms ticks), or counted unexplained. --cpu-latency-us N holds a PM QoS request
     |      on /dev/cpu_dma_latency for the runs (0..100000; root only, a refusal is one line and the runs go
     |      on); --reader-nice N (-20..19) renices the reader thread with `renice` before its first read.
+    |  hapticon bench --broker-load [--users N[,N...]] [--duration S] [--interval MIN-MAX] [--burst K]
+    |                 [--broker embedded|mosquitto|both] [--broker-heap-mb M] [--mosquitto-conf FILE] [--json]
+    |      N simulated users (own password and client id, shipped ACL) on one broker, each sending a text
+    |      with the knock icon to a random peer every MIN-MAX s (default 10-30) and answering with receipts;
+    |      per broker and N: connections held, messages/s, p50/p99/max send-to-receive latency beside a
+    |      2-user baseline, lost/duplicated counts, broker memory and CPU. Defaults: 100,1000 users, 60 s,
+    |      both brokers (the embedded one in a child JVM; Mosquitto from companion/mosquitto, skipped with
+    |      one line when not installed). --burst K: every user sends K at once at 1/3 and 2/3 of the run.
     |  hapticon demo --out DIR [--apk PATH]
     |      Render and plot the presets into DIR, plus envelope-models.png; report the APK if given.
     |      Also a sensor demo: a synthetic FSR press as a framed stream, decoded, and its grains; a handshake.

@@ -12,6 +12,8 @@ import kotlinx.coroutines.flow.distinctUntilChanged
 import kotlinx.coroutines.flow.map
 import kotlinx.coroutines.flow.update
 import kotlinx.coroutines.launch
+import kotlinx.coroutines.NonCancellable
+import kotlinx.coroutines.withContext
 import kotlinx.coroutines.runBlocking
 import org.hapticon.app.data.ChatPreferences
 import org.hapticon.app.data.ChatRepository
@@ -179,11 +181,26 @@ class ChatSync(
             kotlinx.coroutines.flow.combine(accounts, restarts) { account, _ -> account }
                 .collectLatest { (target, _) ->
                     val (user, broker, password) = target
-                    if (user == null) return@collectLatest
+                    if (user == null) {
+                        // No account: the previous session was cancelled (and disconnected) by collectLatest.
+                        connectionState.value = ConnectionState.Disconnected
+                        return@collectLatest
+                    }
                     // Set before the session starts, so a waiter never takes the previous session's state for this one's.
                     connectionState.value = ConnectionState.Connecting(null)
                     sessionTarget.value = SessionTarget(user, broker, password)
-                    val messenger = messengerFactory(user, broker, password) ?: return@collectLatest
+                    val messenger = try {
+                        messengerFactory(user, broker, password)
+                    } catch (e: Exception) {
+                        if (e is kotlinx.coroutines.CancellationException) throw e
+                        // E.g. no Keystore to unwrap the end-to-end keys: say so, and keep the sync alive for the next account.
+                        Log.w(TAG, "no messenger for $user: ${e.message}")
+                        null
+                    }
+                    if (messenger == null) {
+                        connectionState.value = ConnectionState.Failed("this phone cannot open a session as $user (see the log)")
+                        return@collectLatest
+                    }
                     runSession(messenger)
                 }
         }
@@ -337,6 +354,11 @@ class ChatSync(
             }
         } finally {
             session = null
+            // The session ends (account changed, fresh session, app stopping): its client must go too. Left
+            // running, it would reconnect under the same client id as the next session's and the broker would
+            // hand the session back and forth between them (MQTT 3.1.1 §3.1.4: a second CONNECT with a client id
+            // disconnects the first).
+            withContext(NonCancellable) { runCatching { messenger.disconnect() } }
         }
     }
 

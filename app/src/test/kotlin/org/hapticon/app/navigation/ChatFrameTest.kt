@@ -24,7 +24,10 @@ import org.hapticon.app.MainActivity
 import org.hapticon.app.sync.MessageNotifier
 import org.hapticon.messaging.ChatMessage
 import org.hapticon.messaging.ConnectionState
+import org.hapticon.app.data.TestAndroidKeyStore
+import org.junit.After
 import org.junit.Assert.assertEquals
+import org.junit.Before
 import org.junit.Assert.assertTrue
 import org.junit.Rule
 import org.junit.Test
@@ -50,6 +53,13 @@ class ChatFrameTest {
 
     private val app = ApplicationProvider.getApplicationContext<HapticonApplication>()
     private val chat = app.container.chat!!
+
+    // The account seals end to end by default: its keys are wrapped by the Android Keystore, which Robolectric lacks.
+    @Before
+    fun installKeystore() = TestAndroidKeyStore.install()
+
+    @After
+    fun uninstallKeystore() = TestAndroidKeyStore.uninstall()
 
     private fun tabBar() = compose.onNode(hasText("Icons") and hasClickAction())
 

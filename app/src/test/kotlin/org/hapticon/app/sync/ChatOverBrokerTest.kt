@@ -157,10 +157,11 @@ class ChatOverBrokerTest {
         chat.settings.update { it.copy(userName = null) }
         awaitTrue("alice's session kept but disconnected") { broker.sessions() == mapOf(phoneSession() to false) }
         val bobInbox = CopyOnWriteArrayList<InboxEvent>()
-        val bob = MqttMessenger(MqttSettings(address, "bob", "bob-secret", DeviceId.generate())).also { bob = it }
+        val bob = sealingBob()
         bob.connect(InboxListener { bobInbox += it })
         val message = ChatMessage.compose("bob", "are you there?", null, HapticIcon.KNOCK, Clock.SYSTEM)
-        bob.send("alice", message)
+        // Sealed, as the app (end-to-end by default) accepts: alice's key stays retained while she is away.
+        sendWhenKeyKnown(bob, "alice", message)
 
         delay(3_000)
         // (Capabilities arrive, retained; receipts do not.)

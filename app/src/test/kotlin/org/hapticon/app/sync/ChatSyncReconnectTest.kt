@@ -117,4 +117,38 @@ class ChatSyncReconnectTest {
         withTimeout(20_000) { sync.connection.first { it == ConnectionState.Connected } }
         assertEquals(ConnectionState.Connected, messenger.state.value)
     }
+
+    /**
+     * A fresh session (keep-alive unanswered, network changed, certificate changed) ends the previous client: left
+     * running under the same client id, it would take the session back from the new one at its next reconnection.
+     * Removing the account ends the last one, and the screens read Disconnected.
+     */
+    @Test
+    fun restartSession_previousClientDisconnected_accountRemoved_connectionReadsDisconnected() = runBlocking {
+        broker = BrokerProcess(temp.newFolder("broker"), BrokerProcess.freePort()).also { it.start() }
+        val address = BrokerAddress(EmbeddedBroker.HOST, broker.port)
+        db = Room.inMemoryDatabaseBuilder(context, HapticonDatabase::class.java).build()
+        val repository = OfflineFirstChatRepository(db)
+        val settings = InMemoryChatSettings(ChatPreferences(userName = "alice", brokerUrl = address.toString(), brokerPassword = "alice-secret"))
+        val made = java.util.concurrent.CopyOnWriteArrayList<MqttMessenger>()
+        val vibrator = context.getSystemService(Vibrator::class.java)
+        val sync = ChatSync(
+            repository, repository, settings,
+            { user, url, password -> MqttMessenger(MqttSettings(BrokerAddress.parse(url), user, password, phoneDevice, reconnectPolicy = twoMinutes)).also { made += it } },
+            AdaptiveHapticPlayer(vibrator, { device }, { null }, renderContext = EmptyCoroutineContext), VibrationRateLimiter(Clock.MONOTONIC),
+            { user -> RendererChoice.capabilitiesOf(user, device, null) }, scope,
+        )
+        sync.start()
+        withTimeout(20_000) { sync.connection.first { it == ConnectionState.Connected } }
+
+        sync.restartSession()
+        withTimeout(20_000) { while (made.size < 2 || made[1].state.value != ConnectionState.Connected) kotlinx.coroutines.delay(20) }
+        withTimeout(5_000) { made[0].state.first { it == ConnectionState.Disconnected } }
+        assertEquals(mapOf("alice:${phoneDevice.value}" to true), broker.sessions())
+
+        settings.update { it.copy(userName = null) }
+        withTimeout(5_000) { sync.connection.first { it == ConnectionState.Disconnected } }
+        withTimeout(5_000) { made[1].state.first { it == ConnectionState.Disconnected } }
+        assertEquals(2, made.size)
+    }
 }

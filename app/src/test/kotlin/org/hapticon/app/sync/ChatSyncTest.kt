@@ -93,6 +93,18 @@ class ChatSyncTest {
     private fun <T> await(flow: Flow<T>, predicate: (T) -> Boolean): T = runBlocking { withTimeout(5_000) { flow.first(predicate) } }
 
     @Test
+    fun messengerCannotBeMade_connectionFailedWithWhy_nextAccountStillConnects() = runBlocking {
+        scope.coroutineContext[kotlinx.coroutines.Job]!!.children.forEach { it.cancelAndJoin() }
+        val bob = TestMessenger("bob")
+        sync = newSync(factory = { user, _, _ -> if (user == "alice") throw IllegalStateException("no Keystore") else bob })
+        sync.start()
+        assertEquals(org.hapticon.messaging.ConnectionState.Failed("this phone cannot open a session as alice (see the log)"), await(sync.connection) { it is org.hapticon.messaging.ConnectionState.Failed })
+        settings.update { it.copy(userName = "bob") }
+        await(sync.connection) { it == org.hapticon.messaging.ConnectionState.Connected }
+        assertEquals(org.hapticon.messaging.ConnectionState.Connected, bob.state.value)
+    }
+
+    @Test
     fun republishCapabilities_pitchFitChanged_peersGetTheNewFit() = runBlocking {
         await(messenger.published) { it.isNotEmpty() }
         assertEquals(org.hapticon.core.pattern.PitchFit.OCTAVES, messenger.published.value.last().pitchFit)

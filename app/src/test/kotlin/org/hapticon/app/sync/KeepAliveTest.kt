@@ -159,7 +159,7 @@ class KeepAliveTest {
         assertTrue(KeepAlive.INTERVAL_MILLIS < 1_500L * KeepAlive.MQTT_KEEP_ALIVE_SECONDS)
         assertEquals(
             KeepAlive.MQTT_KEEP_ALIVE_SECONDS,
-            ChatComponent.mqttSettings("alice", "tcp://192.168.1.20:1883", "alice-secret", null).keepAliveSeconds,
+            ChatComponent.mqttSettings("alice", "tcp://192.168.1.20:1883", "alice-secret", org.hapticon.messaging.mqtt.DeviceId.generate(), null).keepAliveSeconds,
         )
         assertTrue(KeepAlive.ROUND_TRIP_TIMEOUT_MILLIS < KeepAlive.INTERVAL_MILLIS)
     }

@@ -86,7 +86,14 @@ class NaoGesturesReplication(private val simulated: () -> List<NaoRecording>) : 
                 RuleRow("high-pass filter", "tried at 0.5 Hz, omitted", p.at("295"), "none", "same"),
                 RuleRow("classifier", "scikit-learn random forest", p.at("168, 170"), "our RandomForest (CART, Gini)", "same kind; not scikit-learn's code"),
                 RuleRow("one forest per task", "location, intensity, gesture, gesture + intensity", p.at("174, 205-209"), NaoTask.entries.joinToString(", ") { it.label }, "same"),
-                RuleRow("forest parameters", "Table 2: names only (max_depth, n_estimators per task); the values are not in the text", p.at("174-199"), describe(NaoPreset.FOREST) + " for every task", "paper's values not in our copy: ours from issue 15's summary; NaoPreset.FORESTS takes one per task"),
+                RuleRow(
+                    "forest parameters",
+                    "Table 2, trees/depth: location 50/40, intensity 100/20, gesture 100/40, combined 100/32; 20 features/split, min split 8, min leaf 1, gini, bootstrap, random_state None",
+                    p.at("174-199"),
+                    NaoTask.entries.joinToString(", ") { "${it.label} " + NaoPreset.FORESTS.getValue(it).let { f -> "${f.trees}/${f.maxDepth}" } } +
+                        NaoPreset.FOREST.let { f -> "; ${f.featuresPerSplit} features/split, min split ${f.minSamplesSplit}, min leaf ${f.minLeaf}, gini, bootstrap, seeded" },
+                    "same; seeded so that a run repeats (the paper's random_state None)",
+                ),
                 RuleRow("classes", "location 4 + none, intensity 2 + none, gesture 5 + none, combined 10 + none", p.at("205, 215"), NaoTask.entries.joinToString(", ") { "${it.label} ${it.classes.size}" }, "same"),
                 RuleRow("evaluation", "random 70 %-30 % split across all participants' windows", p.at("170"), "NaoEvaluation.randomSplit (70 %); also leave one person out", "same; LOPO is ours: the random split puts one person's overlapping windows on both sides"),
                 RuleRow("score", "\"average (label) accuracy\"", p.at("205, 209"), "accuracy and the mean of per-class recalls", "paper silent on the formula: both printed"),
@@ -168,8 +175,5 @@ class NaoGesturesReplication(private val simulated: () -> List<NaoRecording>) : 
         private fun percent(value: Double): String = if (value.isNaN()) "—" else String.format(Locale.ROOT, "%.1f %%", 100 * value)
 
         private fun fmt(value: Double, decimals: Int): String = String.format(Locale.ROOT, "%.${decimals}f", value)
-
-        private fun describe(p: org.hapticon.gesture.recognition.ForestParams): String =
-            "${p.trees} trees, depth ${p.maxDepth}, ${p.featuresPerSplit} features/split, min split ${p.minSamplesSplit}"
     }
 }

@@ -61,7 +61,7 @@ class NaoReplicationTest {
         assertTrue(out.row("features")[1].contains("number of peaks"))
         val forest = out.row("forest parameters")
         assertEquals("004:174-199", forest[2])
-        assertEquals("100 trees, depth 32, 20 features/split, min split 8 for every task", forest[3])
+        assertEquals("location 50/40, intensity 100/20, gesture 100/40, combined 100/32; 20 features/split, min split 8, min leaf 1, gini, bootstrap, seeded", forest[3])
         assertEquals(listOf("location 5, intensity 3, gesture 6, combined 11", "same"), out.row("classes").drop(3))
     }
 

@@ -30,6 +30,9 @@ class NaoPresetTest {
         assertEquals(NaoPreset.LOCATIONS + "none", NaoTask.LOCATION.classes)
         assertEquals(1.0 / 3, NaoTask.INTENSITY.chance, 0.0)
         assertEquals(NaoTask.entries.toSet(), NaoPreset.FORESTS.keys)
+        // Table 2 (004_7d5078645d142b2a.txt:180-194): n_estimators and max_depth per task, the rest shared.
+        assertEquals(listOf(50 to 40, 100 to 20, 100 to 40, 100 to 32), NaoTask.entries.map { NaoPreset.FORESTS.getValue(it).let { f -> f.trees to f.maxDepth } })
+        assertEquals(setOf(Triple(20, 8, 1)), NaoPreset.FORESTS.values.map { Triple(it.featuresPerSplit, it.minSamplesSplit, it.minLeaf) }.toSet())
         val span = NaoSpan(0, 80, "tickle-gentle", "shoulder")
         assertEquals(listOf("shoulder", "gentle", "tickle", "tickle-gentle"), NaoTask.entries.map { it.labelOf(span) })
         assertEquals(List(4) { "none" }, NaoTask.entries.map { it.labelOf(null) })

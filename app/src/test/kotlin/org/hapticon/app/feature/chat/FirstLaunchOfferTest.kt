@@ -206,7 +206,8 @@ class FirstLaunchOfferTest {
         val link = org.hapticon.messaging.InviteLink("bob", org.hapticon.messaging.BrokerAddress("192.168.1.20", 1883)).toString()
         app.contentResolver.openOutputStream(output)!!.use { photoOf(link).compress(android.graphics.Bitmap.CompressFormat.JPEG, 85, it) }
         shadowOf(compose.activity).receiveResult(camera, android.app.Activity.RESULT_OK, null)
-        compose.waitUntil(10_000) { settings.preferences.value.brokerUrl.isNotEmpty() }
+        // Decoding a 12 MP photo takes seconds on a busy machine.
+        compose.waitUntil(60_000) { settings.preferences.value.brokerUrl.isNotEmpty() }
         compose.waitForIdle()
 
         assertEquals("tcp://192.168.1.20:1883", settings.preferences.value.brokerUrl)
