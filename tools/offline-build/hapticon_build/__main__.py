@@ -93,6 +93,9 @@ def main(argv: list[str]) -> int:
         return 1
     except KeyboardInterrupt:
         return 130
+    finally:
+        from .dexing import finish_background
+        finish_background()  # a library dex started in the background ends (and is kept) before the build does
     ui.info(f"{command} done in {time.monotonic() - started:.1f} s")
     return 0
 
@@ -158,12 +161,21 @@ def run_tests(build: Build, rest: list[str]) -> int:
     modules = [build.project.module(m) for m in rest] if rest else build.project.in_dependency_order()
     results = []
     if not rest:
-        results.append(build_tool_tests(build.root, name_filter))
-    for m in modules:
-        results.append(build.test_module(m, name_filter))
-        if m.is_android_app:
-            build.kotlinc.close()
-    build.kotlinc.close()
+        # Every test: then the APK comes next (the README's `./build demo`), and its library dex, minutes of D8
+        # once per set of libraries, runs beside the tests, which mostly leave a core idle.
+        from .android import AndroidApp
+        AndroidApp(build, app_module(build.project)).start_library_dex()
+    try:
+        if not rest:
+            results.append(build_tool_tests(build.root, name_filter))
+        for m in modules:
+            results.append(build.test_module(m, name_filter))
+            if m.is_android_app:
+                build.kotlinc.close()
+        build.kotlinc.close()
+    finally:
+        from .dexing import finish_background
+        finish_background()  # also when a module fails to compile: the dex is kept for the next run
     passed = sum(r.passed for r in results)
     failed = sum(r.failed for r in results) + sum(1 for r in results if r.crashed)
     skipped = sum(r.skipped for r in results)

@@ -17,6 +17,7 @@ import zipfile
 from dataclasses import dataclass
 
 from .builder import Build, Outputs, TestResult
+from .dexing import D8Tool, dex_libraries, library_globals, start_in_background
 from .errors import BuildError
 from .kotlin import fingerprint
 from .project import Module
@@ -177,8 +178,7 @@ class AndroidApp:
                "--target-sdk-version", self.target_sdk, "--version-code", self.version_code,
                "--version-name", self.version_name, "--rename-manifest-package", self.application_id,
                "-o", res_apk]
-        # aapt2's keep rules for the classes the manifest and layouts name: R8 needs them (release, and the
-        # debug build's library shrinking).
+        # aapt2's keep rules for the classes the manifest and layouts name: the release build's R8 needs them.
         cmd += ["--proguard", os.path.join(work, "aapt2-rules.pro")] + ([] if release else ["--debug-mode"])
         if packages:
             cmd += ["--extra-packages", ":".join(sorted(packages))]
@@ -213,26 +213,26 @@ class AndroidApp:
 
     # -- APK --------------------------------------------------------------------------------------
     def assemble(self) -> str:
+        self.start_library_dex()
         classes = self.b.compile_module(self.m, "main")
         if not hasattr(self, "r_jar"):
             self.compile_main()
         runtime = self.b.runtime_classpath(self.m, "main")
         project_entries = [e for e in runtime if e.startswith(self.b.out) or os.path.isdir(e)]
-        library_jars, consumer_rules = self._library_inputs()
-        rules = self._debug_rules(consumer_rules)
+        library_jars, _consumer_rules = self._library_inputs()
         stamp = self.apk + ".stamp"
-        fp = fingerprint(project_entries, library_jars, self.res_apk, self.r_jar, *rules)
+        fp = fingerprint(project_entries, library_jars, self.res_apk, self.r_jar)
         if os.path.exists(self.apk) and os.path.exists(stamp) and open(stamp).read() == fp:
             info(f"{os.path.relpath(self.apk, self.b.root)} is up to date")
             return self.apk
         with Stage("dex"):
-            dex_files = self._dex(project_entries, library_jars, rules)
+            dexes = self._dex(project_entries, library_jars)
         with Stage("package and sign"):
             unsigned = os.path.join(self.out, "intermediates", "unsigned.apk")
             shutil.copyfile(self.res_apk, unsigned)
             # Deflate level 9 (zlib's best; Python's default is 6): about 30 KB smaller on our dex.
             with zipfile.ZipFile(unsigned, "a", zipfile.ZIP_DEFLATED, compresslevel=9) as apk:
-                for i, dex in enumerate(dex_files):
+                for i, dex in enumerate(dexes):
                     apk.write(dex, "classes.dex" if i == 0 else f"classes{i + 1}.dex")
                 count = self._add_java_resources(apk, project_entries + library_jars)
                 natives = self._add_native_libraries(apk)
@@ -243,11 +243,6 @@ class AndroidApp:
         with open(stamp, "w") as f:
             f.write(fp)
         return self.apk
-
-    def _debug_rules(self, consumer_rules: list[str]) -> list[str]:
-        """The keep rules of the debug APK's library shrinking ([_dex])."""
-        rules = [os.path.join(self.m.directory, f) for f in ("proguard-rules.pro", "proguard-debug-rules.pro")]
-        return rules + [os.path.join(os.path.dirname(self.res_apk), "aapt2-rules.pro")] + consumer_rules
 
     # -- release APK -------------------------------------------------------------------------------
     def assemble_release(self, signing: "Signing") -> str:
@@ -361,19 +356,14 @@ class AndroidApp:
                 library_jars.append(p)
         return library_jars, consumer_rules
 
-    def _dex(self, project_entries: list[str], library_jars: list[str], rules: list[str]) -> list[str]:
-        """Dex files for the debug APK: the libraries shrunk to what the app reaches, then the program's own
-        classes by D8, unshrunk. minSdk ≥ 21 loads several dex files natively, so the two are never merged.
-
-        The libraries' unshrunk dex alone is ~35 MB (12.4 MB deflated) and would put the debug APK over its
-        12 MB target, so they go through R8 with `-dontobfuscate -dontoptimize` (app/proguard-debug-rules.pro):
-        tree shaking only, names and code unchanged. What the app uses is traced from its classes by R8's
-        TraceReferences as keep rules (the way Slack's Keeper shrinks test APKs), beside the rules the release
-        build uses (the app's, aapt2's for the manifest, the libraries' own). The app's classes are not
-        shrunk, so they stay exactly as compiled and debuggable. The result is cached by the libraries, the
-        rules and the traced references, so R8 runs again only when the app starts using another library
-        class or member. Afterwards every library class the app names must be defined in the shrunk dex, and
-        the release smoke check runs on the whole dex set."""
+    def _dex(self, project_entries: list[str], library_jars: list[str]) -> list[str]:
+        """Dex files for the debug APK, as AGP makes them for a debuggable variant: the libraries dexed jar by jar
+        and merged ([dex_libraries]: a jar is dexed once ever, the merge once per set of libraries), then the
+        app's own classes by D8 on their own. minSdk ≥ 21 loads several dex files natively, so the two are never
+        merged. Nothing is shrunk (the release APK carries the size target): the debug build runs the libraries'
+        code as published. Afterwards every class the app names must be defined in the dex or by the platform,
+        no class may be defined twice, and the manifest components, Room's `_Impl` classes and
+        [REFLECTIVE_CLASSES] must be there."""
         work = os.path.join(self.out, "intermediates", "dex")
         os.makedirs(work, exist_ok=True)
         program = os.path.join(work, "program.jar")
@@ -383,45 +373,62 @@ class AndroidApp:
             with zipfile.ZipFile(self.r_jar) as r:
                 for n in r.namelist():
                     z.writestr(n, r.read(n))
-        traced = os.path.join(work, "app-references.pro")
-        self._trace_references(["--keep-rules", "--source", program, *_each("--target", library_jars), "--output", traced],
-                               "TraceReferences of the app's library references")
-        key = hashlib.sha1()
-        for j in library_jars:
-            key.update(j.encode() + str(os.path.getsize(j)).encode())
-        for r in rules + [traced]:
-            key.update(open(r, "rb").read())
-        cache = os.path.join(self.b.cache, "library-dex", key.hexdigest()[:16])
-        if not os.path.exists(os.path.join(cache, ".done")):
-            shutil.rmtree(cache, ignore_errors=True)
-            os.makedirs(os.path.join(cache, "final"))
-            with Stage(f"R8 tree shaking of {len(library_jars)} library jars (cached until the app's references change)"):
-                args = ["--release", "--min-api", self.min_sdk, "--lib", self.tools.android_jar, "--lib", self.tools.java_home,
-                        "--classpath", self.r_jar,  # the libraries' R classes: aapt2 generates them with the app's
-                        "--output", os.path.join(cache, "final"), *_each("--pg-conf", rules + [traced])]
-                run([self.tools.java, "-Xmx3g", "-cp", self.tools.r8, "com.android.tools.r8.R8", *args, *library_jars],
-                    "R8 of the libraries", log=os.path.join(work, "r8-libraries.log"))
-            open(os.path.join(cache, ".done"), "w").close()
-        library_dex = sorted((os.path.join(cache, "final", f) for f in os.listdir(os.path.join(cache, "final"))
-                              if f.endswith(".dex")), key=_dex_order)
-        # Every library class the app names must still be defined (its members are kept by the traced rules;
-        # TraceReferences --check cannot read dex, so this checks the classes by their dex definitions).
-        defined = set().union(*(dex_type_names(open(d, "rb").read()) for d in library_dex))
-        named = re.findall(r"(?m)^-keep (?:class|interface|enum|@interface) (\S+) \{", open(traced).read())
-        lost = [n for n in named if "L" + n.replace(".", "/") + ";" not in defined]
+        library_dex = dex_libraries(library_jars, self._d8_tool())
+        program_out = os.path.join(work, "program")
+        shutil.rmtree(program_out, ignore_errors=True)
+        os.makedirs(program_out)
+        app_globals = os.path.join(work, "program-globals.zip")
+        if os.path.exists(app_globals):
+            os.remove(app_globals)
+        with Stage("D8 of the app's classes"):
+            self._d8([*_each("--classpath", library_jars), "--intermediate", "--globals-output", app_globals,
+                      "--output", program_out, program], "D8 of app classes")
+            # Global synthetics (e.g. the LambdaMethod annotation D8 adds to desugared lambdas) are made apart by
+            # each intermediate D8 run, the libraries' and the app's; compiled here once for all, as AGP's
+            # global-synthetics merge does.
+            globals_files = library_globals(library_dex) + ([app_globals] if os.path.exists(app_globals) else [])
+            globals_out = os.path.join(work, "globals")
+            shutil.rmtree(globals_out, ignore_errors=True)
+            os.makedirs(globals_out)
+            if globals_files:
+                self._d8([*_each("--globals", globals_files), "--output", globals_out], "D8 of the global synthetics")
+        program_dex = sorted((os.path.join(program_out, f) for f in os.listdir(program_out)), key=_dex_order)
+        program_dex += sorted((os.path.join(globals_out, f) for f in os.listdir(globals_out)), key=_dex_order)
+        library_types = set().union(*(dex_type_names(open(d, "rb").read()) for d in library_dex))
+        program_types = set().union(*(dex_type_names(open(d, "rb").read()) for d in program_dex))
+        # Two dex sets must not define one class twice (e.g. a global synthetic made for both); within the
+        # libraries the merge already fails on a class two jars define.
+        clash = library_types & program_types
+        if clash:
+            raise BuildError(f"classes defined by both the app and its libraries: {sorted(clash)[:5]}")
+        with zipfile.ZipFile(self.tools.android_jar) as z:
+            platform = {"L" + n.removesuffix(".class") + ";" for n in z.namelist() if n.endswith(".class")}
+        # The JDK's namespaces are left to the platform: Android's libcore provides java.*, and the shared modules
+        # name a few JDK-only classes (com.sun.management) on paths only the companion runs.
+        named = {n for n in app_class_references(program) if not n.startswith(JDK_PREFIXES)}
+        lost = sorted(named - library_types - program_types - platform)
         if lost:
-            raise BuildError(f"the shrunk libraries lack classes the app uses: {', '.join(lost[:5])}")
-        info(f"{len(named)} library classes the app uses are in the shrunk libraries")
-        program_dex = self._dex_program(program, library_jars, library_dex, os.path.join(work, "program"))
+            raise BuildError(f"the dex lacks {len(lost)} classes the app uses: {', '.join(lost[:5])}")
         manifest = os.path.join(os.path.dirname(self.res_apk), "AndroidManifest.xml")
-        classes, members, _ = smoke_check(library_dex + program_dex, required_classes(program, manifest),
-                                          required_members(program, library_jars, os.path.join(self.b.cache, "field-lookups")))
-        info(f"{classes} classes and {members} members reached by name found in the dex")
+        required = required_classes(program, manifest)
+        missing = [n for n in required if "L" + n.replace(".", "/") + ";" not in library_types and
+                   "L" + n.replace(".", "/") + ";" not in program_types]
+        if missing:
+            raise BuildError(f"the dex lacks classes reached by name: {', '.join(missing)}")
+        info(f"{len(named)} classes the app names and {len(required)} reached by name are defined; "
+             f"{len(library_types)} library and {len(program_types)} app classes, none twice")
         return library_dex + program_dex
 
-    def _trace_references(self, args: list[str], what: str) -> str:
-        return run([self.tools.java, "-Xmx2g", "-cp", self.tools.r8, "com.android.tools.r8.tracereferences.TraceReferences",
-                    *args, "--lib", self.tools.android_jar, "--lib", self.tools.java_home], what)
+    def _d8_tool(self) -> D8Tool:
+        helper = self.tools.helper_classes("LibraryDexer", [self.tools.r8])
+        return D8Tool(java=self.tools.java, classpath=[helper, self.tools.r8], r8_jar=self.tools.r8,
+                      android_jar=self.tools.android_jar, java_home=self.tools.java_home, min_sdk=self.min_sdk,
+                      cache=self.b.cache, threads=max(1, os.cpu_count() or 1))
+
+    def start_library_dex(self) -> None:
+        """Starts the debug APK's library dex in the background ([start_in_background]) when it is not cached: it
+        needs only the resolved libraries, so it runs beside the compilation (or tests) that come first."""
+        start_in_background(self._library_inputs()[0], self._d8_tool())
 
     def _add_java_resources(self, apk: zipfile.ZipFile, entries: list[str]) -> int:
         taken: dict[str, bytes] = {}
@@ -619,8 +626,10 @@ def _uleb128(data: bytes, pos: int) -> tuple[int, int]:
 
 
 def dex_type_names(dex: bytes) -> set[str]:
-    """Type descriptors (e.g. `Lorg/x/MainActivity;`) of the classes a dex file defines."""
-    return set(dex_classes(dex))
+    """Type descriptors (e.g. `Lorg/x/MainActivity;`) of the classes a dex file defines: each class_def's
+    class_idx, without reading the classes' members ([dex_classes] does)."""
+    d = _Dex(dex)
+    return {d.type_name(struct.unpack_from("<I", dex, d.class_defs_off + 32 * c)[0]) for c in range(d.class_defs_size)}
 
 
 @dataclass(frozen=True)
@@ -945,6 +954,28 @@ def _class_file(data: bytes) -> tuple[str, str | None, dict[int, tuple]]:
     this_class, super_class = struct.unpack_from(">HH", data, pos + 2)
     utf = lambda k: pool[k][1]
     return utf(pool[this_class][1]), utf(pool[super_class][1]) if super_class else None, pool
+
+
+JDK_PREFIXES = ("Ljava/", "Ljavax/", "Ljdk/", "Lsun/", "Lcom/sun/")
+
+
+def app_class_references(program_jar: str) -> set[str]:
+    """Descriptors (`La/b/C;`) of every class the classes in `program_jar` name in their constant pools
+    (CONSTANT_Class: what they instantiate, call, cast to or load as a literal), array types by their element
+    class; what the app cannot run without."""
+    names = set()
+    with zipfile.ZipFile(program_jar) as z:
+        for n in z.namelist():
+            if n.endswith(".class") and not n.startswith("META-INF/"):
+                _name, _super, pool = _class_file(z.read(n))
+                for tag, *value in pool.values():
+                    if tag == 7:
+                        name = pool[value[0]][1].lstrip("[")
+                        if name.startswith("L") and name.endswith(";"):
+                            names.add(name)
+                        elif len(name) > 1:  # a plain internal name; `I`, `J`, … are a primitive array's element
+                            names.add("L" + name + ";")
+    return names
 
 
 def field_lookups(data: bytes) -> set[tuple[str, str]]:

@@ -81,10 +81,7 @@ class InstrumentationApk(AndroidApp):
             raise BuildError(f"{main}: declare minSdk/targetSdk in build.gradle.kts, not <uses-sdk>")
         return with_instrumentation(text, self.runner, self.instrumented_package, f"Tests for {self.target_package}")
 
-    def _debug_rules(self, consumer_rules: list[str]) -> list[str]:
-        return []  # nothing is shrunk
-
-    def _dex(self, project_entries: list[str], library_jars: list[str], rules: list[str]) -> list[str]:
+    def _dex(self, project_entries: list[str], library_jars: list[str]) -> list[str]:
         """The libraries dexed whole by D8, once per exact set (`.build-cache/test-library-dex/`), then the module's own
         classes (and R classes) against them; no class may come from both."""
         key = hashlib.sha1(f"{self.min_sdk}:{self.tools.r8}".encode())

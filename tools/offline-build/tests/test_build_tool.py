@@ -557,6 +557,25 @@ class DexParserTest(unittest.TestCase):
                          read_field_mapping(FIELDS_R8_MAPPING))
         self.assertEqual({}, read_field_mapping(None))
 
+    def test_dexTypeNames_fieldsFixture_theClassesDexClassesReads(self):
+        from hapticon_build.android import dex_type_names
+        self.assertEqual({"Lfixture/Fields;", "Lfixture/Fields$Child;"}, dex_type_names(read(FIELDS_DEX, "rb")))
+
+    def test_appClassReferences_javacOutput_classesNamedIncludingArrayElementsNotPrimitives(self):
+        import zipfile
+        from hapticon_build.android import app_class_references
+        tmp = tempfile.mkdtemp()
+        javac(os.path.join(tmp, "classes"), {
+            "app/Main.java": "package app; public class Main { Object run() { new lib.Helper(); int[] n = new int[2];"
+                             " return new lib.Item[n.length]; } }",
+            "lib/Helper.java": "package lib; public class Helper {}",
+            "lib/Item.java": "package lib; public class Item {}",
+        })
+        program = os.path.join(tmp, "program.jar")
+        with zipfile.ZipFile(program, "w") as z:
+            z.write(os.path.join(tmp, "classes", "app", "Main.class"), "app/Main.class")
+        self.assertEqual({"Lapp/Main;", "Llib/Helper;", "Llib/Item;", "Ljava/lang/Object;"}, app_class_references(program))
+
     def test_dexClasses_notDex_fails(self):
         with self.assertRaises(BuildError):
             dex_classes(b"PK\x03\x04" + bytes(200))
@@ -648,3 +667,94 @@ class SmokeCheckTest(unittest.TestCase):
         self.assertEqual(expected, required_members(program, [library], cache))
         self.assertEqual(1, len(os.listdir(cache)))  # the library's lookups, read from here the next time
         self.assertEqual(expected, required_members(program, [library], cache))
+
+
+class LibraryDexTest(unittest.TestCase):
+    """The debug APK's library dex (dexing.py, java/LibraryDexer.java) with the project's own D8 (r8 from the
+    catalog). D8 takes seconds per run, so the class dexes two small jars once and the tests build on that cache."""
+
+    @classmethod
+    def setUpClass(cls):
+        import zipfile
+        from hapticon_build.builder import Build
+        from hapticon_build.dexing import D8Tool, dex_libraries, library_globals
+        tools = Build(load_project(REPO)).tools
+        cls.tmp = tempfile.mkdtemp()
+        classes = os.path.join(cls.tmp, "classes")
+        javac(classes, {
+            "lib/a/Greeter.java": "package lib.a; public interface Greeter { default String greet() { return \"hi\"; } }",
+            "lib/a/Hello.java": "package lib.a; public class Hello implements Greeter { public Runnable r() { return () -> {}; } }",
+            "lib/b/Counter.java": "package lib.b; public class Counter { public Runnable count(int[] xs) { return () -> {}; } }",
+            "lib/c/Other.java": "package lib.c; public class Other { }",
+        })
+        cls.jars = []
+        for name, folder in (("a.jar", "lib/a"), ("b.jar", "lib/b"), ("c.jar", "lib/c")):
+            jar = os.path.join(cls.tmp, name)
+            with zipfile.ZipFile(jar, "w") as z:
+                for f in sorted(os.listdir(os.path.join(classes, folder))):
+                    z.write(os.path.join(classes, folder, f), f"{folder}/{f}")
+            cls.jars.append(jar)
+        cls.cache = os.path.join(cls.tmp, "cache")
+        helper = tools.helper_classes("LibraryDexer", [tools.r8])
+        cls.tool = D8Tool(java=tools.java, classpath=[helper, tools.r8], r8_jar=tools.r8, android_jar=tools.android_jar,
+                          java_home=tools.java_home, min_sdk="26", cache=cls.cache, threads=2)
+        cls.first = dex_libraries(cls.jars[:2], cls.tool)
+        cls.first_defined = cls.defined(cls.first)  # read now: a later test's set replaces this one
+        cls.first_globals = library_globals(cls.first)
+        cls.cached_jars = sorted(os.listdir(os.path.join(cls.cache, "dex", "jars")))
+        with mock.patch("subprocess.Popen", side_effect=AssertionError("D8 ran again")):
+            cls.again = dex_libraries(cls.jars[:2], cls.tool)  # before any test dexes another set
+
+    @staticmethod
+    def defined(dexes):
+        from hapticon_build.android import dex_type_names
+        return set().union(*(dex_type_names(read(d, "rb")) for d in dexes))
+
+    def dex_recording_jobs(self, jars) -> tuple[list[str], list[str]]:
+        """dex_libraries(jars) and the jars it gave LibraryDexer (`-` for one already dexed)."""
+        from hapticon_build.dexing import dex_libraries
+        jobs, real_popen = [], subprocess.Popen
+
+        def popen(cmd, **kwargs):
+            with open(cmd[-2]) as f:
+                jobs.extend(line.split("\t")[0] for line in f.read().splitlines())
+            return real_popen(cmd, **kwargs)
+        with mock.patch("subprocess.Popen", side_effect=popen):
+            return dex_libraries(jars, self.tool), jobs
+
+    def test_dexLibraries_twoJars_mergedDexDefinesEveryClassAndEachJarIsCached(self):
+        defined = self.first_defined
+        self.assertLessEqual({"Llib/a/Greeter;", "Llib/a/Hello;", "Llib/b/Counter;"}, defined)
+        # Both jars' lambdas are desugared by D8, which marks each with a global synthetic annotation class: not in
+        # the merged dex, but kept apart for each jar, to be compiled once with the app's.
+        self.assertTrue(any(d.startswith("Llib/b/Counter$") for d in defined))
+        self.assertNotIn("Lcom/android/tools/r8/annotations/LambdaMethod;", defined)
+        self.assertEqual(["0.zip", "1.zip"], [os.path.basename(g) for g in self.first_globals])
+        self.assertEqual(2, len(self.cached_jars))
+        self.assertIn("timing.json", os.listdir(os.path.join(self.cache, "dex")))
+
+    def test_dexLibraries_sameJarsAgain_runsNoD8(self):
+        self.assertEqual(self.first, self.again)  # setUpClass made D8 fail had it run
+
+    def test_dexLibraries_cachedJarElsewhereAndANewOne_dexesOnlyTheNewOneThenMerges(self):
+        import shutil
+        copy = os.path.join(tempfile.mkdtemp(), "a.jar")  # the same content under another path: still cached
+        shutil.copyfile(self.jars[0], copy)
+        dexes, jobs = self.dex_recording_jobs([copy, self.jars[2]])
+        self.assertEqual(["-", self.jars[2]], jobs)
+        self.assertLessEqual({"Llib/a/Hello;", "Llib/c/Other;"}, self.defined(dexes))
+        self.assertNotIn("Llib/b/Counter;", self.defined(dexes))
+        self.assertEqual(1, len(os.listdir(os.path.join(self.cache, "dex", "libraries"))))  # the old set is gone
+        self.assertLessEqual(set(self.cached_jars), set(os.listdir(os.path.join(self.cache, "dex", "jars"))))
+
+    def test_dexLibraries_classInTwoJars_failsNamingItAndKeepsNoMergedSet(self):
+        import zipfile
+        other = os.path.join(tempfile.mkdtemp(), "other.jar")  # another jar that also defines lib.b.Counter
+        with zipfile.ZipFile(self.jars[1]) as source, zipfile.ZipFile(other, "w") as z:
+            z.writestr("lib/b/Counter.class", source.read("lib/b/Counter.class"))
+            z.writestr("README", "a different jar")
+        with self.assertRaises(BuildError) as e:
+            self.dex_recording_jobs([self.jars[1], other])
+        self.assertIn("lib.b.Counter", str(e.exception))
+        merged = os.listdir(os.path.join(self.cache, "dex", "libraries"))
+        self.assertFalse([m for m in merged if ".tmp" in m])  # no half-merged set left behind
