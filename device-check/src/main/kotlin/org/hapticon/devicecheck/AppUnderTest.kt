@@ -32,7 +32,7 @@ class AppUnderTest(private val shell: Shell, private val device: UiDevice, priva
         writePreferences(
             "chat",
             strings = mapOf("user" to args.user, "broker" to args.broker),
-            booleans = mapOf("auto_play" to autoPlay, "stay_reachable" to stayReachable, "felt_receipts" to true),
+            booleans = mapOf("auto_play" to autoPlay, "stay_reachable" to stayReachable, "felt_receipts" to true, "reachable_offer_pending" to false),
         )
         writePreferences("chat_credentials", strings = mapOf("broker_password" to args.password), booleans = emptyMap())
         if (Build.VERSION.SDK_INT >= 33) shell.run("pm grant $PACKAGE android.permission.POST_NOTIFICATIONS")

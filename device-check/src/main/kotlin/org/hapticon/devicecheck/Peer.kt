@@ -13,6 +13,12 @@ import org.hapticon.messaging.InboxEvent
 import org.hapticon.messaging.Receipt
 import org.hapticon.messaging.ReceiptState
 import org.hapticon.messaging.mqtt.MqttMessenger
+import org.hapticon.messaging.mqtt.DeviceId
+import org.hapticon.messaging.MessagingException
+import org.hapticon.messaging.e2e.EndToEnd
+import org.hapticon.messaging.e2e.Identity
+import org.hapticon.messaging.e2e.InMemoryKeyPins
+import kotlinx.coroutines.delay
 import org.hapticon.messaging.mqtt.MqttSettings
 
 /**
@@ -21,7 +27,11 @@ import org.hapticon.messaging.mqtt.MqttSettings
  * comes back, with the moment it arrived.
  */
 class Peer(private val args: DeviceCheckArguments) : AutoCloseable {
-    private val messenger = MqttMessenger(MqttSettings(BrokerAddress.parse(args.broker), args.peer, args.peerPassword))
+    // Sealed end to end, as the app (encrypting by default) accepts; a device id of its own, as every client has.
+    private val messenger = MqttMessenger(
+        MqttSettings(BrokerAddress.parse(args.broker), args.peer, args.peerPassword, DeviceId.generate()),
+        EndToEnd(Identity.generate(args.peer), InMemoryKeyPins()),
+    )
     private val receipts = CopyOnWriteArrayList<Arrived>()
     private val capabilities = ConcurrentHashMap<String, Capabilities>()
 
@@ -40,10 +50,24 @@ class Peer(private val args: DeviceCheckArguments) : AutoCloseable {
         }
     }
 
-    /** Sends [text] with [icon] to the app's user; returns the message sent. */
+    /**
+     * Sends [text] with [icon] to the app's user; returns the message sent. Sealing needs the user's key, retained on
+     * the broker and arriving just after connecting: until it is there, sending is refused and tried again.
+     */
     fun send(text: String, icon: HapticIcon? = null): ChatMessage {
         val message = ChatMessage.compose(args.peer, text, icon = icon)
-        runBlocking { messenger.send(args.user, message) }
+        val deadline = SystemClock.uptimeMillis() + CONNECT_TIMEOUT_MILLIS
+        runBlocking {
+            while (true) {
+                try {
+                    messenger.send(args.user, message)
+                    break
+                } catch (e: MessagingException) {
+                    if (SystemClock.uptimeMillis() > deadline) throw e
+                    delay(50)
+                }
+            }
+        }
         return message
     }
 
