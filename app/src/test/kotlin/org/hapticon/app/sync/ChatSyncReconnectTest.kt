@@ -87,24 +87,31 @@ class ChatSyncReconnectTest {
         }
     }
 
-    @Test
-    fun brokerKilledDuringOnConnectWork_stateLeavesConnected_andReturnsAfterRestartAndNudge() = runBlocking {
+    /**
+     * A broker in a child JVM, alice's account on it, and a started [ChatSync] whose every messenger is this phone's
+     * real one (two-minute backoff) as [wrap] returns it.
+     */
+    private fun startedSync(wrap: (MqttMessenger) -> Messenger): Pair<ChatSync, InMemoryChatSettings> {
         broker = BrokerProcess(temp.newFolder("broker"), BrokerProcess.freePort()).also { it.start() }
         val address = BrokerAddress(EmbeddedBroker.HOST, broker.port)
         db = Room.inMemoryDatabaseBuilder(context, HapticonDatabase::class.java).build()
         val repository = OfflineFirstChatRepository(db)
         val settings = InMemoryChatSettings(ChatPreferences(userName = "alice", brokerUrl = address.toString(), brokerPassword = "alice-secret"))
-        val made = kotlinx.coroutines.CompletableDeferred<KilledMidPublish>()
         val vibrator = context.getSystemService(Vibrator::class.java)
         val sync = ChatSync(
             repository, repository, settings,
-            { user, url, password ->
-                KilledMidPublish(MqttMessenger(MqttSettings(BrokerAddress.parse(url), user, password, phoneDevice, reconnectPolicy = twoMinutes))).also { made.complete(it) }
-            },
+            { user, url, password -> wrap(MqttMessenger(MqttSettings(BrokerAddress.parse(url), user, password, phoneDevice, reconnectPolicy = twoMinutes))) },
             AdaptiveHapticPlayer(usageVibrator(vibrator), { device }, { null }, renderContext = EmptyCoroutineContext), VibrationRateLimiter(Clock.MONOTONIC),
             { user -> RendererChoice.capabilitiesOf(user, device, null) }, scope,
         )
         sync.start()
+        return sync to settings
+    }
+
+    @Test
+    fun brokerKilledDuringOnConnectWork_stateLeavesConnected_andReturnsAfterRestartAndNudge() = runBlocking {
+        val made = kotlinx.coroutines.CompletableDeferred<KilledMidPublish>()
+        val (sync, _) = startedSync { real -> KilledMidPublish(real).also { made.complete(it) } }
         val messenger = withTimeout(20_000) { made.await() }
 
         // Connected, then the on-connect capabilities publish kills the broker: the messenger knows at once.
@@ -126,20 +133,8 @@ class ChatSyncReconnectTest {
      */
     @Test
     fun restartSession_previousClientDisconnected_accountRemoved_connectionReadsDisconnected() = runBlocking {
-        broker = BrokerProcess(temp.newFolder("broker"), BrokerProcess.freePort()).also { it.start() }
-        val address = BrokerAddress(EmbeddedBroker.HOST, broker.port)
-        db = Room.inMemoryDatabaseBuilder(context, HapticonDatabase::class.java).build()
-        val repository = OfflineFirstChatRepository(db)
-        val settings = InMemoryChatSettings(ChatPreferences(userName = "alice", brokerUrl = address.toString(), brokerPassword = "alice-secret"))
         val made = java.util.concurrent.CopyOnWriteArrayList<MqttMessenger>()
-        val vibrator = context.getSystemService(Vibrator::class.java)
-        val sync = ChatSync(
-            repository, repository, settings,
-            { user, url, password -> MqttMessenger(MqttSettings(BrokerAddress.parse(url), user, password, phoneDevice, reconnectPolicy = twoMinutes)).also { made += it } },
-            AdaptiveHapticPlayer(usageVibrator(vibrator), { device }, { null }, renderContext = EmptyCoroutineContext), VibrationRateLimiter(Clock.MONOTONIC),
-            { user -> RendererChoice.capabilitiesOf(user, device, null) }, scope,
-        )
-        sync.start()
+        val (sync, settings) = startedSync { real -> real.also { made += it } }
         withTimeout(20_000) { sync.connection.first { it == ConnectionState.Connected } }
 
         sync.restartSession()
