@@ -17,8 +17,6 @@ import androidx.compose.ui.test.onAllNodesWithText
 import androidx.compose.ui.test.onNodeWithText
 import androidx.compose.ui.test.performClick
 import androidx.compose.ui.test.performTouchInput
-import java.io.File
-import java.util.concurrent.CopyOnWriteArrayList
 import kotlinx.coroutines.delay
 import kotlinx.coroutines.flow.first
 import kotlinx.coroutines.runBlocking
@@ -29,14 +27,14 @@ import org.hapticon.app.playback.label
 import org.hapticon.app.playback.lastVibration
 import org.hapticon.app.sync.BrokerProcess
 import org.hapticon.core.HapticIcon
+import org.hapticon.core.render.RendererKind
+import org.hapticon.messaging.BrokerAddress
 import org.hapticon.messaging.Capabilities
 import org.hapticon.messaging.ChatMessage
 import org.hapticon.messaging.Clock
 import org.hapticon.messaging.ConnectionState
 import org.hapticon.messaging.InboxListener
-import org.hapticon.messaging.RendererKind
 import org.hapticon.messaging.broker.EmbeddedBroker
-import org.hapticon.messaging.BrokerAddress
 import org.hapticon.messaging.mqtt.DeviceId
 import org.hapticon.messaging.mqtt.MqttMessenger
 import org.hapticon.messaging.mqtt.MqttSettings
@@ -50,6 +48,8 @@ import org.junit.runner.RunWith
 import org.robolectric.RobolectricTestRunner
 import org.robolectric.Shadows.shadowOf
 import org.robolectric.annotation.Config
+import java.io.File
+import java.util.concurrent.CopyOnWriteArrayList
 
 /**
  * Issue 13: the debug build's main-thread policy ([mainThreadPolicy]) with a penalty that fails the test. The

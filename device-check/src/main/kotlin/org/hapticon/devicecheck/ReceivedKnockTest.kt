@@ -6,9 +6,8 @@ import android.os.VibratorManager
 import androidx.test.ext.junit.runners.AndroidJUnit4
 import androidx.test.platform.app.InstrumentationRegistry
 import androidx.test.uiautomator.UiDevice
-import java.time.LocalDateTime
-import java.time.ZoneId
 import org.hapticon.core.HapticIcon
+import org.hapticon.core.render.RendererKind
 import org.hapticon.core.render.VibrationWaveform
 import org.hapticon.devicecheck.dumpsys.PostedNotification
 import org.hapticon.devicecheck.dumpsys.Step
@@ -16,7 +15,6 @@ import org.hapticon.devicecheck.dumpsys.VibrationRecord
 import org.hapticon.devicecheck.dumpsys.VibratorDump
 import org.hapticon.messaging.ChatMessage
 import org.hapticon.messaging.ReceiptState
-import org.hapticon.messaging.RendererKind
 import org.junit.After
 import org.junit.Assert.assertEquals
 import org.junit.Assert.assertNotNull
@@ -26,6 +24,8 @@ import org.junit.Assume.assumeTrue
 import org.junit.Before
 import org.junit.Test
 import org.junit.runner.RunWith
+import java.time.LocalDateTime
+import java.time.ZoneId
 
 /**
  * A knock arrives while nobody looks at the app, and Android decides what the phone does. Each test prepares the app
@@ -206,7 +206,7 @@ class ReceivedKnockTest {
         assertTrue("Android did not play the knock: status ${vibration.status} ($vibration)", vibration.played)
         val renderer = peer.capabilitiesOf(args.user)?.renderer
         val expected = when (renderer) {
-            RendererKind.AMPLITUDE_WAVEFORM -> VibrationWaveform.render(HapticIcon.KNOCK)
+            RendererKind.AMPLITUDE_WAVEFORM -> VibrationWaveform.amplitudeSteps(HapticIcon.KNOCK)
             RendererKind.ON_OFF -> VibrationWaveform.onOff(HapticIcon.KNOCK)
             else -> null
         }

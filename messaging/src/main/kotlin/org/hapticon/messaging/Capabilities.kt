@@ -2,6 +2,7 @@ package org.hapticon.messaging
 
 import org.hapticon.core.pattern.EnvelopeEffectInfo
 import org.hapticon.core.pattern.PitchFit
+import org.hapticon.core.render.RendererKind
 
 /**
  * What a user's device can do with a haptic icon, published as a retained message at
@@ -80,31 +81,4 @@ public data class Capabilities(
         /** Longest envelope effect (and control point) accepted, in ms: 10 minutes, far above any vibrator's. */
         public const val MAX_ENVELOPE_MILLIS: Long = 600_000
     }
-}
-
-/** How a device turns an icon into something felt (or heard). */
-public enum class RendererKind(
-    /** The value of the capabilities' `renderer` member. */
-    public val wireName: String,
-) {
-    /** Audio with the haptic channel on (Android audio-coupled haptics): the icon's own carrier, on the audio clock. */
-    AUDIO_COUPLED("audio-coupled"),
-
-    /** Android 16 envelope effect: the envelope as smooth control points, played by the vibrator HAL. */
-    ENVELOPE("envelope"),
-
-    /** A vibrator with amplitude control plays the icon's envelope as amplitude steps. */
-    AMPLITUDE_WAVEFORM("amplitude-waveform"),
-
-    /** A vibrator without amplitude control plays an on/off pattern. */
-    ON_OFF("on-off"),
-
-    /** No actuator: the icon is rendered as audio (the command-line chat's WAV files). */
-    AUDIO("audio"),
-
-    /** The icon is not played at all. */
-    NONE("none"),
-
-    /** A renderer named by a newer client that this build does not know; encoded as `unknown`. */
-    UNKNOWN("unknown"),
 }

@@ -24,6 +24,7 @@ import org.hapticon.core.pattern.HapticPattern
 import org.hapticon.core.pattern.PatternException
 import org.hapticon.core.pattern.PatternJson
 import org.hapticon.core.pattern.PitchFit
+import org.hapticon.core.render.RendererKind
 
 /**
  * The wire format: UTF-8 JSON, versioned by `schema` and `version` members.
@@ -384,6 +385,18 @@ private fun snippet(value: JsonElement): String = when {
     value is JsonPrimitive -> value.content
     else -> kind(value)
 }
+
+/** The value of the capabilities' `renderer` member; [UNKNOWN][RendererKind.UNKNOWN] is written as `unknown`. */
+public val RendererKind.wireName: String
+    get() = when (this) {
+        RendererKind.AUDIO_COUPLED -> "audio-coupled"
+        RendererKind.ENVELOPE -> "envelope"
+        RendererKind.AMPLITUDE_WAVEFORM -> "amplitude-waveform"
+        RendererKind.ON_OFF -> "on-off"
+        RendererKind.AUDIO -> "audio"
+        RendererKind.NONE -> "none"
+        RendererKind.UNKNOWN -> "unknown"
+    }
 
 /** The value of the capabilities' `pitchFit` member. */
 public val PitchFit.wireName: String

@@ -2,6 +2,7 @@ package org.hapticon.messaging
 
 import org.hapticon.core.HapticIcon
 import org.hapticon.core.pattern.EnvelopeEffectInfo
+import org.hapticon.core.render.RendererKind
 import org.junit.Assert.assertEquals
 import org.junit.Assert.assertThrows
 import org.junit.Assert.assertTrue

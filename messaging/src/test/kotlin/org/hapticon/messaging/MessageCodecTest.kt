@@ -3,6 +3,7 @@ package org.hapticon.messaging
 import org.hapticon.core.HapticIcon
 import org.hapticon.core.pattern.EnvelopeEffectInfo
 import org.hapticon.core.pattern.PitchFit
+import org.hapticon.core.render.RendererKind
 import org.junit.Assert.assertArrayEquals
 import org.junit.Assert.assertEquals
 import org.junit.Test

@@ -7,6 +7,7 @@ import org.hapticon.core.pattern.FrequencyKey
 import org.hapticon.core.pattern.HapticPattern
 import org.hapticon.core.pattern.PitchFit
 import org.hapticon.core.pattern.Transient
+import org.hapticon.core.render.RendererKind
 import org.junit.Assert.assertEquals
 import org.junit.Test
 

@@ -14,7 +14,7 @@ data class ChatPreferences(
     val brokerUrl: String = "",
     /** Play an arriving message's icon at once (rate-limited). Off by default: vibrating unasked surprises people. */
     val autoPlay: Boolean = false,
-    /** A renderer the user forces instead of the best available one ([org.hapticon.messaging.RendererKind] name), or null. */
+    /** A renderer the user forces instead of the best available one ([org.hapticon.core.render.RendererKind] name), or null. */
     val rendererOverride: String? = null,
     // Added for the messenger screens (issue 18).
     /** Android 12+ wallpaper colours instead of Hapticon's own scheme. */

@@ -1,12 +1,12 @@
 package org.hapticon.app.playback
 
-import org.hapticon.messaging.RendererKind
 import org.hapticon.core.HapticIcon
-import org.hapticon.core.render.EnvelopeModel
 import org.hapticon.core.pattern.HapticPattern
 import org.hapticon.core.platform.VibrationUsage
 import org.hapticon.core.platform.VibrationVerdict
+import org.hapticon.core.render.EnvelopeModel
 import org.hapticon.core.render.Fidelity
+import org.hapticon.core.render.RendererKind
 import kotlin.coroutines.CoroutineContext
 import kotlin.coroutines.EmptyCoroutineContext
 

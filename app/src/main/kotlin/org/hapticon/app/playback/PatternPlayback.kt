@@ -8,8 +8,8 @@ import org.hapticon.core.pattern.PatternEnvelope
 import org.hapticon.core.pattern.PitchFit
 import org.hapticon.core.pattern.onOffWaveform
 import org.hapticon.core.pattern.vibrationWaveform
+import org.hapticon.core.render.RendererKind
 import org.hapticon.core.render.VibrationWaveform
-import org.hapticon.messaging.RendererKind
 
 /**
  * How a phone plays a haptic pattern, decided by [PatternPlan.of] from its [DeviceCapabilities]:

@@ -1,13 +1,13 @@
 package org.hapticon.app.playback
 
-import java.util.Locale
-import kotlin.math.abs
 import org.hapticon.core.pattern.EnvelopeEffectInfo
 import org.hapticon.core.pattern.HapticPattern
 import org.hapticon.core.pattern.PatternEnvelope
 import org.hapticon.core.pattern.PitchFit
+import org.hapticon.core.render.RendererKind
 import org.hapticon.messaging.Capabilities
-import org.hapticon.messaging.RendererKind
+import java.util.Locale
+import kotlin.math.abs
 
 /**
  * The pitch a peer's phone will give an icon or pattern, from the capabilities it publishes (frequency profile,

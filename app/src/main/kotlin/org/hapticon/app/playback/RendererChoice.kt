@@ -5,9 +5,6 @@ import android.media.AudioManager
 import android.os.Build
 import android.os.Vibrator
 import android.util.Log
-import java.io.IOException
-import kotlin.coroutines.CoroutineContext
-import kotlin.math.roundToInt
 import org.hapticon.core.HapticIcon
 import org.hapticon.core.pattern.EnvelopeEffectInfo
 import org.hapticon.core.pattern.HapticPattern
@@ -20,9 +17,12 @@ import org.hapticon.core.platform.VibrationVerdict
 import org.hapticon.core.render.EnvelopeControlPoints
 import org.hapticon.core.render.EnvelopeModel
 import org.hapticon.core.render.PcmRenderer
+import org.hapticon.core.render.RendererKind
 import org.hapticon.core.render.VibrationWaveform
 import org.hapticon.messaging.Capabilities
-import org.hapticon.messaging.RendererKind
+import java.io.IOException
+import kotlin.coroutines.CoroutineContext
+import kotlin.math.roundToInt
 
 /** Everything about a phone that decides how it plays an icon; read once by [detect]. */
 data class DeviceCapabilities(
@@ -92,7 +92,7 @@ private fun envelopeInfoOf(vibrator: Vibrator): EnvelopeEffectInfo? {
 
 /**
  * What people read for a renderer. The app, the settings and the wire share one type,
- * [RendererKind] (messaging), so a peer's announced renderer and the local choice compare directly.
+ * [RendererKind] (haptics-core; messaging maps it to its wire name), so a peer's announced renderer and the local choice compare directly.
  */
 val RendererKind.label: String
     get() = when (this) {
@@ -127,7 +127,7 @@ object RendererChoice {
     }
 
     private fun envelopeRepresentable(icon: HapticIcon, model: EnvelopeModel): Boolean =
-        runCatching { EnvelopeControlPoints.render(icon, model).isRepresentable }.getOrDefault(false)
+        runCatching { EnvelopeControlPoints.fit(icon, model).isRepresentable }.getOrDefault(false)
 
     /**
      * How faithfully [renderer] plays [icon], 0..100 (100 = the ideal envelope): 100 minus the renderer's
@@ -138,8 +138,8 @@ object RendererChoice {
         noteRendering("fidelity of ${icon.name}")
         val rms = when (renderer) {
             RendererKind.AUDIO_COUPLED, RendererKind.AUDIO -> PcmRenderer(icon, IconAudioCache.SAMPLE_RATE).fidelity().rmsError
-            RendererKind.ENVELOPE -> EnvelopeControlPoints.render(icon).fidelity.rmsError
-            RendererKind.AMPLITUDE_WAVEFORM -> VibrationWaveform.render(icon).fidelity.rmsError
+            RendererKind.ENVELOPE -> EnvelopeControlPoints.fit(icon).fidelity.rmsError
+            RendererKind.AMPLITUDE_WAVEFORM -> VibrationWaveform.amplitudeSteps(icon).fidelity.rmsError
             RendererKind.ON_OFF -> VibrationWaveform.onOff(icon).fidelity.rmsError
             RendererKind.NONE, RendererKind.UNKNOWN -> return null
         }
@@ -212,7 +212,7 @@ class AdaptiveHapticPlayer(
         val waveform = when (rendererFor(icon, model)) {
             // choose() never returns the wire-only kinds AUDIO and UNKNOWN.
             RendererKind.NONE, RendererKind.AUDIO, RendererKind.UNKNOWN -> return Playback.Unsupported
-            RendererKind.AUDIO_COUPLED -> playAudioCoupled(icon, model, usage)?.let { return it } ?: VibrationWaveform.render(icon, model)
+            RendererKind.AUDIO_COUPLED -> playAudioCoupled(icon, model, usage)?.let { return it } ?: VibrationWaveform.amplitudeSteps(icon, model)
             RendererKind.ENVELOPE -> if (Build.VERSION.SDK_INT >= 36) {
                 // The icon's note reaches the actuator as a pattern's does: Hz within the frequency profile (moved
                 // by the user's pitch fit), else sharpness from the note; steps where the envelope cannot follow.
@@ -224,11 +224,11 @@ class AdaptiveHapticPlayer(
                 if (envelope != null) {
                     return vibrate(envelope.toVibrationEffect(), usage) { Playback.Playing(RendererKind.ENVELOPE, envelope.totalMillis, envelope.fidelity) }
                 }
-                VibrationWaveform.render(icon, model)
+                VibrationWaveform.amplitudeSteps(icon, model)
             } else {
-                VibrationWaveform.render(icon, model)
+                VibrationWaveform.amplitudeSteps(icon, model)
             }
-            RendererKind.AMPLITUDE_WAVEFORM -> VibrationWaveform.render(icon, model)
+            RendererKind.AMPLITUDE_WAVEFORM -> VibrationWaveform.amplitudeSteps(icon, model)
             RendererKind.ON_OFF -> VibrationWaveform.onOff(icon, model)
         }
         val renderer = if (waveform.amplitudes().all { it == 0 || it == VibrationWaveform.MAX_AMPLITUDE }) RendererKind.ON_OFF else RendererKind.AMPLITUDE_WAVEFORM

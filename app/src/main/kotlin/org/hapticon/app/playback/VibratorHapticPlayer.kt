@@ -1,14 +1,14 @@
 package org.hapticon.app.playback
 
-import org.hapticon.messaging.RendererKind
 import android.content.Context
 import android.os.Build
 import android.os.VibrationEffect
 import org.hapticon.core.HapticIcon
+import org.hapticon.core.pattern.HapticPattern
 import org.hapticon.core.platform.VibrationUsage
 import org.hapticon.core.platform.VibrationVerdict
 import org.hapticon.core.render.EnvelopeModel
-import org.hapticon.core.pattern.HapticPattern
+import org.hapticon.core.render.RendererKind
 import org.hapticon.core.render.VibrationWaveform
 import kotlin.coroutines.CoroutineContext
 
@@ -38,10 +38,10 @@ class VibratorHapticPlayer(
         noteRendering("render ${icon.name}")
         val renderer = capabilities.renderer
         val waveform = when (renderer) {
-            RendererKind.AMPLITUDE_WAVEFORM -> VibrationWaveform.render(icon, model)
+            RendererKind.AMPLITUDE_WAVEFORM -> VibrationWaveform.amplitudeSteps(icon, model)
             RendererKind.ON_OFF -> VibrationWaveform.onOff(icon, model)
             // PlaybackCapabilities.renderer never names these; only the adaptive player plays them.
-            RendererKind.AUDIO_COUPLED, RendererKind.ENVELOPE -> VibrationWaveform.render(icon, model)
+            RendererKind.AUDIO_COUPLED, RendererKind.ENVELOPE -> VibrationWaveform.amplitudeSteps(icon, model)
             RendererKind.NONE, RendererKind.AUDIO, RendererKind.UNKNOWN -> return Playback.Unsupported
         }
         val verdict = vibrator.vibrate(waveform.toVibrationEffect(), usage)

@@ -1,12 +1,10 @@
 package org.hapticon.app.playback
 
-import org.hapticon.messaging.RendererKind
-import org.hapticon.core.platform.VibrationUsage
 import android.content.Context
 import android.os.Looper
 import android.os.Vibrator
+import androidx.media3.common.C
 import androidx.test.core.app.ApplicationProvider
-import java.io.File
 import org.hapticon.core.HapticIcon
 import org.hapticon.core.io.WavReader
 import org.hapticon.core.pattern.AmplitudeKey
@@ -15,15 +13,16 @@ import org.hapticon.core.pattern.HapticPattern
 import org.hapticon.core.pattern.Transient
 import org.hapticon.core.pattern.signal
 import org.hapticon.core.pattern.vibrationWaveform
+import org.hapticon.core.platform.VibrationUsage
 import org.hapticon.core.render.EnvelopeModel
 import org.hapticon.core.render.PcmRenderer
+import org.hapticon.core.render.RendererKind
 import org.hapticon.core.render.VibrationWaveform
 import org.junit.Assert.assertEquals
 import org.junit.Assert.assertFalse
 import org.junit.Assert.assertNull
 import org.junit.Assert.assertSame
 import org.junit.Assert.assertTrue
-import androidx.media3.common.C
 import org.junit.Before
 import org.junit.Rule
 import org.junit.Test
@@ -31,6 +30,7 @@ import org.junit.rules.TemporaryFolder
 import org.junit.runner.RunWith
 import org.robolectric.RobolectricTestRunner
 import org.robolectric.Shadows.shadowOf
+import java.io.File
 
 /** An [AudioCoupledOutput] that records what it was asked to play. */
 private class RecordingAudioOutput(override var isAvailable: Boolean = true) : AudioCoupledOutput {
@@ -81,7 +81,7 @@ class AudioCoupledHapticsTest {
         val samples = wav.samples()
         assertEquals(48_000, wav.sampleRate)
         assertEquals(26_880, samples.size)
-        val expected = PcmRenderer(HapticIcon.KNOCK, 48_000).render()
+        val expected = PcmRenderer(HapticIcon.KNOCK, 48_000).toShortArray()
         // The reader scales PCM16 by 1/32767; scaling back gives the exact integers written.
         for (i in expected.indices) assertEquals("sample $i", expected[i].toInt(), Math.round(samples[i] * 32767f))
         // Nothing on the vibrator: the audio HAL drives the actuator.
@@ -118,7 +118,7 @@ class AudioCoupledHapticsTest {
         assertEquals(paperFile, again)
         for ((file, model) in listOf(paperFile to EnvelopeModel.PAPER, processingFile to EnvelopeModel.PROCESSING)) {
             val samples = file.inputStream().use { WavReader.read(it) }.samples()
-            val expected = PcmRenderer(HapticIcon.KNOCK, 48_000, model).render()
+            val expected = PcmRenderer(HapticIcon.KNOCK, 48_000, model).toShortArray()
             for (i in expected.indices) assertEquals("$model sample $i", expected[i].toInt(), Math.round(samples[i] * 32767f))
         }
         // Knock's processing envelope peaks at 1, the paper's plateau is 0.5: the paper file's carrier crests at 0.5,
@@ -133,7 +133,7 @@ class AudioCoupledHapticsTest {
         val playback = player(RecordingAudioOutput(isAvailable = false)).play(HapticIcon.KNOCK, EnvelopeModel.PAPER, VibrationUsage.TOUCH) as Playback.Playing
 
         assertEquals(RendererKind.AMPLITUDE_WAVEFORM, playback.renderer)
-        val paper = VibrationWaveform.render(HapticIcon.KNOCK, EnvelopeModel.PAPER)
+        val paper = VibrationWaveform.amplitudeSteps(HapticIcon.KNOCK, EnvelopeModel.PAPER)
         assertEquals(RecordedVibration(paper.timings().toList(), paper.amplitudes().toList()), lastVibration(vibrator))
         assertEquals(PAPER_KNOCK, lastVibration(vibrator))
     }

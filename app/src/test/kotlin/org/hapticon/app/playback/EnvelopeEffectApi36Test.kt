@@ -1,7 +1,6 @@
 package org.hapticon.app.playback
 
 import android.content.Context
-import org.hapticon.core.platform.VibrationUsage
 import android.os.Build
 import android.os.Vibrator
 import androidx.test.core.app.ApplicationProvider
@@ -16,9 +15,10 @@ import org.hapticon.core.pattern.FrequencyMapping
 import org.hapticon.core.pattern.HapticPattern
 import org.hapticon.core.pattern.PatternEnvelope
 import org.hapticon.core.pattern.PitchFit
+import org.hapticon.core.platform.VibrationUsage
+import org.hapticon.core.render.RendererKind
 import org.hapticon.messaging.Decoded
 import org.hapticon.messaging.MessageCodec
-import org.hapticon.messaging.RendererKind
 import org.junit.Assert.assertEquals
 import org.junit.Assert.assertNull
 import org.junit.Assert.assertTrue

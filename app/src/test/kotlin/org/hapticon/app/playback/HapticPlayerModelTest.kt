@@ -1,11 +1,11 @@
 package org.hapticon.app.playback
 
 import org.hapticon.core.HapticIcon
-import org.hapticon.core.platform.VibrationUsage
 import org.hapticon.core.pattern.HapticPattern
+import org.hapticon.core.platform.VibrationUsage
 import org.hapticon.core.render.EnvelopeModel
 import org.hapticon.core.render.Fidelity
-import org.hapticon.messaging.RendererKind
+import org.hapticon.core.render.RendererKind
 import org.junit.Assert.assertEquals
 import org.junit.Test
 

@@ -1,11 +1,6 @@
 package org.hapticon.app.playback
 
 import android.os.Looper
-import org.hapticon.core.platform.VibrationUsage
-import java.util.concurrent.CountDownLatch
-import java.util.concurrent.Executors
-import java.util.concurrent.TimeUnit
-import kotlin.coroutines.CoroutineContext
 import kotlinx.coroutines.Dispatchers
 import kotlinx.coroutines.asCoroutineDispatcher
 import kotlinx.coroutines.flow.flowOf
@@ -16,8 +11,9 @@ import org.hapticon.core.HapticIcon
 import org.hapticon.core.pattern.AmplitudeKey
 import org.hapticon.core.pattern.FrequencyKey
 import org.hapticon.core.pattern.HapticPattern
+import org.hapticon.core.platform.VibrationUsage
 import org.hapticon.core.render.Fidelity
-import org.hapticon.messaging.RendererKind
+import org.hapticon.core.render.RendererKind
 import org.junit.After
 import org.junit.Assert.assertEquals
 import org.junit.Assert.assertTrue
@@ -25,6 +21,10 @@ import org.junit.Test
 import org.junit.runner.RunWith
 import org.robolectric.RobolectricTestRunner
 import org.robolectric.Shadows.shadowOf
+import java.util.concurrent.CountDownLatch
+import java.util.concurrent.Executors
+import java.util.concurrent.TimeUnit
+import kotlin.coroutines.CoroutineContext
 
 /**
  * Issue 13: an icon press must not render on the main thread. A [ThreadRecordingPlayer] double records the

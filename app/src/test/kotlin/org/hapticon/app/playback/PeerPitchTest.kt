@@ -7,8 +7,8 @@ import org.hapticon.core.pattern.FrequencyKey
 import org.hapticon.core.pattern.HapticPattern
 import org.hapticon.core.pattern.PitchFit
 import org.hapticon.core.pattern.toPattern
+import org.hapticon.core.render.RendererKind
 import org.hapticon.messaging.Capabilities
-import org.hapticon.messaging.RendererKind
 import org.junit.Assert.assertEquals
 import org.junit.Assert.assertNull
 import org.junit.Test

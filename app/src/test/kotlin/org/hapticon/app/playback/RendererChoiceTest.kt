@@ -1,7 +1,7 @@
 package org.hapticon.app.playback
 
 import org.hapticon.core.HapticIcon
-import org.hapticon.messaging.RendererKind
+import org.hapticon.core.render.RendererKind
 import org.junit.Assert.assertEquals
 import org.junit.Test
 import org.junit.runner.RunWith

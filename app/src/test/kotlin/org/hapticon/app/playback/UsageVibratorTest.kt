@@ -7,11 +7,10 @@ import android.os.VibrationEffect
 import android.os.Vibrator
 import android.provider.Settings
 import androidx.test.core.app.ApplicationProvider
-import java.io.File
 import org.hapticon.core.HapticIcon
 import org.hapticon.core.platform.VibrationUsage
 import org.hapticon.core.platform.VibrationVerdict
-import org.hapticon.messaging.RendererKind
+import org.hapticon.core.render.RendererKind
 import org.junit.Assert.assertEquals
 import org.junit.Assert.assertNull
 import org.junit.Before
@@ -22,6 +21,7 @@ import org.junit.runner.RunWith
 import org.robolectric.RobolectricTestRunner
 import org.robolectric.Shadows.shadowOf
 import org.robolectric.annotation.Config
+import java.io.File
 
 /**
  * Every vibration carries its usage, and one Android would ignore is not sent: the attributes Robolectric's vibrator

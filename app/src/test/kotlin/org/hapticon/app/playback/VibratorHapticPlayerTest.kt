@@ -1,11 +1,11 @@
 package org.hapticon.app.playback
 
-import org.hapticon.messaging.RendererKind
-import org.hapticon.core.platform.VibrationUsage
 import android.content.Context
 import android.os.Vibrator
 import androidx.test.core.app.ApplicationProvider
 import org.hapticon.core.HapticIcon
+import org.hapticon.core.platform.VibrationUsage
+import org.hapticon.core.render.RendererKind
 import org.junit.Assert.assertEquals
 import org.junit.Assert.assertNull
 import org.junit.Assert.assertTrue

@@ -4,9 +4,8 @@ import androidx.compose.ui.graphics.asAndroidBitmap
 import androidx.compose.ui.graphics.toArgb
 import androidx.compose.ui.test.captureToImage
 import androidx.compose.ui.test.onRoot
-import java.time.ZoneOffset
-import java.util.Locale
 import org.hapticon.app.data.ChatPreferences
+import org.hapticon.app.data.ClientCertificateStatus
 import org.hapticon.app.data.database.ConversationSummary
 import org.hapticon.app.data.database.MessageState
 import org.hapticon.app.data.database.StoredMessage
@@ -15,7 +14,6 @@ import org.hapticon.app.designsystem.seedColorScheme
 import org.hapticon.app.feature.chat.AccountCheck
 import org.hapticon.app.feature.chat.ChatClock
 import org.hapticon.app.feature.chat.ChatConnection
-import org.hapticon.app.feature.chat.NewChatProblem
 import org.hapticon.app.feature.chat.ChatListActions
 import org.hapticon.app.feature.chat.ChatListScreen
 import org.hapticon.app.feature.chat.ChatListUiState
@@ -24,19 +22,21 @@ import org.hapticon.app.feature.chat.ConversationScreen
 import org.hapticon.app.feature.chat.ConversationUiState
 import org.hapticon.app.feature.chat.FirstLaunchScreen
 import org.hapticon.app.feature.chat.InviteScreen
+import org.hapticon.app.feature.chat.NewChatProblem
 import org.hapticon.app.feature.chat.PeerFeel
-import org.hapticon.app.data.ClientCertificateStatus
 import org.hapticon.app.feature.chat.SettingsActions
 import org.hapticon.app.feature.chat.SettingsScreen
 import org.hapticon.app.feature.chat.SettingsUiState
 import org.hapticon.core.HapticIcon
 import org.hapticon.core.io.IconJson
-import org.hapticon.messaging.InviteLink
-import org.hapticon.messaging.RendererKind
+import org.hapticon.core.render.RendererKind
 import org.hapticon.messaging.BrokerAddress
+import org.hapticon.messaging.InviteLink
 import org.junit.Assert.assertEquals
 import org.junit.Assert.assertTrue
 import org.junit.Test
+import java.time.ZoneOffset
+import java.util.Locale
 
 /**
  * The Chats tab's screens in light and dark (docs/app-tour.md, "Chats"): first launch, the chat list

@@ -4,9 +4,9 @@ import org.hapticon.app.feature.icons.IconsActions
 import org.hapticon.app.feature.icons.IconsScreen
 import org.hapticon.app.feature.icons.IconsUiState
 import org.hapticon.app.feature.icons.NowPlaying
-import org.hapticon.messaging.RendererKind
 import org.hapticon.core.HapticIcon
 import org.hapticon.core.render.Fidelity
+import org.hapticon.core.render.RendererKind
 import org.junit.Test
 
 /** The Icons tab: loading, the four presets, and one of them playing. */

@@ -1,24 +1,20 @@
 package org.hapticon.app.screenshots
 
+import androidx.compose.ui.test.assertIsDisplayed
 import androidx.compose.ui.test.hasScrollToKeyAction
+import androidx.compose.ui.test.onNodeWithContentDescription
+import androidx.compose.ui.test.onNodeWithTag
+import androidx.compose.ui.test.performClick
 import androidx.compose.ui.test.performScrollToKey
-import java.time.ZoneOffset
-import java.util.Locale
 import org.hapticon.app.data.database.MessageState
 import org.hapticon.app.data.database.StoredMessage
+import org.hapticon.app.feature.chat.COMPOSER_ICONS_TAG
 import org.hapticon.app.feature.chat.ChatClock
 import org.hapticon.app.feature.chat.ConversationActions
 import org.hapticon.app.feature.chat.ConversationScreen
 import org.hapticon.app.feature.chat.ConversationUiState
-import org.hapticon.app.feature.chat.COMPOSER_ICONS_TAG
 import org.hapticon.app.feature.chat.PEER_FEEL_TAG
 import org.hapticon.app.feature.chat.PeerFeel
-import androidx.compose.ui.test.performClick
-import org.hapticon.core.pattern.PitchFit
-import androidx.compose.ui.test.onNodeWithTag
-import androidx.compose.ui.test.assertIsDisplayed
-import androidx.compose.ui.test.onNodeWithContentDescription
-import org.hapticon.messaging.Capabilities
 import org.hapticon.app.feature.icons.IconsActions
 import org.hapticon.app.feature.icons.IconsScreen
 import org.hapticon.app.feature.icons.IconsUiState
@@ -35,9 +31,13 @@ import org.hapticon.core.pattern.AmplitudeKey
 import org.hapticon.core.pattern.EnvelopeEffectInfo
 import org.hapticon.core.pattern.FrequencyKey
 import org.hapticon.core.pattern.HapticPattern
+import org.hapticon.core.pattern.PitchFit
 import org.hapticon.core.pattern.Transient
-import org.hapticon.messaging.RendererKind
+import org.hapticon.core.render.RendererKind
+import org.hapticon.messaging.Capabilities
 import org.junit.Test
+import java.time.ZoneOffset
+import java.util.Locale
 
 /** Haptic patterns in the app: the Icons tab's pattern section, the pattern editor, a pattern message. */
 class PatternScreenshotTest : ScreenshotTest() {

@@ -26,8 +26,6 @@ import androidx.compose.ui.test.hasSetTextAction
 import androidx.compose.ui.test.performTextInput
 import androidx.compose.ui.text.style.TextAlign
 import androidx.compose.ui.unit.dp
-import java.time.ZoneOffset
-import java.util.Locale
 import org.hapticon.app.data.database.MessageState
 import org.hapticon.app.data.database.StoredMessage
 import org.hapticon.app.feature.chat.ChatClock
@@ -37,9 +35,11 @@ import org.hapticon.app.feature.chat.ConversationUiState
 import org.hapticon.app.feature.chat.PeerFeel
 import org.hapticon.app.feature.chat.openKeyboard
 import org.hapticon.core.HapticIcon
-import org.hapticon.messaging.RendererKind
+import org.hapticon.core.render.RendererKind
 import org.junit.Test
 import org.robolectric.annotation.Config
+import java.time.ZoneOffset
+import java.util.Locale
 
 /**
  * A conversation on a small phone (360 × 780 dp, a common Android size) with the keyboard up, at the default and

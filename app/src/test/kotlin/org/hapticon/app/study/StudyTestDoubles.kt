@@ -1,17 +1,17 @@
 package org.hapticon.app.study
 
 import kotlinx.coroutines.flow.MutableStateFlow
-import org.hapticon.core.platform.VibrationUsage
 import kotlinx.coroutines.flow.StateFlow
 import kotlinx.coroutines.flow.asStateFlow
 import org.hapticon.app.playback.HapticPlayer
 import org.hapticon.app.playback.Playback
 import org.hapticon.app.playback.PlaybackCapabilities
-import org.hapticon.messaging.RendererKind
 import org.hapticon.core.HapticIcon
-import org.hapticon.core.render.EnvelopeModel
 import org.hapticon.core.pattern.HapticPattern
+import org.hapticon.core.platform.VibrationUsage
+import org.hapticon.core.render.EnvelopeModel
 import org.hapticon.core.render.Fidelity
+import org.hapticon.core.render.RendererKind
 
 /** A [HapticPlayer] that records the icons it was asked to play and "plays" each for [durationMillis]. */
 class TestHapticPlayer(private val durationMillis: Long = 560) : HapticPlayer {

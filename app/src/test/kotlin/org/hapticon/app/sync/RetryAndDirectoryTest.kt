@@ -5,7 +5,6 @@ import android.os.Looper
 import android.os.Vibrator
 import androidx.room.Room
 import androidx.test.core.app.ApplicationProvider
-import kotlin.coroutines.EmptyCoroutineContext
 import kotlinx.coroutines.CoroutineScope
 import kotlinx.coroutines.Dispatchers
 import kotlinx.coroutines.SupervisorJob
@@ -25,11 +24,11 @@ import org.hapticon.app.feature.chat.ConversationViewModel
 import org.hapticon.app.playback.AdaptiveHapticPlayer
 import org.hapticon.app.playback.DeviceCapabilities
 import org.hapticon.app.playback.RendererChoice
+import org.hapticon.core.render.RendererKind
 import org.hapticon.messaging.Capabilities
 import org.hapticon.messaging.Clock
 import org.hapticon.messaging.ConnectionState
 import org.hapticon.messaging.InboxEvent
-import org.hapticon.messaging.RendererKind
 import org.hapticon.messaging.RetryPolicy
 import org.hapticon.messaging.VibrationRateLimiter
 import org.junit.After
@@ -39,6 +38,7 @@ import org.junit.Test
 import org.junit.runner.RunWith
 import org.robolectric.RobolectricTestRunner
 import org.robolectric.Shadows.shadowOf
+import kotlin.coroutines.EmptyCoroutineContext
 
 /**
  * Two things the chat screens rely on the sync for: a message that could not be sent is sent again, as the same row,

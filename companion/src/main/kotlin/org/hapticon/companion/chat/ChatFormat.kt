@@ -2,9 +2,9 @@ package org.hapticon.companion.chat
 
 import org.hapticon.core.HapticIcon
 import org.hapticon.core.pattern.HapticPattern
+import org.hapticon.core.render.RendererKind
 import org.hapticon.messaging.Capabilities
 import org.hapticon.messaging.ChatMessage
-import org.hapticon.messaging.RendererKind
 import java.util.Locale
 
 /** How the terminal chat shows messages, icons and capabilities. Pure functions, so tests pin the wording. */

@@ -1,9 +1,5 @@
 package org.hapticon.companion.chat
 
-import org.hapticon.companion.cli.AudioSettings
-import org.hapticon.companion.cli.IconSource
-import org.hapticon.companion.cli.UsageException
-import org.hapticon.companion.cli.WavExport
 import kotlinx.coroutines.CoroutineScope
 import kotlinx.coroutines.Deferred
 import kotlinx.coroutines.NonCancellable
@@ -20,10 +16,15 @@ import kotlinx.coroutines.runBlocking
 import kotlinx.coroutines.selects.select
 import kotlinx.coroutines.withContext
 import kotlinx.coroutines.withTimeoutOrNull
+import org.hapticon.companion.cli.AudioSettings
+import org.hapticon.companion.cli.IconSource
 import org.hapticon.companion.cli.PatternSource
+import org.hapticon.companion.cli.UsageException
+import org.hapticon.companion.cli.WavExport
 import org.hapticon.companion.cli.writeWav
 import org.hapticon.core.HapticIcon
 import org.hapticon.core.pattern.HapticPattern
+import org.hapticon.core.render.RendererKind
 import org.hapticon.messaging.Admission
 import org.hapticon.messaging.Capabilities
 import org.hapticon.messaging.ChatMessage
@@ -40,9 +41,8 @@ import org.hapticon.messaging.OutboxEntry
 import org.hapticon.messaging.OutboxSender
 import org.hapticon.messaging.Receipt
 import org.hapticon.messaging.ReceiptState
-import org.hapticon.messaging.RendererKind
-import org.hapticon.messaging.Topics
 import org.hapticon.messaging.RejectionReason
+import org.hapticon.messaging.Topics
 import org.hapticon.messaging.VibrationDecision
 import org.hapticon.messaging.e2e.EndToEnd
 import org.hapticon.messaging.e2e.SafetyNumber

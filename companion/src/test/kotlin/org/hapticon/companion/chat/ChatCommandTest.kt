@@ -6,12 +6,12 @@ import kotlinx.coroutines.runBlocking
 import org.hapticon.companion.cli
 import org.hapticon.core.HapticIcon
 import org.hapticon.core.io.WavReader
+import org.hapticon.core.render.RendererKind
 import org.hapticon.messaging.Capabilities
 import org.hapticon.messaging.ChatMessage
 import org.hapticon.messaging.InboxEvent
 import org.hapticon.messaging.Receipt
 import org.hapticon.messaging.ReceiptState
-import org.hapticon.messaging.RendererKind
 import org.hapticon.messaging.Topics
 import org.hapticon.messaging.mqtt.DeviceId
 import org.junit.Assert.assertEquals

@@ -1,9 +1,9 @@
 package org.hapticon.companion.chat
 
 import org.hapticon.core.HapticIcon
+import org.hapticon.core.render.RendererKind
 import org.hapticon.messaging.Capabilities
 import org.hapticon.messaging.ChatMessage
-import org.hapticon.messaging.RendererKind
 import org.junit.Assert.assertEquals
 import org.junit.Test
 

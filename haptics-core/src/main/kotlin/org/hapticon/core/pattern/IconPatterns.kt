@@ -2,11 +2,13 @@ package org.hapticon.core.pattern
 
 import org.hapticon.core.HapticIcon
 import org.hapticon.core.render.EnvelopeModel
+import org.hapticon.core.render.EnvelopeShape
 import kotlin.math.abs
 
 /**
  * This icon as a pattern: a constant carrier at the icon's note and an amplitude curve with the corners of every
- * repetition's envelope, under [model]:
+ * repetition's envelope, in continuous time. The corners, their values and how repetitions combine are the icon's
+ * [EnvelopeShape] under [model], the definition the renderers sample:
  *
  * - [EnvelopeModel.PROCESSING] (the default, what the study's participants felt): Processing Sound's
  *   `Env.play` envelope — attack from 0 to full amplitude, a straight decay to `level` across the sustain time,
@@ -21,61 +23,32 @@ import kotlin.math.abs
  * PCM renderer ([org.hapticon.core.render.IconRenderer]), not to the pattern.
  */
 public fun HapticIcon.toPattern(model: EnvelopeModel = EnvelopeModel.DEFAULT): HapticPattern {
+    val shape = EnvelopeShape.of(this, model)
     val starts = DoubleArray(count) { it * period }
     val corners = sortedSetOf<Double>()
-    for (start in starts) {
-        corners += start
-        corners += start + attack
-        corners += start + attack + sustain
-        corners += start + envelopeDuration
-    }
+    for (start in starts) corners += shape.corners(start).asList()
     val times = corners.toDoubleArray()
-    val peak = if (model == EnvelopeModel.PROCESSING) 1.0 else level
-    val combine: (DoubleArray) -> Double = when (model) {
-        EnvelopeModel.PROCESSING -> { values -> values.sum() }
-        EnvelopeModel.PAPER -> { values -> values.max() }
-    }
+    val combine: (DoubleArray) -> Double = if (shape.sums) { values -> values.sum() } else { values -> values.max() }
     val keys = ArrayList<AmplitudeKey>(2 * times.size)
     for (i in times.indices) {
         val t = times[i]
         // A zero-length attack or release is a step: the value just before and just after the corner differ.
-        val before = combine(DoubleArray(count) { valueBefore(t, starts[it], peak) })
-        val after = combine(DoubleArray(count) { valueAfter(t, starts[it], peak) })
+        val before = combine(DoubleArray(count) { shape.valueBefore(t, starts[it]) })
+        val after = combine(DoubleArray(count) { shape.valueAfter(t, starts[it]) })
         // (Rounding in the corner arithmetic leaves ~1e-16 differences that are not steps.)
         if (i > 0 && abs(before - after) > 1e-9) keys += AmplitudeKey(t, minOf(1.0, before))
         keys += AmplitudeKey(t, minOf(1.0, after))
-        if (model == EnvelopeModel.PAPER && i < times.lastIndex) {
+        if (!shape.sums && i < times.lastIndex) {
             // Between corners every repetition is a straight line; the louder of two swaps where they cross.
             val next = times[i + 1]
-            val from = DoubleArray(count) { valueAfter(t, starts[it], peak) }
-            val to = DoubleArray(count) { valueBefore(next, starts[it], peak) }
+            val from = DoubleArray(count) { shape.valueAfter(t, starts[it]) }
+            val to = DoubleArray(count) { shape.valueBefore(next, starts[it]) }
             for (crossing in crossingsOfMax(t, next, from, to)) {
                 keys += AmplitudeKey(crossing, minOf(1.0, lineMax(crossing, t, next, from, to)))
             }
         }
     }
     return HapticPattern(name, dropCollinear(keys), listOf(FrequencyKey(0.0, frequency)))
-}
-
-// One repetition's envelope at absolute time t (the repetition starting at [start]) rising to [peak] (1 for
-// Processing, level for the paper) and reaching level at the end of the sustain: the limit from the right
-// (valueAfter) and from the left (valueBefore), which differ only at a zero-length attack, sustain or release.
-// Corners are computed exactly as toPattern computes them, so a corner time compares equal to itself.
-private fun HapticIcon.valueAfter(t: Double, start: Double, peak: Double): Double = when {
-    t < start -> 0.0
-    t < start + attack -> peak * (t - start) / attack
-    t < start + attack + sustain -> peak + (level - peak) * (t - start - attack) / sustain
-    t < start + envelopeDuration -> level * (start + envelopeDuration - t) / release
-    else -> 0.0
-}
-
-private fun HapticIcon.valueBefore(t: Double, start: Double, peak: Double): Double = when {
-    t <= start -> 0.0
-    t < start + attack -> peak * (t - start) / attack
-    t == start + attack -> peak
-    t <= start + attack + sustain -> peak + (level - peak) * (t - start - attack) / sustain
-    t <= start + envelopeDuration -> level * (start + envelopeDuration - t) / release
-    else -> 0.0
 }
 
 private fun lineAt(k: Int, t: Double, a: Double, b: Double, from: DoubleArray, to: DoubleArray): Double =

@@ -28,13 +28,13 @@ public fun HapticPattern.driveEnvelope(): (Double) -> Double {
 
 /**
  * This pattern as amplitude steps for `VibrationEffect.createWaveform` (every vibrator with amplitude control):
- * [VibrationWaveform.render] of the [driveEnvelope]. The frequency curve is lost: such a vibrator plays at its
+ * [VibrationWaveform.amplitudeSteps] of the [driveEnvelope]. The frequency curve is lost: such a vibrator plays at its
  * own resonance. Amplitudes stay in 0..255 ([VibrationWaveform]'s limit).
  *
  * @throws PatternException when the pattern plays longer than the safety cap ([HapticPattern.checkPlayable]).
  * @throws IllegalArgumentException when the pattern's duration rounds to 0 ms.
  */
-public fun HapticPattern.vibrationWaveform(): VibrationWaveform = checkPlayable().let { VibrationWaveform.render(driveEnvelope(), duration) }
+public fun HapticPattern.vibrationWaveform(): VibrationWaveform = checkPlayable().let { VibrationWaveform.amplitudeSteps(driveEnvelope(), duration) }
 
 /** This pattern for a vibrator without amplitude control: [VibrationWaveform.onOff] of the [driveEnvelope]. */
 public fun HapticPattern.onOffWaveform(): VibrationWaveform = checkPlayable().let { VibrationWaveform.onOff(driveEnvelope(), duration) }
@@ -115,7 +115,7 @@ public sealed interface PatternEnvelope {
          * error above [EnvelopeControlPoints.REPRESENTABLE_RELATIVE_ERROR]; the caller then plays
          * [vibrationWaveform]).
          *
-         * The amplitude is fitted by [EnvelopeControlPoints.render] (least-squares straight segments of at least
+         * The amplitude is fitted by [EnvelopeControlPoints.fit] (least-squares straight segments of at least
          * the minimum duration); a segment longer than the maximum is cut into equal parts on the same line, and
          * the fit is redone with fewer points while that exceeds the point budget. Each point takes the pattern's
          * frequency at its end time. With a [frequencyRange] (the phone's `VibratorFrequencyProfile` min..max Hz)
@@ -163,7 +163,7 @@ public sealed interface PatternEnvelope {
             var budget = minOf(info.maxControlPoints, EnvelopeControlPoints.MAX_POINTS_LIMIT)
             while (budget >= 1) {
                 // The carrier argument is a placeholder: each point's frequency is filled in from the pattern.
-                val fitted = EnvelopeControlPoints.render(
+                val fitted = EnvelopeControlPoints.fit(
                     pattern.driveEnvelope(), pattern.duration, 1.0, budget, info.minControlPointMillis.toInt(),
                 )
                 if (!fitted.isRepresentable) return null

@@ -7,7 +7,7 @@ import kotlin.math.ceil
  * A vibration for Android 16's envelope effects (`VibrationEffect.WaveformEnvelopeBuilder`, API 36): the
  * amplitude starts at 0 and ramps linearly to each [Point] in turn over that point's duration.
  *
- * [render] approximates an envelope by straight segments whose ends lie on the envelope (segmented least
+ * [fit] approximates an envelope by straight segments whose ends lie on the envelope (segmented least
  * squares): among knot times on a millisecond grid it picks, by dynamic programming, the knots that
  * minimise the squared error over the envelope sampled every millisecond, subject to every segment lasting
  * at least `minSegmentMillis` (the platform minimum, 20 ms) and at most `maxPoints` points. The first segment
@@ -55,28 +55,25 @@ public class EnvelopeControlPoints private constructor(
         /** Shortest ramp the platform accepts between control points, in milliseconds. */
         public const val MIN_SEGMENT_MILLIS: Int = 20
 
-        /** Largest point budget [render] accepts; it bounds the work and memory of the fit. */
+        /** Largest point budget [fit] accepts; it bounds the work and memory of the fit. */
         public const val MAX_POINTS_LIMIT: Int = 256
 
         /** Largest [relativeRmsError] for which [isRepresentable] is true. */
         public const val REPRESENTABLE_RELATIVE_ERROR: Double = 0.1
 
         /**
-         * Approximates [icon]'s ideal envelope under [model] (see [envelope]) with points at the icon's
+         * Approximates [icon]'s ideal envelope under [model] ([idealEnvelope]) with points at the icon's
          * carrier frequency, as described on [EnvelopeControlPoints].
          *
          * Throws [IllegalArgumentException] when the duration rounds to 0 ms, when [maxPoints] is not in
          * 1..[MAX_POINTS_LIMIT] or when [minSegmentMillis] < 1.
          */
-        public fun render(
+        public fun fit(
             icon: HapticIcon,
             model: EnvelopeModel = EnvelopeModel.DEFAULT,
             maxPoints: Int = DEFAULT_MAX_POINTS,
             minSegmentMillis: Int = MIN_SEGMENT_MILLIS,
-        ): EnvelopeControlPoints {
-            val envelope = icon.envelope(model)
-            return render(envelope::sample, icon.duration, icon.frequency, maxPoints, minSegmentMillis)
-        }
+        ): EnvelopeControlPoints = fit(icon.idealEnvelope(model), icon.duration, icon.frequency, maxPoints, minSegmentMillis)
 
         /**
          * Approximates [envelope] (amplitude in [0, 1] at a time in seconds; values outside are clamped, NaN
@@ -87,7 +84,7 @@ public class EnvelopeControlPoints private constructor(
          * [HapticIcon.MAX_DURATION_SECONDS], when [frequencyHz] is not finite and > 0, when [maxPoints] is not
          * in 1..[MAX_POINTS_LIMIT] or when [minSegmentMillis] < 1.
          */
-        public fun render(
+        public fun fit(
             envelope: (Double) -> Double,
             durationSeconds: Double,
             frequencyHz: Double,
@@ -97,19 +94,19 @@ public class EnvelopeControlPoints private constructor(
             require(frequencyHz.isFinite() && frequencyHz > 0.0) { "frequencyHz must be finite and > 0, was $frequencyHz" }
             require(maxPoints in 1..MAX_POINTS_LIMIT) { "maxPoints must be in 1..$MAX_POINTS_LIMIT, was $maxPoints" }
             require(minSegmentMillis >= 1) { "minSegmentMillis must be >= 1, was $minSegmentMillis" }
-            val totalMillis = totalMillisOf(durationSeconds)
-            val cells = sampleCells(envelope, durationSeconds, totalMillis)
+            val ideal = EnvelopeCells(envelope, durationSeconds)
+            val totalMillis = ideal.totalMillis
             if (totalMillis < minSegmentMillis) {
-                val errors = measureErrors(cells) { 0.0 }
+                val errors = ideal.errorsOf { 0.0 }
                 val note = "no points: $totalMillis ms is shorter than one $minSegmentMillis ms segment; ${errors.summary()}"
                 return EnvelopeControlPoints(emptyList(), Fidelity(errors.rms, errors.max, note), errors.relativeRms)
             }
-            val knots = PiecewiseLinearFit(envelope, totalMillis, minSegmentMillis).bestKnots(maxPoints)
+            val knots = SegmentedLeastSquares(envelope, totalMillis, minSegmentMillis).bestKnots(maxPoints)
             val points = (1 until knots.size).map { i ->
                 Point(knots[i].amplitude, frequencyHz, (knots[i].millis - knots[i - 1].millis).toLong())
             }
             var segment = 1
-            val errors = measureErrors(cells) { cell ->
+            val errors = ideal.errorsOf { cell ->
                 val t = (cell + 0.5) / CELLS_PER_MILLI
                 while (segment < knots.size && t > knots[segment].millis) segment++
                 if (segment == knots.size) 0.0 else interpolate(knots[segment - 1], knots[segment], t)
@@ -133,7 +130,7 @@ private class Knot(val millis: Int, val amplitude: Double)
  * [MAX_GRID_KNOTS] times) plus the envelope's corners (where the slope changes), so the dynamic program
  * stays fast while piecewise-linear envelopes are still matched exactly.
  */
-private class PiecewiseLinearFit(envelope: (Double) -> Double, private val totalMillis: Int, private val minSegment: Int) {
+private class SegmentedLeastSquares(envelope: (Double) -> Double, private val totalMillis: Int, private val minSegment: Int) {
     private val samples = DoubleArray(totalMillis + 1) { safeAmplitude(envelope(it / 1000.0)) }
 
     // Prefix sums over samples[0 until i] of e, e² and m·e, for O(1) segment errors.

@@ -2,8 +2,8 @@ package org.hapticon.core.render
 
 /**
  * How an icon's attack/sustain/level/release become an amplitude envelope. Both models are defined
- * once, as the per-repetition pieces of [envelopeSegments] combined by [EnvelopeTimeline]; every
- * output (PCM, the vibrator's amplitude steps and control points, plots) samples that definition.
+ * once, as an [EnvelopeShape]; every output (PCM, the vibrator's amplitude steps and control points,
+ * plots, the icon as a pattern) derives from that definition.
  */
 public enum class EnvelopeModel {
     /**

@@ -7,8 +7,30 @@ import kotlin.math.ceil
 import kotlin.math.floor
 import kotlin.math.sqrt
 
-// Helpers shared by the vibrator renderers (VibrationWaveform and EnvelopeControlPoints): both measure
-// against the same finely sampled ideal envelope, so their Fidelity numbers are comparable.
+// The walk shared by the vibrator renderers (VibrationWaveform and EnvelopeControlPoints): both read an icon's
+// ideal envelope the same way and measure against the same finely sampled cells, so their Fidelity numbers are
+// comparable.
+
+/**
+ * [HapticIcon.envelope] under [model] at Processing's 44100 Hz as a function of time: the ideal envelope the
+ * vibrator renderers approximate.
+ */
+internal fun HapticIcon.idealEnvelope(model: EnvelopeModel): (Double) -> Double = envelope(model)::sample
+
+/**
+ * The ideal [envelope] over [durationSeconds] (rounded to [totalMillis]) sampled on 0.1 ms [cells] ([sampleCells]),
+ * and the errors of an approximation against them ([errorsOf]).
+ */
+internal class EnvelopeCells(
+    envelope: (Double) -> Double,
+    durationSeconds: Double,
+    val totalMillis: Int = totalMillisOf(durationSeconds),
+) {
+    val cells: DoubleArray = sampleCells(envelope, durationSeconds, totalMillis)
+
+    /** [measureErrors] of [approximation] (a value per cell index) against [cells]. */
+    inline fun errorsOf(approximation: (cell: Int) -> Double): EnvelopeErrors = measureErrors(cells, approximation)
+}
 
 /** The ideal envelope is sampled at the centres of cells this many to a millisecond (10 kHz). */
 internal const val CELLS_PER_MILLI: Int = 10

@@ -29,35 +29,37 @@ internal class EnvelopeSegment(
 }
 
 /**
- * The pieces of one repetition of [icon]'s envelope at [sampleRate], in order, including pieces that
- * hold no whole sample (callers filter for what they evaluate: [EnvelopeTimeline] keeps pieces with
- * samples, continuous evaluation keeps pieces with a positive span).
+ * The pieces of one repetition of [icon]'s envelope at [sampleRate], in order: its [EnvelopeShape] under [model]
+ * at sample resolution. Includes pieces that hold no whole sample (callers filter for what they evaluate:
+ * [EnvelopeTimeline] keeps pieces with samples, continuous evaluation keeps pieces with a positive span).
  *
- * PAPER samples the continuous ideal: sample n is in a piece when n / fs lies in its time span,
+ * PAPER samples the shape's lines exactly: sample n is in a piece when n / fs lies in its time span,
  * so boundaries are ceil(boundary time · fs) and each line is anchored at the exact (fractional)
  * boundary position.
  *
- * PROCESSING is [ProcessingEnvelope]: JSyn's `VariableRateMonoReader` playing Processing Sound's
- * three-frame `SegmentedEnvelope`, simulated sample by sample.
+ * PROCESSING plays the shape's targets the way the study's library did ([ProcessingEnvelope]): JSyn's
+ * `VariableRateMonoReader` playing Processing Sound's three-frame `SegmentedEnvelope`, simulated sample by sample.
  */
-internal fun envelopeSegments(icon: HapticIcon, model: EnvelopeModel, sampleRate: Int): List<EnvelopeSegment> =
-    when (model) {
-        EnvelopeModel.PAPER -> paperSegments(icon, sampleRate)
-        EnvelopeModel.PROCESSING -> ProcessingEnvelope.segments(icon, sampleRate)
+internal fun envelopeSegments(icon: HapticIcon, model: EnvelopeModel, sampleRate: Int): List<EnvelopeSegment> {
+    val shape = EnvelopeShape.of(icon, model)
+    return when (model) {
+        EnvelopeModel.PAPER -> paperSegments(shape, sampleRate)
+        EnvelopeModel.PROCESSING -> ProcessingEnvelope.segments(shape, sampleRate)
     }
+}
 
-private fun paperSegments(icon: HapticIcon, sampleRate: Int): List<EnvelopeSegment> {
+private fun paperSegments(shape: EnvelopeShape, sampleRate: Int): List<EnvelopeSegment> {
     val fs = sampleRate.toDouble()
-    val level = icon.level
-    val attackEnd = icon.attack * fs
-    val sustainEnd = (icon.attack + icon.sustain) * fs
-    val releaseEnd = (icon.attack + icon.sustain + icon.release) * fs
+    val level = shape.level
+    val attackEnd = shape.attack * fs
+    val sustainEnd = (shape.attack + shape.sustain) * fs
+    val releaseEnd = (shape.attack + shape.sustain + shape.release) * fs
     val b1 = ceil(attackEnd).toLong()
     val b2 = ceil(sustainEnd).toLong()
     val b3 = ceil(releaseEnd).toLong()
     return listOf(
-        EnvelopeSegment(0, b1, 0.0, level / attackEnd, 0.0, rising = true, from = 0.0, to = attackEnd),
-        EnvelopeSegment(b1, b2, level, 0.0, 0.0, rising = false, from = attackEnd, to = sustainEnd),
-        EnvelopeSegment(b2, b3, level, -level / (icon.release * fs), sustainEnd, rising = false, from = sustainEnd, to = releaseEnd),
+        EnvelopeSegment(0, b1, 0.0, shape.peak / attackEnd, 0.0, rising = true, from = 0.0, to = attackEnd),
+        EnvelopeSegment(b1, b2, shape.peak, 0.0, 0.0, rising = false, from = attackEnd, to = sustainEnd),
+        EnvelopeSegment(b2, b3, level, -level / (shape.release * fs), sustainEnd, rising = false, from = sustainEnd, to = releaseEnd),
     )
 }

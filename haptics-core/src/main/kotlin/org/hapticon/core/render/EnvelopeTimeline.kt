@@ -3,8 +3,8 @@ package org.hapticon.core.render
 import org.hapticon.core.HapticIcon
 
 /**
- * The whole-icon envelope at sample resolution, as consecutive runs covering [0, sampleCount): the
- * one definition of an icon's envelope that every renderer samples ([IconRenderer] and [PcmRenderer]
+ * The whole-icon envelope at sample resolution, as consecutive runs covering [0, sampleCount): the icon's
+ * [EnvelopeShape] placed at every onset, which every renderer samples ([IconRenderer] and [PcmRenderer]
  * sample by sample, [HapticIcon.envelope] — and through it [VibrationWaveform], [EnvelopeControlPoints]
  * and the plots — in continuous time via [valueAtTime]).
  *
@@ -46,8 +46,8 @@ internal class EnvelopeTimeline(icon: HapticIcon, model: EnvelopeModel, private 
     /** The pieces with a positive span in continuous time, for [valueAtTime]. */
     private val spans: Array<EnvelopeSegment> = pieces.filter { it.to > it.from }.toTypedArray()
 
-    /** True when overlapping repetitions add (PROCESSING), false when the larger wins (PAPER). */
-    val sums: Boolean = model == EnvelopeModel.PROCESSING
+    /** True when overlapping repetitions add (PROCESSING), false when the larger wins (PAPER): [EnvelopeShape.sums]. */
+    val sums: Boolean = EnvelopeShape.of(icon, model).sums
 
     /** onset(k), non-decreasing in k. */
     private val onsets = LongArray(icon.count) { k -> Math.round(k * icon.period * sampleRate) }

@@ -5,7 +5,7 @@ import org.hapticon.core.signal.Signal
 
 /**
  * This icon's amplitude envelope over all its repetitions as a [Signal] of time: the same definition
- * [IconRenderer] samples ([EnvelopeTimeline] over [envelopeSegments]), evaluated in continuous time
+ * [IconRenderer] samples ([EnvelopeShape], as [EnvelopeTimeline] places it over [envelopeSegments]), evaluated in continuous time
  * at [sampleRate]'s sample grid (onsets on whole samples). [VibrationWaveform], [EnvelopeControlPoints]
  * and the plots read it, so a model change reaches every output at once.
  *

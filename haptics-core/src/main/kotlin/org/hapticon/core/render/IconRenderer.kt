@@ -62,7 +62,7 @@ public class IconRenderer(
      * starts afresh. Read it as floats ([SampleStream.read]) or, for the samples before narrowing, as
      * doubles ([DoubleSampleStream.read]).
      */
-    public fun stream(): DoubleSampleStream = IconSampleStream(newSynthesizer(mode), sampleRate)
+    public fun stream(): DoubleSampleStream = SampleSourceStream(newSynthesizer(mode), sampleRate)
 
     /**
      * The exact sample at [index] (envelope × carrier, in double precision), whatever [mode] is:

@@ -26,9 +26,9 @@ internal class IconSynthesizer(
     private val clock: SampleClock,
     private val carrierOffset: Long,
     val mode: RenderMode,
-) {
-    val totalSamples: Long = timeline.sampleCount
-    var position: Long = 0
+) : SampleSource {
+    override val totalSamples: Long = timeline.sampleCount
+    override var position: Long = 0
         private set
 
     // The envelope run the next sample lies in, found lazily as the stream advances.
@@ -43,17 +43,16 @@ internal class IconSynthesizer(
     // FAST carrier state: the lanes hold the phases of the next four samples.
     private val phasor = InterleavedPhasor(clock)
 
-    /** Writes up to [length] next samples into [destination] from [offset]; returns how many (0 at the end). */
-    fun fill(destination: DoubleArray, offset: Int, length: Int): Int = fillRuns(length) { at, wanted ->
+    override fun fill(destination: DoubleArray, offset: Int, length: Int): Int = fillRuns(length) { at, wanted ->
         when (mode) {
             RenderMode.EXACT -> fillExact(destination, offset + at, wanted)
             RenderMode.FAST -> fastChunk(wanted) { count, m -> phasor.fill(destination, offset + at, count, sweep.risingValue, sweep.risingSlope, sweep.fallingValue, sweep.fallingSlope, m) }
         }
     }
 
-    /** FAST only: as [fill], the samples narrowed to float32 (the same doubles, narrowed as written). */
-    fun fillFloats(destination: FloatArray, offset: Int, length: Int): Int {
-        check(mode == RenderMode.FAST) { "float kernel is FAST's; EXACT float reads narrow a double block" }
+    /** FAST's float kernel: as [fill], the samples narrowed to float32 as written (the same doubles, narrowed); null for EXACT. */
+    override fun fillFloats(destination: FloatArray, offset: Int, length: Int): Int? {
+        if (mode != RenderMode.FAST) return null
         return fillRuns(length) { at, wanted ->
             fastChunk(wanted) { count, m -> phasor.fill(destination, offset + at, count, sweep.risingValue, sweep.risingSlope, sweep.fallingValue, sweep.fallingSlope, m) }
         }

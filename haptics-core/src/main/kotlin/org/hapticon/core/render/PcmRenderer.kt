@@ -27,13 +27,13 @@ public class PcmRenderer(
     public val sampleCount: Long get() = renderer.sampleCount
 
     /** A new PCM16 stream over the whole render from sample 0; each call starts afresh. */
-    public fun stream(): PcmStream = IconPcmStream(renderer.newSynthesizer(mode), sampleRate)
+    public fun stream(): PcmStream = SampleSourceStream(renderer.newSynthesizer(mode), sampleRate)
 
     /**
      * The whole render in one array (at most 30 s · 192 kHz = 5.76 M samples, 11.5 MB);
      * prefer [stream] when the destination is itself streamed.
      */
-    public fun render(): ShortArray {
+    public fun toShortArray(): ShortArray {
         val pcm = ShortArray(sampleCount.toInt())
         val stream = stream()
         var filled = 0
@@ -47,7 +47,7 @@ public class PcmRenderer(
      * Streams both, so memory stays constant.
      */
     public fun fidelity(): Fidelity {
-        val pcm = IconPcmStream(renderer.newSynthesizer(mode), sampleRate)
+        val pcm: PcmStream = SampleSourceStream(renderer.newSynthesizer(mode), sampleRate)
         val ideal = renderer.newSynthesizer(RenderMode.EXACT)
         val pcmBlock = ShortArray(BLOCK_SAMPLES)
         val idealBlock = DoubleArray(BLOCK_SAMPLES)
@@ -69,24 +69,5 @@ public class PcmRenderer(
 
     private companion object {
         const val BLOCK_SAMPLES = 4096
-    }
-}
-
-/** [PcmStream] over an [IconSynthesizer], via a fixed double scratch block (no allocation per read). */
-private class IconPcmStream(
-    private val synthesizer: IconSynthesizer,
-    override val sampleRate: Int,
-) : PcmStream {
-    private val blocks = ScratchBlockReader(synthesizer)
-
-    override val totalSamples: Long get() = synthesizer.totalSamples
-    override val position: Long get() = synthesizer.position
-
-    override fun read(destination: ShortArray, offset: Int, length: Int): Int {
-        checkRange(destination.size, offset, length)
-        if (position >= totalSamples) return -1
-        return blocks.read(length) { scratch, written, made ->
-            Pcm16.convert(scratch, destination, 0, offset + written, made)
-        }
     }
 }

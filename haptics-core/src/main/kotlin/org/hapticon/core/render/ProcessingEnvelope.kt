@@ -69,8 +69,10 @@ internal object ProcessingEnvelope {
      * [FRAMES_PER_BLOCK] after the reader's start) whose time n · framePeriod is at or after A + S + R
      * (a float sum, widened), compared in doubles as JSyn's `TimeStamp.compareTo` does.
      */
-    fun disconnectSample(icon: HapticIcon, sampleRate: Int): Long {
-        val total = (icon.attack.toFloat() + icon.sustain.toFloat() + icon.release.toFloat()).toDouble()
+    fun disconnectSample(icon: HapticIcon, sampleRate: Int): Long = disconnectSample(EnvelopeShape.of(icon, EnvelopeModel.PROCESSING), sampleRate)
+
+    private fun disconnectSample(shape: EnvelopeShape, sampleRate: Int): Long {
+        val total = (shape.attack.toFloat() + shape.sustain.toFloat() + shape.release.toFloat()).toDouble()
         val framePeriod = 1.0 / sampleRate
         // Start one block below the exact boundary and step up: the double comparison decides ties.
         var n = maxOf(0L, (ceil(total * sampleRate).toLong() / FRAMES_PER_BLOCK - 1) * FRAMES_PER_BLOCK)
@@ -78,11 +80,15 @@ internal object ProcessingEnvelope {
         return n
     }
 
-    fun segments(icon: HapticIcon, sampleRate: Int): List<EnvelopeSegment> {
+    /** One repetition of [icon]'s PROCESSING envelope at [sampleRate] ([envelopeSegments]). */
+    fun segments(icon: HapticIcon, sampleRate: Int): List<EnvelopeSegment> = segments(EnvelopeShape.of(icon, EnvelopeModel.PROCESSING), sampleRate)
+
+    /** The reader playing [shape]'s three frames (durations and targets through `float`, rule 1). */
+    fun segments(shape: EnvelopeShape, sampleRate: Int): List<EnvelopeSegment> {
         val framePeriod = 1.0 / sampleRate
-        val durations = doubleArrayOf(viaFloat(icon.attack), viaFloat(icon.sustain), viaFloat(icon.release))
-        val targets = doubleArrayOf(1.0, viaFloat(icon.level), 0.0)
-        val end = disconnectSample(icon, sampleRate)
+        val durations = doubleArrayOf(viaFloat(shape.attack), viaFloat(shape.sustain), viaFloat(shape.release))
+        val targets = doubleArrayOf(viaFloat(shape.peak), viaFloat(shape.level), 0.0)
+        val end = disconnectSample(shape, sampleRate)
         val segments = ArrayList<EnvelopeSegment>(3)
         var first = 0L
         var source = 0.0

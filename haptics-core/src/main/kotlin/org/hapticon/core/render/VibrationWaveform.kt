@@ -10,7 +10,7 @@ import org.hapticon.core.HapticIcon
  * > 0 ms, every amplitude in 0..255, consecutive entries differ, and the total is at most
  * [HapticIcon.MAX_DURATION_SECONDS].
  *
- * [render] computes it from an envelope as follows, so the result is easy to predict:
+ * [amplitudeSteps] computes it from an envelope as follows, so the result is easy to predict:
  * 1. The length is the duration rounded to whole milliseconds, T (ties up).
  * 2. Time is cut into steps of [stepMillis]: [0, s), [s, 2s), …; the last step ends at T and may be shorter.
  * 3. The envelope is sampled at the centres of 0.1 ms cells. A step is off (amplitude 0) when every cell in
@@ -69,27 +69,24 @@ public class VibrationWaveform private constructor(
         public const val DEFAULT_MAX_ENTRIES: Int = 3000
 
         /**
-         * Renders [icon]'s ideal envelope under [model] (see [envelope]) with the algorithm described on
+         * [icon]'s ideal envelope under [model] ([idealEnvelope]) as amplitude steps, by the algorithm described on
          * [VibrationWaveform]; the total equals [HapticIcon.duration] rounded to whole milliseconds.
          *
          * Throws [IllegalArgumentException] when the duration rounds to 0 ms, when [stepMillis] < 1 or when
          * [maxEntries] < 1.
          */
-        public fun render(
+        public fun amplitudeSteps(
             icon: HapticIcon,
             model: EnvelopeModel = EnvelopeModel.DEFAULT,
             stepMillis: Int = DEFAULT_STEP_MILLIS,
             maxEntries: Int = DEFAULT_MAX_ENTRIES,
-        ): VibrationWaveform {
-            val envelope = icon.envelope(model)
-            return render(envelope::sample, icon.duration, stepMillis, maxEntries)
-        }
+        ): VibrationWaveform = amplitudeSteps(icon.idealEnvelope(model), icon.duration, stepMillis, maxEntries)
 
         /**
          * [onOff] for [icon]'s ideal envelope under [model]: full strength where the envelope is at least
          * [threshold] × its peak, off elsewhere.
          *
-         * Throws [IllegalArgumentException] as the icon [render] does, and when [threshold] is not in (0, 1].
+         * Throws [IllegalArgumentException] as the icon [amplitudeSteps] does, and when [threshold] is not in (0, 1].
          */
         public fun onOff(
             icon: HapticIcon,
@@ -97,19 +94,16 @@ public class VibrationWaveform private constructor(
             threshold: Double = 0.5,
             stepMillis: Int = DEFAULT_STEP_MILLIS,
             maxEntries: Int = DEFAULT_MAX_ENTRIES,
-        ): VibrationWaveform {
-            val envelope = icon.envelope(model)
-            return onOff(envelope::sample, icon.duration, threshold, stepMillis, maxEntries)
-        }
+        ): VibrationWaveform = onOff(icon.idealEnvelope(model), icon.duration, threshold, stepMillis, maxEntries)
 
         /**
-         * Renders [envelope] (amplitude in [0, 1] at a time in seconds; values outside are clamped, NaN reads
-         * as 0) over [durationSeconds] with the algorithm described on [VibrationWaveform].
+         * [envelope] (amplitude in [0, 1] at a time in seconds; values outside are clamped, NaN reads as 0) over
+         * [durationSeconds] as amplitude steps, by the algorithm described on [VibrationWaveform].
          *
          * Throws [IllegalArgumentException] when the duration is not finite, rounds to 0 ms or exceeds
          * [HapticIcon.MAX_DURATION_SECONDS], when [stepMillis] < 1 or when [maxEntries] < 1.
          */
-        public fun render(
+        public fun amplitudeSteps(
             envelope: (Double) -> Double,
             durationSeconds: Double,
             stepMillis: Int = DEFAULT_STEP_MILLIS,
@@ -123,9 +117,9 @@ public class VibrationWaveform private constructor(
          * Renders [envelope] for a vibrator without amplitude control: full strength (255) during the steps
          * whose mean envelope is at least [threshold] × the envelope's peak, off elsewhere. The threshold is
          * relative to the peak so that a quiet icon still plays (an absolute one would silence it).
-         * Steps, merging and the entry cap work as in [render].
+         * Steps, merging and the entry cap work as in [amplitudeSteps].
          *
-         * Throws [IllegalArgumentException] as [render] does, and when [threshold] is not in (0, 1].
+         * Throws [IllegalArgumentException] as [amplitudeSteps] does, and when [threshold] is not in (0, 1].
          */
         public fun onOff(
             envelope: (Double) -> Double,
@@ -145,20 +139,24 @@ public class VibrationWaveform private constructor(
         }
     }
 
-    /** The sampled envelope and step bookkeeping shared by [render] and [onOff]. */
+    /** The sampled envelope and step bookkeeping shared by [amplitudeSteps] and [onOff]. */
     private class StepGrid(
         envelope: (Double) -> Double,
         durationSeconds: Double,
         private val requestedStepMillis: Int,
         private val maxEntries: Int,
     ) {
-        val totalMillis = totalMillisOf(durationSeconds)
+        private val ideal: EnvelopeCells
+        val totalMillis: Int
         val cells: DoubleArray
 
         init {
+            // The duration is checked first, then the step and the cap: each error names the first bad argument.
+            totalMillis = totalMillisOf(durationSeconds)
             require(requestedStepMillis >= 1) { "stepMillis must be >= 1, was $requestedStepMillis" }
             require(maxEntries >= 1) { "maxEntries must be >= 1, was $maxEntries" }
-            cells = sampleCells(envelope, durationSeconds, totalMillis)
+            ideal = EnvelopeCells(envelope, durationSeconds, totalMillis)
+            cells = ideal.cells
         }
 
         val peak: Double = cells.maxOrNull() ?: 0.0
@@ -210,7 +208,7 @@ public class VibrationWaveform private constructor(
                 stepEnds[i] = end * CELLS_PER_MILLI
             }
             var entry = 0
-            val errors = measureErrors(cells) { cell ->
+            val errors = ideal.errorsOf { cell ->
                 while (entry < stepEnds.size && cell >= stepEnds[entry]) entry++
                 if (entry < amplitudes.size) amplitudes[entry].toDouble() / MAX_AMPLITUDE else 0.0
             }

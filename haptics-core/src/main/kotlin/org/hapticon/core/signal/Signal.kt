@@ -1,15 +1,13 @@
 package org.hapticon.core.signal
 
 /**
- * A signal of time: a small immutable value that can be sampled at any time t (seconds).
+ * A signal of time: a small immutable value that can be sampled at any time t (seconds). An icon's envelope
+ * ([org.hapticon.core.render.envelope]) and a pattern ([org.hapticon.core.pattern.signal]) are signals;
+ * [org.hapticon.core.render.stream] samples any of them.
  *
- * Signals compose: `a * b` is a [Product], `a + b` a [Sum], `a * 0.5` a [Gain] (see SignalOperators.kt);
- * [Repeater] and [Sequence] place signals in time.
- *
- * Time convention: a signal starts at t = 0 and plays for [length] seconds. Finite signals are 0
- * before 0 and after their end unless documented otherwise. Every signal in this package throws
- * [IllegalArgumentException] when sampled at a NaN or infinite time, because no meaningful value
- * exists there and a silent NaN would otherwise reach an actuator.
+ * Time convention: a signal starts at t = 0 and plays for [length] seconds, and is 0 before 0 and after its end
+ * unless documented otherwise. A signal throws [IllegalArgumentException] when sampled at a NaN or infinite time,
+ * because no meaningful value exists there and a silent NaN would otherwise reach an actuator.
  */
 public interface Signal {
     /**
@@ -19,11 +17,6 @@ public interface Signal {
      */
     public fun sample(t: Double): Double
 
-    /** How long this signal plays, in seconds; [Double.POSITIVE_INFINITY] for oscillators. */
+    /** How long this signal plays, in seconds. */
     public val length: Double
-}
-
-/** Shared guard for [Signal.sample]: rejects NaN and infinite times. */
-internal fun requireFiniteTime(t: Double) {
-    require(t.isFinite()) { "sample time must be finite, was $t" }
 }

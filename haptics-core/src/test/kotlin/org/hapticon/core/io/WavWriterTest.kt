@@ -127,7 +127,7 @@ class WavWriterTest {
         val out = ByteArrayOutputStream().also { WavWriter.write(renderer.stream(), it) }.toByteArray()
         assertEquals(WavWriter.fileSize(renderer.sampleCount, WavEncoding.PCM16), out.size.toLong())
         val audio = WavReader.read(ByteArrayInputStream(out))
-        val expected = renderer.render()
+        val expected = renderer.toShortArray()
         assertEquals(expected.size, audio.frames)
         val actual = audio.samples()
         for (i in expected.indices) assertEquals(expected[i] / 32767f, actual[i], 0f)

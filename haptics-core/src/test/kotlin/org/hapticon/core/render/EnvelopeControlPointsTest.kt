@@ -37,8 +37,8 @@ class EnvelopeControlPointsTest {
     }
 
     @Test
-    fun render_hug_isItsThreeCornersExactly() {
-        val result = EnvelopeControlPoints.render(HapticIcon.HUG, EnvelopeModel.PAPER)
+    fun fit_hug_isItsThreeCornersExactly() {
+        val result = EnvelopeControlPoints.fit(HapticIcon.HUG, EnvelopeModel.PAPER)
         assertPoints(listOf(0.5 to 1500L, 0.5 to 1000L, 0.0 to 500L), result, midiNoteToHz(50.0))
         assertEquals(0.0, result.fidelity.rmsError, 1e-12)
         assertEquals(0.0, result.fidelity.maxError, 1e-12)
@@ -46,8 +46,8 @@ class EnvelopeControlPointsTest {
     }
 
     @Test
-    fun render_stroke_followsOverlappingRepetitionsExactly() {
-        val result = EnvelopeControlPoints.render(HapticIcon.STROKE, EnvelopeModel.PAPER)
+    fun fit_stroke_followsOverlappingRepetitionsExactly() {
+        val result = EnvelopeControlPoints.fit(HapticIcon.STROKE, EnvelopeModel.PAPER)
         // Repetitions every 2.6 s overlap: the release of one and the attack of the next cross at 0.06.
         val expected = listOf(0.3 to 1000L, 0.3 to 1000L) +
             (1..3).flatMap { listOf(0.06 to 800L, 0.3 to 800L, 0.3 to 1000L) } +
@@ -59,8 +59,8 @@ class EnvelopeControlPointsTest {
     }
 
     @Test
-    fun render_knock_cannotFollowTwentyMillisecondPulses() {
-        val result = EnvelopeControlPoints.render(HapticIcon.KNOCK, EnvelopeModel.PAPER)
+    fun fit_knock_cannotFollowTwentyMillisecondPulses() {
+        val result = EnvelopeControlPoints.fit(HapticIcon.KNOCK, EnvelopeModel.PAPER)
         // Ends of segments must lie on the envelope 20 ms apart: only the middle pulse is caught, as a
         // 40 ms triangle; the first and last pulses are lost.
         assertPoints(listOf(0.0 to 260L, 0.5 to 20L, 0.0 to 20L, 0.0 to 260L), result, midiNoteToHz(57.0))
@@ -73,8 +73,8 @@ class EnvelopeControlPointsTest {
     }
 
     @Test
-    fun render_hit_usesTheWholeBudgetAndIsNotRepresentable() {
-        val result = EnvelopeControlPoints.render(HapticIcon.HIT, EnvelopeModel.PAPER)
+    fun fit_hit_usesTheWholeBudgetAndIsNotRepresentable() {
+        val result = EnvelopeControlPoints.fit(HapticIcon.HIT, EnvelopeModel.PAPER)
         assertValid(result, 16, 1540)
         assertEquals(16, result.points.size)
         assertTrue(result.relativeRmsError > EnvelopeControlPoints.REPRESENTABLE_RELATIVE_ERROR)
@@ -82,11 +82,11 @@ class EnvelopeControlPointsTest {
     }
 
     @Test
-    fun render_everyPresetAndModel_obeysThePlatformRules() {
+    fun fit_everyPresetAndModel_obeysThePlatformRules() {
         for (icon in HapticIcon.PRESETS) {
             for (model in EnvelopeModel.values()) {
                 for (maxPoints in listOf(1, 2, 5, 16, 40)) {
-                    val result = EnvelopeControlPoints.render(icon, model, maxPoints)
+                    val result = EnvelopeControlPoints.fit(icon, model, maxPoints)
                     assertValid(result, maxPoints, Math.round(icon.duration * 1000))
                     assertTrue(result.points.all { it.frequencyHz == icon.frequency })
                 }
@@ -95,8 +95,8 @@ class EnvelopeControlPointsTest {
     }
 
     @Test
-    fun render_shorterMinimumSegment_followsKnockExactly() {
-        val result = EnvelopeControlPoints.render(HapticIcon.KNOCK, EnvelopeModel.PAPER, minSegmentMillis = 5)
+    fun fit_shorterMinimumSegment_followsKnockExactly() {
+        val result = EnvelopeControlPoints.fit(HapticIcon.KNOCK, EnvelopeModel.PAPER, minSegmentMillis = 5)
         // Three trapezoids: 4 corners each, the first starting at the implicit 0 → 11 points.
         assertEquals(11, result.points.size)
         assertEquals(0.0, result.fidelity.rmsError, 1e-12)
@@ -104,26 +104,26 @@ class EnvelopeControlPointsTest {
     }
 
     @Test
-    fun render_morePointsNeverFitWorse() {
+    fun fit_morePointsNeverFitWorse() {
         var previous = Double.POSITIVE_INFINITY
         for (maxPoints in 1..16) {
-            val error = EnvelopeControlPoints.render(HapticIcon.HIT, EnvelopeModel.PAPER, maxPoints = maxPoints).fidelity.rmsError
+            val error = EnvelopeControlPoints.fit(HapticIcon.HIT, EnvelopeModel.PAPER, maxPoints = maxPoints).fidelity.rmsError
             assertTrue(error <= previous + 1e-12)
             previous = error
         }
     }
 
     @Test
-    fun render_singlePoint_isSilenceOverTheDuration() {
-        val result = EnvelopeControlPoints.render(HapticIcon.HUG, EnvelopeModel.PAPER, maxPoints = 1)
+    fun fit_singlePoint_isSilenceOverTheDuration() {
+        val result = EnvelopeControlPoints.fit(HapticIcon.HUG, EnvelopeModel.PAPER, maxPoints = 1)
         assertPoints(listOf(0.0 to 3000L), result, midiNoteToHz(50.0))
         assertEquals(1.0, result.relativeRmsError, 1e-9)
         assertFalse(result.isRepresentable)
     }
 
     @Test
-    fun render_envelopeShorterThanOneSegment_hasNoPoints() {
-        val result = EnvelopeControlPoints.render({ 0.5 }, 0.015, 100.0)
+    fun fit_envelopeShorterThanOneSegment_hasNoPoints() {
+        val result = EnvelopeControlPoints.fit({ 0.5 }, 0.015, 100.0)
         assertTrue(result.points.isEmpty())
         assertEquals(0L, result.totalMillis)
         assertEquals(0.5, result.fidelity.rmsError, 1e-12)
@@ -131,20 +131,20 @@ class EnvelopeControlPointsTest {
     }
 
     @Test
-    fun render_instantAttack_startsWithARampFromZero() {
+    fun fit_instantAttack_startsWithARampFromZero() {
         // An envelope at 0.8 from t = 0 cannot jump there: the first ramp must take 20 ms.
-        val result = EnvelopeControlPoints.render({ t -> if (t < 0.2) 0.8 else 0.0 }, 0.3, 100.0)
+        val result = EnvelopeControlPoints.fit({ t -> if (t < 0.2) 0.8 else 0.0 }, 0.3, 100.0)
         assertValid(result, 16, 300)
         assertEquals(20L, result.points.first().durationMillis)
         assertEquals(0.8, result.points.first().amplitude, 0.0)
     }
 
     @Test
-    fun render_invalidParameters_areRejected() {
-        assertRejected("maxPoints must be in 1..256, was 0") { EnvelopeControlPoints.render(HapticIcon.HUG, EnvelopeModel.PAPER, maxPoints = 0) }
-        assertRejected("maxPoints must be in 1..256, was 257") { EnvelopeControlPoints.render(HapticIcon.HUG, EnvelopeModel.PAPER, maxPoints = 257) }
-        assertRejected("minSegmentMillis must be >= 1, was 0") { EnvelopeControlPoints.render(HapticIcon.HUG, EnvelopeModel.PAPER, minSegmentMillis = 0) }
-        assertRejected("frequencyHz must be finite and > 0, was NaN") { EnvelopeControlPoints.render({ 0.5 }, 1.0, Double.NaN) }
-        assertRejected("duration 31.0 s exceeds the 30.0 s safety cap") { EnvelopeControlPoints.render({ 0.5 }, 31.0, 100.0) }
+    fun fit_invalidParameters_areRejected() {
+        assertRejected("maxPoints must be in 1..256, was 0") { EnvelopeControlPoints.fit(HapticIcon.HUG, EnvelopeModel.PAPER, maxPoints = 0) }
+        assertRejected("maxPoints must be in 1..256, was 257") { EnvelopeControlPoints.fit(HapticIcon.HUG, EnvelopeModel.PAPER, maxPoints = 257) }
+        assertRejected("minSegmentMillis must be >= 1, was 0") { EnvelopeControlPoints.fit(HapticIcon.HUG, EnvelopeModel.PAPER, minSegmentMillis = 0) }
+        assertRejected("frequencyHz must be finite and > 0, was NaN") { EnvelopeControlPoints.fit({ 0.5 }, 1.0, Double.NaN) }
+        assertRejected("duration 31.0 s exceeds the 30.0 s safety cap") { EnvelopeControlPoints.fit({ 0.5 }, 31.0, 100.0) }
     }
 }

@@ -225,7 +225,7 @@ class IconRendererPresetTest {
                 120_000L to 8253, 143_999L to 0),
         )
         for (icon in HapticIcon.PRESETS) for (model in EnvelopeModel.values()) {
-            val pcm = PcmRenderer(icon, 48_000, model).render()
+            val pcm = PcmRenderer(icon, 48_000, model).toShortArray()
             for ((index, value) in expected.getValue(icon.name to model)) {
                 assertEquals("${icon.name} $model sample $index", value, pcm[index.toInt()].toInt())
                 assertEquals("${icon.name} $model reference $index", value, IconReference.pcm(IconReference.sample(icon, model, index, 48_000)))

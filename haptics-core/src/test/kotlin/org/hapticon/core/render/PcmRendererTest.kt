@@ -10,9 +10,9 @@ import kotlin.math.sqrt
 
 class PcmRendererTest {
     @Test
-    fun render_everySample_isPcm16OfTheExactSample() {
+    fun toShortArray_everySample_isPcm16OfTheExactSample() {
         for (model in EnvelopeModel.values()) {
-            val pcm = PcmRenderer(HapticIcon.KNOCK, 44_100, model).render()
+            val pcm = PcmRenderer(HapticIcon.KNOCK, 44_100, model).toShortArray()
             val renderer = IconRenderer(HapticIcon.KNOCK, 44_100, model)
             assertEquals(24_696, pcm.size)
             for (i in pcm.indices) {
@@ -24,7 +24,7 @@ class PcmRendererTest {
     @Test
     fun stream_blocksOf7_equalWholeRender() {
         val renderer = PcmRenderer(HapticIcon.HIT, 48_000, EnvelopeModel.PROCESSING, RenderMode.FAST)
-        val whole = renderer.render()
+        val whole = renderer.toShortArray()
         val streamed = ShortArray(whole.size)
         val stream = renderer.stream()
         assertEquals(73_920L, stream.totalSamples)
@@ -41,7 +41,7 @@ class PcmRendererTest {
     @Test
     fun fidelity_exactMode_matchesErrorsComputedFromTheRender() {
         val renderer = PcmRenderer(HapticIcon.HIT, 48_000)
-        val pcm = renderer.render()
+        val pcm = renderer.toShortArray()
         val ideal = IconRenderer(HapticIcon.HIT, 48_000)
         var sum = 0.0
         var max = 0.0

@@ -61,23 +61,23 @@ class PinnedRenderHashesTest {
         output("pcm") {
             for (rate in rates) for (model in EnvelopeModel.entries) for (mode in RenderMode.entries) record {
                 val renderer = PcmRenderer(icon, rate, model, mode)
-                shorts(renderer.render())
+                shorts(renderer.toShortArray())
                 pcm(renderer.stream(), 333)
                 text(renderer.fidelity().toString())
             }
         }
         output("vibration-waveform") {
             for (model in EnvelopeModel.entries) {
-                record { waveform(VibrationWaveform.render(icon, model)) }
-                record { waveform(VibrationWaveform.render(icon, model, stepMillis = 3, maxEntries = 7)) }
+                record { waveform(VibrationWaveform.amplitudeSteps(icon, model)) }
+                record { waveform(VibrationWaveform.amplitudeSteps(icon, model, stepMillis = 3, maxEntries = 7)) }
                 record { waveform(VibrationWaveform.onOff(icon, model)) }
                 record { waveform(VibrationWaveform.onOff(icon, model, threshold = 0.2, stepMillis = 1)) }
             }
         }
         output("control-points") {
             for (model in EnvelopeModel.entries) {
-                record { controlPoints(EnvelopeControlPoints.render(icon, model)) }
-                record { controlPoints(EnvelopeControlPoints.render(icon, model, maxPoints = 4, minSegmentMillis = 5)) }
+                record { controlPoints(EnvelopeControlPoints.fit(icon, model)) }
+                record { controlPoints(EnvelopeControlPoints.fit(icon, model, maxPoints = 4, minSegmentMillis = 5)) }
             }
         }
         output("envelope-signal") {

@@ -133,10 +133,10 @@ class ProcessingEnvelopeTest {
         val renderer = IconRenderer(icon, 8_000, PROCESSING)
         val peak = (0 until renderer.sampleCount).maxOf { renderer.envelopeAt(it) }
         assertEquals(3.2, peak, 0.1)
-        val pcm = PcmRenderer(icon, 8_000, PROCESSING).render()
+        val pcm = PcmRenderer(icon, 8_000, PROCESSING).toShortArray()
         assertEquals(32_767, pcm.maxOf { it.toInt() })
         assertEquals(-32_767, pcm.minOf { it.toInt() })
-        val waveform = VibrationWaveform.render(icon, PROCESSING)
+        val waveform = VibrationWaveform.amplitudeSteps(icon, PROCESSING)
         assertEquals(VibrationWaveform.MAX_AMPLITUDE, waveform.amplitudes().max())
     }
 }

@@ -32,8 +32,8 @@ class VibrationWaveformTest {
     }
 
     @Test
-    fun render_knock_isThreeTwentyMillisecondPulses() {
-        val waveform = VibrationWaveform.render(HapticIcon.KNOCK, EnvelopeModel.PAPER)
+    fun amplitudeSteps_knock_isThreeTwentyMillisecondPulses() {
+        val waveform = VibrationWaveform.amplitudeSteps(HapticIcon.KNOCK, EnvelopeModel.PAPER)
         // Each pulse spans two 10 ms steps whose mean envelope is 0.375: round(0.375 · 255) = 96.
         assertArrayEquals(longArrayOf(20, 250, 20, 250, 20), waveform.timings())
         assertArrayEquals(intArrayOf(96, 0, 96, 0, 96), waveform.amplitudes())
@@ -42,8 +42,8 @@ class VibrationWaveformTest {
     }
 
     @Test
-    fun render_knock_fidelityMatchesTheAnalyticError() {
-        val fidelity = VibrationWaveform.render(HapticIcon.KNOCK, EnvelopeModel.PAPER).fidelity
+    fun amplitudeSteps_knock_fidelityMatchesTheAnalyticError() {
+        val fidelity = VibrationWaveform.amplitudeSteps(HapticIcon.KNOCK, EnvelopeModel.PAPER).fidelity
         // Per pulse ∫(c − e)² = 2·(5c² − 2.5c + 5/12) + 10·(c − 0.5)² with c = 96/255 (ms · amplitude²).
         val c = 96.0 / 255
         val perPulse = 2 * (5 * c * c - 2.5 * c + 5.0 / 12) + 10 * (c - 0.5) * (c - 0.5)
@@ -57,8 +57,8 @@ class VibrationWaveformTest {
     }
 
     @Test
-    fun render_hit_followsEachRampStepByStep() {
-        val waveform = VibrationWaveform.render(HapticIcon.HIT, EnvelopeModel.PAPER)
+    fun amplitudeSteps_hit_followsEachRampStepByStep() {
+        val waveform = VibrationWaveform.amplitudeSteps(HapticIcon.HIT, EnvelopeModel.PAPER)
         // Attack step mean 0.5 → 128; hold → 255; release steps 5/6, 1/2, 1/6 → 213, 128, 43; 60 ms off.
         val pulseTimings = listOf(10L, 100, 10, 10, 10)
         val pulseAmplitudes = listOf(128, 255, 213, 128, 43)
@@ -70,8 +70,8 @@ class VibrationWaveformTest {
     }
 
     @Test
-    fun render_processingModel_changesTheShape() {
-        val waveform = VibrationWaveform.render(HapticIcon.KNOCK, EnvelopeModel.PROCESSING)
+    fun amplitudeSteps_processingModel_changesTheShape() {
+        val waveform = VibrationWaveform.amplitudeSteps(HapticIcon.KNOCK, EnvelopeModel.PROCESSING)
         // 0→1 over 5 ms, 1→0.5 over 10 ms, 0.5→0 over 5 ms: step means 0.6875 and 0.4375 (111.6 of 255) in
         // continuous time. Processing at 44.1 kHz carries the attack's half-sample overshoot into the sustain,
         // which then ends one sample (22.7 µs) early, pulling the second step's mean just below 111.5.
@@ -80,8 +80,8 @@ class VibrationWaveformTest {
     }
 
     @Test
-    fun render_hug_holdsLevelAndKeepsErrorWithinQuantisation() {
-        val waveform = VibrationWaveform.render(HapticIcon.HUG, EnvelopeModel.PAPER)
+    fun amplitudeSteps_hug_holdsLevelAndKeepsErrorWithinQuantisation() {
+        val waveform = VibrationWaveform.amplitudeSteps(HapticIcon.HUG, EnvelopeModel.PAPER)
         assertPlayable(waveform, 3000)
         val timings = waveform.timings()
         val amplitudes = waveform.amplitudes()
@@ -95,11 +95,11 @@ class VibrationWaveformTest {
     }
 
     @Test
-    fun render_everyPresetModelAndStep_isPlayable() {
+    fun amplitudeSteps_everyPresetModelAndStep_isPlayable() {
         for (icon in HapticIcon.PRESETS) {
             for (model in EnvelopeModel.values()) {
                 for (step in listOf(1, 3, 7, 10, 25, 1000)) {
-                    assertPlayable(VibrationWaveform.render(icon, model, step), Math.round(icon.duration * 1000))
+                    assertPlayable(VibrationWaveform.amplitudeSteps(icon, model, step), Math.round(icon.duration * 1000))
                     assertPlayable(VibrationWaveform.onOff(icon, model, stepMillis = step), Math.round(icon.duration * 1000))
                 }
             }
@@ -107,77 +107,77 @@ class VibrationWaveformTest {
     }
 
     @Test
-    fun render_stroke_hasPlayableRampsAtMostItsLevel() {
-        val waveform = VibrationWaveform.render(HapticIcon.STROKE, EnvelopeModel.PAPER)
+    fun amplitudeSteps_stroke_hasPlayableRampsAtMostItsLevel() {
+        val waveform = VibrationWaveform.amplitudeSteps(HapticIcon.STROKE, EnvelopeModel.PAPER)
         assertPlayable(waveform, 10_800)
         assertEquals(77, waveform.amplitudes().max()) // round(0.3 · 255 = 76.5)
         assertTrue(waveform.fidelity.rmsError < 0.002)
     }
 
     @Test
-    fun render_tooManyEntries_doublesTheStepUntilTheyFit() {
-        val waveform = VibrationWaveform.render(HapticIcon.HUG, EnvelopeModel.PAPER, maxEntries = 10)
+    fun amplitudeSteps_tooManyEntries_doublesTheStepUntilTheyFit() {
+        val waveform = VibrationWaveform.amplitudeSteps(HapticIcon.HUG, EnvelopeModel.PAPER, maxEntries = 10)
         assertPlayable(waveform, 3000)
         assertTrue(waveform.size <= 10)
-        assertTrue(VibrationWaveform.render(HapticIcon.HUG, EnvelopeModel.PAPER, stepMillis = 160).size > 10)
+        assertTrue(VibrationWaveform.amplitudeSteps(HapticIcon.HUG, EnvelopeModel.PAPER, stepMillis = 160).size > 10)
         assertEquals(320, waveform.stepMillis) // 10 → 20 → … → 320 ms, the first to give at most 10 entries
-        val coarser = VibrationWaveform.render(HapticIcon.HUG, EnvelopeModel.PAPER, maxEntries = 1)
+        val coarser = VibrationWaveform.amplitudeSteps(HapticIcon.HUG, EnvelopeModel.PAPER, maxEntries = 1)
         assertArrayEquals(longArrayOf(3000), coarser.timings())
         assertEquals(3000, coarser.stepMillis)
     }
 
     @Test
-    fun render_outOfRangeEnvelope_isClampedToSafeAmplitudes() {
-        val loud = VibrationWaveform.render({ 2.0 }, 0.05)
+    fun amplitudeSteps_outOfRangeEnvelope_isClampedToSafeAmplitudes() {
+        val loud = VibrationWaveform.amplitudeSteps({ 2.0 }, 0.05)
         assertArrayEquals(longArrayOf(50), loud.timings())
         assertArrayEquals(intArrayOf(255), loud.amplitudes())
-        val broken = VibrationWaveform.render({ t -> if (t < 0.02) Double.NaN else -1.0 }, 0.05)
+        val broken = VibrationWaveform.amplitudeSteps({ t -> if (t < 0.02) Double.NaN else -1.0 }, 0.05)
         assertArrayEquals(longArrayOf(50), broken.timings())
         assertArrayEquals(intArrayOf(0), broken.amplitudes())
     }
 
     @Test
-    fun render_amplitudeBelowHalfAStep_isOff() {
-        assertArrayEquals(intArrayOf(0), VibrationWaveform.render({ 0.9 / 510 }, 0.03).amplitudes())
-        assertArrayEquals(intArrayOf(1), VibrationWaveform.render({ 1.1 / 510 }, 0.03).amplitudes())
+    fun amplitudeSteps_amplitudeBelowHalfAStep_isOff() {
+        assertArrayEquals(intArrayOf(0), VibrationWaveform.amplitudeSteps({ 0.9 / 510 }, 0.03).amplitudes())
+        assertArrayEquals(intArrayOf(1), VibrationWaveform.amplitudeSteps({ 1.1 / 510 }, 0.03).amplitudes())
     }
 
     @Test
-    fun render_briefSpike_isNeverDropped() {
+    fun amplitudeSteps_briefSpike_isNeverDropped() {
         // 1 ms at 0.003 in a 10 ms step: mean 0.0003 rounds to 0, but the vibrator must still fire.
-        val waveform = VibrationWaveform.render({ t -> if (t < 0.001) 0.003 else 0.0 }, 0.02)
+        val waveform = VibrationWaveform.amplitudeSteps({ t -> if (t < 0.001) 0.003 else 0.0 }, 0.02)
         assertArrayEquals(longArrayOf(10, 10), waveform.timings())
         assertArrayEquals(intArrayOf(1, 0), waveform.amplitudes())
     }
 
     @Test
-    fun render_lastStep_isShortenedToTheDuration() {
-        val waveform = VibrationWaveform.render({ t -> if (t < 0.01) 1.0 else 0.5 }, 0.0234)
+    fun amplitudeSteps_lastStep_isShortenedToTheDuration() {
+        val waveform = VibrationWaveform.amplitudeSteps({ t -> if (t < 0.01) 1.0 else 0.5 }, 0.0234)
         assertArrayEquals(longArrayOf(10, 13), waveform.timings())
         assertArrayEquals(intArrayOf(255, 128), waveform.amplitudes())
     }
 
     @Test
-    fun render_durationLimits_areEnforced() {
-        assertEquals(30_000L, VibrationWaveform.render({ 0.5 }, 30.0).totalMillis)
-        assertEquals(30_000L, VibrationWaveform.render({ 0.5 }, 30.0004).totalMillis)
-        assertRejected("duration 30.001 s exceeds the 30.0 s safety cap") { VibrationWaveform.render({ 0.5 }, 30.001) }
-        assertRejected("duration 4.0E-4 s rounds to 0 ms: nothing to play") { VibrationWaveform.render({ 0.5 }, 0.0004) }
-        assertRejected("duration must be finite and >= 0, was NaN") { VibrationWaveform.render({ 0.5 }, Double.NaN) }
-        assertRejected("duration must be finite and >= 0, was -1.0") { VibrationWaveform.render({ 0.5 }, -1.0) }
+    fun amplitudeSteps_durationLimits_areEnforced() {
+        assertEquals(30_000L, VibrationWaveform.amplitudeSteps({ 0.5 }, 30.0).totalMillis)
+        assertEquals(30_000L, VibrationWaveform.amplitudeSteps({ 0.5 }, 30.0004).totalMillis)
+        assertRejected("duration 30.001 s exceeds the 30.0 s safety cap") { VibrationWaveform.amplitudeSteps({ 0.5 }, 30.001) }
+        assertRejected("duration 4.0E-4 s rounds to 0 ms: nothing to play") { VibrationWaveform.amplitudeSteps({ 0.5 }, 0.0004) }
+        assertRejected("duration must be finite and >= 0, was NaN") { VibrationWaveform.amplitudeSteps({ 0.5 }, Double.NaN) }
+        assertRejected("duration must be finite and >= 0, was -1.0") { VibrationWaveform.amplitudeSteps({ 0.5 }, -1.0) }
     }
 
     @Test
-    fun render_invalidParameters_areRejected() {
-        assertRejected("stepMillis must be >= 1, was 0") { VibrationWaveform.render(HapticIcon.KNOCK, EnvelopeModel.PAPER, stepMillis = 0) }
-        assertRejected("maxEntries must be >= 1, was 0") { VibrationWaveform.render(HapticIcon.KNOCK, EnvelopeModel.PAPER, maxEntries = 0) }
+    fun amplitudeSteps_invalidParameters_areRejected() {
+        assertRejected("stepMillis must be >= 1, was 0") { VibrationWaveform.amplitudeSteps(HapticIcon.KNOCK, EnvelopeModel.PAPER, stepMillis = 0) }
+        assertRejected("maxEntries must be >= 1, was 0") { VibrationWaveform.amplitudeSteps(HapticIcon.KNOCK, EnvelopeModel.PAPER, maxEntries = 0) }
         assertRejected("threshold must be in (0, 1], was 0.0") { VibrationWaveform.onOff(HapticIcon.KNOCK, EnvelopeModel.PAPER, threshold = 0.0) }
         assertRejected("threshold must be in (0, 1], was 1.5") { VibrationWaveform.onOff(HapticIcon.KNOCK, EnvelopeModel.PAPER, threshold = 1.5) }
     }
 
     @Test
     fun timings_returnsACopy() {
-        val waveform = VibrationWaveform.render(HapticIcon.KNOCK, EnvelopeModel.PAPER)
+        val waveform = VibrationWaveform.amplitudeSteps(HapticIcon.KNOCK, EnvelopeModel.PAPER)
         waveform.timings()[0] = 99
         waveform.amplitudes()[0] = 999
         assertEquals(20L, waveform.timings()[0])

@@ -11,6 +11,7 @@ import kotlinx.coroutines.launch
 import kotlinx.coroutines.runBlocking
 import kotlinx.coroutines.withTimeout
 import org.hapticon.core.HapticIcon
+import org.hapticon.core.render.RendererKind
 import org.hapticon.messaging.BoundedDeduplicator
 import org.hapticon.messaging.Capabilities
 import org.hapticon.messaging.ChatMessage
@@ -23,7 +24,6 @@ import org.hapticon.messaging.MessagingException
 import org.hapticon.messaging.OutboxSender
 import org.hapticon.messaging.Receipt
 import org.hapticon.messaging.ReceiptState
-import org.hapticon.messaging.RendererKind
 import org.hapticon.messaging.RetryPolicy
 import org.hapticon.messaging.Topics
 import org.junit.After

@@ -5,12 +5,13 @@ import kotlinx.coroutines.flow.first
 import kotlinx.coroutines.runBlocking
 import kotlinx.coroutines.withTimeout
 import org.hapticon.core.HapticIcon
+import org.hapticon.core.render.RendererKind
 import org.hapticon.messaging.Capabilities
 import org.hapticon.messaging.ChatMessage
 import org.hapticon.messaging.CollectingListener
-import org.hapticon.messaging.HandPose
 import org.hapticon.messaging.ConnectionState
 import org.hapticon.messaging.Decoded
+import org.hapticon.messaging.HandPose
 import org.hapticon.messaging.ID_1
 import org.hapticon.messaging.ID_2
 import org.hapticon.messaging.InboxEvent
@@ -21,11 +22,10 @@ import org.hapticon.messaging.NEW_YEAR_2026
 import org.hapticon.messaging.Receipt
 import org.hapticon.messaging.ReceiptState
 import org.hapticon.messaging.RejectionReason
-import org.hapticon.messaging.RendererKind
 import org.hapticon.messaging.Topics
 import org.junit.Assert.assertEquals
-import org.junit.Assert.assertTrue
 import org.junit.Assert.assertThrows
+import org.junit.Assert.assertTrue
 import org.junit.Rule
 import org.junit.Test
 import java.util.concurrent.LinkedBlockingQueue

@@ -2,17 +2,17 @@ package org.hapticon.app.feature.chat
 
 import androidx.lifecycle.ViewModel
 import androidx.lifecycle.viewModelScope
+import kotlinx.coroutines.flow.Flow
 import kotlinx.coroutines.flow.MutableStateFlow
 import kotlinx.coroutines.flow.SharingStarted
 import kotlinx.coroutines.flow.StateFlow
-import kotlinx.coroutines.flow.Flow
 import kotlinx.coroutines.flow.combine
 import kotlinx.coroutines.flow.conflate
 import kotlinx.coroutines.flow.distinctUntilChanged
+import kotlinx.coroutines.flow.flowOf
 import kotlinx.coroutines.flow.flowOn
 import kotlinx.coroutines.flow.map
 import kotlinx.coroutines.flow.onStart
-import kotlinx.coroutines.flow.flowOf
 import kotlinx.coroutines.flow.stateIn
 import kotlinx.coroutines.launch
 import org.hapticon.app.data.ChatPreferences
@@ -22,23 +22,23 @@ import org.hapticon.app.data.IconRepository
 import org.hapticon.app.data.database.ConversationSummary
 import org.hapticon.app.data.database.StoredMessage
 import org.hapticon.app.playback.HapticPlayer
+import org.hapticon.app.playback.PeerPitch
+import org.hapticon.app.playback.Playback
+import org.hapticon.app.playback.RendererChoice
+import org.hapticon.app.playback.messageUsage
 import org.hapticon.app.playback.playMessageOffMain
 import org.hapticon.app.playback.playOffMain
-import org.hapticon.app.playback.Playback
-import org.hapticon.app.playback.messageUsage
-import org.hapticon.core.platform.VibrationUsage
-import org.hapticon.app.playback.PeerPitch
-import org.hapticon.app.playback.RendererChoice
 import org.hapticon.app.sync.BrokerProbe
 import org.hapticon.core.HapticIcon
 import org.hapticon.core.pattern.HapticPattern
 import org.hapticon.core.pattern.toPattern
+import org.hapticon.core.platform.VibrationUsage
+import org.hapticon.core.render.RendererKind
+import org.hapticon.messaging.BrokerAddress
 import org.hapticon.messaging.Capabilities
 import org.hapticon.messaging.InvalidMessageException
 import org.hapticon.messaging.InviteLink
-import org.hapticon.messaging.RendererKind
 import org.hapticon.messaging.Topics
-import org.hapticon.messaging.BrokerAddress
 
 /** The conversation list, or the first-launch screen while there is no account. */
 sealed interface ChatListUiState {

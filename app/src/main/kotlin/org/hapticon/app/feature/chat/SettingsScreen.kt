@@ -25,9 +25,9 @@ import androidx.compose.runtime.mutableStateOf
 import androidx.compose.runtime.saveable.rememberSaveable
 import androidx.compose.runtime.setValue
 import androidx.compose.ui.Modifier
+import androidx.compose.ui.platform.testTag
 import androidx.compose.ui.semantics.contentDescription
 import androidx.compose.ui.semantics.semantics
-import androidx.compose.ui.platform.testTag
 import androidx.compose.ui.text.style.TextOverflow
 import androidx.compose.ui.unit.dp
 import org.hapticon.app.data.ChatPreferences
@@ -38,7 +38,7 @@ import org.hapticon.app.ui.DropdownField
 import org.hapticon.app.ui.SingleChoice
 import org.hapticon.app.ui.SwitchRow
 import org.hapticon.core.pattern.PitchFit
-import org.hapticon.messaging.RendererKind
+import org.hapticon.core.render.RendererKind
 
 /** What the settings screen can change. */
 data class SettingsActions(

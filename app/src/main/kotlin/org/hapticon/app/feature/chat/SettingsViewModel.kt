@@ -2,7 +2,6 @@ package org.hapticon.app.feature.chat
 
 import androidx.lifecycle.ViewModel
 import androidx.lifecycle.viewModelScope
-import java.io.OutputStream
 import kotlinx.coroutines.CoroutineDispatcher
 import kotlinx.coroutines.Dispatchers
 import kotlinx.coroutines.Job
@@ -18,10 +17,11 @@ import org.hapticon.app.data.ChatSettingsRepository
 import org.hapticon.app.data.ClientCertificateRepository
 import org.hapticon.app.data.ClientCertificateStatus
 import org.hapticon.app.sync.BrokerProbe
-import org.hapticon.messaging.ConnectionState
-import org.hapticon.messaging.RendererKind
-import org.hapticon.messaging.Topics
+import org.hapticon.core.render.RendererKind
 import org.hapticon.messaging.BrokerAddress
+import org.hapticon.messaging.ConnectionState
+import org.hapticon.messaging.Topics
+import java.io.OutputStream
 
 /**
  * The chat settings screen's state and the changes that need more than a write: a new broker or password is

@@ -18,16 +18,16 @@ import org.hapticon.app.data.PatternImportOutcome
 import org.hapticon.app.data.RoomPatternRepository
 import org.hapticon.app.playback.AdaptiveHapticPlayer
 import org.hapticon.app.playback.DeviceCapabilities
-import org.hapticon.app.playback.PatternPlan
 import org.hapticon.app.playback.HapticPlayer
+import org.hapticon.app.playback.PatternPlan
 import org.hapticon.app.playback.Playback
 import org.hapticon.app.playback.playOffMain
-import org.hapticon.core.platform.VibrationUsage
-import org.hapticon.messaging.RendererKind
 import org.hapticon.core.HapticIcon
 import org.hapticon.core.pattern.HapticPattern
 import org.hapticon.core.pattern.PatternFormat
+import org.hapticon.core.platform.VibrationUsage
 import org.hapticon.core.render.Fidelity
+import org.hapticon.core.render.RendererKind
 
 /** The icon list: what the screen shows, and playing an icon when it is pressed. */
 class IconsViewModel(

@@ -1,15 +1,10 @@
 package org.hapticon.app.feature.chat
 
 import android.content.Context
-import org.hapticon.core.platform.VibrationUsage
 import android.os.Looper
 import android.os.strictmode.Violation
 import androidx.room.Room
 import androidx.test.core.app.ApplicationProvider
-import java.util.concurrent.CopyOnWriteArrayList
-import java.util.concurrent.CountDownLatch
-import java.util.concurrent.Executors
-import kotlin.coroutines.CoroutineContext
 import kotlinx.coroutines.CoroutineScope
 import kotlinx.coroutines.Dispatchers
 import kotlinx.coroutines.Job
@@ -19,23 +14,24 @@ import kotlinx.coroutines.launch
 import org.hapticon.app.data.OfflineFirstChatRepository
 import org.hapticon.app.data.RoomIconRepository
 import org.hapticon.app.data.database.HapticonDatabase
-import org.hapticon.app.recordMainThreadViolations
-import org.hapticon.app.stopRecordingMainThreadViolations
 import org.hapticon.app.playback.HapticPlayer
+import org.hapticon.app.playback.PatternPlan
+import org.hapticon.app.playback.PeerPitch
 import org.hapticon.app.playback.Playback
 import org.hapticon.app.playback.PlaybackCapabilities
 import org.hapticon.app.playback.RendererChoice
+import org.hapticon.app.recordMainThreadViolations
+import org.hapticon.app.stopRecordingMainThreadViolations
 import org.hapticon.core.HapticIcon
-import org.hapticon.app.playback.PatternPlan
-import org.hapticon.app.playback.PeerPitch
 import org.hapticon.core.pattern.AmplitudeKey
 import org.hapticon.core.pattern.EnvelopeEffectInfo
 import org.hapticon.core.pattern.FrequencyKey
 import org.hapticon.core.pattern.HapticPattern
 import org.hapticon.core.pattern.PatternEnvelope
 import org.hapticon.core.pattern.PitchFit
+import org.hapticon.core.platform.VibrationUsage
+import org.hapticon.core.render.RendererKind
 import org.hapticon.messaging.Capabilities
-import org.hapticon.messaging.RendererKind
 import org.junit.After
 import org.junit.Assert.assertEquals
 import org.junit.Assert.assertTrue
@@ -43,6 +39,10 @@ import org.junit.Test
 import org.junit.runner.RunWith
 import org.robolectric.RobolectricTestRunner
 import org.robolectric.Shadows.shadowOf
+import java.util.concurrent.CopyOnWriteArrayList
+import java.util.concurrent.CountDownLatch
+import java.util.concurrent.Executors
+import kotlin.coroutines.CoroutineContext
 
 /**
  * The composer's "how it will feel there" figure renders the chosen icon, so the ViewModel computes it in the

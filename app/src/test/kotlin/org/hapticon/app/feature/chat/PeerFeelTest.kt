@@ -1,8 +1,8 @@
 package org.hapticon.app.feature.chat
 
 import org.hapticon.core.pattern.toPattern
+import org.hapticon.core.render.RendererKind
 import org.hapticon.messaging.Capabilities
-import org.hapticon.messaging.RendererKind
 import org.junit.Assert.assertEquals
 import org.junit.Test
 

@@ -11,7 +11,7 @@ import androidx.compose.ui.test.performScrollTo
 import org.hapticon.app.data.ChatPreferences
 import org.hapticon.app.data.InMemoryChatSettings
 import org.hapticon.core.pattern.PitchFit
-import org.hapticon.messaging.RendererKind
+import org.hapticon.core.render.RendererKind
 import org.junit.Assert.assertEquals
 import org.junit.Rule
 import org.junit.Test

@@ -1,23 +1,24 @@
 package org.hapticon.app.feature.chat
 
-import java.io.ByteArrayOutputStream
 import kotlinx.coroutines.flow.MutableStateFlow
-import kotlinx.coroutines.launch
 import kotlinx.coroutines.flow.StateFlow
 import kotlinx.coroutines.flow.update
+import kotlinx.coroutines.launch
 import kotlinx.coroutines.test.advanceUntilIdle
 import kotlinx.coroutines.test.runTest
 import org.hapticon.app.data.ChatPreferences
 import org.hapticon.app.data.ChatSettingsRepository
 import org.hapticon.app.gesture.MainDispatcherRule
-import org.hapticon.messaging.ConnectionState
-import org.hapticon.messaging.RendererKind
-import org.hapticon.messaging.BrokerAddress
 import org.hapticon.core.pattern.PitchFit
+import org.hapticon.core.render.RendererKind
+import org.hapticon.messaging.BrokerAddress
+import org.hapticon.messaging.ConnectionState
+import org.hapticon.messaging.wireName
 import org.junit.Assert.assertEquals
 import org.junit.Assert.assertNull
 import org.junit.Rule
 import org.junit.Test
+import java.io.ByteArrayOutputStream
 
 /** The settings screen's state comes from its view model: the stored settings, the connection, the notices of broker tests and the export. */
 class SettingsViewModelTest {

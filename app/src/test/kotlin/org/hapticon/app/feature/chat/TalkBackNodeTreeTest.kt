@@ -222,7 +222,7 @@ class TalkBackNodeTreeTest {
     fun knockLongClicked_throughTheNodeProvider_isFeltHereWithItsOwnWaveform() {
         perform(control("knock"), AccessibilityNodeInfo.ACTION_LONG_CLICK)
         compose.waitUntil(5_000) { lastVibration(fixture.vibrator) != null }
-        val knock = VibrationWaveform.render(HapticIcon.KNOCK)
+        val knock = VibrationWaveform.amplitudeSteps(HapticIcon.KNOCK)
         assertEquals(RecordedVibration(knock.timings().toList(), knock.amplitudes().toList()), lastVibration(fixture.vibrator))
         // A preview chooses nothing.
         assertEquals("not selected", control("knock").info.stateDescription?.toString())
@@ -244,7 +244,7 @@ class TalkBackNodeTreeTest {
         perform(bubble, AccessibilityNodeInfo.ACTION_CLICK)
         compose.waitUntil(5_000) { lastVibration(fixture.vibrator) != null }
         // The hug's own step waveform, timings and amplitudes, as the player renders it for this vibrator.
-        val waveform = VibrationWaveform.render(HapticIcon.HUG)
+        val waveform = VibrationWaveform.amplitudeSteps(HapticIcon.HUG)
         assertEquals(RecordedVibration(waveform.timings().toList(), waveform.amplitudes().toList()), lastVibration(fixture.vibrator))
         // Told once Android played it: after the vibration, not with the press.
         // After the play: its continuation runs on the main looper.

@@ -107,7 +107,7 @@ class TalkBackSendTest {
         compose.onNode(bubble).performSemanticsAction(SemanticsActions.OnClick)
         compose.waitUntil(5_000) { lastVibration(fixture.vibrator) != null }
         // The hug's own step waveform, as the player renders it for an amplitude-controlled vibrator.
-        assertEquals(VibrationWaveform.render(HapticIcon.HUG).timings().toList(), lastVibration(fixture.vibrator)!!.timings)
+        assertEquals(VibrationWaveform.amplitudeSteps(HapticIcon.HUG).timings().toList(), lastVibration(fixture.vibrator)!!.timings)
         // And bob is told it was felt (the felt receipt the sync sends).
         // Told once Android played it: after the vibration, not with the press (the play's continuation on the main looper).
         compose.waitUntil(10_000) {
