@@ -1,7 +1,14 @@
 package org.hapticon.sensor.protocol
 
+import kotlinx.serialization.KSerializer
 import kotlinx.serialization.Serializable
-import org.hapticon.core.io.ShortDouble
+import kotlinx.serialization.descriptors.PrimitiveKind
+import kotlinx.serialization.descriptors.PrimitiveSerialDescriptor
+import kotlinx.serialization.descriptors.SerialDescriptor
+import kotlinx.serialization.encoding.Decoder
+import kotlinx.serialization.encoding.Encoder
+import kotlinx.serialization.json.JsonElement
+import org.hapticon.core.io.shortNumber
 import org.hapticon.sensor.protocol.csv.CsvDecoder
 import org.hapticon.sensor.protocol.csv.CsvSample
 import org.hapticon.sensor.protocol.stream.StreamDecoder
@@ -25,7 +32,7 @@ public class ValuesDocument(
     /** The protocol's [SensorProtocol.cliName]. */
     public val type: String,
     /** The frame's values in channel order. */
-    public val values: List<@Serializable(with = ShortDouble::class) Double>,
+    public val values: List<@Serializable(with = ShortNumber::class) Double>,
 ) {
     public companion object {
         /** The document of [frame]'s values, for a protocol named [type]. */
@@ -53,6 +60,18 @@ private class CsvFrames(private val sink: FrameSink) : CsvDecoder.Listener {
         sink.onFrame(frame, info)
         sink.documents?.write(ValuesDocument.serializer(), ValuesDocument.of(CsvProtocol.cliName, frame))
     }
+}
+
+/**
+ * A value spelled as [shortNumber] spells it, as frame lines always were: a whole number without a fraction (`2`),
+ * negative zero as `-0` (which `ShortDouble` writes `-0.0`), anything else as [Double.toString]. Reads any number.
+ */
+internal object ShortNumber : KSerializer<Double> {
+    override val descriptor: SerialDescriptor = PrimitiveSerialDescriptor("org.hapticon.sensor.ShortNumber", PrimitiveKind.DOUBLE)
+
+    override fun serialize(encoder: Encoder, value: Double): Unit = encoder.encodeSerializableValue(JsonElement.serializer(), shortNumber(value))
+
+    override fun deserialize(decoder: Decoder): Double = decoder.decodeDouble()
 }
 
 /** `ch0`, `ch1`, …: the names of [count] channels the stream did not name. */
