@@ -1,7 +1,7 @@
 package org.hapticon.app.di
 
 import org.hapticon.app.sensors.StimulatorLink
-import org.hapticon.app.sensors.HubStimulatorLink
+import org.hapticon.app.sensors.SessionStimulatorLink
 import android.content.Context
 import org.hapticon.app.data.IconRepository
 import org.hapticon.app.data.RoomPatternRepository
@@ -10,13 +10,13 @@ import org.hapticon.app.gesture.GestureComponent
 import org.hapticon.app.playback.HapticPlayer
 import org.hapticon.app.playback.VibrationOutput
 import org.hapticon.app.playback.VibratorVibrationOutput
-import org.hapticon.app.sensors.AndroidUsbDevices
+import org.hapticon.sensor.usb.AndroidUsbDevices
 import org.hapticon.app.sensors.CalibrationStore
 import org.hapticon.app.sensors.SharedPreferencesCalibrationStore
 import org.hapticon.app.sensors.ReaderThreadPriority
 import org.hapticon.app.study.StudyComponent
 import org.hapticon.app.sync.ChatComponent
-import org.hapticon.sensor.glove.HubGloveSource
+import org.hapticon.sensor.glove.SessionGloveSource
 import org.hapticon.sensor.glove.PartnerHand
 import org.hapticon.sensor.glove.SimulatedPartner
 import org.hapticon.sensor.grains.GrainEngine
@@ -28,7 +28,7 @@ import org.hapticon.sensor.live.UsbDevices
  * package, below the root package's application and activity that hold it and above the features that read it,
  * so that no package imports the root (docs/architecture.md, "Packages do not import each other in a cycle").
  *
- * The sensor side is one live connection ([sensorHub]) shared by the Sensors screen, the FSR grain
+ * The sensor side is one live connection ([sensorSession]) shared by the Sensors screen, the FSR grain
  * mode ([grainEngine]) and the glove screens ([glove]), which all listen to the same stream.
  */
 class AppContainer(
@@ -36,9 +36,9 @@ class AppContainer(
     val player: HapticPlayer,
     val vibration: VibrationOutput,
     val usbDevices: UsbDevices,
-    val sensorHub: SensorSession,
+    val sensorSession: SensorSession,
     val grainEngine: GrainEngine,
-    val glove: HubGloveSource,
+    val glove: SessionGloveSource,
     val calibrations: CalibrationStore,
     /** Makes the simulated partner of the handshake screen's toggle. */
     val simulatedPartner: () -> PartnerHand = { SimulatedPartner() },
@@ -56,7 +56,7 @@ class AppContainer(
      * [org.hapticon.sensor.protocol.framed.FramedEncoder] per session, so their commands never reuse a sequence
      * number and each ack matches the command it answers (FramedEncoder: one sequence per direction).
      */
-    val stimulator: StimulatorLink by lazy { HubStimulatorLink(sensorHub) }
+    val stimulator: StimulatorLink by lazy { SessionStimulatorLink(sensorSession) }
 
     /** A pattern file shared to or opened with Hapticon, waiting for the Icons screen to import it. */
     val pendingPatternFile: kotlinx.coroutines.flow.MutableStateFlow<android.net.Uri?> = kotlinx.coroutines.flow.MutableStateFlow(null)
@@ -70,8 +70,8 @@ class AppContainer(
             calibrations: CalibrationStore = SharedPreferencesCalibrationStore(context),
         ): AppContainer {
             // The reader thread decides the grains: raised to urgent-audio priority before its first read.
-            val hub = SensorSession(usbDevices, readerThreadSetup = ReaderThreadPriority::applyToCurrentThread)
-            val grains = GrainEngine(vibration).also { hub.addFrameListener(it) }
+            val session = SensorSession(usbDevices, readerThreadSetup = ReaderThreadPriority::applyToCurrentThread)
+            val grains = GrainEngine(vibration).also { session.addFrameListener(it) }
             // One database for chat and study: two Room instances on one file would not see each other's writes.
             val db = HapticonDatabase.create(context)
             val chat = ChatComponent.create(context, db = db)
@@ -82,13 +82,13 @@ class AppContainer(
                 player = chat.player,
                 vibration = vibration,
                 usbDevices = usbDevices,
-                sensorHub = hub,
+                sensorSession = session,
                 grainEngine = grains,
-                glove = HubGloveSource(hub),
+                glove = SessionGloveSource(session),
                 calibrations = calibrations,
                 chat = chat,
                 study = StudyComponent.create(context, db),
-                gestures = GestureComponent.create(context, hub) { grains.currentConfig },
+                gestures = GestureComponent.create(context, session) { grains.currentConfig },
                 // The chat's pattern store: the Icons tab and the composer see the same patterns.
                 patterns = chat.patterns,
             )

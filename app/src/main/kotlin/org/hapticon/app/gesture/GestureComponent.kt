@@ -42,13 +42,13 @@ class GestureComponent(
          * Recordings in `filesDir/recordings`, the models in `filesDir/gesture-model.json` and `filesDir/social-touch-model.json`;
          * the sensor board's force channel is levelled against the grain mode's calibrated range ([grains]).
          */
-        fun create(context: Context, hub: SensorSession, grains: () -> GrainConfig? = { null }): GestureComponent {
+        fun create(context: Context, session: SensorSession, grains: () -> GrainConfig? = { null }): GestureComponent {
             val sensors = context.getSystemService(SensorManager::class.java)
             val accelerometer = sensors?.let { AccelerometerGestureSource(it) }?.takeIf { it.available }
             return GestureComponent(
                 touch = TouchGestureSource(),
                 accelerometer = accelerometer,
-                sensorBoard = SensorHubGestureSource(hub, grains),
+                sensorBoard = SensorSessionGestureSource(session, grains),
                 recordings = FileRecordingStore(File(context.filesDir, "recordings")),
                 models = FileGestureModelStore(File(context.filesDir, "gesture-model.json")),
                 socialTouch = FileSocialTouchModelStore(File(context.filesDir, "social-touch-model.json")),

@@ -3,7 +3,7 @@ package org.hapticon.app.gesture
 import org.hapticon.gesture.Channel
 import org.hapticon.gesture.Recording
 import org.hapticon.sensor.live.ChannelHistory
-import org.hapticon.sensor.live.LiveFrame
+import org.hapticon.sensor.protocol.LiveFrame
 
 /**
  * Collects the frames of one recording from a [GestureSource] (a [GestureSink], written on the source's

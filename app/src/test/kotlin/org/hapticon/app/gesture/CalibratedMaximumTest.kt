@@ -2,7 +2,7 @@ package org.hapticon.app.gesture
 
 import org.hapticon.sensor.grains.ForceInput
 import org.hapticon.sensor.grains.GrainConfig
-import org.hapticon.sensor.live.StreamInfo
+import org.hapticon.sensor.protocol.StreamInfo
 import org.hapticon.sensor.protocol.SensorProtocol
 import org.hapticon.gesture.Channel
 import org.hapticon.gesture.Recording
@@ -15,34 +15,34 @@ import org.junit.Assert.assertEquals
 import org.junit.Assert.assertNull
 import org.junit.Test
 
-/** The sensor board's calibrated maximum as the recorder's level reference ([SensorHubGestureSource.calibratedMaximum]). */
+/** The sensor board's calibrated maximum as the recorder's level reference ([SensorSessionGestureSource.calibratedMaximum]). */
 class CalibratedMaximumTest {
     private val framed = StreamInfo(SensorProtocol.FRAMED, listOf("fsr", "grams", "angle"), listOf(ChannelUnit.RAW, ChannelUnit.GRAM, ChannelUnit.CENTIDEGREE), adcBits = 12, sampleRateHz = 1000)
     private val csv = StreamInfo(SensorProtocol.CSV, listOf("a", "b"))
 
     @Test
     fun calibratedMaximum_framedRawChannel_isTheAdcFullScale() {
-        assertEquals(4095.0, SensorHubGestureSource.calibratedMaximum(framed, 0, null)!!, 0.0)
+        assertEquals(4095.0, SensorSessionGestureSource.calibratedMaximum(framed, 0, null)!!, 0.0)
         // A calibrated unit without a grain range, and a CSV stream, state no maximum.
-        assertNull(SensorHubGestureSource.calibratedMaximum(framed, 1, null))
-        assertNull(SensorHubGestureSource.calibratedMaximum(framed, 2, null))
-        assertNull(SensorHubGestureSource.calibratedMaximum(csv, 0, null))
-        assertNull(SensorHubGestureSource.calibratedMaximum(framed, 7, null))
+        assertNull(SensorSessionGestureSource.calibratedMaximum(framed, 1, null))
+        assertNull(SensorSessionGestureSource.calibratedMaximum(framed, 2, null))
+        assertNull(SensorSessionGestureSource.calibratedMaximum(csv, 0, null))
+        assertNull(SensorSessionGestureSource.calibratedMaximum(framed, 7, null))
     }
 
     @Test
     fun calibratedMaximum_grainForceChannel_isTheCalibratedRangeInTheChannelsUnit() {
         val range = GrainSettings(maxNewtons = 10.0)
         // Grams on the framed board: 10 N = 1019.7 g.
-        assertEquals(10.0 / 0.00980665, SensorHubGestureSource.calibratedMaximum(framed, 1, GrainConfig(channel = 1, settings = range))!!, 1e-9)
+        assertEquals(10.0 / 0.00980665, SensorSessionGestureSource.calibratedMaximum(framed, 1, GrainConfig(channel = 1, settings = range))!!, 1e-9)
         // A CSV channel the user said carries newtons or millinewtons.
-        assertEquals(10.0, SensorHubGestureSource.calibratedMaximum(csv, 0, GrainConfig(channel = 0, input = ForceInput.NEWTONS, settings = range))!!, 0.0)
-        assertEquals(10_000.0, SensorHubGestureSource.calibratedMaximum(csv, 0, GrainConfig(channel = 0, input = ForceInput.MILLINEWTONS, settings = range))!!, 0.0)
+        assertEquals(10.0, SensorSessionGestureSource.calibratedMaximum(csv, 0, GrainConfig(channel = 0, input = ForceInput.NEWTONS, settings = range))!!, 0.0)
+        assertEquals(10_000.0, SensorSessionGestureSource.calibratedMaximum(csv, 0, GrainConfig(channel = 0, input = ForceInput.MILLINEWTONS, settings = range))!!, 0.0)
         // An FSR read as ADC counts over CSV: the configured ADC's full scale; as millivolts, the 5 V supply.
-        assertEquals(1023.0, SensorHubGestureSource.calibratedMaximum(csv, 0, GrainConfig(channel = 0, adcBits = 10, settings = range))!!, 0.0)
-        assertEquals(5000.0, SensorHubGestureSource.calibratedMaximum(csv, 0, GrainConfig(channel = 0, input = ForceInput.FSR_MILLIVOLTS))!!, 0.0)
+        assertEquals(1023.0, SensorSessionGestureSource.calibratedMaximum(csv, 0, GrainConfig(channel = 0, adcBits = 10, settings = range))!!, 0.0)
+        assertEquals(5000.0, SensorSessionGestureSource.calibratedMaximum(csv, 0, GrainConfig(channel = 0, input = ForceInput.FSR_MILLIVOLTS))!!, 0.0)
         // The grain range applies to its own channel only.
-        assertNull(SensorHubGestureSource.calibratedMaximum(csv, 1, GrainConfig(channel = 0, input = ForceInput.NEWTONS, settings = range)))
+        assertNull(SensorSessionGestureSource.calibratedMaximum(csv, 1, GrainConfig(channel = 0, input = ForceInput.NEWTONS, settings = range)))
     }
 
     @Test
@@ -56,7 +56,7 @@ class CalibratedMaximumTest {
                 else -> 0.0
             }
         }
-        val full = SensorHubGestureSource.calibratedMaximum(csv, 0, GrainConfig(channel = 0, input = ForceInput.NEWTONS, settings = GrainSettings(maxNewtons = 10.0)))
+        val full = SensorSessionGestureSource.calibratedMaximum(csv, 0, GrainConfig(channel = 0, input = ForceInput.NEWTONS, settings = GrainSettings(maxNewtons = 10.0)))
         val recording = Recording(100.0, listOf(Channel("force", "", press, full)))
         val fit = IconFitter.fit(recording, options = FitOptions(levelReference = LevelReference.FullScale))
         assertEquals(10.0, fit.report.levelReferenceValue, 0.0)

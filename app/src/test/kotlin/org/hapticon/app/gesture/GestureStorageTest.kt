@@ -113,10 +113,10 @@ class GestureStorageTest {
 
     @Test
     fun sensorBoard_withoutAStreamSaysWhereToConnect_namesMadeSafe() {
-        val source = SensorHubGestureSource(SensorSession(TestUsbDevices()))
+        val source = SensorSessionGestureSource(SensorSession(TestUsbDevices()))
         assertEquals(emptyList<GestureChannel>(), source.channels)
         val e = assertThrows(IllegalStateException::class.java) { source.start {} }
         assertEquals("No sensor board is streaming: connect one in the Sensors tab and let it run for a second", e.message)
-        assertEquals(listOf("force_N", "ch1", "a_b", "a_b_2"), SensorHubGestureSource.safeNames(listOf("force N", " ", "a,b", "a b")))
+        assertEquals(listOf("force_N", "ch1", "a_b", "a_b_2"), SensorSessionGestureSource.safeNames(listOf("force N", " ", "a,b", "a b")))
     }
 }

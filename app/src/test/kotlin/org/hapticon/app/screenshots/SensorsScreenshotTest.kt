@@ -12,8 +12,8 @@ import org.hapticon.app.feature.sensors.StreamUi
 import org.hapticon.testing.TEST_UNO
 import org.hapticon.sensor.grains.BinDistribution
 import org.hapticon.sensor.live.ChannelHistory
-import org.hapticon.sensor.live.ConnectionState
-import org.hapticon.sensor.live.LiveFrame
+import org.hapticon.sensor.live.SessionState
+import org.hapticon.sensor.protocol.LiveFrame
 import org.hapticon.sensor.live.StopCause
 import org.hapticon.sensor.live.StreamCounters
 import org.hapticon.sensor.protocol.SensorProtocol
@@ -36,14 +36,14 @@ class SensorsScreenshotTest : ScreenshotTest() {
         }
     }
 
-    private fun ready(connection: ConnectionState, stream: StreamUi?, devices: Boolean = true) = SensorsUiState.Ready(
+    private fun ready(connection: SessionState, stream: StreamUi?, devices: Boolean = true) = SensorsUiState.Ready(
         devices = if (devices) listOf(TEST_UNO) else emptyList(),
         selectedDeviceId = if (devices) TEST_UNO.id else null,
         protocol = SensorProtocol.FRAMED,
         baudRate = 115_200,
         connection = connection,
-        canConnect = devices && connection !is ConnectionState.Streaming,
-        canDisconnect = connection is ConnectionState.Streaming,
+        canConnect = devices && connection !is SessionState.Streaming,
+        canDisconnect = connection is SessionState.Streaming,
         stream = stream,
         grains = GrainUi(
             enabled = stream != null, channel = 1, channelNames = names, input = null, count = 24,
@@ -65,18 +65,18 @@ class SensorsScreenshotTest : ScreenshotTest() {
 
     @Test
     fun sensors_streaming_showsLivePlots() = screen("sensors-live", Variant.MAIN) {
-        SensorsScreen(ready(ConnectionState.Streaming(TEST_UNO, SensorProtocol.FRAMED, 115_200), stream(2000)), SensorsActions())
+        SensorsScreen(ready(SessionState.Streaming(TEST_UNO, SensorProtocol.FRAMED, 115_200), stream(2000)), SensorsActions())
     }
 
     @Test
     fun sensors_noBoard_explainsWhatToPlugIn() = screen("sensors-no-board", Variant.MAIN) {
-        SensorsScreen(ready(ConnectionState.Idle, stream = null, devices = false), SensorsActions())
+        SensorsScreen(ready(SessionState.Idle, stream = null, devices = false), SensorsActions())
     }
 
     @Test
     fun sensors_unplugged_keepsWhatArrived() = screen("sensors-unplugged") {
         SensorsScreen(
-            ready(ConnectionState.Stopped(TEST_UNO, SensorProtocol.FRAMED, StopCause.UNPLUGGED), stream(2000)),
+            ready(SessionState.Stopped(TEST_UNO, SensorProtocol.FRAMED, StopCause.UNPLUGGED), stream(2000)),
             SensorsActions(),
         )
     }

@@ -93,7 +93,7 @@ object BenchReport {
             baseline.p50Micros, baseline.p99Micros, baseline.maxMicros, baseline.grains, baseline.maxWithoutRunQueueMicros,
             allocation(baseline.handlerBytesPerSample),
         )
-        line("  framed sample written to a FakeSerialPort -> SensorReader thread -> FramedDecoder -> LiveFrame -> GrainEngine")
+        line("  framed sample written to a BenchSerialLine -> SensorReader thread -> FramedDecoder -> LiveFrame -> GrainEngine")
         line("  (FSR force, GrainDecider) -> its GrainSink encodes the set-outputs command, written back; one sample in flight at a time")
     }
 

@@ -8,15 +8,13 @@ import org.hapticon.sensor.grains.GrainEngine
 import org.hapticon.sensor.grains.GrainDecider
 import org.hapticon.sensor.grains.GrainSettings
 import org.hapticon.sensor.grains.GrainSink
-import org.hapticon.sensor.live.FrameListener
-import org.hapticon.sensor.live.LiveFrame
-import org.hapticon.sensor.live.StreamInfo
+import org.hapticon.sensor.protocol.FrameListener
+import org.hapticon.sensor.protocol.LiveFrame
+import org.hapticon.sensor.protocol.StreamInfo
 import org.hapticon.sensor.live.liveDecoderFor
-import org.hapticon.sensor.port.FakeSerialPort
 import org.hapticon.sensor.port.SensorReader
-import org.hapticon.sensor.protocol.ProtocolListener
+import org.hapticon.sensor.protocol.framed.FramedDecoder
 import org.hapticon.sensor.protocol.SensorProtocol
-import org.hapticon.sensor.protocol.decoderFor
 import org.hapticon.sensor.protocol.framed.FramedEncoder
 import org.hapticon.sensor.protocol.framed.FramedProtocol
 import org.hapticon.sensor.protocol.framed.SampleFrame
@@ -35,8 +33,8 @@ import kotlin.math.ceil
  * rank) and [maxMicros] over the [grains] measured, which [samples] samples (after warm-up) caused.
  * [handlerBytesPerSample]: bytes allocated per measured sample from the decoded frame to the command
  * encoded (force, decision, encoding); [readerBytesPerSample]: the reader thread's whole allocation per
- * sample, which adds decoding (0, measured by the decoding bench) and the [FakeSerialPort]'s own work (a
- * lock condition node per wait, a recorded copy per write: the test double's, not the app's). NaN where
+ * sample, which adds decoding (0, measured by the decoding bench) and the [BenchSerialLine]'s own work (a
+ * lock condition node per wait, a recorded copy per write: the bench's line, not the app's). NaN where
  * not counted.
  *
  * Where the worst case comes from, measured in the same run (Linux; NaN or 0 elsewhere): for each grain the
@@ -89,7 +87,7 @@ data class GrainLatencyResult(
 )
 
 /**
- * Measures the app's grain path end to end on a [FakeSerialPort]: the bench thread writes one framed FSR
+ * Measures the app's grain path end to end on a [BenchSerialLine]: the bench thread writes one framed FSR
  * sample ([SyntheticPress], 1 kHz, 12 bit) into the port; a [SensorReader] thread reads and decodes it, and
  * [route] turns it into a grain decision; when a grain starts a set-outputs command (output 0 at full scale) is
  * encoded and written back to the port. Each latency runs from just before the sample's write to just after
@@ -158,8 +156,7 @@ class GrainLatency(
         val runQueue = ByteBuffer.allocateDirect(RUN_QUEUE_BYTES)
         var schedstat: FileChannel? = null
         val handled = AtomicInteger(0)
-        val fake = FakeSerialPort()
-        val port = WarmPort(fake, readerSpinMicros * 1_000L)
+        val port = WarmPort(BenchSerialLine(), readerSpinMicros * 1_000L)
         val waiter = Thread.currentThread()
         val wiring = PathWiring(port, writtenAt, latencies, handled, warmupSamples, total, waiter)
         val side = when (route) {
@@ -169,7 +166,7 @@ class GrainLatency(
         var failure: Throwable? = null
         val decoder = when (side) {
             is EnginePath -> liveDecoderFor(SensorProtocol.FRAMED, side)
-            is ArithmeticPath -> decoderFor(SensorProtocol.FRAMED, side)
+            is ArithmeticPath -> FramedDecoder(side)
         }
         val reader = SensorReader(port, decoder, { _, cause -> failure = cause }, bufferSize = READ_BYTES, threadSetup = {
             // Before the first read: this thread's /proc directory ("/proc/PID/task/TID"), then the caller's set-up.
@@ -322,7 +319,7 @@ class GrainLatency(
             val entered = threadBytes()
             if (i == warmupSamples) bytesAtWarmupEnd = entered
             val length = decide()
-            // Counted up to the command encoded: the port write is the FakeSerialPort's (it records a copy).
+            // Counted up to the command encoded: the port write is the BenchSerialLine's (it records a copy).
             if (i >= warmupSamples) handlerBytesSum += threadBytes() - entered
             if (length > 0) {
                 port.write(command, 0, length, WRITE_TIMEOUT_MILLIS)
@@ -361,7 +358,7 @@ class GrainLatency(
     }
 
     /** The baseline: the engine's arithmetic re-created on the decoded [SampleFrame] (the bench's figure before issue 13's work). */
-    private class ArithmeticPath(wiring: PathWiring) : GrainPath(wiring), ProtocolListener {
+    private class ArithmeticPath(wiring: PathWiring) : GrainPath(wiring), FramedDecoder.Listener {
         private val converter = FsrForceConverter()
         private val decider = GrainDecider(GrainSettings(), SyntheticPress.SAMPLE_RATE_HZ.toDouble())
 
@@ -402,19 +399,19 @@ class GrainLatency(
     }
 
     /**
-     * The [FakeSerialPort] as the reader sees it, optionally kept warm: after a read that delivered bytes, the
+     * The [BenchSerialLine] as the reader sees it, optionally kept warm: after a read that delivered bytes, the
      * next read first spins up to [spinNanos] watching for a sample the bench has enqueued since ([enqueued], a
      * volatile count), so one that arrives within the window is read without the reader ever parking. With 0
      * it is the plain port: the reader blocks in the port's read and is woken by each sample.
      */
-    private class WarmPort(private val fake: FakeSerialPort, private val spinNanos: Long) : org.hapticon.sensor.port.SerialPort by fake {
+    private class WarmPort(private val line: BenchSerialLine, private val spinNanos: Long) : org.hapticon.sensor.port.SerialPort by line {
         @Volatile private var enqueued = 0L
         private var consumed = 0L
         private var delivered = false
 
         /** Enqueues [bytes] as one read and counts it. */
         fun enqueue(bytes: ByteArray) {
-            fake.enqueue(bytes)
+            line.send(bytes)
             enqueued++
         }
 
@@ -423,7 +420,7 @@ class GrainLatency(
                 val until = System.nanoTime() + spinNanos
                 while (enqueued == consumed && System.nanoTime() < until) Thread.onSpinWait()
             }
-            val n = fake.read(buffer, offset, length, timeoutMillis)
+            val n = line.read(buffer, offset, length, timeoutMillis)
             delivered = n > 0
             if (delivered) consumed = enqueued.coerceAtMost(consumed + 1)
             return n

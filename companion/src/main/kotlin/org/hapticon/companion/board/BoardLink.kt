@@ -8,11 +8,11 @@ import org.hapticon.sensor.grains.FirmwareStimulus
 import org.hapticon.sensor.live.CommandHandle
 import org.hapticon.sensor.live.CommandState
 import org.hapticon.sensor.live.CommandWriter
-import org.hapticon.sensor.live.ConnectionState
+import org.hapticon.sensor.live.SessionState
 import org.hapticon.sensor.live.OutgoingCommand
 import org.hapticon.sensor.live.SensorDevice
 import org.hapticon.sensor.live.SensorSession
-import org.hapticon.sensor.live.StreamInfo
+import org.hapticon.sensor.protocol.StreamInfo
 import org.hapticon.sensor.live.UsbDevices
 import org.hapticon.sensor.live.describeProblem
 import org.hapticon.sensor.port.LineSettings
@@ -59,7 +59,7 @@ class BoardLink(
         val deadline = System.nanoTime() + timeoutMillis * 1_000_000
         while (System.nanoTime() - deadline < 0) {
             session.currentInfo()?.takeIf { it.adcBits != null }?.let { return it }
-            if (session.state.value !is ConnectionState.Streaming) return null
+            if (session.state.value !is SessionState.Streaming) return null
             Thread.sleep(pollMillis)
         }
         return session.currentInfo()?.takeIf { it.adcBits != null }
@@ -90,7 +90,7 @@ class BoardLink(
     }
 
     private fun streamStopped(): String = when (val s = session.state.value) {
-        is ConnectionState.Stopped -> "the connection stopped (${s.cause.name.lowercase()}${s.message?.let { ": $it" }.orEmpty()})"
+        is SessionState.Stopped -> "the connection stopped (${s.cause.name.lowercase()}${s.message?.let { ": $it" }.orEmpty()})"
         else -> "the board is not connected"
     }
 

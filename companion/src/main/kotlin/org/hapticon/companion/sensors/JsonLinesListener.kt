@@ -1,30 +1,26 @@
 package org.hapticon.companion.sensors
 
-import kotlinx.serialization.json.JsonObject
+import kotlinx.serialization.SerializationStrategy
 import org.hapticon.core.io.SchemaJson
-import org.hapticon.sensor.protocol.ProtocolListener
-import org.hapticon.sensor.protocol.csv.CsvSample
-import org.hapticon.sensor.protocol.framed.AckStatus
-import org.hapticon.sensor.protocol.framed.DeviceInfo
-import org.hapticon.sensor.protocol.framed.SampleFrame
-import org.hapticon.sensor.protocol.lucid.LucidGloveFrame
+import org.hapticon.sensor.protocol.FrameDocuments
+import org.hapticon.sensor.protocol.FrameSink
+import org.hapticon.sensor.protocol.LiveFrame
+import org.hapticon.sensor.protocol.StreamInfo
 import java.io.Writer
 
-/** Listens to any of the decoders and writes each frame to [out] as one line of compact JSON ([FrameJson]). */
-class JsonLinesListener(private val out: Writer) : ProtocolListener {
-    override fun onSample(sample: CsvSample) = write(FrameJson.csv(sample))
+/**
+ * Hears any protocol's decoder and writes each of the protocol's own documents (a frame, device info, an ack;
+ * [org.hapticon.sensor.protocol.SensorProtocol.decoder]) to [out] as one line of compact JSON.
+ */
+class JsonLinesListener(private val out: Writer) : FrameSink, FrameDocuments {
+    override val documents: FrameDocuments get() = this
 
-    override fun onFrame(frame: LucidGloveFrame) = write(FrameJson.lucid(frame))
+    // The protocol writes its own document of every frame; the common shape adds nothing to it.
+    override fun onFrame(frame: LiveFrame, info: StreamInfo) {}
 
-    override fun onSample(frame: SampleFrame) = write(FrameJson.sample(frame))
-
-    override fun onDeviceInfo(info: DeviceInfo) = write(FrameJson.deviceInfo(info))
-
-    override fun onAck(sequence: Int, status: AckStatus, detail: Int) = write(FrameJson.ack(sequence, status, detail))
-
-    /** Writes [value] as one line. */
-    fun write(value: JsonObject) {
-        out.write(SchemaJson.encodeElement(value))
+    /** Writes [document] as one line. */
+    override fun <T> write(serializer: SerializationStrategy<T>, document: T) {
+        out.write(SchemaJson.encode(serializer, document))
         out.write("\n")
     }
 }

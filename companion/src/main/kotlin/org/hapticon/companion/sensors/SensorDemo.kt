@@ -4,10 +4,9 @@ import org.hapticon.companion.cli.OutputFiles
 import org.hapticon.sensor.glove.HandshakeCsv
 import org.hapticon.sensor.grains.GrainSettings
 import org.hapticon.sensor.port.ReplayPort
-import org.hapticon.sensor.protocol.ProtocolListener
+import org.hapticon.sensor.protocol.framed.FramedDecoder
 import org.hapticon.sensor.protocol.SensorProtocol
 import org.hapticon.sensor.protocol.stream.StreamStats
-import org.hapticon.sensor.protocol.decoderFor
 import org.hapticon.sensor.protocol.framed.ChannelUnit
 import org.hapticon.sensor.protocol.framed.DeviceInfo
 import org.hapticon.sensor.protocol.framed.FramedEncoder
@@ -94,7 +93,7 @@ object SensorDemo {
     /** The samples of a framed [recording] as a `time_s,voltage` CSV: device time in seconds, counts in volts. */
     fun voltageCsv(recording: ByteArray): String {
         val csv = StringBuilder("time_s,voltage\n")
-        val decoder = decoderFor(SensorProtocol.FRAMED, object : ProtocolListener {
+        val decoder = FramedDecoder(object : FramedDecoder.Listener {
             override fun onSample(frame: SampleFrame) {
                 val volts = SyntheticPress.voltsOfCounts(frame.values[0])
                 csv.append(String.format(Locale.ROOT, "%.6f,%.5f\n", frame.timestampMicros / 1e6, volts))

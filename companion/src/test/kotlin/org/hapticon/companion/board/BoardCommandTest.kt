@@ -6,7 +6,7 @@ import org.hapticon.sensor.electrotactile.ElectrodeMask
 import org.hapticon.sensor.grains.BinDistribution
 import org.hapticon.sensor.grains.FirmwareGrainParams
 import org.hapticon.sensor.grains.setGrains
-import org.hapticon.sensor.live.symbol
+import org.hapticon.sensor.protocol.framed.symbol
 import org.hapticon.sensor.port.LineSettings
 import org.hapticon.sensor.port.SerialPort
 import org.hapticon.sensor.protocol.framed.AckStatus

@@ -7,7 +7,7 @@ import org.hapticon.companion.CliResult
 import org.hapticon.companion.EXIT_OK
 import org.hapticon.companion.cli.Console
 import org.hapticon.companion.reportFailure
-import org.hapticon.sensor.port.FakeSerialPort
+import org.hapticon.testing.FakeSerialPort
 import org.hapticon.sensor.port.LineSettings
 import org.hapticon.sensor.port.SerialPort
 import org.hapticon.sensor.protocol.framed.AckStatus

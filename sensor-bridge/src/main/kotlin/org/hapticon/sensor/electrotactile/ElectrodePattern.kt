@@ -23,8 +23,8 @@ public data class ElectrodePattern(val bits: Int) {
 
     /**
      * Whether this pattern has enough electrodes for a compliance grain to be felt: at least
-     * [MIN_COMPLIANCE_ELECTRODES] (Shaping Compliance's pilot found 1–3 too weak: 003_8ca1dc8f53472543.txt:107). [GrainOutput] and the
-     * compliance protocol refuse patterns below it; other uses (calibrating one electrode) may drive fewer.
+     * [MIN_COMPLIANCE_ELECTRODES] (Shaping Compliance's pilot found 1–3 too weak: 003_8ca1dc8f53472543.txt:107). [org.hapticon.sensor.grains.FirmwareGrainParams]
+     * and the compliance protocol refuse patterns below it; other uses (calibrating one electrode) may drive fewer.
      */
     public val isStrongEnoughForCompliance: Boolean get() = activeCount >= MIN_COMPLIANCE_ELECTRODES
 

@@ -7,11 +7,11 @@ import kotlinx.coroutines.flow.MutableStateFlow
 import kotlinx.coroutines.flow.StateFlow
 import kotlinx.coroutines.flow.asStateFlow
 import kotlinx.coroutines.flow.map
-import org.hapticon.sensor.live.ConnectionState
-import org.hapticon.sensor.live.FrameListener
-import org.hapticon.sensor.live.LiveFrame
+import org.hapticon.sensor.live.SessionState
+import org.hapticon.sensor.protocol.FrameListener
+import org.hapticon.sensor.protocol.LiveFrame
 import org.hapticon.sensor.live.SensorSession
-import org.hapticon.sensor.live.StreamInfo
+import org.hapticon.sensor.protocol.StreamInfo
 import org.hapticon.sensor.protocol.SensorProtocol
 import org.hapticon.sensor.protocol.framed.ChannelUnit
 import org.hapticon.sensor.protocol.lucid.LucidForceFeedback
@@ -54,7 +54,7 @@ public interface GloveSource {
 public data class GloveChannels(val thumb: Int? = null, val middle: Int? = null, val adcBits: Int? = null) {
     public fun thumbFor(@Suppress("UNUSED_PARAMETER") protocol: SensorProtocol): Int = thumb ?: 0
     public fun middleFor(protocol: SensorProtocol): Int = middle ?: if (protocol == SensorProtocol.LUCID_GLOVES) 2 else 1
-    public fun adcBitsFor(info: StreamInfo): Int = adcBits ?: info.adcBits ?: if (info.protocol == SensorProtocol.LUCID_GLOVES) 12 else 10
+    public fun adcBitsFor(info: StreamInfo): Int = adcBits ?: info.adcBits ?: info.protocol.assumedAdcBits
 }
 
 /**
@@ -65,7 +65,7 @@ public data class GloveChannels(val thumb: Int? = null, val middle: Int? = null,
  * Force feedback goes back over the same line as LucidGloves commands (`A<n>B<n>C<n>D<n>E<n>`), and
  * only while a LucidGloves stream runs: CSV and framed boards do not speak that encoding.
  */
-public class HubGloveSource(
+public class SessionGloveSource(
     private val session: SensorSession,
     override val divider: FlexDivider = FlexDivider(),
 ) : GloveSource, FrameListener {
@@ -79,7 +79,7 @@ public class HubGloveSource(
         session.addFrameListener(this)
     }
 
-    override val connected: Flow<Boolean> = session.state.map { it is ConnectionState.Streaming }
+    override val connected: Flow<Boolean> = session.state.map { it is SessionState.Streaming }
 
     override val acceptsForceFeedback: Flow<Boolean> = session.state.map(::takesForceFeedback)
 
@@ -138,5 +138,5 @@ public class HubGloveSource(
     }
 }
 
-private fun takesForceFeedback(state: ConnectionState): Boolean =
-    state is ConnectionState.Streaming && state.protocol == SensorProtocol.LUCID_GLOVES
+private fun takesForceFeedback(state: SessionState): Boolean =
+    state is SessionState.Streaming && state.protocol == SensorProtocol.LUCID_GLOVES

@@ -1,6 +1,6 @@
 package org.hapticon.sensor.grains
 
-import org.hapticon.sensor.live.StreamInfo
+import org.hapticon.sensor.protocol.StreamInfo
 import org.hapticon.sensor.protocol.framed.ChannelUnit
 
 /**

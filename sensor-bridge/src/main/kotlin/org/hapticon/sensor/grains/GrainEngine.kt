@@ -4,9 +4,9 @@ import kotlinx.coroutines.flow.MutableStateFlow
 import kotlinx.coroutines.flow.StateFlow
 import kotlinx.coroutines.flow.asStateFlow
 import org.hapticon.core.render.VibrationWaveform
-import org.hapticon.sensor.live.FrameListener
-import org.hapticon.sensor.live.LiveFrame
-import org.hapticon.sensor.live.StreamInfo
+import org.hapticon.sensor.protocol.FrameListener
+import org.hapticon.sensor.protocol.LiveFrame
+import org.hapticon.sensor.protocol.StreamInfo
 import org.hapticon.sensor.protocol.framed.ChannelUnit
 import java.util.concurrent.atomic.AtomicReference
 

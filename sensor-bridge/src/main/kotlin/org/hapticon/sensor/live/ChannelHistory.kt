@@ -1,5 +1,7 @@
 package org.hapticon.sensor.live
 
+import org.hapticon.sensor.protocol.LiveFrame
+
 /**
  * Where a live plot reads its points from. (Compose's strong skipping compares implementations by
  * identity, so this plain interface needs no `@Stable` to keep a plot from recomposing.)

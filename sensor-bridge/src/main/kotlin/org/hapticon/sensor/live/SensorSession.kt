@@ -15,30 +15,33 @@ import org.hapticon.sensor.port.SerialPort
 import org.hapticon.sensor.protocol.SensorProtocol
 import org.hapticon.sensor.protocol.stream.StreamDecoder
 import org.hapticon.sensor.protocol.stream.StreamStats
+import org.hapticon.sensor.protocol.LiveFrame
+import org.hapticon.sensor.protocol.StreamInfo
+import org.hapticon.sensor.protocol.FrameListener
 
 /** Where the connection to a board is. */
-public sealed interface ConnectionState {
+public sealed interface SessionState {
     /** Nothing connected yet. */
-    public data object Idle : ConnectionState
+    public data object Idle : SessionState
 
     /** The system's USB permission dialog is up. */
-    public data class RequestingPermission(val device: SensorDevice) : ConnectionState
+    public data class RequestingPermission(val device: SensorDevice) : SessionState
 
     /** Opening the port and configuring the chip. */
-    public data class Opening(val device: SensorDevice) : ConnectionState
+    public data class Opening(val device: SensorDevice) : SessionState
 
     /** Reading and decoding. */
-    public data class Streaming(val device: SensorDevice, val protocol: SensorProtocol, val baudRate: Int) : ConnectionState
+    public data class Streaming(val device: SensorDevice, val protocol: SensorProtocol, val baudRate: Int) : SessionState
 
     /** The stream stopped; everything decoded until then is kept. */
     public data class Stopped(val device: SensorDevice, val protocol: SensorProtocol, val cause: StopCause, val message: String? = null) :
-        ConnectionState
+        SessionState
 
     /** The user refused USB access. */
-    public data class PermissionDenied(val device: SensorDevice) : ConnectionState
+    public data class PermissionDenied(val device: SensorDevice) : SessionState
 
     /** The board could not be opened. */
-    public data class Failed(val device: SensorDevice, val message: String) : ConnectionState
+    public data class Failed(val device: SensorDevice, val message: String) : SessionState
 }
 
 /** Why a stream stopped. */
@@ -57,9 +60,9 @@ public enum class StopCause {
 }
 
 /**
- * The one live connection to a sensor board, as a state machine over [ConnectionState]: opens it
+ * The one live connection to a sensor board, as a state machine over [SessionState]: opens it
  * through [usb], reads it on a thread of its own with [SensorReader], decodes it with the chosen
- * [SensorProtocol] ([LiveDecoder] over [org.hapticon.sensor.protocol.decoderFor]), and hands every
+ * [SensorProtocol] ([LiveDecoder] over [SensorProtocol.decoder]), and hands every
  * frame to the registered [FrameListener]s (FSR grains, glove) on the reading thread. The newest
  * values, counters and rate are kept by a [StreamTally] (copied by [snapshot]), the plot points by
  * [history]; commands to the board go through [commands] ([CommandWriter]: settings coalesce per key, events
@@ -80,7 +83,7 @@ public class SensorSession(
     private val commands: CommandWriter = CommandWriter(),
     private val readerThreadSetup: () -> Unit = {},
 ) {
-    private val connection = MutableStateFlow<ConnectionState>(ConnectionState.Idle)
+    private val connection = MutableStateFlow<SessionState>(SessionState.Idle)
     private val listeners = CopyOnWriteArrayList<FrameListener>()
     private val tally = StreamTally()
 
@@ -90,7 +93,7 @@ public class SensorSession(
     private val outputError = MutableStateFlow<String?>(null)
 
     /** Where the connection is. */
-    public val state: StateFlow<ConnectionState> = connection.asStateFlow()
+    public val state: StateFlow<SessionState> = connection.asStateFlow()
 
     /** Set when a frame listener failed and was removed (e.g. a safety limit refused its output). */
     public val listenerError: StateFlow<String?> = outputError.asStateFlow()
@@ -133,7 +136,7 @@ public class SensorSession(
 
     private fun streamingPort(): SerialPort? {
         val target = port ?: return null
-        if (connection.value !is ConnectionState.Streaming || !target.isOpen) return null
+        if (connection.value !is SessionState.Streaming || !target.isOpen) return null
         return target
     }
 
@@ -165,22 +168,22 @@ public class SensorSession(
         resetData()
         outputError.value = null
         commands.clearError()
-        connection.value = ConnectionState.RequestingPermission(device)
+        connection.value = SessionState.RequestingPermission(device)
         val opened = try {
             if (!usb.requestPermission(device)) {
-                connection.value = ConnectionState.PermissionDenied(device)
+                connection.value = SessionState.PermissionDenied(device)
                 return
             }
-            connection.value = ConnectionState.Opening(device)
+            connection.value = SessionState.Opening(device)
             usb.open(device, LineSettings(baudRate = baudRate))
         } catch (e: UsbAccessDeniedException) {
-            connection.value = ConnectionState.PermissionDenied(device)
+            connection.value = SessionState.PermissionDenied(device)
             return
         } catch (e: CancellationException) {
-            connection.value = ConnectionState.Idle
+            connection.value = SessionState.Idle
             throw e
         } catch (e: IOException) {
-            connection.value = ConnectionState.Failed(device, e.message ?: e.javaClass.simpleName)
+            connection.value = SessionState.Failed(device, e.message ?: e.javaClass.simpleName)
             return
         }
         start(opened, device, protocol, baudRate)
@@ -196,7 +199,7 @@ public class SensorSession(
         val newReader = SensorReader(port, decoder, { reason, cause -> onStopped(port, device, protocol, reason, cause) }, threadSetup = readerThreadSetup)
         this.port = port
         reader = newReader
-        connection.value = ConnectionState.Streaming(device, protocol, baudRate)
+        connection.value = SessionState.Streaming(device, protocol, baudRate)
         newReader.start("hapticon-sensor-reader")
     }
 
@@ -242,7 +245,7 @@ public class SensorSession(
             else -> StopCause.FAILED
         }
         val message = if (stopCause == StopCause.FAILED) cause?.message ?: cause?.javaClass?.simpleName else null
-        connection.value = ConnectionState.Stopped(device, protocol, stopCause, message)
+        connection.value = SessionState.Stopped(device, protocol, stopCause, message)
     }
 
     /** Copies the decoder's counters after every read, so bad frames show even when no good one follows. */

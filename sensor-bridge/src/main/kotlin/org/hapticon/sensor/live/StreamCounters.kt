@@ -2,6 +2,8 @@ package org.hapticon.sensor.live
 
 import org.hapticon.sensor.protocol.stream.FrameError
 import org.hapticon.sensor.protocol.stream.StreamStats
+import org.hapticon.sensor.protocol.LiveFrame
+import org.hapticon.sensor.protocol.StreamInfo
 
 /** The decoder's counters and what happened to the commands sent to the board, copied for the UI. */
 public data class StreamCounters(

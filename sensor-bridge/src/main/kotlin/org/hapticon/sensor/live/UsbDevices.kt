@@ -25,7 +25,7 @@ public class UsbAccessDeniedException(public val device: SensorDevice) : IOExcep
 
 /**
  * The phone's USB serial boards: which are plugged in, permission, and opening one. The Android
- * implementation is the app's `AndroidUsbDevices` (over :sensor-bridge:usb); tests use a double that
+ * implementation is `AndroidUsbDevices` in :sensor-bridge:usb; tests use a double that
  * hands out fake ports. [SensorSession] opens its boards through this.
  */
 public interface UsbDevices {

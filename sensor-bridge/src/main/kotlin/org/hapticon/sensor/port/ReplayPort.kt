@@ -6,8 +6,8 @@ import java.io.IOException
 import java.io.InputStream
 
 /**
- * A [SerialPort] that plays back a recorded byte stream (for instance one captured with
- * [RecordingPort]), for the command line and for tests. Reads return successive pieces of the
+ * A [SerialPort] that plays back a recorded byte stream (a file of what a board sent), for the command
+ * line and for tests. Reads return successive pieces of the
  * recording, sized by cycling through [readSizes] (64 by default, a USB full-speed packet), so a
  * recording can be replayed with the splits it had or any others; -1 at the end. Nothing is paced:
  * a recording replays as fast as it is read.

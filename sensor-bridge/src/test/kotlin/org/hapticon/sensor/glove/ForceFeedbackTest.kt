@@ -3,12 +3,12 @@ package org.hapticon.sensor.glove
 import kotlinx.coroutines.flow.first
 import kotlinx.coroutines.runBlocking
 import org.hapticon.sensor.live.CommandWriter
-import org.hapticon.sensor.live.ConnectionState
+import org.hapticon.sensor.live.SessionState
 import org.hapticon.sensor.live.SensorSession
 import org.hapticon.testing.TEST_UNO
 import org.hapticon.testing.TestUsbDevices
 import org.hapticon.sensor.protocol.SensorProtocol
-import org.hapticon.sensor.port.FakeSerialPort
+import org.hapticon.testing.FakeSerialPort
 import org.hapticon.sensor.safety.SafetyLimitException
 import org.junit.After
 import org.junit.Assert.assertArrayEquals
@@ -22,27 +22,27 @@ import org.junit.Test
 /** Force feedback from the glove source through the session's command writer to the serial port. */
 class ForceFeedbackTest {
     // Writes run on the calling thread, so the test sees them at once.
-    private val hub = SensorSession(TestUsbDevices(), commands = CommandWriter { it.run() })
-    private val glove = HubGloveSource(hub)
+    private val session = SensorSession(TestUsbDevices(), commands = CommandWriter { it.run() })
+    private val glove = SessionGloveSource(session)
     private val port = FakeSerialPort()
 
     @After
-    fun tearDown() = hub.disconnect()
+    fun tearDown() = session.disconnect()
 
     @Test
     fun lucidGlovesStream_getsTheServoValuesAsALucidCommand() = runBlocking {
-        hub.start(port, TEST_UNO, SensorProtocol.LUCID_GLOVES, 115_200)
+        session.start(port, TEST_UNO, SensorProtocol.LUCID_GLOVES, 115_200)
 
         assertTrue(glove.acceptsForceFeedback.first())
         assertTrue(glove.forceFeedback.send(intArrayOf(0, 250, 500, 750, 1000)))
 
         assertEquals("A0B250C500D750E1000\n", String(port.writtenBytes(), Charsets.US_ASCII))
-        assertEquals(1L, hub.commandsSent)
+        assertEquals(1L, session.commandsSent)
     }
 
     @Test
     fun csvStream_takesNoForceFeedbackAndNothingIsWritten() = runBlocking {
-        hub.start(port, TEST_UNO, SensorProtocol.CSV, 115_200)
+        session.start(port, TEST_UNO, SensorProtocol.CSV, 115_200)
 
         assertFalse(glove.acceptsForceFeedback.first())
         assertFalse(glove.forceFeedback.send(intArrayOf(0, 250, 500, 750, 1000)))
@@ -53,12 +53,12 @@ class ForceFeedbackTest {
     @Test
     fun noStream_sendsNothing() {
         assertFalse(glove.forceFeedback.send(intArrayOf(0, 0, 0, 0, 0)))
-        assertFalse(hub.send(byteArrayOf(1)))
+        assertFalse(session.send(byteArrayOf(1)))
     }
 
     @Test
     fun servoValueAboveTheLimit_isRefusedBeforeAnythingIsWritten() {
-        hub.start(port, TEST_UNO, SensorProtocol.LUCID_GLOVES, 115_200)
+        session.start(port, TEST_UNO, SensorProtocol.LUCID_GLOVES, 115_200)
 
         assertThrows(SafetyLimitException::class.java) { glove.forceFeedback.send(intArrayOf(0, 0, 1001, 0, 0)) }
 
@@ -67,33 +67,33 @@ class ForceFeedbackTest {
 
     @Test
     fun stalledBoard_countsTheLostCommandAndReportsItWithoutStoppingTheStream() {
-        hub.start(port, TEST_UNO, SensorProtocol.LUCID_GLOVES, 115_200)
+        session.start(port, TEST_UNO, SensorProtocol.LUCID_GLOVES, 115_200)
         port.stallWritesAfter(4)
 
         assertTrue(glove.forceFeedback.send(intArrayOf(10, 20, 30, 40, 50)))
 
-        assertEquals(0L, hub.commandsSent)
-        assertEquals(1L, hub.commandsLost)
-        assertEquals("wrote 4 of 16 bytes before the 100 ms deadline", hub.writeError.value)
-        assertTrue(hub.state.value is ConnectionState.Streaming)
+        assertEquals(0L, session.commandsSent)
+        assertEquals(1L, session.commandsLost)
+        assertEquals("wrote 4 of 16 bytes before the 100 ms deadline", session.writeError.value)
+        assertTrue(session.state.value is SessionState.Streaming)
     }
 
     @Test
     fun queuedCommands_newestReplacesOneNotYetWritten() {
         val queued = ArrayList<Runnable>()
-        val slowHub = SensorSession(TestUsbDevices(), commands = CommandWriter { queued += it })
-        slowHub.start(port, TEST_UNO, SensorProtocol.LUCID_GLOVES, 115_200)
+        val slowSession = SensorSession(TestUsbDevices(), commands = CommandWriter { queued += it })
+        slowSession.start(port, TEST_UNO, SensorProtocol.LUCID_GLOVES, 115_200)
         try {
-            assertTrue(slowHub.send("first\n".toByteArray()))
-            assertTrue(slowHub.send("second\n".toByteArray()))
+            assertTrue(slowSession.send("first\n".toByteArray()))
+            assertTrue(slowSession.send("second\n".toByteArray()))
             assertEquals(1, queued.size)
 
             queued.single().run()
 
             assertEquals(listOf("second\n"), port.writes().map { String(it) })
-            assertNull(slowHub.writeError.value)
+            assertNull(slowSession.writeError.value)
         } finally {
-            slowHub.disconnect()
+            slowSession.disconnect()
         }
     }
 

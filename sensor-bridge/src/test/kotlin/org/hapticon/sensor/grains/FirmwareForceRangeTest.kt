@@ -1,7 +1,7 @@
 package org.hapticon.sensor.grains
 
 import org.hapticon.sensor.electrotactile.ElectrodePattern
-import org.hapticon.sensor.live.StreamInfo
+import org.hapticon.sensor.protocol.StreamInfo
 import org.hapticon.sensor.protocol.SensorProtocol
 import org.hapticon.sensor.protocol.framed.ChannelUnit
 import org.junit.Assert.assertEquals

@@ -1,8 +1,8 @@
 package org.hapticon.sensor.grains
 
 import org.hapticon.core.render.VibrationWaveform
-import org.hapticon.sensor.live.LiveFrame
-import org.hapticon.sensor.live.StreamInfo
+import org.hapticon.sensor.protocol.LiveFrame
+import org.hapticon.sensor.protocol.StreamInfo
 import org.hapticon.sensor.protocol.SensorProtocol
 import org.hapticon.sensor.protocol.framed.ChannelUnit
 import org.junit.Assert.assertArrayEquals

@@ -7,7 +7,7 @@ import org.hapticon.sensor.grains.FirmwareGrainParams
 import org.hapticon.sensor.grains.FirmwareStimulus
 import org.hapticon.sensor.grains.setGrains
 import org.hapticon.sensor.grains.stimulate
-import org.hapticon.sensor.port.FakeSerialPort
+import org.hapticon.testing.FakeSerialPort
 import org.hapticon.sensor.protocol.framed.AckStatus
 import org.hapticon.sensor.protocol.framed.Cobs
 import org.hapticon.sensor.protocol.framed.FramedEncoder

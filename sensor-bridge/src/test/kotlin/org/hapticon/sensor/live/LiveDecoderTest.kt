@@ -3,6 +3,8 @@ package org.hapticon.sensor.live
 import org.hapticon.sensor.protocol.SensorProtocol
 import org.junit.Assert.assertEquals
 import org.junit.Test
+import org.hapticon.sensor.protocol.LiveFrame
+import org.hapticon.sensor.protocol.StreamInfo
 
 /** Each protocol's frames as one [LiveFrame] shape, with the stream info the session shows. */
 class LiveDecoderTest {

@@ -2,7 +2,7 @@ package org.hapticon.sensor.live
 
 import org.hapticon.sensor.grains.FirmwareCommands
 import org.hapticon.sensor.grains.FirmwareStimulus
-import org.hapticon.sensor.port.FakeSerialPort
+import org.hapticon.testing.FakeSerialPort
 import org.hapticon.sensor.protocol.SensorProtocol
 import org.hapticon.sensor.protocol.framed.AckStatus
 import org.hapticon.sensor.protocol.framed.Cobs
@@ -98,7 +98,7 @@ class SensorSessionCommandsTest {
         assertEquals(1L, counters.malformedAcks)
         assertEquals("the short ack and the garbage", 2L, counters.badFrames)
         assertEquals(1L, counters.commandsAcknowledged)
-        assertTrue(session.state.value is ConnectionState.Streaming)
+        assertTrue(session.state.value is SessionState.Streaming)
     }
 
     @Test

@@ -3,7 +3,7 @@ package org.hapticon.sensor.live
 import org.hapticon.testing.TestUsbDevices
 import org.hapticon.testing.TEST_UNO
 import kotlinx.coroutines.runBlocking
-import org.hapticon.sensor.port.FakeSerialPort
+import org.hapticon.testing.FakeSerialPort
 import org.hapticon.sensor.protocol.SensorProtocol
 import org.hapticon.testing.RecordedStreams
 import org.junit.After
@@ -12,6 +12,8 @@ import org.junit.Assert.assertFalse
 import org.junit.Assert.assertNull
 import org.junit.Assert.assertTrue
 import org.junit.Test
+import org.hapticon.sensor.protocol.LiveFrame
+import org.hapticon.sensor.protocol.StreamInfo
 
 /**
  * The live session on the plain JVM: the connection state machine, the decoded values and counters
@@ -40,7 +42,7 @@ class SensorSessionTest {
         val snapshot = streamToTheEnd(port, SensorProtocol.CSV)
 
         assertEquals(57_600, usb.opened.single().second.baudRate)
-        assertEquals(ConnectionState.Stopped(TEST_UNO, SensorProtocol.CSV, StopCause.ENDED), session.state.value)
+        assertEquals(SessionState.Stopped(TEST_UNO, SensorProtocol.CSV, StopCause.ENDED), session.state.value)
         assertEquals(listOf("fsr0", "fsr1", "fsr2", "fsr3"), snapshot.info!!.channelNames)
         // The 20th sample: (19·37 + c·211) mod 1024.
         assertEquals(listOf(703.0, 914.0, 101.0, 312.0), snapshot.latest)
@@ -72,7 +74,7 @@ class SensorSessionTest {
 
         val snapshot = streamToTheEnd(port, SensorProtocol.FRAMED)
 
-        assertEquals(ConnectionState.Stopped(TEST_UNO, SensorProtocol.FRAMED, StopCause.UNPLUGGED), session.state.value)
+        assertEquals(SessionState.Stopped(TEST_UNO, SensorProtocol.FRAMED, StopCause.UNPLUGGED), session.state.value)
         // Sample 9, the last whole frame: (9·97 + c·331 + 9·c·13) mod 4096.
         assertEquals(listOf(873.0, 1321.0, 1769.0, 2217.0, 2665.0), snapshot.latest)
         assertEquals(StreamCounters(bytes = 264, frames = 11, badFrames = 1, droppedBytes = 9, truncatedFrames = 1), snapshot.counters)
@@ -90,7 +92,7 @@ class SensorSessionTest {
 
         runBlocking { session.connect(TEST_UNO, SensorProtocol.CSV, 115_200) }
 
-        assertEquals(ConnectionState.PermissionDenied(TEST_UNO), session.state.value)
+        assertEquals(SessionState.PermissionDenied(TEST_UNO), session.state.value)
         assertTrue(usb.opened.isEmpty())
         assertNull(session.currentInfo())
     }
@@ -99,7 +101,7 @@ class SensorSessionTest {
     fun openFails_isFailedWithTheReason() {
         runBlocking { session.connect(TEST_UNO, SensorProtocol.CSV, 115_200) } // no port scripted: opening throws
 
-        assertEquals(ConnectionState.Failed(TEST_UNO, "no such test port"), session.state.value)
+        assertEquals(SessionState.Failed(TEST_UNO, "no such test port"), session.state.value)
     }
 
     @Test
@@ -108,12 +110,12 @@ class SensorSessionTest {
         usb.ports[TEST_UNO.id] = port
         runBlocking { session.connect(TEST_UNO, SensorProtocol.CSV, 115_200) }
         waitUntil { session.snapshot().samples == 2L }
-        assertEquals(ConnectionState.Streaming(TEST_UNO, SensorProtocol.CSV, 115_200), session.state.value)
+        assertEquals(SessionState.Streaming(TEST_UNO, SensorProtocol.CSV, 115_200), session.state.value)
 
         session.disconnect()
 
         assertTrue(session.awaitStopped(5_000))
-        assertEquals(ConnectionState.Stopped(TEST_UNO, SensorProtocol.CSV, StopCause.BY_USER), session.state.value)
+        assertEquals(SessionState.Stopped(TEST_UNO, SensorProtocol.CSV, StopCause.BY_USER), session.state.value)
         assertEquals(listOf(3.0, 4.0), session.snapshot().latest)
         assertFalse(port.isOpen)
     }

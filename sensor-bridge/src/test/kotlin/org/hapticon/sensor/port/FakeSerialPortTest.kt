@@ -9,6 +9,7 @@ import org.junit.Test
 import java.io.IOException
 import java.util.concurrent.atomic.AtomicInteger
 import java.util.concurrent.atomic.AtomicReference
+import org.hapticon.testing.FakeSerialPort
 
 class FakeSerialPortTest {
     private val port = FakeSerialPort()

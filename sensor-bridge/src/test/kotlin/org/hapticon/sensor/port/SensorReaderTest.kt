@@ -14,6 +14,7 @@ import org.junit.Assert.assertTrue
 import org.junit.Test
 import java.io.IOException
 import java.util.Collections
+import org.hapticon.testing.FakeSerialPort
 
 class SensorReaderTest {
     /** Frames and the stop event, in the order the reading thread produced them. */

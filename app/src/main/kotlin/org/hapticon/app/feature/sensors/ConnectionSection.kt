@@ -1,11 +1,10 @@
 package org.hapticon.app.feature.sensors
 
-import org.hapticon.sensor.live.ConnectionState
+import org.hapticon.sensor.live.SessionState
 import org.hapticon.app.ui.SegmentedChoice
 import org.hapticon.app.ui.SingleChoice
 import org.hapticon.sensor.live.StopCause
 import org.hapticon.sensor.protocol.BAUD_RATES
-import org.hapticon.sensor.protocol.SensorProtocol
 import androidx.compose.foundation.layout.Arrangement
 import androidx.compose.foundation.layout.Column
 import androidx.compose.foundation.layout.ExperimentalLayoutApi
@@ -40,7 +39,7 @@ internal fun ConnectionSection(state: SensorsUiState.Ready, actions: SensorsActi
     Column(verticalArrangement = Arrangement.spacedBy(8.dp)) {
         SectionTitle("Connection")
         Text("Protocol", style = MaterialTheme.typography.labelMedium)
-        SegmentedChoice(SingleChoice(SensorProtocol.entries, state.protocol) { it.label }, actions.onSelectProtocol, enabled = !locked)
+        SegmentedChoice(SingleChoice(state.protocols, state.protocol) { it.label }, actions.onSelectProtocol, enabled = !locked)
         FlowRow(horizontalArrangement = Arrangement.spacedBy(12.dp), verticalArrangement = Arrangement.spacedBy(8.dp)) {
             DropdownField(
                 label = "Baud rate",
@@ -58,17 +57,17 @@ internal fun ConnectionSection(state: SensorsUiState.Ready, actions: SensorsActi
 }
 
 @Composable
-private fun ConnectionStatus(connection: ConnectionState, frames: Long) {
+private fun ConnectionStatus(connection: SessionState, frames: Long) {
     val (text, isError) = when (connection) {
-        ConnectionState.Idle -> return
-        is ConnectionState.RequestingPermission -> "Waiting for USB permission for ${connection.device.usbIds}…" to false
-        is ConnectionState.Opening -> "Opening ${connection.device.chipFamily} board ${connection.device.usbIds}…" to false
-        is ConnectionState.Streaming -> "Streaming ${connection.protocol.label} from ${connection.device.usbIds} at ${connection.baudRate} baud" to false
-        is ConnectionState.PermissionDenied ->
+        SessionState.Idle -> return
+        is SessionState.RequestingPermission -> "Waiting for USB permission for ${connection.device.usbIds}…" to false
+        is SessionState.Opening -> "Opening ${connection.device.chipFamily} board ${connection.device.usbIds}…" to false
+        is SessionState.Streaming -> "Streaming ${connection.protocol.label} from ${connection.device.usbIds} at ${connection.baudRate} baud" to false
+        is SessionState.PermissionDenied ->
             "USB permission denied for ${connection.device.usbIds}. Hapticon can't read the board unless you allow access; " +
                 "tap Connect to ask again." to true
-        is ConnectionState.Failed -> "Could not open ${connection.device.usbIds}: ${connection.message}" to true
-        is ConnectionState.Stopped -> when (connection.cause) {
+        is SessionState.Failed -> "Could not open ${connection.device.usbIds}: ${connection.message}" to true
+        is SessionState.Stopped -> when (connection.cause) {
             StopCause.UNPLUGGED -> "Board unplugged. The $frames frames received before are kept below." to true
             StopCause.ENDED -> "Stream ended after $frames frames." to false
             StopCause.FAILED -> "Reading failed: ${connection.message}. The $frames frames received before are kept below." to true

@@ -55,7 +55,7 @@ fun SensorsRoute(container: AppContainer) {
         SensorsPane.STREAM -> {
             val viewModel: SensorsViewModel = viewModel(
                 factory = viewModelFactory {
-                    initializer { SensorsViewModel(container.usbDevices, container.sensorHub, container.grainEngine, container.glove) }
+                    initializer { SensorsViewModel(container.usbDevices, container.sensorSession, container.grainEngine, container.glove) }
                 },
             )
             SensorsRoute(

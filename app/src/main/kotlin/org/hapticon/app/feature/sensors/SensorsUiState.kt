@@ -3,11 +3,12 @@ package org.hapticon.app.feature.sensors
 import androidx.compose.runtime.Immutable
 import org.hapticon.sensor.grains.BinDistribution
 import org.hapticon.sensor.grains.ForceInput
-import org.hapticon.sensor.live.ConnectionState
+import org.hapticon.sensor.live.SessionState
 import org.hapticon.sensor.live.PlotSource
 import org.hapticon.sensor.live.SensorDevice
 import org.hapticon.sensor.live.StreamCounters
 import org.hapticon.sensor.protocol.SensorProtocol
+import org.hapticon.sensor.protocol.SensorProtocols
 
 /** What the Sensors screen shows. */
 sealed interface SensorsUiState {
@@ -22,13 +23,15 @@ sealed interface SensorsUiState {
         val selectedDeviceId: String?,
         val protocol: SensorProtocol,
         val baudRate: Int,
-        val connection: ConnectionState,
+        val connection: SessionState,
         val canConnect: Boolean,
         val canDisconnect: Boolean,
         /** What the last stream gave; kept after it stops. Null before any byte arrived. */
         val stream: StreamUi?,
         val grains: GrainUi,
         val glove: GloveUi,
+        /** The protocols the user may choose from ([SensorProtocols.DEFAULT] in the app). */
+        val protocols: List<SensorProtocol> = SensorProtocols.DEFAULT.entries,
     ) : SensorsUiState
 }
 

@@ -17,20 +17,21 @@ import kotlinx.coroutines.flow.flowOf
 import kotlinx.coroutines.flow.stateIn
 import kotlinx.coroutines.launch
 import org.hapticon.sensor.glove.GloveChannels
-import org.hapticon.sensor.glove.HubGloveSource
+import org.hapticon.sensor.glove.SessionGloveSource
 import org.hapticon.sensor.grains.BinDistribution
 import org.hapticon.sensor.grains.ForceInput
 import org.hapticon.sensor.grains.GrainConfig
 import org.hapticon.sensor.grains.GrainEngine
 import org.hapticon.sensor.grains.GrainSettings
 import org.hapticon.sensor.grains.GrainStatus
-import org.hapticon.sensor.live.ConnectionState
+import org.hapticon.sensor.live.SessionState
 import org.hapticon.sensor.live.SensorDevice
 import org.hapticon.sensor.live.SensorSession
-import org.hapticon.sensor.live.StreamInfo
+import org.hapticon.sensor.protocol.StreamInfo
 import org.hapticon.sensor.live.StreamSnapshot
 import org.hapticon.sensor.live.UsbDevices
 import org.hapticon.sensor.protocol.SensorProtocol
+import org.hapticon.sensor.protocol.SensorProtocols
 import org.hapticon.sensor.protocol.framed.ChannelUnit
 
 /**
@@ -38,26 +39,28 @@ import org.hapticon.sensor.protocol.framed.ChannelUnit
  * (values, plots, counters) and the FSR grain mode's controls.
  *
  * While a stream runs, the UI state is refreshed every [refreshMillis] (default 33 ms, ≤ 30 fps) from
- * the hub's snapshot, however fast the board sends; between refreshes nothing reaches the UI.
+ * the session's snapshot, however fast the board sends; between refreshes nothing reaches the UI.
  */
 @OptIn(ExperimentalCoroutinesApi::class)
 class SensorsViewModel(
     private val usb: UsbDevices,
-    private val hub: SensorSession,
+    private val session: SensorSession,
     private val grains: GrainEngine,
-    private val glove: HubGloveSource,
+    private val glove: SessionGloveSource,
     private val refreshMillis: Long = DEFAULT_REFRESH_MILLIS,
+    /** The protocols offered, in order; the first is chosen until the user picks another. */
+    private val protocols: SensorProtocols = SensorProtocols.DEFAULT,
 ) : ViewModel() {
-    private val selection = MutableStateFlow(Selection())
+    private val selection = MutableStateFlow(Selection(protocol = protocols.entries.first()))
     private val grainControls = MutableStateFlow(GrainControls())
     private var connectJob: Job? = null
 
-    private val ticks: Flow<Unit> = hub.state.flatMapLatest { state ->
-        if (state is ConnectionState.Streaming) ticker(refreshMillis) else flowOf(Unit)
+    private val ticks: Flow<Unit> = session.state.flatMapLatest { state ->
+        if (state is SessionState.Streaming) ticker(refreshMillis) else flowOf(Unit)
     }
 
     private val controls: Flow<Controls> =
-        combine(grainControls, grains.status, glove.channels, hub.listenerError) { g, status, channels, error ->
+        combine(grainControls, grains.status, glove.channels, session.listenerError) { g, status, channels, error ->
             Controls(g, status, channels, error)
         }
 
@@ -65,8 +68,8 @@ class SensorsViewModel(
         if (!usb.hasUsbHost) {
             MutableStateFlow(SensorsUiState.NoUsbHost)
         } else {
-            combine(usb.devices, selection, hub.state, controls, ticks) { devices, sel, connection, ctl, _ ->
-                buildState(devices, sel, connection, ctl, hub.snapshot())
+            combine(usb.devices, selection, session.state, controls, ticks) { devices, sel, connection, ctl, _ ->
+                buildState(devices, sel, connection, ctl, session.snapshot())
             }.stateIn(viewModelScope, SharingStarted.WhileSubscribed(5_000), SensorsUiState.Loading)
         }
 
@@ -82,13 +85,13 @@ class SensorsViewModel(
         val device = devices.firstOrNull { it.id == selection.value.deviceId } ?: devices.firstOrNull() ?: return
         val sel = selection.value
         connectJob?.cancel()
-        connectJob = viewModelScope.launch { hub.connect(device, sel.protocol, sel.baudRate) }
+        connectJob = viewModelScope.launch { session.connect(device, sel.protocol, sel.baudRate) }
     }
 
     /** Stops the stream; what was received stays on screen. */
     fun disconnect() {
         connectJob?.cancel()
-        hub.disconnect()
+        session.disconnect()
     }
 
     fun setGrainsEnabled(enabled: Boolean) = updateGrains { it.copy(enabled = enabled) }
@@ -112,7 +115,7 @@ class SensorsViewModel(
 
     override fun onCleared() {
         grains.configure(null)
-        hub.disconnect()
+        session.disconnect()
     }
 
     private inline fun MutableStateFlow<Selection>.update(change: (Selection) -> Selection) {
@@ -128,18 +131,19 @@ class SensorsViewModel(
     private fun buildState(
         devices: List<SensorDevice>,
         sel: Selection,
-        connection: ConnectionState,
+        connection: SessionState,
         ctl: Controls,
         snapshot: StreamSnapshot,
     ): SensorsUiState.Ready {
         val selectedId = sel.deviceId?.takeIf { id -> devices.any { it.id == id } } ?: devices.firstOrNull()?.id
         val info = snapshot.info
-        val busy = connection is ConnectionState.RequestingPermission || connection is ConnectionState.Opening ||
-            connection is ConnectionState.Streaming
+        val busy = connection is SessionState.RequestingPermission || connection is SessionState.Opening ||
+            connection is SessionState.Streaming
         return SensorsUiState.Ready(
             devices = devices,
             selectedDeviceId = selectedId,
             protocol = sel.protocol,
+            protocols = protocols.entries,
             baudRate = sel.baudRate,
             connection = connection,
             canConnect = selectedId != null && !busy,
@@ -157,7 +161,7 @@ class SensorsViewModel(
                 index = c,
                 name = names.getOrElse(c) { "ch$c" },
                 valueText = formatValue(value, info?.channelUnits?.getOrNull(c)),
-                plotted = c < hub.history.maxChannels,
+                plotted = c < session.history.maxChannels,
             )
         }
         return StreamUi(
@@ -166,7 +170,7 @@ class SensorsViewModel(
             counters = snapshot.counters,
             measuredRateHz = snapshot.measuredRateHz,
             samples = snapshot.samples,
-            plot = hub.history,
+            plot = session.history,
             outputError = listenerError,
         )
     }
@@ -191,7 +195,7 @@ class SensorsViewModel(
         return GloveUi(
             thumbChannel = channels.thumbFor(protocol),
             middleChannel = channels.middleFor(protocol),
-            adcBits = info?.let { channels.adcBitsFor(it) } ?: channels.adcBits ?: if (protocol == SensorProtocol.LUCID_GLOVES) 12 else 10,
+            adcBits = info?.let { channels.adcBitsFor(it) } ?: channels.adcBits ?: protocol.assumedAdcBits,
             adcBitsFromDevice = info?.adcBits,
             channelNames = info?.channelNames.orEmpty(),
         )
@@ -199,7 +203,7 @@ class SensorsViewModel(
 
     private data class Selection(
         val deviceId: String? = null,
-        val protocol: SensorProtocol = SensorProtocol.CSV,
+        val protocol: SensorProtocol,
         val baudRate: Int = 115_200,
     )
 

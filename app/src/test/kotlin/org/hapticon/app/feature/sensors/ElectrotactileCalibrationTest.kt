@@ -1,7 +1,7 @@
 package org.hapticon.app.feature.sensors
 
 import org.hapticon.app.sensors.StimulatorLink
-import org.hapticon.app.sensors.HubStimulatorLink
+import org.hapticon.app.sensors.SessionStimulatorLink
 import org.hapticon.sensor.grains.FirmwareForceRange
 import org.hapticon.sensor.grains.FirmwareGrainParams
 import org.hapticon.sensor.grains.FirmwareStimulus
@@ -25,7 +25,7 @@ import org.hapticon.app.gesture.MainDispatcherRule
 import org.hapticon.testing.TEST_UNO
 import org.hapticon.testing.TestUsbDevices
 import org.hapticon.sensor.electrotactile.ElectrodePattern
-import org.hapticon.sensor.port.FakeSerialPort
+import org.hapticon.testing.FakeSerialPort
 import org.hapticon.sensor.protocol.framed.AckStatus
 import org.hapticon.sensor.protocol.framed.FramedEncoder
 import org.hapticon.sensor.protocol.framed.FramedProtocol
@@ -225,22 +225,22 @@ class ElectrotactileCalibrationTest {
     }
 
     @Test
-    fun hubLink_framedStream_writesTheSetGrainsFrame_otherProtocolsWriteNothing() {
+    fun sessionLink_framedStream_writesTheSetGrainsFrame_otherProtocolsWriteNothing() {
         val params = FirmwareGrainParams.wholeArrayCheck(List(9) { 120 }, FirmwareForceRange.ofAdcBits(10))
         val stimulus = FirmwareStimulus(4, 200)
-        // One hub per stream, writes on the calling thread: no reader of an earlier stream can race the next start.
-        val csvHub = SensorSession(TestUsbDevices(), commands = CommandWriter { it.run() })
-        val framedHub = SensorSession(TestUsbDevices(), commands = CommandWriter { it.run() })
+        // One session per stream, writes on the calling thread: no reader of an earlier stream can race the next start.
+        val csvSession = SensorSession(TestUsbDevices(), commands = CommandWriter { it.run() })
+        val framedSession = SensorSession(TestUsbDevices(), commands = CommandWriter { it.run() })
         try {
-            assertNull(HubStimulatorLink(csvHub).send(params))
+            assertNull(SessionStimulatorLink(csvSession).send(params))
             val csvPort = FakeSerialPort()
-            csvHub.start(csvPort, TEST_UNO, SensorProtocol.CSV, 115_200)
-            assertNull(HubStimulatorLink(csvHub).send(params))
+            csvSession.start(csvPort, TEST_UNO, SensorProtocol.CSV, 115_200)
+            assertNull(SessionStimulatorLink(csvSession).send(params))
             assertEquals(0, csvPort.writtenBytes().size)
 
             val framedPort = FakeSerialPort()
-            framedHub.start(framedPort, TEST_UNO, SensorProtocol.FRAMED, 115_200)
-            val link = HubStimulatorLink(framedHub)
+            framedSession.start(framedPort, TEST_UNO, SensorProtocol.FRAMED, 115_200)
+            val link = SessionStimulatorLink(framedSession)
             assertNotNull(link.send(params))
             assertNotNull(link.stimulate(stimulus))
             // One encoder per link: the stimulus is the next sequence number.
@@ -249,10 +249,10 @@ class ElectrotactileCalibrationTest {
             var length = encoder.setGrains(params, expected)
             length += encoder.stimulate(stimulus, expected, length)
             assertArrayEquals(expected.copyOf(length), framedPort.writtenBytes())
-            assertNull(HubStimulatorLink(csvHub).stimulate(stimulus))
+            assertNull(SessionStimulatorLink(csvSession).stimulate(stimulus))
         } finally {
-            csvHub.disconnect()
-            framedHub.disconnect()
+            csvSession.disconnect()
+            framedSession.disconnect()
         }
     }
 

@@ -24,12 +24,12 @@ import org.hapticon.app.playback.lastVibration
 import org.hapticon.app.sensors.RecordingVibrationOutput
 import org.hapticon.testing.TEST_UNO
 import org.hapticon.testing.TestUsbDevices
-import org.hapticon.sensor.glove.HubGloveSource
+import org.hapticon.sensor.glove.SessionGloveSource
 import org.hapticon.sensor.grains.BinDistribution
 import org.hapticon.sensor.grains.ForceInput
 import org.hapticon.sensor.grains.GrainEngine
 import org.hapticon.sensor.live.SensorSession
-import org.hapticon.sensor.port.FakeSerialPort
+import org.hapticon.testing.FakeSerialPort
 import org.junit.After
 import org.junit.Assert.assertEquals
 import org.junit.Assert.assertTrue
@@ -40,7 +40,7 @@ import org.robolectric.RobolectricTestRunner
 import org.robolectric.Shadows.shadowOf
 
 /**
- * The FSR grain mode end to end: a scripted force stream from a fake board, through the hub, the
+ * The FSR grain mode end to end: a scripted force stream from a fake board, through the session, the
  * grain engine and sensor-bridge's GrainDecider, to what the (Robolectric) vibrator was handed.
  */
 @OptIn(ExperimentalCoroutinesApi::class)
@@ -51,20 +51,20 @@ class GrainModeTest {
     private val vibrator: Vibrator = defaultVibrator(context)
     private val output = RecordingVibrationOutput(VibratorVibrationOutput(usageVibrator(vibrator))) { lastVibration(vibrator) }
     private val usb = TestUsbDevices()
-    private val hub = SensorSession(usb)
-    private val grains = GrainEngine(output).also { hub.addFrameListener(it) }
+    private val session = SensorSession(usb)
+    private val grains = GrainEngine(output).also { session.addFrameListener(it) }
     private lateinit var viewModel: SensorsViewModel
 
     @Before
     fun setUp() {
         Dispatchers.setMain(dispatcher)
         shadowOf(vibrator).setHasAmplitudeControl(true)
-        viewModel = SensorsViewModel(usb, hub, grains, HubGloveSource(hub))
+        viewModel = SensorsViewModel(usb, session, grains, SessionGloveSource(session))
     }
 
     @After
     fun tearDown() {
-        hub.disconnect()
+        session.disconnect()
         Dispatchers.resetMain()
     }
 
@@ -81,7 +81,7 @@ class GrainModeTest {
         runCurrent()
         viewModel.connect()
         runCurrent()
-        assertTrue(hub.awaitStopped(5_000))
+        assertTrue(session.awaitStopped(5_000))
         advanceTimeBy(100)
         runCurrent()
         return viewModel.uiState.value as SensorsUiState.Ready
@@ -124,7 +124,7 @@ class GrainModeTest {
 
         viewModel.connect()
         runCurrent()
-        assertTrue(hub.awaitStopped(5_000))
+        assertTrue(session.awaitStopped(5_000))
 
         assertEquals(0, output.played.size)
     }

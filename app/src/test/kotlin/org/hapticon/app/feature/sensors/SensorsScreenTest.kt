@@ -13,7 +13,7 @@ import org.hapticon.app.designsystem.HapticonTheme
 import org.hapticon.testing.TEST_UNO
 import org.hapticon.sensor.grains.BinDistribution
 import org.hapticon.sensor.live.ChannelHistory
-import org.hapticon.sensor.live.ConnectionState
+import org.hapticon.sensor.live.SessionState
 import org.hapticon.sensor.live.StopCause
 import org.hapticon.sensor.live.StreamCounters
 import org.hapticon.sensor.protocol.SensorProtocol
@@ -34,7 +34,7 @@ class SensorsScreenTest {
         selectedDeviceId = TEST_UNO.id,
         protocol = SensorProtocol.FRAMED,
         baudRate = 115_200,
-        connection = ConnectionState.Stopped(TEST_UNO, SensorProtocol.FRAMED, StopCause.UNPLUGGED),
+        connection = SessionState.Stopped(TEST_UNO, SensorProtocol.FRAMED, StopCause.UNPLUGGED),
         canConnect = true,
         canDisconnect = false,
         stream = StreamUi(

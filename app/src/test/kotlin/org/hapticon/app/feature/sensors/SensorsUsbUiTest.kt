@@ -20,7 +20,7 @@ import org.hapticon.app.di.AppContainer
 import org.hapticon.app.HapticonApplication
 import org.hapticon.app.MainActivity
 import org.hapticon.app.sensors.AndroidTestDevices
-import org.hapticon.app.sensors.AndroidUsbDevices
+import org.hapticon.sensor.usb.AndroidUsbDevices
 import org.junit.After
 import org.junit.Assert.assertEquals
 import org.junit.Assert.assertTrue
@@ -55,7 +55,7 @@ class SensorsUsbUiTest {
     @After
     fun tearDown() {
         activity?.pause()?.stop()?.destroy()
-        app.container.sensorHub.disconnect()
+        app.container.sensorSession.disconnect()
     }
 
     private fun plugIn(device: UsbDevice) = shadowOf(usbManager).addOrUpdateUsbDevice(device, false)

@@ -15,16 +15,17 @@ import org.hapticon.app.playback.VibrationOutput
 import org.hapticon.testing.TEST_UNO
 import org.hapticon.testing.TestUsbDevices
 import org.hapticon.core.render.VibrationWaveform
-import org.hapticon.sensor.glove.HubGloveSource
+import org.hapticon.sensor.glove.SessionGloveSource
 import org.hapticon.sensor.grains.GrainEngine
 import org.hapticon.sensor.live.ChannelHistory
-import org.hapticon.sensor.live.ConnectionState
+import org.hapticon.sensor.live.SessionState
 import org.hapticon.sensor.live.SensorSession
 import org.hapticon.sensor.live.StopCause
 import org.hapticon.sensor.live.StreamCounters
-import org.hapticon.sensor.port.FakeSerialPort
+import org.hapticon.testing.FakeSerialPort
 import org.hapticon.sensor.protocol.SensorProtocol
 import org.hapticon.testing.RecordedStreams
+import org.hapticon.testing.TabSeparatedProtocol
 import org.junit.After
 import org.junit.Assert.assertEquals
 import org.junit.Assert.assertFalse
@@ -37,20 +38,20 @@ import org.junit.Test
 class SensorsViewModelTest {
     private val dispatcher = StandardTestDispatcher()
     private val usb = TestUsbDevices()
-    private val hub = SensorSession(usb)
-    private val grains = GrainEngine(SilentVibration).also { hub.addFrameListener(it) }
+    private val session = SensorSession(usb)
+    private val grains = GrainEngine(SilentVibration).also { session.addFrameListener(it) }
     private lateinit var viewModel: SensorsViewModel
 
     @Before
     fun setUp() {
         // Before the view model: its viewModelScope runs on Main.
         Dispatchers.setMain(dispatcher)
-        viewModel = SensorsViewModel(usb, hub, grains, HubGloveSource(hub))
+        viewModel = SensorsViewModel(usb, session, grains, SessionGloveSource(session))
     }
 
     @After
     fun tearDown() {
-        hub.disconnect()
+        session.disconnect()
         Dispatchers.resetMain()
     }
 
@@ -63,7 +64,7 @@ class SensorsViewModelTest {
         runCurrent()
         viewModel.connect()
         runCurrent()
-        assertTrue("reader did not stop", hub.awaitStopped(5_000))
+        assertTrue("reader did not stop", session.awaitStopped(5_000))
         advanceTimeBy(100)
         runCurrent()
         return viewModel.uiState.value as SensorsUiState.Ready
@@ -76,7 +77,7 @@ class SensorsViewModelTest {
         val state = streamToTheEnd(port, SensorProtocol.CSV)
 
         assertEquals(57_600, usb.opened.single().second.baudRate)
-        assertEquals(ConnectionState.Stopped(TEST_UNO, SensorProtocol.CSV, StopCause.ENDED), state.connection)
+        assertEquals(SessionState.Stopped(TEST_UNO, SensorProtocol.CSV, StopCause.ENDED), state.connection)
         val stream = state.stream!!
         assertEquals(listOf("fsr0", "fsr1", "fsr2", "fsr3"), stream.channels.map { it.name })
         // The 20th sample: (19·37 + c·211) mod 1024.
@@ -85,6 +86,19 @@ class SensorsViewModelTest {
         assertEquals(20L, stream.samples)
         assertTrue(state.canConnect)
         assertFalse(state.canDisconnect)
+    }
+
+    @Test
+    fun registryWithTheExampleProtocol_offersItAndShowsItsStream() = runTest(dispatcher) {
+        viewModel = SensorsViewModel(usb, session, grains, SessionGloveSource(session), protocols = TabSeparatedProtocol.WITH_EXAMPLE)
+        val port = FakeSerialPort().enqueue("1\t2\n3\t4.5\n".toByteArray()).enqueueEnd()
+
+        val state = streamToTheEnd(port, TabSeparatedProtocol)
+
+        assertEquals(listOf("CSV", "LucidGloves", "Framed", "Tabs"), state.protocols.map { it.label })
+        assertEquals(SessionState.Stopped(TEST_UNO, TabSeparatedProtocol, StopCause.ENDED), state.connection)
+        assertEquals(listOf("tab0", "tab1"), state.stream!!.channels.map { it.name })
+        assertEquals(listOf("3", "4.500"), state.stream!!.channels.map { it.valueText })
     }
 
     @Test
@@ -108,7 +122,7 @@ class SensorsViewModelTest {
 
         val state = streamToTheEnd(port, SensorProtocol.FRAMED)
 
-        assertEquals(ConnectionState.Stopped(TEST_UNO, SensorProtocol.FRAMED, StopCause.UNPLUGGED), state.connection)
+        assertEquals(SessionState.Stopped(TEST_UNO, SensorProtocol.FRAMED, StopCause.UNPLUGGED), state.connection)
         val stream = state.stream!!
         // Sample 9, the last whole frame: (9·97 + c·331 + 9·c·13) mod 4096.
         assertEquals(listOf("873", "1321", "1769", "2217 g", "26.65°"), stream.channels.map { it.valueText })
@@ -120,7 +134,7 @@ class SensorsViewModelTest {
         // The plot history keeps them too.
         val xs = FloatArray(ChannelHistory.DEFAULT_CAPACITY)
         val ys = FloatArray(ChannelHistory.DEFAULT_CAPACITY)
-        assertEquals(10, hub.history.copyRecent(0, 5_000_000_000L, xs, ys))
+        assertEquals(10, session.history.copyRecent(0, 5_000_000_000L, xs, ys))
         assertEquals(873f, ys[9])
         assertFalse(port.isOpen)
     }
@@ -135,7 +149,7 @@ class SensorsViewModelTest {
         runCurrent()
 
         val state = viewModel.uiState.value as SensorsUiState.Ready
-        assertEquals(ConnectionState.PermissionDenied(TEST_UNO), state.connection)
+        assertEquals(SessionState.PermissionDenied(TEST_UNO), state.connection)
         assertTrue(state.canConnect)
         assertNull(state.stream)
         assertTrue(usb.opened.isEmpty())
@@ -149,7 +163,7 @@ class SensorsViewModelTest {
         viewModel.connect() // no port scripted: opening throws
 
         runCurrent()
-        assertEquals(ConnectionState.Failed(TEST_UNO, "no such test port"), (viewModel.uiState.value as SensorsUiState.Ready).connection)
+        assertEquals(SessionState.Failed(TEST_UNO, "no such test port"), (viewModel.uiState.value as SensorsUiState.Ready).connection)
     }
 
     @Test
@@ -160,20 +174,20 @@ class SensorsViewModelTest {
         runCurrent()
         viewModel.connect()
         runCurrent()
-        waitUntil { hub.snapshot().samples == 2L }
+        waitUntil { session.snapshot().samples == 2L }
         advanceTimeBy(40)
         runCurrent()
         val streaming = viewModel.uiState.value as SensorsUiState.Ready
-        assertEquals(ConnectionState.Streaming(TEST_UNO, SensorProtocol.CSV, 115_200), streaming.connection)
+        assertEquals(SessionState.Streaming(TEST_UNO, SensorProtocol.CSV, 115_200), streaming.connection)
         assertTrue(streaming.canDisconnect)
         assertEquals(listOf("3", "4"), streaming.stream!!.channels.map { it.valueText })
 
         viewModel.disconnect()
-        assertTrue(hub.awaitStopped(5_000))
+        assertTrue(session.awaitStopped(5_000))
         runCurrent()
 
         val stopped = viewModel.uiState.value as SensorsUiState.Ready
-        assertEquals(ConnectionState.Stopped(TEST_UNO, SensorProtocol.CSV, StopCause.BY_USER), stopped.connection)
+        assertEquals(SessionState.Stopped(TEST_UNO, SensorProtocol.CSV, StopCause.BY_USER), stopped.connection)
         assertEquals(listOf("3", "4"), stopped.stream!!.channels.map { it.valueText })
         assertFalse(port.isOpen)
     }
@@ -195,7 +209,7 @@ class SensorsViewModelTest {
 
     @Test
     fun noUsbHost_isItsOwnState() {
-        val vm = SensorsViewModel(TestUsbDevices(hasUsbHost = false), hub, grains, HubGloveSource(hub))
+        val vm = SensorsViewModel(TestUsbDevices(hasUsbHost = false), session, grains, SessionGloveSource(session))
         assertEquals(SensorsUiState.NoUsbHost, vm.uiState.value)
     }
 

@@ -11,7 +11,7 @@ import androidx.compose.ui.test.performTouchInput
 import androidx.compose.ui.test.swipe
 import androidx.compose.ui.geometry.Offset
 import org.hapticon.app.feature.sensors.ElectrodeLevelsStore
-import org.hapticon.app.sensors.HubStimulatorLink
+import org.hapticon.app.sensors.SessionStimulatorLink
 import org.hapticon.app.sensors.StimulatorLink
 import org.hapticon.app.feature.sensors.TestStimulatorLink
 import org.hapticon.testing.TEST_UNO
@@ -21,7 +21,7 @@ import org.hapticon.sensor.electrotactile.StoredCalibration
 import org.hapticon.sensor.grains.FirmwareForceRange
 import org.hapticon.sensor.live.CommandWriter
 import org.hapticon.sensor.live.SensorSession
-import org.hapticon.sensor.port.FakeSerialPort
+import org.hapticon.testing.FakeSerialPort
 import org.hapticon.sensor.protocol.SensorProtocol
 import org.hapticon.sensor.protocol.framed.ChannelUnit
 import org.hapticon.sensor.protocol.framed.DeviceInfo
@@ -268,18 +268,18 @@ class ComplianceStudyRunTest {
     @Test
     fun session_overTheSerialSession_writesEachConditionsSetGrains_decodedFromTheWire() {
         // A 12-bit framed board announces itself; the view model goes through the real link, session and writer.
-        val hub = SensorSession(TestUsbDevices(), commands = CommandWriter { it.run() })
+        val session = SensorSession(TestUsbDevices(), commands = CommandWriter { it.run() })
         val port = FakeSerialPort()
         val info = ByteArray(FramedProtocol.MAX_ENCODED_FRAME_LENGTH)
         val infoLength = FramedEncoder().deviceInfo(DeviceInfo(1, 0, 0, 12, 1000, 0, listOf(ChannelUnit.RAW), "board12"), info)
         port.enqueue(info.copyOf(infoLength))
         try {
-            hub.start(port, TEST_UNO, SensorProtocol.FRAMED, 115_200)
+            session.start(port, TEST_UNO, SensorProtocol.FRAMED, 115_200)
             val deadline = System.nanoTime() + 10_000_000_000
-            while (hub.currentInfo()?.adcBits != 12 && System.nanoTime() < deadline) Thread.sleep(5)
-            assertEquals(12, hub.currentInfo()?.adcBits)
+            while (session.currentInfo()?.adcBits != 12 && System.nanoTime() < deadline) Thread.sleep(5)
+            assertEquals(12, session.currentInfo()?.adcBits)
 
-            val viewModel = viewModel(HubStimulatorLink(hub))
+            val viewModel = viewModel(SessionStimulatorLink(session))
             viewModel.setParticipant("p4")
             viewModel.start()
             val order = ComplianceStudy.PROTOCOL.trials(0)
@@ -308,7 +308,7 @@ class ComplianceStudyRunTest {
                 assertEquals(8000 + 250 * trial.condition.mask.pattern.activeCount, payload[19] or (payload[20] shl 8))
             }
         } finally {
-            hub.disconnect()
+            session.disconnect()
         }
     }
 

@@ -30,3 +30,14 @@ public enum class ChannelUnit(
         public fun of(code: Int): ChannelUnit = entries.firstOrNull { it.code == code } ?: UNKNOWN
     }
 }
+
+/** A short unit label for a framed channel. */
+public val ChannelUnit.symbol: String
+    get() = when (this) {
+        ChannelUnit.RAW -> "raw"
+        ChannelUnit.MILLIVOLT -> "mV"
+        ChannelUnit.GRAM -> "g"
+        ChannelUnit.MILLINEWTON -> "mN"
+        ChannelUnit.CENTIDEGREE -> "°"
+        ChannelUnit.UNKNOWN -> "?"
+    }

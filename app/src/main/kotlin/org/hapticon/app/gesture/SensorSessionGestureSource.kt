@@ -3,16 +3,16 @@ package org.hapticon.app.gesture
 import org.hapticon.sensor.grains.FsrForceConverter
 import org.hapticon.sensor.grains.ForceInput
 import org.hapticon.sensor.grains.GrainConfig
-import org.hapticon.sensor.live.StreamInfo
+import org.hapticon.sensor.protocol.StreamInfo
 import org.hapticon.sensor.protocol.framed.ChannelUnit
 import java.io.Closeable
-import org.hapticon.sensor.live.ConnectionState
-import org.hapticon.sensor.live.FrameListener
+import org.hapticon.sensor.live.SessionState
+import org.hapticon.sensor.protocol.FrameListener
 import org.hapticon.sensor.live.SensorSession
 
 /**
  * The sensor board stream the Sensors tab connected (FSR, glove) as a gesture source: every decoded frame
- * is passed on unchanged, on the hub's reading thread. The channels are the stream's (names made safe
+ * is passed on unchanged, on the session's reading thread. The channels are the stream's (names made safe
  * for CSV headers) and the rate is the board's declared rate, else the rate measured over the last
  * second — both fixed when recording starts, so connect and let it stream for a second first.
  *
@@ -21,7 +21,7 @@ import org.hapticon.sensor.live.SensorSession
  * mode is calibrated to ([grains], for its force channel), else a framed board's ADC range for raw channels.
  * Elsewhere it is unknown and the recorder falls back to the gesture's own peak, saying so.
  */
-class SensorHubGestureSource(private val hub: SensorSession, private val grains: () -> GrainConfig? = { null }) : GestureSource {
+class SensorSessionGestureSource(private val session: SensorSession, private val grains: () -> GrainConfig? = { null }) : GestureSource {
     // Held while a frame is delivered and while stopping, so no frame arrives after stop() returns.
     private val lock = Any()
     private var subscription: Closeable? = null
@@ -36,8 +36,8 @@ class SensorHubGestureSource(private val hub: SensorSession, private val grains:
 
     /** The stream's channels and rate now, or null while nothing is streaming or the rate is not known yet. */
     private fun currentFormat(): Pair<List<GestureChannel>, Double>? {
-        if (hub.state.value !is ConnectionState.Streaming) return null
-        val snapshot = hub.snapshot()
+        if (session.state.value !is SessionState.Streaming) return null
+        val snapshot = session.snapshot()
         val info = snapshot.info ?: return null
         if (info.channelCount == 0) return null
         val rate = info.sampleRateHz?.toDouble() ?: snapshot.measuredRateHz ?: return null
@@ -52,7 +52,7 @@ class SensorHubGestureSource(private val hub: SensorSession, private val grains:
         format = names to rate
         val values = DoubleArray(names.size)
         running = true
-        subscription = hub.addFrameListener(
+        subscription = session.addFrameListener(
             FrameListener { frame, _ ->
                 synchronized(lock) {
                     if (!running) return@FrameListener

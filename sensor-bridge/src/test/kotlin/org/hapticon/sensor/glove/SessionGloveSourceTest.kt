@@ -2,12 +2,12 @@ package org.hapticon.sensor.glove
 
 import kotlinx.coroutines.flow.first
 import kotlinx.coroutines.runBlocking
-import org.hapticon.sensor.live.LiveFrame
+import org.hapticon.sensor.protocol.LiveFrame
 import org.hapticon.sensor.live.SensorSession
-import org.hapticon.sensor.live.StreamInfo
+import org.hapticon.sensor.protocol.StreamInfo
 import org.hapticon.testing.TEST_UNO
 import org.hapticon.testing.TestUsbDevices
-import org.hapticon.sensor.port.FakeSerialPort
+import org.hapticon.testing.FakeSerialPort
 import org.hapticon.sensor.protocol.SensorProtocol
 import org.hapticon.sensor.protocol.framed.ChannelUnit
 import org.junit.Assert.assertEquals
@@ -16,9 +16,9 @@ import org.junit.Assert.assertTrue
 import org.junit.Test
 
 /** The glove as the session's frames carry it: which channels, and how counts become divider volts. */
-class HubGloveSourceTest {
+class SessionGloveSourceTest {
     private val session = SensorSession(TestUsbDevices())
-    private val glove = HubGloveSource(session)
+    private val glove = SessionGloveSource(session)
     private val heard = ArrayList<Triple<Double, Double, Long>>()
     private val frame = LiveFrame()
 

@@ -11,7 +11,7 @@ import java.io.ByteArrayOutputStream
 import java.io.File
 import java.io.IOException
 
-class ReplayAndRecordingPortTest {
+class ReplayPortTest {
     private fun bytes(vararg values: Int) = ByteArray(values.size) { values[it].toByte() }
 
     private fun readAll(port: SerialPort, bufferSize: Int = 256): List<Int> {
@@ -96,44 +96,5 @@ class ReplayAndRecordingPortTest {
                 assertFalse(e is PortDisconnectedException)
             }
         }
-    }
-
-    @Test
-    fun recording_readsTimeoutAndUnplug_copiesEveryByteRead() {
-        val live = FakeSerialPort().enqueue(bytes(1, 2, 3, 4, 5, 6, 7), chunkSize = 3).enqueueTimeout().enqueueUnplug()
-        val recording = ByteArrayOutputStream()
-        val port = RecordingPort(live, recording)
-        val buffer = ByteArray(16)
-        assertEquals(3, port.read(buffer, 0, 16, 10))
-        assertEquals(3, port.read(buffer, 0, 16, 10))
-        assertEquals(1, port.read(buffer, 0, 16, 10))
-        assertEquals(0, port.read(buffer, 0, 16, 10))
-        try {
-            port.read(buffer, 0, 16, 10)
-            throw AssertionError("no unplug")
-        } catch (e: PortDisconnectedException) {
-            // passed through
-        }
-        assertArrayEquals(bytes(1, 2, 3, 4, 5, 6, 7), recording.toByteArray())
-        assertEquals(listOf(7, -1), readAll(ReplayPort(ByteArrayInputStream(recording.toByteArray()))))
-    }
-
-    @Test
-    fun recording_writeConfigureClose_passThroughAndCloseBoth() {
-        val live = FakeSerialPort()
-        var recordingClosed = false
-        val port = RecordingPort(live, object : ByteArrayOutputStream() {
-            override fun close() {
-                recordingClosed = true
-            }
-        })
-        port.configure(LineSettings(baudRate = 9600))
-        port.write(bytes(9, 9), 0, 2, 100)
-        assertEquals(9600, live.lineSettings!!.baudRate)
-        assertArrayEquals(bytes(9, 9), live.writtenBytes())
-        assertTrue(port.isOpen)
-        port.close()
-        assertFalse(live.isOpen)
-        assertTrue(recordingClosed)
     }
 }

@@ -1,4 +1,4 @@
-package org.hapticon.app.sensors
+package org.hapticon.sensor.usb
 
 import android.app.PendingIntent
 import android.content.Context
@@ -13,16 +13,11 @@ import org.hapticon.sensor.live.UsbAccessDeniedException
 import org.hapticon.sensor.live.UsbDevices
 import org.hapticon.sensor.port.LineSettings
 import org.hapticon.sensor.port.SerialPort
-import org.hapticon.sensor.usb.AttachedSerialDevice
-import org.hapticon.sensor.usb.UsbDeviceMonitor
-import org.hapticon.sensor.usb.UsbPermissionDeniedException
-import org.hapticon.sensor.usb.UsbPermissionRequester
-import org.hapticon.sensor.usb.UsbSensorOpener
-import org.hapticon.sensor.usb.hasUsbHost
 
 /**
- * [UsbDevices] on the phone's USB host, through sensor-bridge's [UsbDeviceMonitor] (attach and detach),
- * [UsbPermissionRequester] (the system dialog) and [UsbSensorOpener].
+ * [UsbDevices] on the phone's USB host, through [UsbDeviceMonitor] (attach and detach),
+ * [UsbPermissionRequester] (the system dialog) and [UsbSensorOpener]: what the live session opens ports
+ * through, so a port is opened one way (app → sensor-bridge:usb → sensor-bridge).
  *
  * The monitor starts when [devices] is first collected, so an app that never opens the Sensors screen
  * registers no receiver.

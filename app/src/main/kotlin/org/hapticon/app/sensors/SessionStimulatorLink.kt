@@ -7,7 +7,7 @@ import org.hapticon.sensor.grains.FirmwareForceRange
 import org.hapticon.sensor.grains.FirmwareGrainParams
 import org.hapticon.sensor.grains.FirmwareStimulus
 import org.hapticon.sensor.live.CommandHandle
-import org.hapticon.sensor.live.ConnectionState
+import org.hapticon.sensor.live.SessionState
 import org.hapticon.sensor.live.OutgoingCommand
 import org.hapticon.sensor.live.SensorSession
 import org.hapticon.sensor.protocol.SensorProtocol
@@ -18,15 +18,15 @@ import org.hapticon.sensor.protocol.framed.FramedEncoder
  * [FirmwareCommands] and queued through [SensorSession.submit] while a board streams the framed protocol (the only one
  * with those commands), each followed to the board's ack; the force range is the one the board's device info announced.
  */
-class HubStimulatorLink(private val hub: SensorSession) : StimulatorLink {
+class SessionStimulatorLink(private val session: SensorSession) : StimulatorLink {
     // One encoder for this link's commands, so its sequence numbers run on (FramedEncoder: one per direction).
     private val encoder = FramedEncoder()
 
-    override val ready: Flow<Boolean> = hub.state.map(::isFramedStream)
+    override val ready: Flow<Boolean> = session.state.map(::isFramedStream)
 
-    override fun isReady(): Boolean = isFramedStream(hub.state.value)
+    override fun isReady(): Boolean = isFramedStream(session.state.value)
 
-    override fun forceRange(): FirmwareForceRange? = if (isReady()) FirmwareForceRange.fromStream(hub.currentInfo()) else null
+    override fun forceRange(): FirmwareForceRange? = if (isReady()) FirmwareForceRange.fromStream(session.currentInfo()) else null
 
     override fun send(params: FirmwareGrainParams): CommandHandle? = submit { FirmwareCommands.setGrains(encoder, params) }
 
@@ -35,8 +35,8 @@ class HubStimulatorLink(private val hub: SensorSession) : StimulatorLink {
     private fun submit(build: () -> OutgoingCommand): CommandHandle? {
         if (!isReady()) return null
         // Built and queued under one lock, so the board sees this link's sequence numbers in queue order.
-        return synchronized(encoder) { hub.submit(build()) }
+        return synchronized(encoder) { session.submit(build()) }
     }
 
-    private fun isFramedStream(state: ConnectionState): Boolean = state is ConnectionState.Streaming && state.protocol == SensorProtocol.FRAMED
+    private fun isFramedStream(state: SessionState): Boolean = state is SessionState.Streaming && state.protocol == SensorProtocol.FRAMED
 }

@@ -1,14 +1,12 @@
 package org.hapticon.sensor.grains
 
-import org.hapticon.sensor.electrotactile.ElectrodeMask
-import org.hapticon.sensor.electrotactile.ElectrotactileUserLimit
 import org.hapticon.sensor.safety.SafetyLimitException
 import org.junit.Assert.assertArrayEquals
 import org.junit.Assert.assertEquals
 import org.junit.Assert.fail
 import org.junit.Test
 
-class GrainOutputTest {
+class LraGrainTest {
     @Test
     fun lraGrain_waveform_isOneEntryOfTheGrainsLength() {
         val waveform = LraGrain(0.020, 255).waveform()
@@ -42,24 +40,6 @@ class GrainOutputTest {
                 fail("accepted")
             } catch (_: IllegalArgumentException) {
             }
-        }
-    }
-
-    @Test
-    fun electrotactile_withinTheUserLimit_holdsTheGrainBurst() {
-        val output = GrainOutput.electrotactile(ElectrodeMask.TRIANGLE, 1.5, ElectrotactileUserLimit(2.0))
-        assertEquals(ElectrodeMask.TRIANGLE.pattern, output.command.pattern)
-        assertEquals(1.5, output.command.currentMilliamps, 0.0)
-        assertEquals(125.0, output.command.pulses.frequencyHz, 0.0)
-    }
-
-    @Test
-    fun electrotactile_aboveTheUserLimit_isRefused() {
-        try {
-            GrainOutput.electrotactile(ElectrodeMask.TRIANGLE, 2.1, ElectrotactileUserLimit(2.0))
-            fail("accepted")
-        } catch (e: SafetyLimitException) {
-            assertEquals("electrotactileCurrent", e.limit)
         }
     }
 }

@@ -1,5 +1,9 @@
-package org.hapticon.sensor.port
+package org.hapticon.testing
 
+import org.hapticon.sensor.port.LineSettings
+import org.hapticon.sensor.port.PortDisconnectedException
+import org.hapticon.sensor.port.PortTimeoutException
+import org.hapticon.sensor.port.SerialPort
 import java.io.ByteArrayOutputStream
 import java.io.IOException
 import java.util.ArrayDeque
