@@ -52,6 +52,7 @@ dependencies {
     implementation(libs.tink.android)
 
     testImplementation(project(":test-fixtures"))
+    testImplementation(project(":test-fixtures:android"))
     // The embedded broker: "Stay reachable" is tested end to end over real MQTT.
     testImplementation(project(":messaging:broker"))
     testImplementation(libs.junit4)

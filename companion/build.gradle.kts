@@ -1,5 +1,7 @@
 plugins {
     alias(libs.plugins.kotlin.jvm)
+    // The bench reports are @Serializable documents (BenchDocument, LoadDocument; docs/json.md).
+    alias(libs.plugins.kotlin.serialization)
     application
 }
 
@@ -18,6 +20,7 @@ dependencies {
     implementation(project(":messaging:broker"))
     implementation(project(":study"))
     implementation(project(":gesture"))
+    implementation(libs.kotlinx.serialization.json)
     implementation(libs.sqlite.jdbc) // the study collector's default store
     implementation(libs.postgresql) // the study collector's optional store
     implementation(libs.jetty.server) // the study collector's HTTP server

@@ -13,4 +13,5 @@ dependencies {
     implementation(libs.tink.android)
 
     testImplementation(project(":messaging:broker"))
+    testImplementation(project(":test-fixtures"))
 }

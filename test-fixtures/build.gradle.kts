@@ -11,6 +11,7 @@ kotlin {
 dependencies {
     api(project(":haptics-core"))
     api(project(":sensor-bridge")) // TestUsbDevices: the USB device list double of the live session
+    api(project(":messaging")) // TestKeyPins: end-to-end key pins in memory
 
     testImplementation(libs.junit4)
 }

@@ -11,6 +11,11 @@ cannot drift apart:
   imports it back, directly or through others; each cycle is one violation naming its packages. The
   classes the Android build generates in a module's namespace (`R`, `BuildConfig`) import nothing, so a
   use of them is no edge of the package graph (they cannot close a cycle).
+- "Test doubles stay in tests": no type in a module's main sources is named like a test double (a prefix
+  from the section's table: `Fake…`, `InMemory…`, `Test…` …), except in the modules whose main code is test
+  code and for the names the section allows, each with its reason.
+- "One type per name": no two top-level types in the main sources of the modules share a simple name
+  (whatever their visibility or module), except the names the section allows.
 
 Standard library only, like the rest of the offline build: `check(root)` returns the violations as
 one-line messages (empty when the project follows the rules).
@@ -19,7 +24,7 @@ from __future__ import annotations
 
 import os
 import re
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 DOC = os.path.join("docs", "architecture.md")
 MAIN_SOURCES = (os.path.join("src", "main", "kotlin"), os.path.join("src", "main", "java"))
@@ -39,9 +44,39 @@ def used_names(text: str, roots: set[str]) -> list[str]:
     return IMPORT.findall(text) + written
 
 
+# A top-level type declaration (Kotlin or Java): at the start of a line, after annotations and modifiers.
+TYPE_DECLARATION = re.compile(
+    r"^(?:@[\w.]+(?:\([^)\n]*\))?\s+)*"
+    r"(?:(?:public|internal|private|protected|data|sealed|abstract|open|enum|value|annotation|fun|inline|final|static|expect|actual)\s+)*"
+    r"(?:class|interface|object|typealias)\s+([A-Z]\w*)",
+    re.M,
+)
+
+
 @dataclass
 class Rules:
     allowed: dict[str, set[str]]                                         # module -> modules its main code may use
+    double_prefixes: tuple[str, ...] = ()                                # a type named so is a test double
+    test_code_modules: set[str] = field(default_factory=set)             # modules whose main code is test code
+    doubles_allowed: set[str] = field(default_factory=set)               # double-like names main code may hold
+    shared_names_allowed: set[str] = field(default_factory=set)          # names more than one type may have
+
+
+def table_rows(text: str, heading: str) -> list[list[str]]:
+    """The cells of every table row (header and rule rows aside) in the sections whose heading holds
+    [heading] (case-insensitive), up to the next heading."""
+    rows, inside = [], False
+    for line in text.splitlines():
+        if line.startswith("#"):
+            inside = heading in line.lower()
+            continue
+        if inside and line.startswith("|") and not re.match(r"^\|[\s|:-]+\|\s*$", line):
+            rows.append([c.strip() for c in line.strip().strip("|").split("|")])
+    return rows[1:] if rows else rows  # the first row is the table's header
+
+
+def quoted(cell: str) -> list[str]:
+    return re.findall(r"`([^`]+)`", cell)
 
 
 def read_rules(root: str) -> Rules:
@@ -62,7 +97,29 @@ def read_rules(root: str) -> Rules:
             allowed[first[0]] = set(re.findall(r"`(:[\w:-]+)`", cells[1] if len(cells) > 1 else ""))
     if not allowed:
         raise ValueError(f"{DOC} has no 'Who may use whom' table")
-    return Rules(allowed)
+    rules = Rules(allowed)
+    for row in table_rows(text, "test doubles stay in tests"):
+        what = row[0].lower()
+        values = quoted(row[1]) if len(row) > 1 else []
+        if what.startswith("double prefixes"):
+            rules.double_prefixes = tuple(values)
+        elif what.startswith("modules whose main code is test code"):
+            rules.test_code_modules = set(values)
+        elif quoted(row[0]):
+            rules.doubles_allowed.update(quoted(row[0]))
+    for row in table_rows(text, "one type per name"):
+        rules.shared_names_allowed.update(quoted(row[0]))
+    return rules
+
+
+def declared_types(text: str) -> list[str]:
+    """The simple names of the top-level types [text] declares (nested types are indented, so not matched)."""
+    return TYPE_DECLARATION.findall(re.sub(r"/\*.*?\*/", " ", text, flags=re.S))
+
+
+def is_double(name: str, prefixes: tuple[str, ...]) -> bool:
+    """Whether [name] starts with one of [prefixes] followed by a capital (`TestIcons`, not `Testament`)."""
+    return any(name.startswith(p) and name[len(p):][:1].isupper() for p in prefixes)
 
 
 def modules(root: str) -> dict[str, str]:
@@ -200,4 +257,23 @@ def check(root: str) -> list[str]:
                     graph[pkg].add(imported_pkg)
         for component in cycles(graph):
             violations.append(f"{path}: packages import each other in a cycle: {', '.join(sorted(component))}")
+    return violations + type_violations(root, rules, sources)
+
+
+def type_violations(root: str, rules: Rules, sources: dict[str, list[tuple[str, str, str]]]) -> list[str]:
+    """Test doubles in main code, and simple names more than one top-level type of main code has."""
+    violations: list[str] = []
+    where: dict[str, list[str]] = {}
+    for path, files in sources.items():
+        for file, _, text in files:
+            rel = os.path.relpath(file, root).replace(os.sep, "/")
+            for name in declared_types(text):
+                where.setdefault(name, []).append(rel)
+                if path in rules.test_code_modules or name in rules.doubles_allowed:
+                    continue
+                if is_double(name, rules.double_prefixes):
+                    violations.append(f"{rel}: test double {name} in the main code of {path}: move it to its tests or :test-fixtures")
+    for name, files in sorted(where.items()):
+        if len(files) > 1 and name not in rules.shared_names_allowed:
+            violations.append(f"{len(files)} types of main code named {name}: {', '.join(sorted(files))}; give each a name of its own")
     return violations

@@ -1,4 +1,5 @@
 """The dependency rules of docs/architecture.md: the project follows them, and the check catches breaking them."""
+import itertools
 import os
 import tempfile
 import textwrap
@@ -19,7 +20,22 @@ DOC = """
 | `:fixtures` | `:core` |
 | `:cli` | `:core`, `:sensor` |
 ### Packages do not import each other in a cycle
+### Test doubles stay in tests
+| rule | values |
+|---|---|
+| double prefixes | `Fake`, `InMemory`, `Test` |
+| modules whose main code is test code | `:fixtures` |
+
+| name | why |
+|---|---|
+| `InMemoryQueue` | the CLI's queue |
+### One type per name
+| name | why |
+|---|---|
+| `Shared` | allowed twice |
 """
+
+CLASS_NUMBERS = itertools.count()
 
 
 def write(root, path, text):
@@ -29,8 +45,10 @@ def write(root, path, text):
         f.write(textwrap.dedent(text))
 
 
-def kotlin(package, *imports):
-    return f"package {package}\n\n" + "".join(f"import {i}\n" for i in imports) + "\nclass X\n"
+def kotlin(package, *imports, declares=None):
+    """A Kotlin file of [package] with [imports], declaring [declares] (a class of a name no other file has by default)."""
+    body = declares if declares is not None else f"class X{next(CLASS_NUMBERS)}\n"
+    return f"package {package}\n\n" + "".join(f"import {i}\n" for i in imports) + "\n" + body
 
 
 class ArchitectureTest(unittest.TestCase):
@@ -153,6 +171,75 @@ class ArchitectureTest(unittest.TestCase):
                 f.write('include(":extra")\n')
             write(root, "extra/build.gradle.kts", "dependencies {}\n")
             self.assertEqual([":extra: not in docs/architecture.md's 'Who may use whom' table"], check(root))
+
+    def test_projectRules_nameTheDoublePrefixesAndTheTestCodeModules(self):
+        rules = read_rules(ROOT)
+        self.assertIn("Fake", rules.double_prefixes)
+        self.assertIn("InMemory", rules.double_prefixes)
+        self.assertIn("Test", rules.double_prefixes)
+        self.assertEqual({":test-fixtures", ":test-fixtures:android", ":device-check"}, rules.test_code_modules)
+
+    def test_fixtureRules_readFromTheirSections(self):
+        with tempfile.TemporaryDirectory() as root:
+            self.project(root)
+            rules = read_rules(root)
+            self.assertEqual(("Fake", "InMemory", "Test"), rules.double_prefixes)
+            self.assertEqual({":fixtures"}, rules.test_code_modules)
+            self.assertEqual({"InMemoryQueue"}, rules.doubles_allowed)
+            self.assertEqual({"Shared"}, rules.shared_names_allowed)
+
+    def test_doubleInMainCode_isReportedWithItsFileAndModule(self):
+        with tempfile.TemporaryDirectory() as root:
+            fake = "/** A port for tests. */\n@Suppress(\"unused\")\npublic class FakePort : Port {\n    class Inner\n}\n"
+            self.project(root, extra=[("sensor/src/main/kotlin/org/x/sensor/FakePort.kt", kotlin("org.x.sensor", declares=fake))])
+            self.assertEqual(
+                ["sensor/src/main/kotlin/org/x/sensor/FakePort.kt: test double FakePort in the main code of :sensor: "
+                 "move it to its tests or :test-fixtures"],
+                check(root),
+            )
+
+    def test_everyKindOfDeclaration_isSeen(self):
+        with tempfile.TemporaryDirectory() as root:
+            declarations = "internal data class InMemoryStore(val x: Int)\nsealed interface TestState\nprivate object FakeClock\nenum class Testament { A }\n"
+            self.project(root, extra=[("cli/src/main/kotlin/org/x/cli/Doubles.kt", kotlin("org.x.cli", declares=declarations))])
+            self.assertEqual(
+                ["InMemoryStore", "TestState", "FakeClock"],
+                [v.split("test double ")[1].split(" ")[0] for v in check(root)],
+            )
+
+    def test_doubleInTestSources_inATestCodeModule_orAllowed_isNot(self):
+        with tempfile.TemporaryDirectory() as root:
+            self.project(root, extra=[
+                ("sensor/src/test/kotlin/org/x/sensor/FakePort.kt", kotlin("org.x.sensor", declares="class FakePort\n")),
+                ("fixtures/src/main/kotlin/org/x/testing/TestIcons.kt", kotlin("org.x.testing", declares="object TestIcons\n")),
+                ("cli/src/main/kotlin/org/x/cli/Queue.kt", kotlin("org.x.cli", declares="class InMemoryQueue\n")),
+                # Nested types are not top-level names of the module.
+                ("cli/src/main/kotlin/org/x/cli/Outer.kt", kotlin("org.x.cli", declares="class Outer {\n    class FakeInner\n}\n")),
+            ])
+            self.assertEqual([], check(root))
+
+    def test_sameTypeNameInTwoModules_isReportedOnce_namingBothFiles(self):
+        with tempfile.TemporaryDirectory() as root:
+            self.project(root, extra=[
+                ("core/src/main/kotlin/org/x/core/State.kt", kotlin("org.x.core", declares="enum class ConnectionState { UP }\n")),
+                ("sensor/src/main/kotlin/org/x/sensor/State.kt", kotlin("org.x.sensor", declares="private sealed interface ConnectionState\n")),
+            ])
+            self.assertEqual(
+                ["2 types of main code named ConnectionState: core/src/main/kotlin/org/x/core/State.kt, "
+                 "sensor/src/main/kotlin/org/x/sensor/State.kt; give each a name of its own"],
+                check(root),
+            )
+
+    def test_sameTypeNameAllowed_orInTestsOrNested_isNot(self):
+        with tempfile.TemporaryDirectory() as root:
+            self.project(root, extra=[
+                ("core/src/main/kotlin/org/x/core/Shared.kt", kotlin("org.x.core", declares="object Shared\n")),
+                ("sensor/src/main/kotlin/org/x/sensor/Shared.kt", kotlin("org.x.sensor", declares="object Shared\n")),
+                ("core/src/main/kotlin/org/x/core/Csv.kt", kotlin("org.x.core", declares="object Csv\n")),
+                ("cli/src/test/kotlin/org/x/cli/Csv.kt", kotlin("org.x.cli", declares="object Csv\n")),
+                ("cli/src/main/kotlin/org/x/cli/Table.kt", kotlin("org.x.cli", declares="class Table {\n    object Csv\n}\n")),
+            ])
+            self.assertEqual([], check(root))
 
     def test_cycles_findsOnlyComponentsOfSeveralPackages(self):
         graph = {"a": {"b"}, "b": {"c"}, "c": {"a"}, "d": {"a"}, "e": set()}

@@ -52,7 +52,7 @@ import java.io.File
 import java.util.concurrent.CopyOnWriteArrayList
 
 /**
- * Issue 13: the debug build's main-thread policy ([mainThreadPolicy]) with a penalty that fails the test. The
+ * The debug build's main-thread policy ([mainThreadPolicy]) with a penalty that fails the test. The
  * whole app (its real container: Room on a database file, SharedPreferences settings, the MQTT sync against a
  * real broker, the adaptive player) is driven as a user would: the chat list, a conversation with a received
  * icon, pressing that icon, choosing an icon in the composer (its "how it will feel there" figure) and

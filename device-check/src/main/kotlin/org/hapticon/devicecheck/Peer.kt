@@ -17,7 +17,8 @@ import org.hapticon.messaging.mqtt.DeviceId
 import org.hapticon.messaging.MessagingException
 import org.hapticon.messaging.e2e.EndToEnd
 import org.hapticon.messaging.e2e.Identity
-import org.hapticon.messaging.e2e.InMemoryKeyPins
+import org.hapticon.messaging.e2e.KeyBundle
+import org.hapticon.messaging.e2e.KeyPins
 import kotlinx.coroutines.delay
 import org.hapticon.messaging.mqtt.MqttSettings
 
@@ -30,7 +31,7 @@ class Peer(private val args: DeviceCheckArguments) : AutoCloseable {
     // Sealed end to end, as the app (encrypting by default) accepts; a device id of its own, as every client has.
     private val messenger = MqttMessenger(
         MqttSettings(BrokerAddress.parse(args.broker), args.peer, args.peerPassword, DeviceId.generate()),
-        EndToEnd(Identity.generate(args.peer), InMemoryKeyPins()),
+        EndToEnd(Identity.generate(args.peer), PeerKeyPins()),
     )
     private val receipts = CopyOnWriteArrayList<Arrived>()
     private val capabilities = ConcurrentHashMap<String, Capabilities>()
@@ -88,4 +89,11 @@ class Peer(private val args: DeviceCheckArguments) : AutoCloseable {
     private companion object {
         const val CONNECT_TIMEOUT_MILLIS = 20_000L
     }
+}
+
+/** The peer's key pins: held for one run of the suite, as its identity is (a new one each run). */
+private class PeerKeyPins : KeyPins {
+    private val byUser = ConcurrentHashMap<String, KeyBundle>()
+    override fun pinned(user: String): KeyBundle? = byUser[user]
+    override fun pin(bundle: KeyBundle) = byUser.set(bundle.user, bundle)
 }

@@ -1,5 +1,6 @@
 package org.hapticon.messaging
 
+import org.hapticon.testing.InMemoryOutbox
 import kotlinx.coroutines.runBlocking
 import org.junit.Assert.assertEquals
 import org.junit.Test

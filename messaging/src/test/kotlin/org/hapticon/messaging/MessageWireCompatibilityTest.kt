@@ -40,7 +40,7 @@ class MessageWireCompatibilityTest {
     private val bareCapabilities = """{"schema":"hapticon.capabilities","version":1,"user":"carol","renderer":"envelope",""" +
         """"amplitudeControl":false,"apiLevel":null,"resonantFrequencyHz":null}"""
 
-    // Written by the build before envelope limits were published (85d0595, issue 12's pitch members): an API 36 phone.
+    // Written by the build before envelope limits were published (85d0595, before the pitch members): an API 36 phone.
     private val pitchCapabilities = """{"schema":"hapticon.capabilities","version":1,"user":"bob","renderer":"envelope","amplitudeControl":true,""" +
         """"apiLevel":36,"resonantFrequencyHz":170,"envelopeEffects":true,"frequencyMinHz":120,"frequencyMaxHz":240,"pitchFit":"clamp"}"""
 

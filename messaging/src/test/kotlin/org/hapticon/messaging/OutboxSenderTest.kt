@@ -1,5 +1,6 @@
 package org.hapticon.messaging
 
+import org.hapticon.testing.InMemoryOutbox
 import kotlinx.coroutines.async
 import kotlinx.coroutines.runBlocking
 import kotlinx.coroutines.withTimeout

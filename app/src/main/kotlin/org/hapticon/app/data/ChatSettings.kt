@@ -16,7 +16,6 @@ data class ChatPreferences(
     val autoPlay: Boolean = false,
     /** A renderer the user forces instead of the best available one ([org.hapticon.core.render.RendererKind] name), or null. */
     val rendererOverride: String? = null,
-    // Added for the messenger screens (issue 18).
     /** Android 12+ wallpaper colours instead of Hapticon's own scheme. */
     val dynamicColor: Boolean = false,
     /** Tell a sender when this user played their icon (the "felt" receipt); the user can switch it off. */
@@ -166,14 +165,5 @@ class SharedPreferencesChatSettings(
         const val OLD_END_TO_END = "end_to_end"
         const val PLAINTEXT_CHOSEN = "plaintext_chosen"
         const val PITCH_FIT = "pitch_fit"
-    }
-}
-
-/** In-memory settings, for tests. */
-class InMemoryChatSettings(initial: ChatPreferences = ChatPreferences()) : ChatSettingsRepository {
-    private val state = MutableStateFlow(initial)
-    override val preferences: StateFlow<ChatPreferences> = state.asStateFlow()
-    override fun update(transform: (ChatPreferences) -> ChatPreferences) {
-        state.value = transform(state.value)
     }
 }

@@ -33,9 +33,8 @@ interface HapticPlayer {
 
     /**
      * Starts playing [icon] with its envelope shaped by [model] (a study protocol's `envelopeModel`), as
-     * [play] does. The players that render envelopes ([VibratorHapticPlayer], [AdaptiveHapticPlayer])
-     * override this; a player that cannot render another model plays the default one only and returns
-     * [Playback.Unsupported] for any other, so nothing is ever played under the wrong model.
+     * [play] does. A player that renders envelopes ([AdaptiveHapticPlayer]) overrides this; a player that
+     * cannot render another model plays the default one only and returns [Playback.Unsupported] for any other, so nothing is ever played under the wrong model.
      */
     fun play(icon: HapticIcon, model: EnvelopeModel, usage: VibrationUsage): Playback =
         if (model == EnvelopeModel.DEFAULT) play(icon, usage) else Playback.Unsupported

@@ -13,7 +13,7 @@ import org.hapticon.messaging.Messenger
 import org.hapticon.messaging.broker.EmbeddedBroker
 import org.hapticon.messaging.e2e.EndToEnd
 import org.hapticon.messaging.e2e.Identity
-import org.hapticon.messaging.e2e.InMemoryKeyPins
+import org.hapticon.testing.TestKeyPins
 import org.hapticon.messaging.BrokerAddress
 import org.hapticon.messaging.mqtt.DeviceId
 import org.hapticon.messaging.mqtt.MqttMessenger
@@ -71,7 +71,7 @@ class AppKeysTest {
         val phoneEvents = LinkedBlockingQueue<InboxEvent>()
         val phoneKeys = AppKeys(dir).endToEnd("alice")
         val phone: Messenger = ChatComponent.mqttMessenger("alice", url, "alice-secret", AppKeys(dir), File(dir, "devices"))!!
-        val bobE2e = EndToEnd(Identity.generate("bob"), InMemoryKeyPins())
+        val bobE2e = EndToEnd(Identity.generate("bob"), TestKeyPins())
         val bobEvents = LinkedBlockingQueue<InboxEvent>()
         val bob = MqttMessenger(MqttSettings(BrokerAddress.parse(url), "bob", "bob-secret", DeviceId.generate()), bobE2e)
         runBlocking {

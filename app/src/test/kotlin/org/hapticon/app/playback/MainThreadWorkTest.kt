@@ -27,7 +27,7 @@ import java.util.concurrent.TimeUnit
 import kotlin.coroutines.CoroutineContext
 
 /**
- * Issue 13: an icon press must not render on the main thread. A [ThreadRecordingPlayer] double records the
+ * An icon press must not render on the main thread. A [ThreadRecordingPlayer] double records the
  * thread each `play` (the rendering) runs on; its render context is a named thread of its own, as the real
  * players' is `Dispatchers.Default`.
  */

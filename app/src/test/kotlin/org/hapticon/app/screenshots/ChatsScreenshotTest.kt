@@ -41,7 +41,7 @@ import java.util.Locale
 /**
  * The Chats tab's screens in light and dark (docs/app-tour.md, "Chats"): first launch, the chat list
  * (and empty), a conversation with every message state, the invite and Settings. The main ones (the list,
- * the conversation, Settings) also at the largest font scale (issue 11). A fixed clock, zone
+ * the conversation, Settings) also at the largest font scale. A fixed clock, zone
  * and locale keep every time on them the same from run to run.
  */
 class ChatsScreenshotTest : ScreenshotTest() {

@@ -18,7 +18,7 @@ import org.hapticon.app.feature.iconeditor.IconField
 import org.hapticon.core.HapticIcon
 import org.hapticon.gesture.extraction.FitOptions
 import org.hapticon.gesture.extraction.IconFitter
-import org.hapticon.gesture.extraction.SyntheticGestures
+import org.hapticon.gesture.extraction.NoisyIconRenders
 import org.hapticon.gesture.recognition.GestureLabel
 import org.hapticon.sensor.live.EmptyPlotSource
 import org.junit.Test
@@ -35,7 +35,7 @@ class GestureScreenshotTest : ScreenshotTest() {
 
     @Test
     fun recorder_fittedIcon() = screen("gestures-recorder-fitted", Variant.MAIN) {
-        val take = SyntheticGestures.render(HapticIcon.KNOCK, Double.POSITIVE_INFINITY, Random(1), sampleRate = 8000).toRecording()
+        val take = NoisyIconRenders.render(HapticIcon.KNOCK, Double.POSITIVE_INFINITY, Random(1), sampleRate = 8000).toRecording()
         val fit = IconFitter.fit(take, options = FitOptions(name = "tap"))
         RecorderScreen(
             RecorderUiState.Ready(take = take, trimTo = take.frameCount, fitChannel = "vibration", fit = fit, iconName = "tap", channels = take.channels.map { it.name }),

@@ -106,7 +106,7 @@ class PatternScreenshotTest : ScreenshotTest() {
     ) { patternConversation() }
 
     /**
-     * The same conversation at the largest font scale (issue 11), scrolled at that scale: the row keeps its
+     * The same conversation at the largest font scale, scrolled at that scale: the row keeps its
      * scroll offset in pixels across a font change, so scrolling at 1.0 left a sliver of the "hug" chip under
      * the fading edge at 2.0. Scrolled to the chosen pattern, as a user would, it starts the row whole.
      */

@@ -35,7 +35,7 @@ import androidx.compose.ui.unit.dp
 import java.time.Instant
 import org.junit.Test
 
-/** Issue 15's sensing-paper screens: electrotactile calibration (Sensors), social touch (Gestures), the compliance study (Study). */
+/** The sensing papers' screens: electrotactile calibration (Sensors), social touch (Gestures), the compliance study (Study). */
 class SensingPapersScreenshotTest : ScreenshotTest() {
     @Test
     fun electrotactile_fifthElectrode() = screen("sensors-electrotactile", Variant.MAIN) {

@@ -29,7 +29,7 @@ import org.hapticon.messaging.mqtt.MqttSettings
 import org.hapticon.messaging.MessagingException
 import org.hapticon.messaging.e2e.EndToEnd
 import org.hapticon.messaging.e2e.Identity
-import org.hapticon.messaging.e2e.InMemoryKeyPins
+import org.hapticon.testing.TestKeyPins
 import org.hapticon.app.data.TestAndroidKeyStore
 import org.junit.After
 import org.junit.Assert.assertEquals
@@ -82,7 +82,7 @@ class ChatOverBrokerTest {
     /** bob on his own client, sealing end to end with keys of his own. */
     private fun sealingBob(): MqttMessenger {
         val fast = RetryPolicy(initialDelayMillis = 50, maxDelayMillis = 500, jitter = 0.0)
-        return MqttMessenger(MqttSettings(address, "bob", "bob-secret", DeviceId.generate(), reconnectPolicy = fast), EndToEnd(Identity.generate("bob"), InMemoryKeyPins())).also { bob = it }
+        return MqttMessenger(MqttSettings(address, "bob", "bob-secret", DeviceId.generate(), reconnectPolicy = fast), EndToEnd(Identity.generate("bob"), TestKeyPins())).also { bob = it }
     }
 
     /** Sends as soon as [from] has the recipient's key (its retained key arrives just after connecting). */

@@ -1,11 +1,6 @@
 package org.hapticon.companion.bench
 
-import kotlinx.serialization.json.JsonArray
-import kotlinx.serialization.json.JsonElement
-import kotlinx.serialization.json.JsonObject
-import kotlinx.serialization.json.JsonPrimitive
 import org.hapticon.core.io.SchemaJson
-import org.hapticon.core.io.shortNumber
 import java.util.Locale
 
 /** Formats a [BenchResult] as a human-readable table or as one JSON object. */
@@ -125,151 +120,74 @@ object BenchReport {
         if (r.readerCpuMicrosPerSample.isNaN()) "not measured"
         else String.format(Locale.ROOT, "%.2f µs per sample, %.1f %% of one core", r.readerCpuMicrosPerSample, r.readerCpuShare * 100)
 
-    /** One JSON object with every figure; rates in samples per second, times in µs. */
-    fun json(result: BenchResult): String = SchemaJson.encodeElement(jsonValue(result), "  ")
+    /** One JSON object with every figure ([BenchDocument]); rates in samples per second, times in µs. */
+    fun json(result: BenchResult): String = SchemaJson.encode(BenchDocument.serializer(), document(result), "  ")
 
-    /** The object [json] prints. */
-    fun jsonValue(result: BenchResult): JsonObject = obj(
-        "sampleRate" to shortNumber(result.sampleRate),
-        "blockSamples" to shortNumber(result.blockSamples),
-        "throughput" to JsonArray(
-            result.throughputs.map { t ->
-                obj(
-                    "workload" to JsonPrimitive(t.workload),
-                    "samples" to shortNumber(t.samples),
-                    "sineLoop" to spreadJson(t.sineLoop, 0),
-                    "phasor" to spreadJson(t.phasor, 0),
-                    "exact" to spreadJson(t.exact, 0),
-                    "fast" to spreadJson(t.fast, 0),
-                    "exactVsSine" to spreadJson(t.exactVsSine, 3),
-                    "fastVsPhasor" to spreadJson(t.fastVsPhasor, 3),
-                )
-            },
-        ),
-        "fastMaxAbsError" to shortNumber(result.worstError.maxAbsError),
-        "fastMaxAbsErrorDouble" to shortNumber(result.worstDoubleError.maxAbsDoubleError),
-        "fastErrorCases" to JsonArray(
-            result.errorCases.map { e ->
-                obj(
-                    "model" to JsonPrimitive(e.model.name.lowercase()),
-                    "sampleRate" to shortNumber(e.sampleRate),
-                    "note" to shortNumber(e.note),
-                    "samples" to shortNumber(e.samples),
-                    "maxAbsError" to shortNumber(e.maxAbsError),
-                    "maxAbsErrorDouble" to shortNumber(e.maxAbsDoubleError),
-                )
-            },
-        ),
-        "firstBlockSamples" to shortNumber(result.firstBlockSamples),
-        "firstBlockMicros" to JsonArray(
-            result.firstBlocks.map { f ->
-                obj("icon" to JsonPrimitive(f.icon), "exact" to rounded(f.exactMicros, 2), "fast" to rounded(f.fastMicros, 2))
-            },
-        ),
-        "allocatedBytesPerBlock" to obj(
-            "exact" to shortNumber(result.allocatedBytesPerBlockExact),
-            "fast" to shortNumber(result.allocatedBytesPerBlockFast),
-        ),
-        "sensors" to sensorsJson(result.sensors),
-        "targets" to JsonObject(
-            result.targets.associateTo(LinkedHashMap()) { target ->
-                target.name to obj(
-                    "goal" to JsonPrimitive(target.goal),
-                    "measured" to measured(target.measured, 3),
-                    "unit" to JsonPrimitive(target.unit),
-                    "met" to JsonPrimitive(target.met),
-                )
-            },
-        ),
-        "elapsedSeconds" to rounded(result.elapsedSeconds, 2),
+    private fun document(result: BenchResult): BenchDocument = BenchDocument(
+        sampleRate = result.sampleRate,
+        blockSamples = result.blockSamples,
+        throughput = result.throughputs.map { t ->
+            ThroughputDocument(
+                t.workload, t.samples, spread(t.sineLoop, 0), spread(t.phasor, 0), spread(t.exact, 0), spread(t.fast, 0),
+                spread(t.exactVsSine, 3), spread(t.fastVsPhasor, 3),
+            )
+        },
+        fastMaxAbsError = result.worstError.maxAbsError,
+        fastMaxAbsErrorDouble = result.worstDoubleError.maxAbsDoubleError,
+        fastErrorCases = result.errorCases.map { e ->
+            ErrorCaseDocument(e.model.name.lowercase(), e.sampleRate, e.note, e.samples, e.maxAbsError, e.maxAbsDoubleError)
+        },
+        firstBlockSamples = result.firstBlockSamples,
+        firstBlockMicros = result.firstBlocks.map { FirstBlockDocument(it.icon, rounded(it.exactMicros, 2), rounded(it.fastMicros, 2)) },
+        allocatedBytesPerBlock = AllocationDocument(result.allocatedBytesPerBlockExact, result.allocatedBytesPerBlockFast),
+        sensors = sensorsDocument(result.sensors),
+        targets = result.targets.associateTo(LinkedHashMap()) { it.name to TargetDocument(it.goal, measured(it.measured, 3), it.unit, it.met) },
+        elapsedSeconds = rounded(result.elapsedSeconds, 2),
     )
 
-    private fun sensorsJson(sensors: SensorFigures): JsonObject = obj(
-        "decode" to JsonArray(
-            sensors.decode.map { d ->
-                obj(
-                    "protocol" to JsonPrimitive(d.name),
-                    "bytes" to shortNumber(d.bytes),
-                    "frames" to shortNumber(d.frames),
-                    "megabytesPerSecond" to rounded(d.megabytesPerSecond, 2),
-                    "framesPerSecond" to shortNumber(Math.round(d.framesPerSecond)),
-                    "allocatedBytesPerFrame" to measured(d.bytesAllocatedPerFrame, 3),
-                )
-            },
-        ),
-        "models" to JsonArray(
-            sensors.models.map { m ->
-                obj(
-                    "name" to JsonPrimitive(m.name),
-                    "medianNanosPerSample" to rounded(m.medianNanosPerSample, 2),
-                    "bestNanosPerSample" to rounded(m.bestNanosPerSample, 2),
-                    "allocatedBytesPerSample" to measured(m.allocatedBytesPerSample, 3),
-                    "samplesPerRun" to shortNumber(m.samplesPerRun),
-                    "runs" to shortNumber(m.runs),
-                )
-            },
-        ),
-        "grainLatency" to obj(
-            "samples" to shortNumber(sensors.latency.samples),
-            "grains" to shortNumber(sensors.latency.grains),
-            "p50Micros" to rounded(sensors.latency.p50Micros, 2),
-            "p99Micros" to rounded(sensors.latency.p99Micros, 2),
-            "maxMicros" to rounded(sensors.latency.maxMicros, 2),
-            "runQueueMicrosAtMax" to measured(sensors.latency.runQueueMicrosAtMax, 2),
-            "gcAtMax" to JsonPrimitive(sensors.latency.gcAtMax),
-            "maxWithoutRunQueueMicros" to measured(sensors.latency.maxWithoutRunQueueMicros, 2),
-            "over1ms" to shortNumber(sensors.latency.over1ms),
-            "over1msByRunQueue" to shortNumber(sensors.latency.over1msByRunQueue),
-            "over1msWithGc" to shortNumber(sensors.latency.over1msWithGc),
-            "over1msBySafepoint" to shortNumber(sensors.latency.over1msBySafepoint),
-            "over1msByWaitAndSafepoint" to shortNumber(sensors.latency.over1msByWaitAndSafepoint),
-            "over1msBySteal" to shortNumber(sensors.latency.over1msBySteal),
-            "over1msUnexplained" to shortNumber(sensors.latency.over1msUnexplained),
-            // -1, NaN and "" mean "not logged" (no safepoint log, not Linux): left out, as measured() does.
-            "safepoints" to sensors.latency.safepoints.takeIf { it >= 0 }?.let { shortNumber(it) },
-            "longestSafepointMicros" to measured(sensors.latency.longestSafepointMicros, 1),
-            "longestSafepoint" to sensors.latency.longestSafepoint.takeIf { it.isNotEmpty() }?.let { JsonPrimitive(it) },
-            "safepointMicrosAtMax" to measured(sensors.latency.safepointMicrosAtMax, 1),
-            "stealTicksAtMax" to sensors.latency.stealTicksAtMax.takeIf { it >= 0 }?.let { shortNumber(it) },
-            "stealPercent" to measured(sensors.latency.stealShare * 100, 2),
-            "handlerAllocatedBytesPerSample" to measured(sensors.latency.handlerBytesPerSample, 3),
-            "readerAllocatedBytesPerSample" to measured(sensors.latency.readerBytesPerSample, 3),
-            "readerCpuMicrosPerSample" to measured(sensors.latency.readerCpuMicrosPerSample, 3),
-            "readerCpuShare" to measured(sensors.latency.readerCpuShare, 3),
-        ),
-        "grainLatencyBaseline" to obj(
-            "samples" to shortNumber(sensors.latencyBaseline.samples),
-            "grains" to shortNumber(sensors.latencyBaseline.grains),
-            "p50Micros" to rounded(sensors.latencyBaseline.p50Micros, 2),
-            "p99Micros" to rounded(sensors.latencyBaseline.p99Micros, 2),
-            "maxMicros" to rounded(sensors.latencyBaseline.maxMicros, 2),
-            "maxWithoutRunQueueMicros" to measured(sensors.latencyBaseline.maxWithoutRunQueueMicros, 2),
-            "handlerAllocatedBytesPerSample" to measured(sensors.latencyBaseline.handlerBytesPerSample, 3),
-        ),
+    private fun sensorsDocument(sensors: SensorFigures): SensorsDocument = SensorsDocument(
+        decode = sensors.decode.map { d ->
+            DecodeDocument(
+                d.name, d.bytes, d.frames, rounded(d.megabytesPerSecond, 2), Math.round(d.framesPerSecond), measured(d.bytesAllocatedPerFrame, 3),
+            )
+        },
+        models = sensors.models.map { m ->
+            ModelDocument(
+                m.name, rounded(m.medianNanosPerSample, 2), rounded(m.bestNanosPerSample, 2), measured(m.allocatedBytesPerSample, 3),
+                m.samplesPerRun, m.runs,
+            )
+        },
+        grainLatency = with(sensors.latency) {
+            GrainLatencyDocument(
+                samples, grains, rounded(p50Micros, 2), rounded(p99Micros, 2), rounded(maxMicros, 2), measured(runQueueMicrosAtMax, 2),
+                gcAtMax, measured(maxWithoutRunQueueMicros, 2), over1ms, over1msByRunQueue, over1msWithGc, over1msBySafepoint,
+                over1msByWaitAndSafepoint, over1msBySteal, over1msUnexplained,
+                // -1, NaN and "" mean "not logged" (no safepoint log, not Linux): left out, as measured() does.
+                safepoints.takeIf { it >= 0 }, measured(longestSafepointMicros, 1), longestSafepoint.takeIf { it.isNotEmpty() },
+                measured(safepointMicrosAtMax, 1), stealTicksAtMax.takeIf { it >= 0 }, measured(stealShare * 100, 2),
+                measured(handlerBytesPerSample, 3), measured(readerBytesPerSample, 3), measured(readerCpuMicrosPerSample, 3),
+                measured(readerCpuShare, 3),
+            )
+        },
+        grainLatencyBaseline = with(sensors.latencyBaseline) {
+            GrainLatencyBaselineDocument(
+                samples, grains, rounded(p50Micros, 2), rounded(p99Micros, 2), rounded(maxMicros, 2), measured(maxWithoutRunQueueMicros, 2),
+                measured(handlerBytesPerSample, 3),
+            )
+        },
     )
 
     /** [value] rounded, or null (left out) where it was not measured: NaN or negative, as the sensor benchmarks say so. */
-    private fun measured(value: Double, decimals: Int): JsonPrimitive? = if (value.isNaN() || value < 0) null else rounded(value, decimals)
+    private fun measured(value: Double, decimals: Int): Double? = if (value.isNaN() || value < 0) null else rounded(value, decimals)
 
     /** An allocation figure for the table; `n/a` where the JVM could not count. */
     private fun allocation(bytes: Double): String = if (bytes.isNaN() || bytes < 0) "n/a" else number(bytes)
 
     /** Rates in samples per second (whole), ratios with [decimals]. */
-    private fun spreadJson(spread: Spread, decimals: Int): JsonObject = obj(
-        "min" to rounded(spread.min, decimals),
-        "median" to rounded(spread.median, decimals),
-        "max" to rounded(spread.max, decimals),
-        "runs" to shortNumber(spread.runs),
-    )
+    private fun spread(spread: Spread, decimals: Int): SpreadDocument =
+        SpreadDocument(rounded(spread.min, decimals), rounded(spread.median, decimals), rounded(spread.max, decimals), spread.runs)
 
-    /** An object of [members] in order, leaving out those whose value is null (not measured). */
-    private fun obj(vararg members: Pair<String, JsonElement?>): JsonObject {
-        val present = LinkedHashMap<String, JsonElement>()
-        for ((key, value) in members) if (value != null) present[key] = value
-        return JsonObject(present)
-    }
-
-    private fun rounded(value: Double, decimals: Int): JsonPrimitive = shortNumber(Math.round(value * POWERS[decimals]) / POWERS[decimals])
+    private fun rounded(value: Double, decimals: Int): Double = Math.round(value * POWERS[decimals]) / POWERS[decimals]
 
     private val POWERS = doubleArrayOf(1.0, 10.0, 100.0, 1000.0)
 

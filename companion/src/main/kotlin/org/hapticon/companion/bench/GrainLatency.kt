@@ -98,7 +98,7 @@ data class GrainLatencyResult(
  * [warmupSamples] are not counted, so the JIT has compiled the path.
  *
  * The bench thread waits for each answer parked (the reader unparks it after recording the latency), not
- * spinning: on 2 cores a spinning bench thread holds one of them while the reader needs one (issue 13; on the
+ * spinning: on 2 cores a spinning bench thread holds one of them while the reader needs one (on the
  * phone no CPU thread writes the samples). [intervalMicros] > 0 paces the samples at that period (1000 = the board's 1 kHz), so
  * the reader parks between samples as on the phone; 0 writes each sample as soon as the last was handled.
  * [readerSpinMicros] > 0 keeps the reader warm: after each read that delivered bytes it spins that long
@@ -357,7 +357,7 @@ class GrainLatency(
         }
     }
 
-    /** The baseline: the engine's arithmetic re-created on the decoded [SampleFrame] (the bench's figure before issue 13's work). */
+    /** The baseline: the engine's arithmetic re-created on the decoded [SampleFrame] (what the grain path costs without the engine's own lock-free run). */
     private class ArithmeticPath(wiring: PathWiring) : GrainPath(wiring), FramedDecoder.Listener {
         private val converter = FsrForceConverter()
         private val decider = GrainDecider(GrainSettings(), SyntheticPress.SAMPLE_RATE_HZ.toDouble())

@@ -30,7 +30,6 @@ import org.hapticon.messaging.Capabilities
 import org.hapticon.messaging.ChatMessage
 import org.hapticon.messaging.Clock
 import org.hapticon.messaging.ConnectionState
-import org.hapticon.messaging.InMemoryOutbox
 import org.hapticon.messaging.InboxEvent
 import org.hapticon.messaging.InboxGate
 import org.hapticon.messaging.InboxListener
@@ -77,7 +76,7 @@ class ChatSession(
     /** The end-to-end protection [messenger] uses, for `/safety` and `/trust`; null when it is off. */
     private val e2e: EndToEnd? = null,
     /** Where typed messages wait for their receipts. */
-    private val outbox: Outbox = InMemoryOutbox(),
+    private val outbox: Outbox,
     /** Where [outbox] keeps them across restarts, for the user's information; null when it dies with the process. */
     private val keptIn: File? = null,
 ) : InboxListener {

@@ -3,7 +3,7 @@ package org.hapticon.companion.gesture
 import org.hapticon.companion.cli.Console
 import org.hapticon.companion.cli.OutputFiles
 import org.hapticon.core.HapticIcon
-import org.hapticon.gesture.extraction.SyntheticGestures
+import org.hapticon.gesture.extraction.NoisyIconRenders
 import org.hapticon.gesture.io.RecordingWav
 import java.io.ByteArrayOutputStream
 import java.io.File
@@ -22,7 +22,7 @@ object GestureDemo {
     fun write(dir: File, report: (String) -> Unit) {
         val out = File(dir, "gesture")
         OutputFiles.ensureDirectory(out)
-        val recording = SyntheticGestures.render(HapticIcon.KNOCK, SNR_DB, Random(7)).toRecording()
+        val recording = NoisyIconRenders.render(HapticIcon.KNOCK, SNR_DB, Random(7)).toRecording()
         val wav = File(out, "knock-recording.wav")
         OutputFiles.write(wav) { RecordingWav.write(recording, it) }
         report("wrote $wav: a knock recorded at 44.1 kHz with noise at ${SNR_DB.toInt()} dB SNR")

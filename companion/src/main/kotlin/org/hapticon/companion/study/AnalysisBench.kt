@@ -1,8 +1,5 @@
 package org.hapticon.companion.study
 
-import org.hapticon.companion.cli.Console
-import org.apache.commons.csv.CSVFormat
-import org.hapticon.companion.bench.median
 import java.io.File
 import java.io.OutputStream
 import java.io.PrintStream
@@ -11,6 +8,10 @@ import java.lang.management.MemoryType
 import java.nio.file.Files
 import java.util.Locale
 import java.util.SplittableRandom
+import org.apache.commons.csv.CSVFormat
+import org.hapticon.companion.bench.median
+import org.hapticon.companion.cli.Console
+import org.hapticon.study.export.Csv
 
 /**
  * `hapticon bench --analysis`: the whole of `hapticon analyze` (reading the CSV file, descriptives,

@@ -16,7 +16,7 @@ object AnalysisTables {
 
     /** descriptives.csv. */
     fun descriptivesCsv(summaries: List<IconSummary>): String =
-        Csv.line(DESCRIPTIVES_HEADER) + summaries.joinToString("") { Csv.line(descriptivesRow(it, CSV_DIGITS)) }
+        SpreadsheetCsv.line(DESCRIPTIVES_HEADER) + summaries.joinToString("") { SpreadsheetCsv.line(descriptivesRow(it, CSV_DIGITS)) }
 
     /** descriptives.md. */
     fun descriptivesMarkdown(summaries: List<IconSummary>): String =
@@ -24,7 +24,7 @@ object AnalysisTables {
 
     /** pairwise.csv. */
     fun pairwiseCsv(comparisons: List<IconPairComparison>): String =
-        Csv.line(PAIRWISE_HEADER) + comparisons.joinToString("") { Csv.line(pairwiseRow(it, CSV_DIGITS)) }
+        SpreadsheetCsv.line(PAIRWISE_HEADER) + comparisons.joinToString("") { SpreadsheetCsv.line(pairwiseRow(it, CSV_DIGITS)) }
 
     /** pairwise.md. */
     fun pairwiseMarkdown(comparisons: List<IconPairComparison>): String =

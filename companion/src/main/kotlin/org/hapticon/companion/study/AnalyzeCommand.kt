@@ -1,5 +1,7 @@
 package org.hapticon.companion.study
 
+import java.io.File
+import java.io.IOException
 import org.hapticon.companion.cli.Arguments
 import org.hapticon.companion.cli.Console
 import org.hapticon.companion.cli.OutputFiles
@@ -7,8 +9,7 @@ import org.hapticon.companion.cli.UsageException
 import org.hapticon.companion.plot.PngExport
 import org.hapticon.study.analysis.StudyAnalysis
 import org.hapticon.study.analysis.StudyResponse
-import java.io.File
-import java.io.IOException
+import org.hapticon.study.export.CsvFormatException
 
 /** Which paired tests `--test` asks for. */
 enum class PairedTests(val t: Boolean, val wilcoxon: Boolean) { T(true, false), WILCOXON(false, true), BOTH(true, true) }

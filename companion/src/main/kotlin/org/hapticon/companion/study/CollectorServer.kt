@@ -75,7 +75,7 @@ sealed interface CollectorAccess {
  * The study collector's HTTP service on [host]:[port] (0 picks a free port, see [port]) over [store]:
  * `POST /v1/results` (text/csv body, `X-Study-Id` header, an upload token of that study) stores an upload in
  * one transaction, `GET /v1/studies/{id}/results.csv` (a download token of that study) serves a study's rows
- * with formula-like cells neutralised ([Csv.neutralise]), `GET /health` answers `{"status":"ok"}` to anybody.
+ * with formula-like cells neutralised ([SpreadsheetCsv.neutralise]), `GET /health` answers `{"status":"ok"}` to anybody.
  * Errors are JSON `{"error": …}`: 401 without a valid token, 403 for a token of another role or study.
  *
  * Jetty 12 (core handlers, no servlet API): its NIO connector parses headers without a thread per

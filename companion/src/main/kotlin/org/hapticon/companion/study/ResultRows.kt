@@ -1,9 +1,12 @@
 package org.hapticon.companion.study
 
-import org.hapticon.study.LikertScale
 import java.time.Instant
 import java.time.OffsetDateTime
 import java.time.format.DateTimeParseException
+import org.hapticon.study.LikertScale
+import org.hapticon.study.export.Csv
+import org.hapticon.study.export.CsvFormatException
+import org.hapticon.study.export.CsvRecord
 
 /** A row the collector refused: the 1-based [line] of the upload (0 for the request as a whole) and why. */
 class InvalidUploadException(val line: Int, message: String) : Exception(message)
@@ -156,11 +159,11 @@ object ResultRows {
     /**
      * [rows] as CSV text with [HEADER], for a spreadsheet: the numbers were validated as plain digits; every other cell
      * that starts like a formula (`=`, `+`, `-`, `@`, tab, CR) gets a leading `'` (OWASP), `+1` and `-2` included —
-     * the exception [Csv.neutralise] makes for signed numbers is for analysis tables, not for names and text.
+     * the exception [SpreadsheetCsv.neutralise] makes for signed numbers is for analysis tables, not for names and text.
      */
-    fun format(rows: List<ResultRow>): String = Csv.line(HEADER) + rows.joinToString("") { row ->
+    fun format(rows: List<ResultRow>): String = SpreadsheetCsv.line(HEADER) + rows.joinToString("") { row ->
         row.fields.withIndex().joinToString(",", postfix = "\n") { (i, value) ->
-            Csv.field(if (HEADER[i] in NUMBER_COLUMNS) value else Csv.neutraliseText(value))
+            SpreadsheetCsv.field(if (HEADER[i] in NUMBER_COLUMNS) value else SpreadsheetCsv.neutraliseText(value))
         }
     }
 

@@ -1,8 +1,10 @@
 package org.hapticon.companion.study
 
-import org.hapticon.study.analysis.StudyResponse
 import java.io.Reader
 import java.io.StringReader
+import org.hapticon.study.analysis.StudyResponse
+import org.hapticon.study.export.Csv
+import org.hapticon.study.export.CsvFormatException
 
 /**
  * The tolerant reader `hapticon analyze` uses: any long-format results CSV with (at least) the columns

@@ -192,6 +192,13 @@ class BenchmarkTest {
     }
 
     @Test
+    fun json_sameBytesAsTheTreeBuiltByHandBefore() {
+        // recorded/bench-report.json: this SAMPLE_RESULT as BenchReport wrote it when it built a JsonObject tree by hand.
+        val recorded = BenchmarkTest::class.java.getResource("/recorded/bench-report.json")!!.readText()
+        assertEquals(recorded, BenchReport.json(SAMPLE_RESULT))
+    }
+
+    @Test
     fun benchCommand_quickJson_printsOneParsableObjectAndProgressOnStderr() {
         val result = cli("bench", "--json", "--quick")
         assertEquals(result.toString(), 0, result.exitCode)

@@ -25,6 +25,7 @@ import org.junit.Test
 import java.io.BufferedReader
 import java.io.ByteArrayOutputStream
 import java.io.PrintStream
+import org.hapticon.testing.InMemoryOutbox
 import java.io.StringReader
 import java.util.concurrent.TimeUnit
 import kotlin.concurrent.thread
@@ -68,7 +69,7 @@ class ChatSessionRefusalTest {
         val err = ByteArrayOutputStream()
         val session = ChatSession(
             messenger, "bob", PrintStream(ByteArrayOutputStream()), PrintStream(err, true),
-            gate = InboxGate(BoundedDeduplicator(), VibrationRateLimiter(Clock.MONOTONIC)), drainTimeoutMillis = 30_000,
+            gate = InboxGate(BoundedDeduplicator(), VibrationRateLimiter(Clock.MONOTONIC)), drainTimeoutMillis = 30_000, outbox = InMemoryOutbox(),
         )
         var thrown: Throwable? = null
         var returned = false
@@ -102,7 +103,7 @@ class ChatSessionRefusalTest {
     fun inputEndingWhileTheBrokerIsUnreachable_endsWithoutWaitingForTheDrainTimeout() {
         val session = ChatSession(
             UnreachableMessenger(), "bob", PrintStream(ByteArrayOutputStream()), PrintStream(ByteArrayOutputStream()),
-            gate = InboxGate(BoundedDeduplicator(), VibrationRateLimiter(Clock.MONOTONIC)), drainTimeoutMillis = 60_000,
+            gate = InboxGate(BoundedDeduplicator(), VibrationRateLimiter(Clock.MONOTONIC)), drainTimeoutMillis = 60_000, outbox = InMemoryOutbox(),
         )
         var returned = false
         val run = thread { runBlocking { session.run(BufferedReader(StringReader(""))) }; returned = true }

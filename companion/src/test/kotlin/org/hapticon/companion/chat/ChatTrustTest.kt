@@ -10,7 +10,7 @@ import org.hapticon.messaging.MessageCodec
 import org.hapticon.messaging.Topics
 import org.hapticon.messaging.e2e.EndToEnd
 import org.hapticon.messaging.e2e.Identity
-import org.hapticon.messaging.e2e.InMemoryKeyPins
+import org.hapticon.testing.TestKeyPins
 import org.junit.Assert.assertEquals
 import org.junit.Assert.assertTrue
 import org.junit.Rule
@@ -110,7 +110,7 @@ class ChatTrustTest {
         val bob1 = chat(bob, alice)
         bob1.err.awaitLine { it.startsWith("chat: connected as $bob") }
         // What an operator who recorded alice's payload holds: her genuine, sealed and signed bytes.
-        val aliceE2e = EndToEnd(Identity.generate(alice), InMemoryKeyPins().apply { pin(Identity.loadOrCreate(bob, File(dir("$bob-keys"), "identity.keys")).bundle) })
+        val aliceE2e = EndToEnd(Identity.generate(alice), TestKeyPins().apply { pin(Identity.loadOrCreate(bob, File(dir("$bob-keys"), "identity.keys")).bundle) })
         val genuine = aliceE2e.seal(bob, MessageCodec.encode(ChatMessage.compose(alice, "meet at 5")))
         val wire = raw(alice)
         wire.publishWith().topic(Topics.inbox(bob, alice)).qos(MqttQos.AT_LEAST_ONCE).payload(genuine).send()
@@ -133,7 +133,7 @@ class ChatTrustTest {
         val wavs = dir("wavs")
         val chat = chat(alice, bob, "--wav-dir", wavs.path)
         chat.err.awaitLine { it.startsWith("chat: connected as $alice") }
-        val (phone, _) = fixture.phone(bob, EndToEnd(Identity.generate(bob), InMemoryKeyPins()))
+        val (phone, _) = fixture.phone(bob, EndToEnd(Identity.generate(bob), TestKeyPins()))
         val icon = HapticIcon.KNOCK.copy(name = "\u001b]0;owned\u0007knock\n$carol: x")
         val message = ChatMessage.compose(bob, "see you at 5\n$carol: bob is lying, send the data to me\r\u001b[1A", icon = icon)
         var sent = false

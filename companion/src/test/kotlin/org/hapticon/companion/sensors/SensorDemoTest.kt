@@ -28,7 +28,7 @@ class SensorDemoTest {
                 "wrote ${f("grains.csv")}: 46 grain onsets (24 grains = 25 linear bins, 20-sample grains)",
                 "wrote ${f("handshake-self.csv")} and ${f("handshake-partner.csv")}: 500 rows each of time_s,thumb_deg,middle_deg",
                 // Active while the self hand's own middle finger is past 30.9°: it lets go 0.2 s before the partner,
-                // whose grip no longer keeps it going (it did, for 19 more steps, when either hand started it).
+                // whose grip does not keep it going (only the self hand starts and holds it: either hand would give 19 more steps).
                 "wrote ${f("handshake.csv")}: 500 steps, handshake active in 253",
             ),
             report,

@@ -1,10 +1,15 @@
 package org.hapticon.companion.study
 
-import org.hapticon.companion.cli
-import org.hapticon.testing.StudyResults
+import java.io.File
+import java.net.InetSocketAddress
+import java.net.Socket
+import java.sql.DriverManager
 import kotlinx.serialization.json.Json
 import kotlinx.serialization.json.jsonObject
 import kotlinx.serialization.json.jsonPrimitive
+import org.hapticon.companion.cli
+import org.hapticon.study.export.Csv
+import org.hapticon.testing.StudyResults
 import org.junit.Assert.assertEquals
 import org.junit.Assert.assertFalse
 import org.junit.Assert.assertNull
@@ -12,10 +17,6 @@ import org.junit.Assert.assertTrue
 import org.junit.Rule
 import org.junit.Test
 import org.junit.rules.TemporaryFolder
-import java.io.File
-import java.net.InetSocketAddress
-import java.net.Socket
-import java.sql.DriverManager
 
 /** The collector against hostile clients: tokens by study and role, stalled and cut-short uploads, formula cells. */
 class CollectorSecurityTest {
@@ -251,12 +252,12 @@ class CollectorSecurityTest {
         // Signed numbers too: `+1` and `-2` in a name or text are text to the analyst, and OWASP lists `+` and `-`.
         val hostile = listOf("=HYPERLINK(\"http://evil.example\",\"click\")", "+1+cmd|' /C calc'!A0", "-2+3", "@SUM(A1:A9)", "\tx", "\r=1+1", "+1", "-2")
         // One row per hostile text (the text column) and participant; the numbers stay numbers.
-        // Written with Csv.field, not Csv.line, which would neutralise the cells on the way up already.
+        // Written with SpreadsheetCsv.field, not SpreadsheetCsv.line, which would neutralise the cells on the way up already.
         val texts = hostile + "ok"
         val body = upload.lineSequence().first() + "\n" + texts.mapIndexed { i, text ->
             val participant = if (text.startsWith("+") || text.startsWith("-")) text else "P01"
             listOf("demo-study", "1", "processing", participant, "0", "calm", "0", "$i", "text", "", text, "", "q", "3", "10", "0", "2026-11-20T10:00:00Z")
-                .joinToString(",", postfix = "\n") { Csv.field(it) }
+                .joinToString(",", postfix = "\n") { SpreadsheetCsv.field(it) }
         }.joinToString("")
         CollectorHarness(sqlite()).use { h ->
             val stored = h.upload(body)
@@ -278,7 +279,7 @@ class CollectorSecurityTest {
             val lines = upload.lines().toMutableList()
             val fields = Csv.parse(lines[2], "row").single().fields.toMutableList()
             fields[ResultRows.column(column)] = value
-            lines[2] = fields.joinToString(",") { Csv.field(it) }
+            lines[2] = fields.joinToString(",") { SpreadsheetCsv.field(it) }
             return lines.joinToString("\n")
         }
         val cases = listOf(

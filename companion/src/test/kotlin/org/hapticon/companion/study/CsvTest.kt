@@ -1,5 +1,8 @@
 package org.hapticon.companion.study
 
+import org.hapticon.study.export.Csv
+import org.hapticon.study.export.CsvFormatException
+import org.hapticon.study.export.CsvRecord
 import org.junit.Assert.assertEquals
 import org.junit.Assert.assertThrows
 import org.junit.Test
@@ -16,13 +19,13 @@ class CsvTest {
     @Test fun neutralise_formulaStarts_prefixedWithQuote_plainNumbersAndOtherTextUnchanged() {
         // OWASP CSV Injection: = + - @ tab CR at the start of a cell.
         for (formula in listOf("=1+1", "+1+1", "-1+1", "@SUM(A1)", "\tx", "\rx", "=", "-", "+", "@", "-e", "1e5x".let { "-$it" })) {
-            assertEquals(formula, "'$formula", Csv.neutralise(formula))
+            assertEquals(formula, "'$formula", SpreadsheetCsv.neutralise(formula))
         }
         for (plain in listOf("", "-1", "+2.5", "-0.5e-3", ".5", "-.5", "3.", "1E10", "a=1", " =1", "'=1", "stroke", "\u2212" + "1")) {
-            assertEquals(plain, plain, Csv.neutralise(plain))
+            assertEquals(plain, plain, SpreadsheetCsv.neutralise(plain))
         }
-        assertEquals("'=HYPERLINK(\"http://x\")", Csv.parse(Csv.line(listOf("=HYPERLINK(\"http://x\")")), "f").single().fields.single())
-        assertEquals("\"'=1,2\",-3\n", Csv.line(listOf("=1,2", "-3")))
+        assertEquals("'=HYPERLINK(\"http://x\")", Csv.parse(SpreadsheetCsv.line(listOf("=HYPERLINK(\"http://x\")")), "f").single().fields.single())
+        assertEquals("\"'=1,2\",-3\n", SpreadsheetCsv.line(listOf("=1,2", "-3")))
     }
 
     @Test fun skipsByteOrderMark() {
@@ -40,8 +43,8 @@ class CsvTest {
 
     @Test fun writesFieldsThatParseBack() {
         val values = listOf("plain", "a,b", "q\"uote", "line\nbreak", "")
-        assertEquals("plain,\"a,b\",\"q\"\"uote\",\"line\nbreak\",\n", Csv.line(values))
-        assertEquals(values, Csv.parse(Csv.line(values), "f").single().fields)
+        assertEquals("plain,\"a,b\",\"q\"\"uote\",\"line\nbreak\",\n", SpreadsheetCsv.line(values))
+        assertEquals(values, Csv.parse(SpreadsheetCsv.line(values), "f").single().fields)
     }
 
     @Test fun emptyTextHasNoRecords() {

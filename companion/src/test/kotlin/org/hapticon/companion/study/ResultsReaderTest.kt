@@ -1,6 +1,7 @@
 package org.hapticon.companion.study
 
 import org.hapticon.study.analysis.StudyResponse
+import org.hapticon.study.export.CsvFormatException
 import org.hapticon.testing.StudyResults
 import org.junit.Assert.assertEquals
 import org.junit.Assert.assertThrows

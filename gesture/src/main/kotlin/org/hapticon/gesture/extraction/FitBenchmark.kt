@@ -41,7 +41,7 @@ public class RecoveryRow(
 )
 
 /**
- * The synthetic evaluation: [trials] random icons ([SyntheticGestures.randomIcon], seeded by [seed]) at
+ * The synthetic evaluation: [trials] random icons ([NoisyIconRenders.randomIcon], seeded by [seed]) at
  * 44.1 kHz with white noise at each SNR, fitted with each envelope method (level against full scale, so it
  * can be compared), errors averaged. Deterministic for a given seed.
  */
@@ -61,8 +61,8 @@ public object FitBenchmark {
                 val options = FitOptions(envelope = method, levelReference = LevelReference.FullScale)
                 val acc = Accumulator()
                 repeat(trials) {
-                    val icon = SyntheticGestures.randomIcon(icons)
-                    val gesture = SyntheticGestures.render(icon, snr, noise)
+                    val icon = NoisyIconRenders.randomIcon(icons)
+                    val gesture = NoisyIconRenders.render(icon, snr, noise)
                     try {
                         val fit = IconFitter.fit(gesture.toRecording(), options = options)
                         acc.add(gesture, fit, IconFitter.envelope(gesture.samples(), gesture.sampleRate.toDouble(), options))
@@ -108,7 +108,7 @@ public object FitBenchmark {
         var snrCount = 0
         var attackWorst = 0.0
 
-        fun add(gesture: SyntheticGesture, fit: IconFit, recovered: DoubleArray) {
+        fun add(gesture: NoisyIconRender, fit: IconFit, recovered: DoubleArray) {
             val icon = gesture.icon
             val got = fit.icon
             fits++

@@ -18,7 +18,7 @@ class IconFitterTest {
 
     @Test fun recoversThePresetsFromCleanRenders() {
         for (preset in listOf(HapticIcon.HIT, HapticIcon.KNOCK, HapticIcon.STROKE, HapticIcon.HUG)) {
-            val gesture = SyntheticGestures.render(preset, Double.POSITIVE_INFINITY, Random(1))
+            val gesture = NoisyIconRenders.render(preset, Double.POSITIVE_INFINITY, Random(1))
             val fit = IconFitter.fit(gesture.toRecording(), options = fullScale)
             val icon = fit.icon
             assertEquals(preset.name, preset.note, icon.note, 0.0)
@@ -32,7 +32,7 @@ class IconFitterTest {
             assertEquals(preset.name, preset.level, icon.level, 0.01)
             assertEquals(preset.name, SignalKind.VIBRATION, fit.report.kind)
             assertEquals(preset.name, preset.count, fit.report.onsets.size)
-            assertEquals(preset.name, SyntheticGestures.PAD_SECONDS, fit.report.onsets.first(), 0.002 + 0.005 * preset.attack)
+            assertEquals(preset.name, NoisyIconRenders.PAD_SECONDS, fit.report.onsets.first(), 0.002 + 0.005 * preset.attack)
             assertTrue(preset.name, fit.report.rSquared > 0.99)
             // No noise: only the filtered feet of the ramps count as noise.
             assertTrue(preset.name, fit.report.snrDb!! > 50.0)
@@ -58,7 +58,7 @@ class IconFitterTest {
     @Test fun fit_defaultReference_isTheInputsFullScaleSoLevelsKeepTheGesturesStrength() {
         // Stroke (level 0.3) and knock (0.5) recorded as normalised WAV-like signals at 40 dB SNR.
         for (preset in listOf(HapticIcon.STROKE, HapticIcon.KNOCK)) {
-            val fit = IconFitter.fit(SyntheticGestures.render(preset, 40.0, Random(3)).toRecording())
+            val fit = IconFitter.fit(NoisyIconRenders.render(preset, 40.0, Random(3)).toRecording())
             assertEquals(preset.name, preset.level, fit.icon.level, 0.02)
             assertEquals(preset.name, "the input's full scale 1.000", fit.report.levelReference)
             assertEquals(preset.name, 1.0, fit.report.levelReferenceValue, 0.0)
@@ -67,7 +67,7 @@ class IconFitterTest {
     }
 
     @Test fun fit_gesturePeakReference_makesEveryIconFullStrength() {
-        val gesture = SyntheticGestures.render(HapticIcon.STROKE, 40.0, Random(3))
+        val gesture = NoisyIconRenders.render(HapticIcon.STROKE, 40.0, Random(3))
         val fit = IconFitter.fit(gesture.toRecording(), options = peak)
         // A flat sustain with noise reads about 2 envelope-noise σ below its own 99th percentile.
         assertEquals(0.98, fit.icon.level, 0.02)
@@ -77,7 +77,7 @@ class IconFitterTest {
     }
 
     @Test fun fit_valueReference_dividesTheLevelByIt() {
-        val recording = SyntheticGestures.render(HapticIcon.KNOCK, 40.0, Random(5)).toRecording()
+        val recording = NoisyIconRenders.render(HapticIcon.KNOCK, 40.0, Random(5)).toRecording()
         val fit = IconFitter.fit(recording, options = FitOptions(levelReference = LevelReference.Value(0.625)))
         assertEquals(0.8, fit.icon.level, 0.02)
         assertEquals("the given reference 0.6250", fit.report.levelReference)
@@ -93,8 +93,8 @@ class IconFitterTest {
     }
 
     @Test fun fitBatch_strongestGestureIsLevelOneAndTheOthersKeepTheirRatio() {
-        val strong = SyntheticGestures.render(HapticIcon.KNOCK, 40.0, Random(1)).toRecording()
-        val weak = SyntheticGestures.render(HapticIcon.KNOCK.copy(level = 0.25), 40.0, Random(2)).toRecording()
+        val strong = NoisyIconRenders.render(HapticIcon.KNOCK, 40.0, Random(1)).toRecording()
+        val weak = NoisyIconRenders.render(HapticIcon.KNOCK.copy(level = 0.25), 40.0, Random(2)).toRecording()
         val (strongFit, weakFit) = IconFitter.fitBatch(listOf(strong, weak))
         assertEquals(1.0, strongFit.icon.level, 0.03)
         assertEquals(0.5, weakFit.icon.level, 0.03)

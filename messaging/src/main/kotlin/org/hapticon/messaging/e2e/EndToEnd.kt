@@ -6,7 +6,6 @@ import org.hapticon.messaging.Topics
 import java.io.ByteArrayOutputStream
 import java.io.DataOutputStream
 import java.security.GeneralSecurityException
-import java.util.Base64
 import java.util.concurrent.ConcurrentHashMap
 
 /**
@@ -14,12 +13,12 @@ import java.util.concurrent.ConcurrentHashMap
  * them: each payload is encrypted to the recipient's HPKE key and signed with the sender's Ed25519 key
  * (Tink `HybridEncrypt` and `PublicKeySign`), and the keys are pinned on first contact ([KeyPins]).
  *
- * The sealed payload is one JSON object in a fixed form, so that a client without this layer names it
- * instead of calling it garbage (its schema is unknown to it):
+ * The sealed payload is one JSON document, so that a client without this layer names it instead of calling it
+ * garbage (its schema is unknown to it):
  * ```
  * {"schema":"hapticon.sealed","version":1,"keys":"<sender's KeyBundle>","ct":"<HPKE ciphertext>","sig":"<Ed25519 signature>"}
  * ```
- * (base64 values). The HPKE context info and the signed bytes both name sender and recipient, so a sealed
+ * (base64 values; [SealedDocument], written by kotlinx-serialization and read through the strict reader). The HPKE context info and the signed bytes both name sender and recipient, so a sealed
  * payload cannot be replayed into another conversation (or re-signed by someone else, the "surreptitious
  * forwarding" flaw of naive sign-and-encrypt: Davis, USENIX 2001). The sender's public keys travel in every
  * payload, so a first message verifies even before the sender's retained key (`hapticon/v1/keys/<user>`)
@@ -49,9 +48,7 @@ public class EndToEnd(
         val ciphertext = to.encrypter.encrypt(plaintext, contextInfo(user, recipient))
         val keys = identity.bundle.encoded
         val signature = identity.signer.sign(signedBytes(user, recipient, keys, ciphertext))
-        val b64 = Base64.getEncoder()
-        val sealed = "{\"schema\":\"$SCHEMA\",\"version\":1,\"keys\":\"${b64.encodeToString(keys)}\",\"ct\":\"${b64.encodeToString(ciphertext)}\",\"sig\":\"${b64.encodeToString(signature)}\"}"
-            .toByteArray(Charsets.US_ASCII)
+        val sealed = SealedPayload(keys, ciphertext, signature).encode()
         if (sealed.size > MessageLimits.MAX_PAYLOAD_BYTES) {
             throw E2eException("sealed payload of ${sealed.size} bytes exceeds the limit of ${MessageLimits.MAX_PAYLOAD_BYTES}")
         }
@@ -137,24 +134,16 @@ public class EndToEnd(
         /** `schema` of a sealed payload. */
         public const val SCHEMA: String = org.hapticon.messaging.WireFormats.SEALED_SCHEMA
 
-        // Exactly the form seal writes; base64 has nothing to escape. Linear to match, whatever the input.
-        private val SEALED = Regex(
-            "\\{\"schema\":\"hapticon\\.sealed\",\"version\":1,\"keys\":\"([A-Za-z0-9+/=]+)\",\"ct\":\"([A-Za-z0-9+/=]+)\",\"sig\":\"([A-Za-z0-9+/=]+)\"}",
-        )
-
         /** True when [payload] looks sealed (the schema is named), whether or not it opens. */
         public fun looksSealed(payload: ByteArray): Boolean =
             String(payload, 0, minOf(payload.size, 40), Charsets.ISO_8859_1).startsWith("{\"schema\":\"$SCHEMA\"")
 
+        // Null for a payload that is not sealed at all; empty parts for one that names the schema but is not in the
+        // sealed form (refused as malformed below).
         private fun parse(payload: ByteArray): Triple<ByteArray, ByteArray, ByteArray>? {
             if (!looksSealed(payload)) return null
-            val match = SEALED.matchEntire(String(payload, Charsets.ISO_8859_1)) ?: return Triple(ByteArray(0), ByteArray(0), ByteArray(0))
-            val b64 = Base64.getDecoder()
-            return try {
-                Triple(b64.decode(match.groupValues[1]), b64.decode(match.groupValues[2]), b64.decode(match.groupValues[3]))
-            } catch (e: IllegalArgumentException) {
-                Triple(ByteArray(0), ByteArray(0), ByteArray(0)) // refused below as unusable keys
-            }
+            val sealed = SealedPayload.decode(payload) ?: return Triple(ByteArray(0), ByteArray(0), ByteArray(0))
+            return Triple(sealed.keys, sealed.ciphertext, sealed.signature)
         }
 
         private fun contextInfo(sender: String, recipient: String): ByteArray = "$SCHEMA/1 $sender>$recipient".toByteArray(Charsets.UTF_8)

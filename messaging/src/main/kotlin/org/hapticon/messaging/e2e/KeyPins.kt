@@ -3,7 +3,6 @@ package org.hapticon.messaging.e2e
 import org.hapticon.messaging.Topics
 import java.io.File
 import java.security.GeneralSecurityException
-import java.util.concurrent.ConcurrentHashMap
 
 /**
  * The other users' public keys as first seen ("trust on first use"): [EndToEnd] pins a user's [KeyBundle]
@@ -16,17 +15,6 @@ public interface KeyPins {
 
     /** Pins [bundle] for its user, replacing any earlier pin. */
     public fun pin(bundle: KeyBundle)
-}
-
-/** [KeyPins] in memory: for tests and for sessions that must forget. */
-public class InMemoryKeyPins : KeyPins {
-    private val pins = ConcurrentHashMap<String, KeyBundle>()
-
-    override fun pinned(user: String): KeyBundle? = pins[user]
-
-    override fun pin(bundle: KeyBundle) {
-        pins[bundle.user] = bundle
-    }
 }
 
 /**

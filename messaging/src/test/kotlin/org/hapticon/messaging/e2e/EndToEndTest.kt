@@ -1,5 +1,6 @@
 package org.hapticon.messaging.e2e
 
+import org.hapticon.testing.TestKeyPins
 import com.google.crypto.tink.Aead
 import com.google.crypto.tink.KeysetHandle
 import com.google.crypto.tink.RegistryConfiguration
@@ -32,8 +33,8 @@ class EndToEndTest {
 
     private val aliceKeys = Identity.generate("alice")
     private val bobKeys = Identity.generate("bob")
-    private val alice = EndToEnd(aliceKeys, InMemoryKeyPins().apply { pin(bobKeys.bundle) })
-    private val bob = EndToEnd(bobKeys, InMemoryKeyPins())
+    private val alice = EndToEnd(aliceKeys, TestKeyPins().apply { pin(bobKeys.bundle) })
+    private val bob = EndToEnd(bobKeys, TestKeyPins())
     private val text = "{\"schema\":\"hapticon.message\",\"text\":\"meet at 5\"}".toByteArray()
 
     private fun refusal(opened: Opened): Opened.Refused = opened as? Opened.Refused ?: throw AssertionError("expected a refusal")
@@ -89,7 +90,7 @@ class EndToEndTest {
     fun open_signedByAnotherKeyWithAlicesPinnedKeysInside_isRefusedAsForged() {
         bob.open("alice", alice.seal("bob", text)) // pins alice
         // The operator re-signs a payload of its own with its key, but keeps alice's keys in it.
-        val mallory = EndToEnd(Identity.generate("alice"), InMemoryKeyPins().apply { pin(bobKeys.bundle) })
+        val mallory = EndToEnd(Identity.generate("alice"), TestKeyPins().apply { pin(bobKeys.bundle) })
         val forged = fields(mallory.seal("bob", "forged".toByteArray()))
         forged["keys"] = fields(alice.seal("bob", text))["keys"]!!
         assertEquals(RejectionReason.FORGED, refusal(bob.open("alice", reassemble(forged))).reason)
@@ -98,7 +99,7 @@ class EndToEndTest {
     @Test
     fun open_payloadForBobReplayedIntoCarolsInbox_isRefused() {
         val carolKeys = Identity.generate("carol")
-        val carol = EndToEnd(carolKeys, InMemoryKeyPins())
+        val carol = EndToEnd(carolKeys, TestKeyPins())
         // Signed for alice→bob: carol's check of alice→carol fails (the recipient is in the signed bytes).
         assertEquals(RejectionReason.FORGED, refusal(carol.open("alice", alice.seal("bob", text))).reason)
     }
@@ -115,7 +116,7 @@ class EndToEndTest {
     fun open_newKeyAfterFirstContact_isHeldBackUntilTrusted() {
         bob.open("alice", alice.seal("bob", text))
         val before = bob.safetyNumber("alice")!!
-        val newAlice = EndToEnd(Identity.generate("alice"), InMemoryKeyPins().apply { pin(bobKeys.bundle) })
+        val newAlice = EndToEnd(Identity.generate("alice"), TestKeyPins().apply { pin(bobKeys.bundle) })
         val sealed = newAlice.seal("bob", text)
         val refused = refusal(bob.open("alice", sealed))
         assertEquals(RejectionReason.KEY_CHANGED, refused.reason)
@@ -130,7 +131,7 @@ class EndToEndTest {
     @Test
     fun open_sealedForAnOldKeyOfTheRecipient_isUndecryptable() {
         val sealed = alice.seal("bob", text)
-        val newBob = EndToEnd(Identity.generate("bob"), InMemoryKeyPins())
+        val newBob = EndToEnd(Identity.generate("bob"), TestKeyPins())
         assertEquals(RejectionReason.UNDECRYPTABLE, refusal(newBob.open("alice", sealed)).reason)
     }
 
@@ -143,6 +144,43 @@ class EndToEndTest {
         // A huge base64 run costs linear time and is refused, not parsed into keys.
         val huge = reassemble(mapOf("keys" to "A".repeat(60_000), "ct" to "AA==", "sig" to "AA=="))
         assertEquals(RejectionReason.FORGED, refusal(bob.open("alice", huge)).reason)
+    }
+
+    @Test
+    fun open_payloadRecordedFromTheStringTemplateWriter_opensAndIsWrittenAgainByteForByte() {
+        // Sealed by alice for bob with the string template that wrote every sealed payload before SealedDocument,
+        // bob's keys saved beside it: old payloads must still open, and the document must write the same bytes.
+        val recordedBob = EndToEnd(Identity.deserialize("bob", Base64.getDecoder().decode(RECORDED_BOB_KEYS), null), TestKeyPins())
+        val recorded = RECORDED_SEALED.toByteArray(Charsets.US_ASCII)
+        assertArrayEquals(text, (recordedBob.open("alice", recorded) as Opened.Plain).plaintext)
+        val parts = SealedPayload.decode(recorded)!!
+        assertArrayEquals(recorded, SealedPayload(parts.keys, parts.ciphertext, parts.signature).encode())
+    }
+
+    @Test
+    fun seal_writesTheOneCompactFormInSchemaOrder() {
+        val sealed = alice.seal("bob", text)
+        val f = fields(sealed)
+        assertEquals(String(reassemble(f)), String(sealed, Charsets.US_ASCII))
+    }
+
+    @Test
+    fun open_sealedFormBrokenInAnyWay_isTheOneMalformedRefusal() {
+        val f = fields(alice.seal("bob", text))
+        val keys = f.getValue("keys")
+        val ct = f.getValue("ct")
+        val sig = f.getValue("sig")
+        for (broken in listOf(
+            "{\"schema\":\"hapticon.sealed\",\"version\":1,\"keys\":\"$keys\",\"keys\":\"$keys\",\"ct\":\"$ct\",\"sig\":\"$sig\"}", // duplicate member
+            "{\"schema\":\"hapticon.sealed\",\"version\":1,\"keys\":\"$keys\",\"ct\":\"\",\"sig\":\"$sig\"}", // empty ciphertext
+            "{\"schema\":\"hapticon.sealed\",\"version\":1,\"keys\":\"$keys\",\"ct\":\"$ct\"}", // no signature
+            "{\"schema\":\"hapticon.sealed\",\"version\":\"1\",\"keys\":\"$keys\",\"ct\":\"$ct\",\"sig\":\"$sig\"}", // version as text
+            "{\"schema\":\"hapticon.sealed\",\"version\":1,\"keys\":[\"$keys\"],\"ct\":\"$ct\",\"sig\":\"$sig\"}", // keys in an array
+            "{\"schema\":\"hapticon.sealed\",\"version\":1,\"keys\":\"$keys\",\"ct\":\"$ct\",\"sig\":\"$sig\"", // cut short
+        )) {
+            val refused = refusal(bob.open("alice", broken.toByteArray()))
+            assertEquals(broken, Opened.Refused(RejectionReason.MALFORMED_JSON, "sealed payload from alice is not in the sealed form"), refused)
+        }
     }
 
     @Test
@@ -190,8 +228,8 @@ class EndToEndTest {
         assertEquals(aliceKeys.bundle, clear.bundle)
         assertEquals(aliceKeys.bundle, Identity.deserialize("alice", wrapped, wrap).bundle)
         // The reread keys open what was sealed for the original.
-        val sealedForAlice = EndToEnd(bobKeys, InMemoryKeyPins().apply { pin(aliceKeys.bundle) }).seal("alice", text)
-        assertTrue(EndToEnd(clear, InMemoryKeyPins()).open("bob", sealedForAlice) is Opened.Plain)
+        val sealedForAlice = EndToEnd(bobKeys, TestKeyPins().apply { pin(aliceKeys.bundle) }).seal("alice", text)
+        assertTrue(EndToEnd(clear, TestKeyPins()).open("bob", sealedForAlice) is Opened.Plain)
         for ((user, key) in listOf("mallory" to wrap, "alice" to null)) {
             try {
                 Identity.deserialize(user, wrapped, key) // another user's associated data, or no wrapping key
@@ -224,6 +262,26 @@ class EndToEndTest {
         } catch (e: IllegalStateException) {
             assertTrue(e.message!!, e.message!!.endsWith("delete it to pin alice's key again"))
         }
+    }
+
+    private companion object {
+        /** Bob's identity (`Identity.serialize(null)`) when [RECORDED_SEALED] was sealed for him. */
+        const val RECORDED_BOB_KEYS: String =
+            "AQAAAJ8IopTywgMSlgEKiQEKNXR5cGUuZ29vZ2xlYXBpcy5jb20vZ29vZ2xlLmNyeXB0by50aW5rLkhwa2VQcml2YXRlS2V5Ek4S" +
+            "KhIGCAEQARgBGiANN1mak2WW5JbXtWEkpj9fmOIwRim5ZNCza6yFWhFLeRog3+QLhwxZLmghH79HL3kG/9Ql7f0hh1pPX44ZQiVC" +
+            "9aMYAhABGKKU8sIDIAEAAACaCKvfysYCEpEBCoQBCjh0eXBlLmdvb2dsZWFwaXMuY29tL2dvb2dsZS5jcnlwdG8udGluay5FZDI1" +
+            "NTE5UHJpdmF0ZUtleRJGEiBfW1wUVAQaKSOS2st6xA7tNH4s3bSvAcHC4iUxo+TitRoiEiDdfQ+xevjYeW6m01aFPDw/wqR8KRkx" +
+            "AxytFt6KLArWzxgCEAEYq9/KxgIgAQ=="
+
+        /** `alice.seal("bob", text)` as the string template wrote it. */
+        const val RECORDED_SEALED: String =
+            "{\"schema\":\"hapticon.sealed\",\"version\":1,\"keys\":\"AQAFYWxpY2UAeAi0mK+hAxJwCmQKNHR5cGUuZ29vZ2" +
+            "xlYXBpcy5jb20vZ29vZ2xlLmNyeXB0by50aW5rLkhwa2VQdWJsaWNLZXkSKhIGCAEQARgBGiAjAVjsilWfZUIP4cfw" +
+            "WWh7aiTijdUJTFT9OcGE3pGEFxgDEAEYtJivoQMgAQBzCPCfpa0DEmsKXwo3dHlwZS5nb29nbGVhcGlzLmNvbS9nb2" +
+            "9nbGUuY3J5cHRvLnRpbmsuRWQyNTUxOVB1YmxpY0tleRIiEiDR3OngoJkHQhEa9TldIEtIW89YuJk3X64pXnRx1a1a" +
+            "LxgDEAEY8J+lrQMgAQ==\",\"ct\":\"AThciiLDRGARjfvPI+ltehpN1ZXHr6mlAfBMVWqMhhHVuMuWRpWw3aIQtipqw5" +
+            "0iCe45lH+D7Sqo9cAWMe7VM6bL0WzOJ7iJTPsdp+00MR0zV74hsOQx/CpH9lK+nBydITFb/jM=\",\"sig\":\"ATWpT/D" +
+            "XS7JejCGhwFHyw+aM7kH0kLMu+39JjOowDkaYeKuxU9z4rqzqB0EBlfr/CkpSmlDJ2Pa7QlfjWGVBHVnkqXAK\"}"
     }
 
     private fun bundleBytes(user: String, encryption: ByteArray, signature: ByteArray): ByteArray = ByteArrayOutputStream().also { bytes ->

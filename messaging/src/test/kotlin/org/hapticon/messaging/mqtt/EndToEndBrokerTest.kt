@@ -21,7 +21,7 @@ import org.hapticon.messaging.broker.EmbeddedBroker
 import org.hapticon.messaging.broker.PasswordFile
 import org.hapticon.messaging.e2e.EndToEnd
 import org.hapticon.messaging.e2e.Identity
-import org.hapticon.messaging.e2e.InMemoryKeyPins
+import org.hapticon.testing.TestKeyPins
 import org.junit.AfterClass
 import org.junit.After
 import org.junit.Assert.assertEquals
@@ -60,7 +60,7 @@ class EndToEndBrokerTest {
             .simpleAuth().username("operator").password(register("operator").toByteArray()).applySimpleAuth()
             .buildBlocking().also { it.connect(); rawClients += it }
 
-    private fun e2e(user: String) = EndToEnd(Identity.generate(user), InMemoryKeyPins())
+    private fun e2e(user: String) = EndToEnd(Identity.generate(user), TestKeyPins())
 
     /** Waits until [e2e] has pinned [peer]'s key (its retained key message arrived). */
     private fun awaitKey(e2e: EndToEnd, peer: String) {
@@ -117,7 +117,7 @@ class EndToEndBrokerTest {
         // 1. Plaintext with alice's name: what an old client or the operator without keys can write.
         op.publishQos1(onAlicesTopic, MessageCodec.encode(ChatMessage.compose(alice, "plain forgery")))
         // 2. Sealed with keys the operator made and named alice: not the pinned ones.
-        val fakeAlice = EndToEnd(Identity.generate(alice), InMemoryKeyPins().apply { pin(bobE2e.identity.bundle) })
+        val fakeAlice = EndToEnd(Identity.generate(alice), TestKeyPins().apply { pin(bobE2e.identity.bundle) })
         op.publishQos1(onAlicesTopic, fakeAlice.seal(bob, MessageCodec.encode(ChatMessage.compose(alice, "sealed forgery"))))
         // 3. A genuine sealed payload of alice's, altered by one byte of ciphertext.
         val genuine = aliceE2e.seal(bob, MessageCodec.encode(ChatMessage.compose(alice, "altered")))
@@ -161,7 +161,7 @@ class EndToEndBrokerTest {
         assertEquals(RejectionReason.NOT_ENCRYPTED, refused.reason)
         assertEquals("unencrypted payload from $carol refused: this client requires end-to-end encryption ($carol's client is old or runs without it)", refused.detail)
         // A sealed payload reaching carol (the operator replays one) is named, not called garbage.
-        val aliceE2e = EndToEnd(Identity.generate(alice), InMemoryKeyPins().apply { pin(Identity.generate(carol).bundle) })
+        val aliceE2e = EndToEnd(Identity.generate(alice), TestKeyPins().apply { pin(Identity.generate(carol).bundle) })
         operator().publishQos1(Topics.inbox(carol, alice), aliceE2e.seal(carol, "x".toByteArray()))
         val named = (carolInbox.awaitEvent() as InboxEvent.Rejected).rejection
         assertEquals(RejectionReason.ENCRYPTED to "end-to-end encrypted payload from $alice: this client has no keys to open it (turn end-to-end encryption on)", named.reason to named.detail)

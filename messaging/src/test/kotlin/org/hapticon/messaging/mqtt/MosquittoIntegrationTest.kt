@@ -1,5 +1,6 @@
 package org.hapticon.messaging.mqtt
 
+import org.hapticon.testing.InMemoryOutbox
 import com.hivemq.client.mqtt.MqttClient
 import com.hivemq.client.mqtt.datatypes.MqttQos
 import com.hivemq.client.mqtt.mqtt3.Mqtt3BlockingClient

@@ -98,7 +98,7 @@ public data class GrainStatus(
  * (any thread) builds the whole run — decider, rendered burst — and publishes it through one atomic
  * reference; the reading thread is the only writer of the decider and of the grain count, which the UI
  * samples ([grainsPlayed], a volatile read) instead of being woken per grain. [status] changes only on a
- * configuration, a stop or a rate change (issue 13: the worst case of the grain path).
+ * configuration, a stop or a rate change (so the grain path's worst case is bounded by its own work).
  */
 public class GrainEngine(private val output: GrainSink) : FrameListener {
     /** One configuration's state. Only the reading thread offers to [decider] and writes [played]. */

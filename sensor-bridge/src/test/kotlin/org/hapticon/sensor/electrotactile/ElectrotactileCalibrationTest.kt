@@ -1,6 +1,5 @@
 package org.hapticon.sensor.electrotactile
 
-import org.hapticon.sensor.safety.SafetyLimitException
 import org.junit.Assert.assertEquals
 import org.junit.Assert.assertFalse
 import org.junit.Assert.assertNull
@@ -9,15 +8,6 @@ import org.junit.Assert.fail
 import org.junit.Test
 
 class ElectrotactileCalibrationTest {
-    private fun assertRefused(call: () -> Unit) {
-        try {
-            call()
-            fail("accepted")
-        } catch (e: SafetyLimitException) {
-            assertEquals("electrotactileCurrent", e.limit)
-        }
-    }
-
     @Test
     fun amplitudeSteps_twoHundredStepsOverZeroTo2point7mA() {
         assertEquals(0.0135, AmplitudeSteps.MILLIAMPS_PER_STEP, 1e-15)
@@ -31,12 +21,12 @@ class ElectrotactileCalibrationTest {
 
     @Test
     fun amplitudeSteps_justPastTheCapNanOrNegative_isRefused() {
-        assertRefused { AmplitudeSteps.stepAtLeast(Math.nextUp(2.7)) }
-        assertRefused { AmplitudeSteps.stepAtLeast(Double.NaN) }
-        assertRefused { AmplitudeSteps.stepAtLeast(Double.POSITIVE_INFINITY) }
-        assertRefused { AmplitudeSteps.stepAtLeast(-0.01) }
-        assertRefused { AmplitudeSteps.milliampsOf(201) }
-        assertRefused { AmplitudeSteps.milliampsOf(-1) }
+        assertCurrentRefused { AmplitudeSteps.stepAtLeast(Math.nextUp(2.7)) }
+        assertCurrentRefused { AmplitudeSteps.stepAtLeast(Double.NaN) }
+        assertCurrentRefused { AmplitudeSteps.stepAtLeast(Double.POSITIVE_INFINITY) }
+        assertCurrentRefused { AmplitudeSteps.stepAtLeast(-0.01) }
+        assertCurrentRefused { AmplitudeSteps.milliampsOf(201) }
+        assertCurrentRefused { AmplitudeSteps.milliampsOf(-1) }
     }
 
     @Test
@@ -129,7 +119,7 @@ class ElectrotactileCalibrationTest {
 
     @Test
     fun result_stepPastTheCap_isRefused() {
-        assertRefused { ElectrotactileCalibrationResult(List(8) { 60 } + 201) }
+        assertCurrentRefused { ElectrotactileCalibrationResult(List(8) { 60 } + 201) }
     }
 
     @Test

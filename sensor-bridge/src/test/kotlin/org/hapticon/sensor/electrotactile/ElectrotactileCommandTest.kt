@@ -1,6 +1,5 @@
 package org.hapticon.sensor.electrotactile
 
-import org.hapticon.sensor.safety.SafetyLimitException
 import org.junit.Assert.assertEquals
 import org.junit.Assert.assertFalse
 import org.junit.Assert.assertTrue
@@ -9,15 +8,6 @@ import org.junit.Test
 
 class ElectrotactileCommandTest {
     private val full = ElectrotactileUserLimit(2.7)
-
-    private fun assertRefused(call: () -> Unit) {
-        try {
-            call()
-            fail("accepted")
-        } catch (e: SafetyLimitException) {
-            assertEquals("electrotactileCurrent", e.limit)
-        }
-    }
 
     @Test
     fun masks_areTheDocumentedPatterns() {
@@ -94,30 +84,30 @@ class ElectrotactileCommandTest {
 
     @Test
     fun command_justAboveTheHardCap_isRefused() {
-        assertRefused { ElectrotactileCommand(ElectrodeMask.LARGE_SQUARE.pattern, Math.nextUp(2.7), full) }
-        assertRefused { ElectrotactileUserLimit(Math.nextUp(2.7)) }
-        assertRefused { ElectrotactileUserLimit(3.0) }
+        assertCurrentRefused { ElectrotactileCommand(ElectrodeMask.LARGE_SQUARE.pattern, Math.nextUp(2.7), full) }
+        assertCurrentRefused { ElectrotactileUserLimit(Math.nextUp(2.7)) }
+        assertCurrentRefused { ElectrotactileUserLimit(3.0) }
     }
 
     @Test
     fun command_atAndJustAboveTheUserMaximum_isAcceptedThenRefused() {
         val user = ElectrotactileUserLimit(1.5)
         ElectrotactileCommand(ElectrodeMask.TRIANGLE.pattern, 1.5, user)
-        assertRefused { ElectrotactileCommand(ElectrodeMask.TRIANGLE.pattern, Math.nextUp(1.5), user) }
+        assertCurrentRefused { ElectrotactileCommand(ElectrodeMask.TRIANGLE.pattern, Math.nextUp(1.5), user) }
     }
 
     @Test
     fun command_copyAboveTheLimit_isRefusedToo() {
         val command = ElectrotactileCommand(ElectrodeMask.TRIANGLE.pattern, 1.0, ElectrotactileUserLimit(1.5))
-        assertRefused { command.copy(currentMilliamps = 2.0) }
-        assertRefused { command.copy(userLimit = ElectrotactileUserLimit(0.5)) }
+        assertCurrentRefused { command.copy(currentMilliamps = 2.0) }
+        assertCurrentRefused { command.copy(userLimit = ElectrotactileUserLimit(0.5)) }
     }
 
     @Test
     fun command_zeroNegativeNanOrInfiniteCurrent_isRefused() {
         for (bad in listOf(0.0, -1.0, Double.NaN, Double.POSITIVE_INFINITY, Double.NEGATIVE_INFINITY)) {
-            assertRefused { ElectrotactileCommand(ElectrodeMask.VERTICAL_LINE.pattern, bad, full) }
-            assertRefused { ElectrotactileUserLimit(bad) }
+            assertCurrentRefused { ElectrotactileCommand(ElectrodeMask.VERTICAL_LINE.pattern, bad, full) }
+            assertCurrentRefused { ElectrotactileUserLimit(bad) }
         }
     }
 

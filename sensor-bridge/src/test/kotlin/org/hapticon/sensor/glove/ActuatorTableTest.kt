@@ -2,19 +2,12 @@ package org.hapticon.sensor.glove
 
 import org.hapticon.sensor.safety.SafetyLimitException
 import org.junit.Assert.assertEquals
+import org.junit.Assert.assertThrows
 import org.junit.Assert.fail
 import org.junit.Test
 
 class ActuatorTableTest {
     private val custom = ActuatorTable(HandRegion.INDEX, listOf(0.5, 1.0, 2.0), listOf(10.0, 20.0, 100.0))
-
-    private fun assertThrows(call: () -> Unit) {
-        try {
-            call()
-            fail("accepted")
-        } catch (_: IllegalArgumentException) {
-        }
-    }
 
     @Test
     fun defaultFor_thumb_isFiveEvenPointsFromPminToPmaxAndZeroTo190() {
@@ -55,7 +48,7 @@ class ActuatorTableTest {
 
     @Test
     fun angleFor_nan_isRejected() {
-        assertThrows { custom.angleFor(Double.NaN) }
+        assertThrows(IllegalArgumentException::class.java) { custom.angleFor(Double.NaN) }
     }
 
     @Test
@@ -104,12 +97,12 @@ class ActuatorTableTest {
 
     @Test
     fun constructor_malformedTables_areRejected() {
-        assertThrows { ActuatorTable(HandRegion.THUMB, listOf(1.0), listOf(0.0)) }
-        assertThrows { ActuatorTable(HandRegion.THUMB, listOf(1.0, 2.0), listOf(0.0)) }
-        assertThrows { ActuatorTable(HandRegion.THUMB, listOf(1.0, 1.0), listOf(0.0, 10.0)) }
-        assertThrows { ActuatorTable(HandRegion.THUMB, listOf(1.0, 2.0), listOf(20.0, 10.0)) }
-        assertThrows { ActuatorTable(HandRegion.THUMB, listOf(1.0, 2.0), listOf(-1.0, 10.0)) }
-        assertThrows { ActuatorTable(HandRegion.THUMB, listOf(1.0, Double.NaN), listOf(0.0, 10.0)) }
-        assertThrows { ActuatorTable(HandRegion.THUMB, listOf(1.0, 2.0), listOf(0.0, Double.POSITIVE_INFINITY)) }
+        assertThrows(IllegalArgumentException::class.java) { ActuatorTable(HandRegion.THUMB, listOf(1.0), listOf(0.0)) }
+        assertThrows(IllegalArgumentException::class.java) { ActuatorTable(HandRegion.THUMB, listOf(1.0, 2.0), listOf(0.0)) }
+        assertThrows(IllegalArgumentException::class.java) { ActuatorTable(HandRegion.THUMB, listOf(1.0, 1.0), listOf(0.0, 10.0)) }
+        assertThrows(IllegalArgumentException::class.java) { ActuatorTable(HandRegion.THUMB, listOf(1.0, 2.0), listOf(20.0, 10.0)) }
+        assertThrows(IllegalArgumentException::class.java) { ActuatorTable(HandRegion.THUMB, listOf(1.0, 2.0), listOf(-1.0, 10.0)) }
+        assertThrows(IllegalArgumentException::class.java) { ActuatorTable(HandRegion.THUMB, listOf(1.0, Double.NaN), listOf(0.0, 10.0)) }
+        assertThrows(IllegalArgumentException::class.java) { ActuatorTable(HandRegion.THUMB, listOf(1.0, 2.0), listOf(0.0, Double.POSITIVE_INFINITY)) }
     }
 }

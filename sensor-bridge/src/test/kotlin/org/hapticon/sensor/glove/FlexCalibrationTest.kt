@@ -1,23 +1,15 @@
 package org.hapticon.sensor.glove
 
-import org.junit.Assert.assertEquals
-import org.junit.Assert.fail
-import org.junit.Test
 import kotlin.math.exp
 import kotlin.math.ln
+import org.junit.Assert.assertEquals
+import org.junit.Assert.assertThrows
+import org.junit.Test
 
 class FlexCalibrationTest {
     private fun fitted(points: List<CalibrationPoint>): FlexFit = (FlexCalibration.fit(points) as FitResult.Fitted).fit
 
     private fun rejection(points: List<CalibrationPoint>): String = (FlexCalibration.fit(points) as FitResult.Rejected).reason
-
-    private fun assertThrows(call: () -> Unit) {
-        try {
-            call()
-            fail("accepted")
-        } catch (_: IllegalArgumentException) {
-        }
-    }
 
     @Test
     fun defaults_areTheStudyMeans() {
@@ -49,17 +41,17 @@ class FlexCalibrationTest {
     @Test
     fun angleOf_nonPositiveOrNonFiniteResistance_isRejected() {
         for (bad in listOf(0.0, -1.0, Double.NaN, Double.POSITIVE_INFINITY)) {
-            assertThrows { FlexCalibration.THUMB_DEFAULT.angleOf(bad) }
+            assertThrows(IllegalArgumentException::class.java) { FlexCalibration.THUMB_DEFAULT.angleOf(bad) }
         }
     }
 
     @Test
     fun constructor_nonPositiveOrNonFiniteParameters_areRejected() {
-        assertThrows { FlexCalibration(0.0, 16.0) }
-        assertThrows { FlexCalibration(-0.01, 16.0) }
-        assertThrows { FlexCalibration(Double.NaN, 16.0) }
-        assertThrows { FlexCalibration(0.01, 0.0) }
-        assertThrows { FlexCalibration(0.01, Double.POSITIVE_INFINITY) }
+        assertThrows(IllegalArgumentException::class.java) { FlexCalibration(0.0, 16.0) }
+        assertThrows(IllegalArgumentException::class.java) { FlexCalibration(-0.01, 16.0) }
+        assertThrows(IllegalArgumentException::class.java) { FlexCalibration(Double.NaN, 16.0) }
+        assertThrows(IllegalArgumentException::class.java) { FlexCalibration(0.01, 0.0) }
+        assertThrows(IllegalArgumentException::class.java) { FlexCalibration(0.01, Double.POSITIVE_INFINITY) }
     }
 
     @Test

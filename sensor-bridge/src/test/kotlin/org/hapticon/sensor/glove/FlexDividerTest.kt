@@ -1,21 +1,13 @@
 package org.hapticon.sensor.glove
 
-import org.junit.Assert.assertEquals
-import org.junit.Assert.assertTrue
-import org.junit.Assert.fail
-import org.junit.Test
 import kotlin.math.ln
+import org.junit.Assert.assertEquals
+import org.junit.Assert.assertThrows
+import org.junit.Assert.assertTrue
+import org.junit.Test
 
 class FlexDividerTest {
     private fun kiloohms(reading: DividerReading): Double = (reading as DividerReading.Resistance).kiloohms
-
-    private fun assertThrows(call: () -> Unit) {
-        try {
-            call()
-            fail("accepted")
-        } catch (_: IllegalArgumentException) {
-        }
-    }
 
     @Test
     fun resistanceOf_halfTheSupply_isTheFixedResistor() {
@@ -106,11 +98,11 @@ class FlexDividerTest {
 
     @Test
     fun constructor_nonPositiveOrNonFiniteParts_areRejected() {
-        assertThrows { FlexDivider(fixedKiloohms = 0.0) }
-        assertThrows { FlexDivider(fixedKiloohms = Double.NaN) }
-        assertThrows { FlexDivider(fixedKiloohms = Math.nextUp(FlexDivider.MAX_FIXED_KILOOHMS)) }
-        assertThrows { FlexDivider(supplyVolts = 0.0) }
-        assertThrows { FlexDivider(supplyVolts = Double.POSITIVE_INFINITY) }
+        assertThrows(IllegalArgumentException::class.java) { FlexDivider(fixedKiloohms = 0.0) }
+        assertThrows(IllegalArgumentException::class.java) { FlexDivider(fixedKiloohms = Double.NaN) }
+        assertThrows(IllegalArgumentException::class.java) { FlexDivider(fixedKiloohms = Math.nextUp(FlexDivider.MAX_FIXED_KILOOHMS)) }
+        assertThrows(IllegalArgumentException::class.java) { FlexDivider(supplyVolts = 0.0) }
+        assertThrows(IllegalArgumentException::class.java) { FlexDivider(supplyVolts = Double.POSITIVE_INFINITY) }
     }
 
     @Test
@@ -126,11 +118,11 @@ class FlexDividerTest {
 
     @Test
     fun adcScale_countsOutsideTheRangeOrBadBits_areRejected() {
-        assertThrows { AdcScale.TEN_BIT.voltsOf(1024) }
-        assertThrows { AdcScale.TEN_BIT.voltsOf(-1) }
-        assertThrows { AdcScale(7) }
-        assertThrows { AdcScale(17) }
-        assertThrows { AdcScale(10, 0.0) }
+        assertThrows(IllegalArgumentException::class.java) { AdcScale.TEN_BIT.voltsOf(1024) }
+        assertThrows(IllegalArgumentException::class.java) { AdcScale.TEN_BIT.voltsOf(-1) }
+        assertThrows(IllegalArgumentException::class.java) { AdcScale(7) }
+        assertThrows(IllegalArgumentException::class.java) { AdcScale(17) }
+        assertThrows(IllegalArgumentException::class.java) { AdcScale(10, 0.0) }
     }
 
     @Test

@@ -2,21 +2,11 @@ package org.hapticon.sensor.glove
 
 import org.junit.Assert.assertEquals
 import org.junit.Assert.assertFalse
+import org.junit.Assert.assertThrows
 import org.junit.Assert.assertTrue
-import org.junit.Assert.fail
 import org.junit.Test
 
 class HandshakeCsvTest {
-    private fun csvError(call: () -> Unit): SensorCsvException {
-        try {
-            call()
-        } catch (e: SensorCsvException) {
-            return e
-        }
-        fail("accepted")
-        throw AssertionError()
-    }
-
     @Test
     fun readAngles_headerCommentsAndBlanks_parsesTheRows() {
         val text = "# glove A\n time_s , thumb_deg,MIDDLE_DEG \n\n0.0,0,0\n0.01,1.5,2e1\n"
@@ -28,14 +18,14 @@ class HandshakeCsvTest {
 
     @Test
     fun readAngles_wrongHeader_namesLineOne() {
-        val e = csvError { HandshakeCsv.readAngles("time,thumb,middle\n0,0,0\n", "a.csv") }
+        val e = assertThrows(SensorCsvException::class.java) { HandshakeCsv.readAngles("time,thumb,middle\n0,0,0\n", "a.csv") }
         assertEquals(1, e.lineNumber)
         assertEquals("a.csv:1: expected a header time_s,thumb_deg,middle_deg, got \"time,thumb,middle\"", e.message)
     }
 
     @Test
     fun readAngles_wrongColumnCount_namesTheLine() {
-        val e = csvError { HandshakeCsv.readAngles("time_s,thumb_deg,middle_deg\n0,0,0\n# note\n0.01,5\n", "a.csv") }
+        val e = assertThrows(SensorCsvException::class.java) { HandshakeCsv.readAngles("time_s,thumb_deg,middle_deg\n0,0,0\n# note\n0.01,5\n", "a.csv") }
         assertEquals("a.csv:4: expected 3 columns (time_s,thumb_deg,middle_deg), got 2", e.message)
     }
 
@@ -43,23 +33,23 @@ class HandshakeCsvTest {
     fun readAngles_notANumberOrNonFinite_namesTheLineAndColumn() {
         assertEquals(
             "csv:3: middle_deg is not a number: \"ten\"",
-            csvError { HandshakeCsv.readAngles("time_s,thumb_deg,middle_deg\n0,0,0\n0.1,0,ten\n") }.message,
+            assertThrows(SensorCsvException::class.java) { HandshakeCsv.readAngles("time_s,thumb_deg,middle_deg\n0,0,0\n0.1,0,ten\n") }.message,
         )
         assertEquals(
             "csv:2: thumb_deg must be finite, was NaN",
-            csvError { HandshakeCsv.readAngles("time_s,thumb_deg,middle_deg\n0,NaN,0\n") }.message,
+            assertThrows(SensorCsvException::class.java) { HandshakeCsv.readAngles("time_s,thumb_deg,middle_deg\n0,NaN,0\n") }.message,
         )
     }
 
     @Test
     fun readAngles_timeNotIncreasing_namesTheLine() {
-        val e = csvError { HandshakeCsv.readAngles("time_s,thumb_deg,middle_deg\n0.1,0,0\n0.1,0,0\n") }
+        val e = assertThrows(SensorCsvException::class.java) { HandshakeCsv.readAngles("time_s,thumb_deg,middle_deg\n0.1,0,0\n0.1,0,0\n") }
         assertEquals("csv:3: time must increase, 0.1 s after 0.1 s", e.message)
     }
 
     @Test
     fun readAngles_empty_isAMissingHeader() {
-        assertEquals(1, csvError { HandshakeCsv.readAngles("\n# only a comment\n") }.lineNumber)
+        assertEquals(1, assertThrows(SensorCsvException::class.java) { HandshakeCsv.readAngles("\n# only a comment\n") }.lineNumber)
     }
 
     @Test
@@ -78,7 +68,7 @@ class HandshakeCsvTest {
 
     @Test
     fun commands_badPartnerLine_namesThePartnerFile() {
-        val e = csvError {
+        val e = assertThrows(SensorCsvException::class.java) {
             HandshakeCsv.commands("time_s,thumb_deg,middle_deg\n0,0,0\n", "time_s,thumb_deg,middle_deg\n0,0\n", "a.csv", "b.csv")
         }
         assertEquals("b.csv", e.source)

@@ -4,19 +4,12 @@ import org.hapticon.sensor.safety.SafetyLimitException
 import org.junit.Assert.assertArrayEquals
 import org.junit.Assert.assertEquals
 import org.junit.Assert.assertFalse
+import org.junit.Assert.assertThrows
 import org.junit.Assert.assertTrue
 import org.junit.Assert.fail
 import org.junit.Test
 
 class HandshakeSessionTest {
-    private fun assertThrows(call: () -> Unit) {
-        try {
-            call()
-            fail("accepted")
-        } catch (_: IllegalArgumentException) {
-        }
-    }
-
     @Test
     fun step_mixedGrip_usesTheDefaultTablesServoAndVibrationMappings() {
         // Self 50°, 105° and partner 0°, 67.95°: the pressures of InteractionPressureModelTest.
@@ -107,15 +100,15 @@ class HandshakeSessionTest {
     @Test
     fun step_nonFiniteAngle_isRejectedWithoutChangingTheSession() {
         val session = HandshakeSession()
-        assertThrows { session.step(0.0, Double.NaN, 0.0, 40.0) }
+        assertThrows(IllegalArgumentException::class.java) { session.step(0.0, Double.NaN, 0.0, 40.0) }
         assertFalse(session.isActive)
-        assertThrows { session.step(Double.POSITIVE_INFINITY, 40.0, 0.0, 0.0) }
+        assertThrows(IllegalArgumentException::class.java) { session.step(Double.POSITIVE_INFINITY, 40.0, 0.0, 0.0) }
         assertFalse(session.isActive)
     }
 
     @Test
     fun constructor_tablesOutOfOrder_isRejected() {
-        assertThrows { HandshakeSession(tables = ActuatorTable.DEFAULTS.reversed()) }
+        assertThrows(IllegalArgumentException::class.java) { HandshakeSession(tables = ActuatorTable.DEFAULTS.reversed()) }
     }
 
     @Test
@@ -147,8 +140,8 @@ class HandshakeSessionTest {
 
     @Test
     fun regionCommand_servoPresenceMustMatchTheRegion() {
-        assertThrows { RegionCommand(HandRegion.PALM, 1.0, 10.0, 0, 0) }
-        assertThrows { RegionCommand(HandRegion.INDEX, 1.0, 10.0, null, 0) }
-        assertThrows { RegionCommand(HandRegion.INDEX, Double.NaN, 10.0, 0, 0) }
+        assertThrows(IllegalArgumentException::class.java) { RegionCommand(HandRegion.PALM, 1.0, 10.0, 0, 0) }
+        assertThrows(IllegalArgumentException::class.java) { RegionCommand(HandRegion.INDEX, 1.0, 10.0, null, 0) }
+        assertThrows(IllegalArgumentException::class.java) { RegionCommand(HandRegion.INDEX, Double.NaN, 10.0, 0, 0) }
     }
 }

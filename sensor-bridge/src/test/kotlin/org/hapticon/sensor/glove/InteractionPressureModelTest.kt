@@ -1,19 +1,11 @@
 package org.hapticon.sensor.glove
 
 import org.junit.Assert.assertEquals
-import org.junit.Assert.fail
+import org.junit.Assert.assertThrows
 import org.junit.Test
 
 class InteractionPressureModelTest {
     private val model = InteractionPressureModel()
-
-    private fun assertThrows(call: () -> Unit) {
-        try {
-            call()
-            fail("accepted")
-        } catch (_: IllegalArgumentException) {
-        }
-    }
 
     @Test
     fun regions_haveTheStudyParametersAndWeightsSummingToOne() {
@@ -93,15 +85,15 @@ class InteractionPressureModelTest {
 
     @Test
     fun pressure_nonFiniteAngleOrShortArray_isRejected() {
-        assertThrows { model.pressureVolts(HandRegion.THUMB, Double.NaN, 0.0, 0.0, 0.0) }
-        assertThrows { model.pressureVolts(HandRegion.THUMB, 0.0, 0.0, 0.0, Double.POSITIVE_INFINITY) }
-        assertThrows { model.pressuresInto(0.0, 0.0, 0.0, 0.0, DoubleArray(5)) }
+        assertThrows(IllegalArgumentException::class.java) { model.pressureVolts(HandRegion.THUMB, Double.NaN, 0.0, 0.0, 0.0) }
+        assertThrows(IllegalArgumentException::class.java) { model.pressureVolts(HandRegion.THUMB, 0.0, 0.0, 0.0, Double.POSITIVE_INFINITY) }
+        assertThrows(IllegalArgumentException::class.java) { model.pressuresInto(0.0, 0.0, 0.0, 0.0, DoubleArray(5)) }
     }
 
     @Test
     fun constructor_zeroNotBelowMax_isRejected() {
-        assertThrows { InteractionPressureModel(thumbZeroDegrees = 100.0) }
-        assertThrows { InteractionPressureModel(middleZeroDegrees = 105.0) }
-        assertThrows { InteractionPressureModel(thumbZeroDegrees = Double.NaN) }
+        assertThrows(IllegalArgumentException::class.java) { InteractionPressureModel(thumbZeroDegrees = 100.0) }
+        assertThrows(IllegalArgumentException::class.java) { InteractionPressureModel(middleZeroDegrees = 105.0) }
+        assertThrows(IllegalArgumentException::class.java) { InteractionPressureModel(thumbZeroDegrees = Double.NaN) }
     }
 }

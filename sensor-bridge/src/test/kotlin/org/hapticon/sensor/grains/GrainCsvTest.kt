@@ -2,7 +2,7 @@ package org.hapticon.sensor.grains
 
 import org.hapticon.sensor.glove.SensorCsvException
 import org.junit.Assert.assertEquals
-import org.junit.Assert.fail
+import org.junit.Assert.assertThrows
 import org.junit.Test
 import kotlin.math.PI
 import kotlin.math.ln
@@ -10,16 +10,6 @@ import kotlin.math.ln
 class GrainCsvTest {
     /** Coefficient 1/2 at 1 kHz, 9 grains = ten 1 N bins, 3-sample grains: see GrainDeciderTest. */
     private val settings = GrainSettings(grainCount = 9, maxNewtons = 10.0, cutoffHz = 1000.0 * ln(2.0) / (2 * PI), grainSeconds = 0.003)
-
-    private fun csvError(call: () -> Unit): SensorCsvException {
-        try {
-            call()
-        } catch (e: SensorCsvException) {
-            return e
-        }
-        fail("accepted")
-        throw AssertionError()
-    }
 
     @Test
     fun onsets_forceCsv_givesTheTimesOfTheGrainSamples() {
@@ -59,7 +49,7 @@ class GrainCsvTest {
 
     @Test
     fun onsets_voltageAtTheSupply_isAnErrorNamingTheLine() {
-        val e = csvError { GrainCsv.onsets("time_s,voltage\n0,1.0\n0.001,5.0\n", settings, source = "press.csv") }
+        val e = assertThrows(SensorCsvException::class.java) { GrainCsv.onsets("time_s,voltage\n0,1.0\n0.001,5.0\n", settings, source = "press.csv") }
         assertEquals("press.csv:3: FSR fault SHORTED at 5.0 V", e.message)
     }
 
@@ -67,15 +57,15 @@ class GrainCsvTest {
     fun onsets_badLines_areErrorsNamingTheLine() {
         assertEquals(
             "csv:3: expected 2 columns (time_s,force), got 3",
-            csvError { GrainCsv.onsets("time_s,force\n0,0\n0.001,1,2\n", settings) }.message,
+            assertThrows(SensorCsvException::class.java) { GrainCsv.onsets("time_s,force\n0,0\n0.001,1,2\n", settings) }.message,
         )
         assertEquals(
             "csv:2: force is not a number: \"heavy\"",
-            csvError { GrainCsv.onsets("time_s,force\n0,heavy\n", settings) }.message,
+            assertThrows(SensorCsvException::class.java) { GrainCsv.onsets("time_s,force\n0,heavy\n", settings) }.message,
         )
         assertEquals(
             "csv:1: expected a header time_s,force or time_s,voltage, got \"t,f\"",
-            csvError { GrainCsv.onsets("t,f\n0,0\n", settings) }.message,
+            assertThrows(SensorCsvException::class.java) { GrainCsv.onsets("t,f\n0,0\n", settings) }.message,
         )
     }
 
@@ -83,7 +73,7 @@ class GrainCsvTest {
     fun onsets_oneRowWithoutARate_cannotEstimateIt() {
         assertEquals(
             "csv:2: need at least 2 samples to estimate the sample rate, got 1",
-            csvError { GrainCsv.onsets("time_s,force\n0,0\n", settings) }.message,
+            assertThrows(SensorCsvException::class.java) { GrainCsv.onsets("time_s,force\n0,0\n", settings) }.message,
         )
     }
 }

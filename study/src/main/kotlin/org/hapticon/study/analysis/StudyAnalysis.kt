@@ -41,8 +41,8 @@ public data class IconPairComparison(
  *
  * Cost is linear in the rows: names become small integer ids once ([ResponseColumns]), responses are
  * gathered per (task, icon) cell into primitive arrays, and each pair's participants are matched through
- * a dense id-indexed table rather than by searching lists (which made a million rows take 15× as long as
- * 100k). Orders and arithmetic (sums in row order) are as before, so every figure is bit-identical.
+ * a dense id-indexed table rather than by searching lists (which would make a million rows take 15× as long as
+ * 100k). Sums run in row order, so every figure is the same to the bit whatever the table's layout.
  */
 public object StudyAnalysis {
     /** Descriptives of all responses per (task, icon), tasks and icons in order of first appearance. */

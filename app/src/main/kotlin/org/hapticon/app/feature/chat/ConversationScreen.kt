@@ -640,8 +640,8 @@ private fun PatternChip(pattern: HapticPattern, selected: Boolean, actions: Conv
 /**
  * The chip of the composer's icon row: [thumbnail] (for sight only: it must clear its own description), [name] and an
  * optional small [tag]. TalkBack names it by the visible words ("knock"; "ramp, pattern"), then its state and the
- * hints "add to message" and "feel knock here": WCAG 2.5.3 Label in Name (TalkBackNodeTreeTest). It used to be
- * "Icon knock", which a voice-control user saying "knock" did not match from the start.
+ * hints "add to message" and "feel knock here": WCAG 2.5.3 Label in Name (TalkBackNodeTreeTest), so that a
+ * voice-control user saying "knock" matches it (a name such as "Icon knock" would not match from the start).
  */
 @OptIn(ExperimentalFoundationApi::class)
 @Composable

@@ -67,7 +67,7 @@ data class SettingsActions(
 )
 
 /**
- * Everything the chat list used to mix in, in one place: account and broker, how icons play, felt
+ * Every chat setting in one place, out of the chat list's way: account and broker, how icons play, felt
  * receipts, staying reachable, colours, data export and about.
  */
 @OptIn(ExperimentalMaterial3Api::class)

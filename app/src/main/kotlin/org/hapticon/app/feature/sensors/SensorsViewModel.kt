@@ -185,7 +185,7 @@ class SensorsViewModel(
         amplitude = g.amplitude,
         fallbackSampleRateHz = g.fallbackSampleRateHz,
         deviceSampleRateHz = info?.sampleRateHz,
-        // Sampled on each refresh (a volatile read): the engine no longer pushes a status per grain.
+        // Sampled on each refresh (a volatile read): the engine pushes no status per grain, so the grain path stays lock-free.
         grainsPlayed = grains.grainsPlayed,
         error = status.error,
     )

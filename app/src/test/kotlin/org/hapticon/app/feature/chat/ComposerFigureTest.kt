@@ -46,9 +46,9 @@ import kotlin.coroutines.CoroutineContext
 
 /**
  * The composer's "how it will feel there" figure renders the chosen icon, so the ViewModel computes it in the
- * player's render context, never on the main thread (issue 13); while it is being computed the line shows the
+ * player's render context, never on the main thread; while it is being computed the line shows the
  * peer's renderer without a figure, and a figure is only ever shown beside the icon it was computed for. A chosen
- * pattern's preview resamples it within the envelope limits the peer publishes (issue 12).
+ * pattern's preview resamples it within the envelope limits the peer publishes.
  */
 @RunWith(RobolectricTestRunner::class)
 class ComposerFigureTest {

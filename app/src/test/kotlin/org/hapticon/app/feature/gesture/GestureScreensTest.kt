@@ -8,7 +8,7 @@ import java.util.Random
 import org.hapticon.core.HapticIcon
 import org.hapticon.gesture.extraction.FitOptions
 import org.hapticon.gesture.extraction.IconFitter
-import org.hapticon.gesture.extraction.SyntheticGestures
+import org.hapticon.gesture.extraction.NoisyIconRenders
 import org.hapticon.gesture.recognition.GestureLabel
 import org.hapticon.sensor.live.EmptyPlotSource
 import org.junit.Rule
@@ -24,7 +24,7 @@ class GestureScreensTest {
 
     @Test
     fun recorder_fittedIcon_showsEnvelopeReportAndSave() {
-        val take = SyntheticGestures.render(HapticIcon.KNOCK, Double.POSITIVE_INFINITY, Random(1), sampleRate = 8000).toRecording()
+        val take = NoisyIconRenders.render(HapticIcon.KNOCK, Double.POSITIVE_INFINITY, Random(1), sampleRate = 8000).toRecording()
         val fit = IconFitter.fit(take, options = FitOptions(name = "tap"))
         val state = RecorderUiState.Ready(take = take, trimTo = take.frameCount, fitChannel = "vibration", fit = fit, iconName = "tap")
         compose.setContent { RecorderScreen(state, EmptyPlotSource, null, RecorderActions()) }

@@ -18,7 +18,7 @@ import org.hapticon.app.playback.HapticPlayer
 import org.hapticon.app.playback.Playback
 import org.hapticon.app.playback.PlaybackCapabilities
 import org.hapticon.core.HapticIcon
-import org.hapticon.gesture.extraction.SyntheticGestures
+import org.hapticon.gesture.extraction.NoisyIconRenders
 import org.hapticon.gesture.recognition.GestureLabel
 import org.junit.After
 import org.junit.Assert.assertEquals
@@ -63,7 +63,7 @@ class RecorderViewModelTest {
     }
 
     // Knock rendered by haptics-core at 8 kHz with noise at 30 dB: the fitter's documented operating point.
-    private val knock = SyntheticGestures.render(HapticIcon.KNOCK, 30.0, Random(1), sampleRate = 8000).toRecording()
+    private val knock = NoisyIconRenders.render(HapticIcon.KNOCK, 30.0, Random(1), sampleRate = 8000).toRecording()
     private val source = TestGestureSource.of(knock)
 
     @Before

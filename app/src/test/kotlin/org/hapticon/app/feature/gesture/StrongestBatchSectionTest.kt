@@ -9,7 +9,7 @@ import androidx.compose.ui.test.performClick
 import org.hapticon.app.gesture.SavedRecording
 import org.hapticon.core.HapticIcon
 import org.hapticon.gesture.extraction.IconFitter
-import org.hapticon.gesture.extraction.SyntheticGestures
+import org.hapticon.gesture.extraction.NoisyIconRenders
 import org.junit.Assert.assertEquals
 import org.junit.Rule
 import org.junit.Test
@@ -27,7 +27,7 @@ class StrongestBatchSectionTest {
 
     @Test
     fun section_withABatch_listsEachIconsLevelAndTheReference_andSavesAll() {
-        val take = SyntheticGestures.render(HapticIcon.KNOCK, Double.POSITIVE_INFINITY, Random(1), sampleRate = 8000).toRecording()
+        val take = NoisyIconRenders.render(HapticIcon.KNOCK, Double.POSITIVE_INFINITY, Random(1), sampleRate = 8000).toRecording()
         val fits = IconFitter.fitBatch(listOf(take, take))
         val state = RecorderUiState.Ready(savedRecordings = saved, batch = listOf(BatchIcon("loud", fits[0]), BatchIcon("soft", fits[1])))
         var fitted = 0

@@ -28,10 +28,10 @@ import java.io.File
 @RunWith(RobolectricTestRunner::class)
 class TeachViewModelTest {
     @get:Rule
-    val folder = TemporaryFolder()
+    val main = MainDispatcherRule()
 
     @get:Rule
-    val main = MainDispatcherRule()
+    val folder = TemporaryFolder()
     private val dispatcher = main.dispatcher
     private val person = SyntheticGestures.people(1, seed = 3).single()
     private val hug = GestureLabel.parse("hug-gentle")

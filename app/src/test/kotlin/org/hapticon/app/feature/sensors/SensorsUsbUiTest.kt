@@ -19,8 +19,8 @@ import androidx.test.platform.app.InstrumentationRegistry
 import org.hapticon.app.di.AppContainer
 import org.hapticon.app.HapticonApplication
 import org.hapticon.app.MainActivity
-import org.hapticon.app.sensors.AndroidTestDevices
 import org.hapticon.sensor.usb.AndroidUsbDevices
+import org.hapticon.testing.android.AndroidTestDevices
 import org.junit.After
 import org.junit.Assert.assertEquals
 import org.junit.Assert.assertTrue
@@ -41,7 +41,7 @@ class SensorsUsbUiTest {
 
     private val app = ApplicationProvider.getApplicationContext<HapticonApplication>()
     private val usbManager = app.getSystemService(UsbManager::class.java)
-    private val uno = AndroidTestDevices.arduinoUno()
+    private val uno = AndroidTestDevices.arduinoUno(product = "Arduino Uno")
     private val asked = mutableListOf<PendingIntent>()
     private var activity: ActivityController<MainActivity>? = null
 

@@ -49,13 +49,13 @@ import java.time.Instant
 @RunWith(RobolectricTestRunner::class)
 class ComplianceStudyRunTest {
     @get:Rule
-    val folder = TemporaryFolder()
+    val compose = createComposeRule()
 
     @get:Rule
     val main = MainDispatcherRule()
 
     @get:Rule
-    val compose = createComposeRule()
+    val folder = TemporaryFolder()
 
     /** The time the view model sees, moved on by the test. */
     private var now = Instant.parse("2026-12-01T10:00:00Z")

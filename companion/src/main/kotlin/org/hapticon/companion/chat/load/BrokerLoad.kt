@@ -79,7 +79,7 @@ class BrokerLoad(
         val passwordFile = File(directory, "passwd")
         progress("writing ${passwords.size} users' password hashes ($passwordIterations PBKDF2 rounds each)")
         passwordFile.writeText(passwords.entries.joinToString("\n", postfix = "\n") { (user, password) -> "$user:${PasswordFile.hash(password.toCharArray(), passwordIterations)}" })
-        val loadAtStart = ProcStat.loadAverage()
+        val loadAtStart = ProcessStats.loadAverage()
         startBroker(directory, passwordFile).use { broker ->
             progress("${broker.name}: broker pid ${broker.pid} on ${broker.address}")
             fun settings(user: String) = MqttSettings(broker.address, user, passwords.getValue(user), DeviceId.generate())
@@ -121,9 +121,9 @@ class BrokerLoad(
                     if (senders.size < users) progress("${broker.name}: ${users - senders.size} did not connect within ${CONNECT_TIMEOUT_MILLIS / 1000} s" + (refusals.firstOrNull()?.let { " (first refusal: $it)" } ?: ""))
                     // Every later change of a connected messenger's state is a dropped connection.
                     for (i in senders) scope.launch { messengers[i].state.drop(1).collect { if (it != ConnectionState.Connected) drops.incrementAndGet() } }
-                    val brokerCpu0 = ProcStat.cpuSeconds(broker.pid)
-                    val clientCpu0 = ProcStat.cpuSeconds(ProcessHandle.current().pid())
-                    val machine0 = ProcStat.machineTicks()
+                    val brokerCpu0 = ProcessStats.cpuSeconds(broker.pid)
+                    val clientCpu0 = ProcessStats.cpuSeconds(ProcessHandle.current().pid())
+                    val machine0 = ProcessStats.machineTicks()
                     val start = System.nanoTime()
                     val end = start + durationMillis * 1_000_000
                     val random = Random(seed)
@@ -154,10 +154,10 @@ class BrokerLoad(
                     (sending + bursts).forEach { it.join() }
                     val sendingSeconds = (System.nanoTime() - start) / 1e9
                     val loaded = broker.memory()
-                    val brokerCpu = ProcStat.cpuSeconds(broker.pid) - brokerCpu0
-                    val clientCpu = ProcStat.cpuSeconds(ProcessHandle.current().pid()) - clientCpu0
-                    val machine = ProcStat.machineTicks().let { (busy, all) -> if (all > machine0.second) (busy - machine0.first).toDouble() / (all - machine0.second) else Double.NaN }
-                    val loadAtEnd = ProcStat.loadAverage()
+                    val brokerCpu = ProcessStats.cpuSeconds(broker.pid) - brokerCpu0
+                    val clientCpu = ProcessStats.cpuSeconds(ProcessHandle.current().pid()) - clientCpu0
+                    val machine = ProcessStats.machineTicks().let { (busy, all) -> if (all > machine0.second) (busy - machine0.first).toDouble() / (all - machine0.second) else Double.NaN }
+                    val loadAtEnd = ProcessStats.loadAverage()
                     progress("${broker.name}: sending stopped; waiting up to ${drainMillis / 1000} s for messages on their way")
                     val drainEnd = System.nanoTime() + drainMillis * 1_000_000
                     while (System.nanoTime() < drainEnd && (ledger.outstanding() > 0 || ledger.tally().pending > 0 || receipts.outstanding() > 0)) delay(50)

@@ -36,11 +36,11 @@ interface LoadBroker : AutoCloseable {
     val pid: Long
 
     /** Its memory now. */
-    fun memory(): BrokerMemory = ProcStat.memory(pid, heapUsedKib = null)
+    fun memory(): BrokerMemory = ProcessStats.memory(pid, heapUsedKib = null)
 }
 
 /** Reads what Linux says about a process: memory from /proc/PID/status, CPU time from /proc/PID/stat. */
-object ProcStat {
+object ProcessStats {
     /** Clock ticks per second of /proc/PID/stat's times (`getconf CLK_TCK`; 100 on every Linux we run on). */
     private const val TICKS_PER_SECOND = 100.0
 
@@ -110,7 +110,7 @@ class ChildEmbeddedBroker private constructor(private val process: Process, over
     override val name: String = "embedded"
     override val pid: Long = process.pid()
 
-    override fun memory(): BrokerMemory = ProcStat.memory(pid, heapUsedAfterGc())
+    override fun memory(): BrokerMemory = ProcessStats.memory(pid, heapUsedAfterGc())
 
     private fun heapUsedAfterGc(): Long? {
         val jcmd = File(File(javaBinary()).parentFile, "jcmd").takeIf { it.canExecute() }?.path ?: findTool("jcmd") ?: return null

@@ -1,12 +1,6 @@
 package org.hapticon.companion.chat.load
 
-import kotlinx.serialization.json.JsonArray
-import kotlinx.serialization.json.JsonElement
-import kotlinx.serialization.json.JsonNull
-import kotlinx.serialization.json.JsonObject
-import kotlinx.serialization.json.JsonPrimitive
 import org.hapticon.core.io.SchemaJson
-import org.hapticon.core.io.shortNumber
 import java.util.Locale
 
 /**
@@ -56,7 +50,7 @@ data class LoadResult(
     val targetMet: Boolean get() = tally.allAccountedFor && tally.failed == 0 && connectionsHeld == users && allMillis.p99 <= TARGET_P99_MILLIS
 
     companion object {
-        /** The target: 1,000 users with p99 delivery ≤ 50 ms and nothing lost. */
+        /** The target: 1,000 users with p99 delivery ≤ 50 ms and nothing lost. */
         const val TARGET_P99_MILLIS: Double = 50.0
     }
 }
@@ -96,55 +90,28 @@ object LoadReport {
         }
     }.trimEnd()
 
-    /** The same figures as one JSON object: `setup`, `skipped` and one `runs` entry per broker and N. */
-    fun json(runs: List<LoadResult>, skips: List<LoadSkip>, setup: String): String = SchemaJson.encodeElement(
-        JsonObject(
-            linkedMapOf(
-                "setup" to JsonPrimitive(setup),
-                "skipped" to JsonArray(skips.map { JsonObject(linkedMapOf("broker" to JsonPrimitive(it.broker), "reason" to JsonPrimitive(it.reason))) }),
-                "runs" to JsonArray(runs.map(::runJson)),
-            ),
-        ),
+    /** The same figures as one JSON object ([LoadDocument]): `setup`, `skipped` and one `runs` entry per broker and N. */
+    fun json(runs: List<LoadResult>, skips: List<LoadSkip>, setup: String): String = SchemaJson.encode(
+        LoadDocument.serializer(),
+        LoadDocument(setup, skips.map { SkipDocument(it.broker, it.reason) }, runs.map(::runDocument)),
         "  ",
     )
 
-    private fun runJson(r: LoadResult): JsonObject {
+    private fun runDocument(r: LoadResult): LoadRunDocument {
         val t = r.tally
-        return JsonObject(
-            linkedMapOf(
-                "broker" to JsonPrimitive(r.broker),
-                "users" to shortNumber(r.users),
-                "connectionsHeld" to shortNumber(r.connectionsHeld),
-                "drops" to shortNumber(r.drops),
-                "connectSeconds" to rounded(r.connectSeconds, 10),
-                "sendingSeconds" to rounded(r.sendingSeconds, 10),
-                "sent" to shortNumber(t.sent),
-                "delivered" to shortNumber(t.delivered),
-                "lost" to shortNumber(t.lost),
-                "duplicates" to shortNumber(t.duplicates),
-                "failed" to shortNumber(t.failed),
-                "pending" to shortNumber(t.pending),
-                "unexpected" to shortNumber(t.unexpected),
-                "misrouted" to shortNumber(t.misrouted),
-                "allAccountedFor" to JsonPrimitive(t.allAccountedFor),
-                "receiptsSent" to shortNumber(r.receiptsSent),
-                "receiptsReceived" to shortNumber(r.receiptsReceived),
-                "messagesPerSecond" to rounded(r.messagesPerSecond, 10),
-                "publishesPerSecond" to rounded(r.publishesPerSecond, 10),
-                "latencyMillis" to latencyJson(r.allMillis),
-                "steadyLatencyMillis" to latencyJson(t.steadyMillis),
-                "burstLatencyMillis" to latencyJson(t.burstMillis),
-                "baselineLatencyMillis" to latencyJson(r.baselineMillis),
-                "memoryIdle" to memoryJson(r.memoryIdle),
-                "memoryLoaded" to memoryJson(r.memoryLoaded),
-                "brokerCpuSeconds" to rounded(r.brokerCpuSeconds, 100),
-                "clientCpuSeconds" to rounded(r.clientCpuSeconds, 100),
-                "machineBusy" to rounded(r.machineBusy, 1000),
-                "cores" to shortNumber(r.cores),
-                "loadAtStart" to JsonPrimitive(r.loadAtStart),
-                "loadAtEnd" to JsonPrimitive(r.loadAtEnd),
-                "targetMet" to JsonPrimitive(r.targetMet),
-            ),
+        return LoadRunDocument(
+            broker = r.broker, users = r.users, connectionsHeld = r.connectionsHeld, drops = r.drops,
+            connectSeconds = rounded(r.connectSeconds, 10), sendingSeconds = rounded(r.sendingSeconds, 10),
+            sent = t.sent, delivered = t.delivered, lost = t.lost, duplicates = t.duplicates, failed = t.failed, pending = t.pending,
+            unexpected = t.unexpected, misrouted = t.misrouted, allAccountedFor = t.allAccountedFor,
+            receiptsSent = r.receiptsSent, receiptsReceived = r.receiptsReceived,
+            messagesPerSecond = rounded(r.messagesPerSecond, 10), publishesPerSecond = rounded(r.publishesPerSecond, 10),
+            latencyMillis = latencyDocument(r.allMillis), steadyLatencyMillis = latencyDocument(t.steadyMillis),
+            burstLatencyMillis = latencyDocument(t.burstMillis), baselineLatencyMillis = latencyDocument(r.baselineMillis),
+            memoryIdle = memoryDocument(r.memoryIdle), memoryLoaded = memoryDocument(r.memoryLoaded),
+            brokerCpuSeconds = rounded(r.brokerCpuSeconds, 100), clientCpuSeconds = rounded(r.clientCpuSeconds, 100),
+            machineBusy = rounded(r.machineBusy, 1000),
+            cores = r.cores, loadAtStart = r.loadAtStart, loadAtEnd = r.loadAtEnd, targetMet = r.targetMet,
         )
     }
 
@@ -157,13 +124,11 @@ object LoadReport {
         return String.format(Locale.ROOT, "RSS %.1f MiB (peak %.1f)%s", m.rssKib / 1024.0, m.peakRssKib / 1024.0, heap)
     }
 
-    private fun latencyJson(l: LatencySummary): JsonElement = if (l.count == 0) JsonNull else JsonObject(
-        linkedMapOf("count" to shortNumber(l.count), "p50" to rounded(l.p50, 1000), "p99" to rounded(l.p99, 1000), "max" to rounded(l.max, 1000)),
-    )
+    private fun latencyDocument(l: LatencySummary): LatencyDocument? =
+        if (l.count == 0) null else LatencyDocument(l.count, rounded(l.p50, 1000), rounded(l.p99, 1000), rounded(l.max, 1000))
 
-    private fun memoryJson(m: BrokerMemory): JsonElement = if (m.rssKib == 0L) JsonNull else JsonObject(
-        linkedMapOf("rssKib" to shortNumber(m.rssKib), "peakRssKib" to shortNumber(m.peakRssKib), "heapUsedKib" to (m.heapUsedKib?.let(::shortNumber) ?: JsonNull)),
-    )
+    private fun memoryDocument(m: BrokerMemory): MemoryDocument? = if (m.rssKib == 0L) null else MemoryDocument(m.rssKib, m.peakRssKib, m.heapUsedKib)
 
-    private fun rounded(value: Double, scale: Int): JsonElement = if (value.isFinite()) shortNumber(Math.round(value * scale).toDouble() / scale) else JsonNull
+    /** [value] to 1/[scale], or null (written `null`) when it is not finite. */
+    private fun rounded(value: Double, scale: Int): Double? = if (value.isFinite()) Math.round(value * scale).toDouble() / scale else null
 }

@@ -47,6 +47,16 @@ class LoadReportTest {
     }
 
     @Test
+    fun json_sameBytesAsTheTreeBuiltByHandBefore() {
+        // recorded/broker-load-report.json: these runs as LoadReport wrote them when it built a JsonObject tree by hand;
+        // a heap figure, a figure that is not finite, a broker in this process and a skip whose reason needs escapes.
+        val measured = run.copy(memoryLoaded = BrokerMemory(20_480, 21_504, 1_000), clientCpuSeconds = Double.NaN)
+        val embedded = measured.copy(broker = "embedded", memoryIdle = BrokerMemory(0, 0, null), memoryLoaded = BrokerMemory(0, 0, null), connectionsHeld = 999)
+        val recorded = LoadReportTest::class.java.getResource("/recorded/broker-load-report.json")!!.readText()
+        assertEquals(recorded, LoadReport.json(listOf(measured, embedded), listOf(LoadSkip("embedded", "100 users: boom \"x\"")), "SETUP"))
+    }
+
+    @Test
     fun json_onePerRun_withNullForWhatWasNotMeasured() {
         val embedded = run.copy(
             broker = "embedded", memoryIdle = BrokerMemory(0, 0, null), memoryLoaded = BrokerMemory(0, 0, null),

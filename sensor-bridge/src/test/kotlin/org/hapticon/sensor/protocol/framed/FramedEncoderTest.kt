@@ -3,6 +3,7 @@ package org.hapticon.sensor.protocol.framed
 import org.hapticon.sensor.safety.SafetyLimitException
 import org.junit.Assert.assertArrayEquals
 import org.junit.Assert.assertEquals
+import org.junit.Assert.assertThrows
 import org.junit.Assert.assertTrue
 import org.junit.Assert.fail
 import org.junit.Test
@@ -11,16 +12,6 @@ class FramedEncoderTest {
     private val buffer = ByteArray(FramedProtocol.MAX_ENCODED_FRAME_LENGTH)
 
     private fun bytes(vararg values: Int) = ByteArray(values.size) { values[it].toByte() }
-
-    private inline fun <reified T : Throwable> assertThrows(block: () -> Unit): T {
-        try {
-            block()
-        } catch (e: Throwable) {
-            if (e is T) return e
-            throw AssertionError("expected ${T::class.simpleName}, got $e", e)
-        }
-        throw AssertionError("expected ${T::class.simpleName}, nothing thrown")
-    }
 
     @Test
     fun requestInfo_sequenceZero_handDerivedBytes() {
@@ -48,7 +39,7 @@ class FramedEncoderTest {
     fun setOutputs_valueOutsideServoRange_refusedWithoutUsingASequenceNumber() {
         val encoder = FramedEncoder(7)
         for (bad in listOf(-1, 1001)) {
-            val e = assertThrows<SafetyLimitException> { encoder.setOutputs(0, intArrayOf(0, bad), buffer) }
+            val e = assertThrows(SafetyLimitException::class.java) { encoder.setOutputs(0, intArrayOf(0, bad), buffer) }
             assertEquals("servo", e.limit)
         }
         assertEquals(7, encoder.nextSequence)
@@ -58,10 +49,10 @@ class FramedEncoderTest {
     @Test
     fun setOutputs_outputsOutOfRangeOrTooMany_throwIllegalArgument() {
         val encoder = FramedEncoder()
-        assertThrows<IllegalArgumentException> { encoder.setOutputs(0, IntArray(0), buffer) }
-        assertThrows<IllegalArgumentException> { encoder.setOutputs(0, IntArray(FramedProtocol.MAX_OUTPUTS + 1), buffer) }
-        assertThrows<IllegalArgumentException> { encoder.setOutputs(15, IntArray(2), buffer) }
-        assertThrows<IllegalArgumentException> { encoder.setOutputs(-1, IntArray(1), buffer) }
+        assertThrows(IllegalArgumentException::class.java) { encoder.setOutputs(0, IntArray(0), buffer) }
+        assertThrows(IllegalArgumentException::class.java) { encoder.setOutputs(0, IntArray(FramedProtocol.MAX_OUTPUTS + 1), buffer) }
+        assertThrows(IllegalArgumentException::class.java) { encoder.setOutputs(15, IntArray(2), buffer) }
+        assertThrows(IllegalArgumentException::class.java) { encoder.setOutputs(-1, IntArray(1), buffer) }
         assertEquals(0, encoder.nextSequence)
         encoder.setOutputs(0, IntArray(FramedProtocol.MAX_OUTPUTS) { 1000 }, buffer)
         assertEquals(1, encoder.nextSequence)
@@ -70,23 +61,23 @@ class FramedEncoderTest {
     @Test
     fun sample_invalidArguments_throw() {
         val encoder = FramedEncoder()
-        assertThrows<IllegalArgumentException> { encoder.sample(0, intArrayOf(65_536), buffer) }
-        assertThrows<IllegalArgumentException> { encoder.sample(0, intArrayOf(-1), buffer) }
-        assertThrows<IllegalArgumentException> { encoder.sample(0, IntArray(0), buffer) }
-        assertThrows<IllegalArgumentException> { encoder.sample(0, IntArray(FramedProtocol.MAX_CHANNELS + 1), buffer) }
-        assertThrows<IllegalArgumentException> { encoder.sample(0, IntArray(2), buffer, count = 3) }
-        assertThrows<IllegalArgumentException> { encoder.setSampleRate(0, buffer) }
-        assertThrows<IllegalArgumentException> { encoder.ack(65_536, AckStatus.OK, 0, buffer) }
-        assertThrows<IllegalArgumentException> { encoder.ack(0, AckStatus.OK, 256, buffer) }
-        assertThrows<IllegalArgumentException> { encoder.ack(0, AckStatus.UNKNOWN, 0, buffer) }
-        assertThrows<IllegalArgumentException> { FramedEncoder(65_536) }
+        assertThrows(IllegalArgumentException::class.java) { encoder.sample(0, intArrayOf(65_536), buffer) }
+        assertThrows(IllegalArgumentException::class.java) { encoder.sample(0, intArrayOf(-1), buffer) }
+        assertThrows(IllegalArgumentException::class.java) { encoder.sample(0, IntArray(0), buffer) }
+        assertThrows(IllegalArgumentException::class.java) { encoder.sample(0, IntArray(FramedProtocol.MAX_CHANNELS + 1), buffer) }
+        assertThrows(IllegalArgumentException::class.java) { encoder.sample(0, IntArray(2), buffer, count = 3) }
+        assertThrows(IllegalArgumentException::class.java) { encoder.setSampleRate(0, buffer) }
+        assertThrows(IllegalArgumentException::class.java) { encoder.ack(65_536, AckStatus.OK, 0, buffer) }
+        assertThrows(IllegalArgumentException::class.java) { encoder.ack(0, AckStatus.OK, 256, buffer) }
+        assertThrows(IllegalArgumentException::class.java) { encoder.ack(0, AckStatus.UNKNOWN, 0, buffer) }
+        assertThrows(IllegalArgumentException::class.java) { FramedEncoder(65_536) }
         assertEquals(0, encoder.nextSequence)
     }
 
     @Test
     fun anyFrame_destinationShorterThanMaxEncodedLength_throws() {
-        assertThrows<IndexOutOfBoundsException> { FramedEncoder().requestInfo(ByteArray(FramedProtocol.MAX_ENCODED_FRAME_LENGTH - 1)) }
-        assertThrows<IndexOutOfBoundsException> { FramedEncoder().requestInfo(buffer, 1) }
+        assertThrows(IndexOutOfBoundsException::class.java) { FramedEncoder().requestInfo(ByteArray(FramedProtocol.MAX_ENCODED_FRAME_LENGTH - 1)) }
+        assertThrows(IndexOutOfBoundsException::class.java) { FramedEncoder().requestInfo(buffer, 1) }
     }
 
     @Test
@@ -113,12 +104,12 @@ class FramedEncoderTest {
 
     @Test
     fun deviceInfo_invalidValues_throw() {
-        assertThrows<IllegalArgumentException> { DeviceInfo(0, 0, 0, 12, 1000, 0, emptyList(), "") }
-        assertThrows<IllegalArgumentException> { DeviceInfo(0, 0, 0, 12, 1000, 0, listOf(ChannelUnit.RAW), "é") }
-        assertThrows<IllegalArgumentException> { DeviceInfo(0, 0, 0, 12, 1000, 0, listOf(ChannelUnit.RAW), "x".repeat(33)) }
-        assertThrows<IllegalArgumentException> { DeviceInfo(0, 0, 256, 12, 1000, 0, listOf(ChannelUnit.RAW), "") }
-        assertThrows<IllegalArgumentException> { DeviceInfo(0, 0, 0, 0, 1000, 0, listOf(ChannelUnit.RAW), "") }
-        assertThrows<IllegalArgumentException> { DeviceInfo(0, 0, 0, 12, 0, 0, listOf(ChannelUnit.RAW), "") }
-        assertThrows<IllegalArgumentException> { DeviceInfo(0, 0, 0, 12, 1000, 17, listOf(ChannelUnit.RAW), "") }
+        assertThrows(IllegalArgumentException::class.java) { DeviceInfo(0, 0, 0, 12, 1000, 0, emptyList(), "") }
+        assertThrows(IllegalArgumentException::class.java) { DeviceInfo(0, 0, 0, 12, 1000, 0, listOf(ChannelUnit.RAW), "é") }
+        assertThrows(IllegalArgumentException::class.java) { DeviceInfo(0, 0, 0, 12, 1000, 0, listOf(ChannelUnit.RAW), "x".repeat(33)) }
+        assertThrows(IllegalArgumentException::class.java) { DeviceInfo(0, 0, 256, 12, 1000, 0, listOf(ChannelUnit.RAW), "") }
+        assertThrows(IllegalArgumentException::class.java) { DeviceInfo(0, 0, 0, 0, 1000, 0, listOf(ChannelUnit.RAW), "") }
+        assertThrows(IllegalArgumentException::class.java) { DeviceInfo(0, 0, 0, 12, 0, 0, listOf(ChannelUnit.RAW), "") }
+        assertThrows(IllegalArgumentException::class.java) { DeviceInfo(0, 0, 0, 12, 1000, 17, listOf(ChannelUnit.RAW), "") }
     }
 }

@@ -5,6 +5,7 @@ import android.hardware.usb.UsbManager
 import androidx.test.core.app.ApplicationProvider
 import org.hapticon.sensor.serial.UsbEndpointDescription
 import org.hapticon.sensor.serial.UsbEndpointType
+import org.hapticon.testing.android.AndroidTestDevices
 import org.junit.Assert.assertEquals
 import org.junit.Assert.assertFalse
 import org.junit.Assert.assertTrue

@@ -4,6 +4,7 @@ import org.hapticon.sensor.serial.UsbDeviceDescription
 import org.hapticon.sensor.serial.UsbEndpointDescription
 import org.hapticon.sensor.serial.UsbEndpointType
 import org.hapticon.sensor.serial.UsbInterfaceDescription
+import org.hapticon.testing.android.AndroidTestDevices
 import org.junit.Assert.assertEquals
 import org.junit.Test
 import org.junit.runner.RunWith

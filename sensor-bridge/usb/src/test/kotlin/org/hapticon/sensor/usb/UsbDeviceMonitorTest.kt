@@ -6,6 +6,7 @@ import android.hardware.usb.UsbDevice
 import android.hardware.usb.UsbManager
 import android.os.Looper
 import androidx.test.core.app.ApplicationProvider
+import org.hapticon.testing.android.AndroidTestDevices
 import org.junit.After
 import org.junit.Assert.assertEquals
 import org.junit.Test

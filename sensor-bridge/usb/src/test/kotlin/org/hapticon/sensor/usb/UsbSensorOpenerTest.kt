@@ -14,6 +14,7 @@ import kotlinx.coroutines.test.runCurrent
 import kotlinx.coroutines.test.runTest
 import org.hapticon.sensor.port.LineSettings
 import org.hapticon.sensor.port.PortDisconnectedException
+import org.hapticon.testing.android.AndroidTestDevices
 import org.junit.After
 import org.junit.Assert.assertEquals
 import org.junit.Assert.assertFalse

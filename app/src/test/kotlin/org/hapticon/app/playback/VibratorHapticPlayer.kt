@@ -2,7 +2,6 @@ package org.hapticon.app.playback
 
 import android.content.Context
 import android.os.Build
-import android.os.VibrationEffect
 import org.hapticon.core.HapticIcon
 import org.hapticon.core.pattern.HapticPattern
 import org.hapticon.core.platform.VibrationUsage
@@ -15,7 +14,8 @@ import kotlin.coroutines.CoroutineContext
 /**
  * Plays icons through the phone's vibrator as `VibrationEffect.createWaveform` step waveforms rendered by
  * haptics-core ([VibrationWaveform]): amplitude steps where the vibrator supports amplitude
- * control, an on/off pattern otherwise; each with its usage ([UsageVibrator]).
+ * control, an on/off pattern otherwise; each with its usage ([UsageVibrator]). The tests' player of the step
+ * waveforms alone; the app plays through [AdaptiveHapticPlayer], which also picks the other renderers.
  */
 class VibratorHapticPlayer(
     private val vibrator: UsageVibrator,
@@ -65,18 +65,3 @@ class VibratorHapticPlayer(
         fun create(context: Context): VibratorHapticPlayer = VibratorHapticPlayer(UsageVibrator.create(context))
     }
 }
-
-/**
- * The platform effect for this waveform. [VibrationWaveform] guarantees the safety limits
- * (timings > 0, amplitudes 0..255, total ≤ 30 s); checked again here because this is the last
- * step before the actuator.
- */
-fun VibrationWaveform.toVibrationEffect(): VibrationEffect {
-    val timings = timings()
-    val amplitudes = amplitudes()
-    check(timings.sum() <= HapticIcon.MAX_DURATION_SECONDS * 1000) { "vibration longer than the safety cap" }
-    check(amplitudes.all { it in 0..VibrationWaveform.MAX_AMPLITUDE }) { "amplitude outside 0..255" }
-    return VibrationEffect.createWaveform(timings, amplitudes, NO_REPEAT)
-}
-
-private const val NO_REPEAT = -1

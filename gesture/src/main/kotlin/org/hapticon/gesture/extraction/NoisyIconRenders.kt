@@ -14,7 +14,7 @@ import kotlin.math.sqrt
  * haptics-core's [IconRenderer] (PAPER envelope) between [padSamples] of silence on each side, plus white
  * Gaussian noise; [trueEnvelope] is the noise-free envelope at the same indices.
  */
-public class SyntheticGesture(
+public class NoisyIconRender(
     /** The icon rendered. */
     public val icon: HapticIcon,
     /** Samples per second. */
@@ -38,7 +38,7 @@ public class SyntheticGesture(
 }
 
 /** Random valid icons and their noisy renders, seeded, for the synthetic evaluation (docs/gesture-extraction.md). */
-public object SyntheticGestures {
+public object NoisyIconRenders {
     /** Silence on each side of a synthetic gesture, in seconds. */
     public const val PAD_SECONDS: Double = 0.25
 
@@ -63,7 +63,7 @@ public object SyntheticGestures {
      * [random] at [snrDb] — relative to the mean power of the samples inside the icon's envelopes (true
      * envelope > 0), so gaps between repetitions do not make the noise look smaller. [snrDb] = +∞ adds none.
      */
-    public fun render(icon: HapticIcon, snrDb: Double, random: Random, sampleRate: Int = 44_100): SyntheticGesture {
+    public fun render(icon: HapticIcon, snrDb: Double, random: Random, sampleRate: Int = 44_100): NoisyIconRender {
         require(!snrDb.isNaN()) { "SNR must be a number of dB, was NaN" }
         // The fitter recovers the paper trapezoid (a held level), so the synthetic gestures are rendered with it.
         val renderer = IconRenderer(icon, sampleRate, EnvelopeModel.PAPER)
@@ -87,7 +87,7 @@ public object SyntheticGestures {
             val sigma = sqrt(power / active / Math.pow(10.0, snrDb / 10.0))
             for (i in samples.indices) samples[i] += sigma * random.nextGaussian()
         }
-        return SyntheticGesture(icon, sampleRate, pad, samples, truth)
+        return NoisyIconRender(icon, sampleRate, pad, samples, truth)
     }
 
     private fun uniform(random: Random, from: Double, to: Double): Double = from + (to - from) * random.nextDouble()
