@@ -11,6 +11,10 @@ cannot drift apart:
   imports it back, directly or through others; each cycle is one violation naming its packages. The
   classes the Android build generates in a module's namespace (`R`, `BuildConfig`) import nothing, so a
   use of them is no edge of the package graph (they cannot close a cycle).
+- "Features do not import each other": a package under a `feature` package (`….feature.chat`, and its
+  subpackages) uses no name of a sibling feature; what two features share lives outside `feature`, and a
+  screen one feature shows from another is handed in by the navigation. Nor does it use the dependency
+  container (a `di` package): a route takes what it uses.
 
 Standard library only, like the rest of the offline build: `check(root)` returns the violations as
 one-line messages (empty when the project follows the rules).
@@ -97,6 +101,15 @@ def generated_classes(directory: str) -> tuple[str, ...]:
 def is_generated(name: str, generated: tuple[str, ...]) -> bool:
     """Whether [name] is one of the [generated] classes or a member of one (`org.x.R.drawable.icon`)."""
     return any(name == g or name.startswith(g + ".") for g in generated)
+
+
+def feature_of(pkg: str) -> str | None:
+    """The feature a package belongs to (`org.x.app.feature.chat` for it and its subpackages), or None."""
+    parts = pkg.split(".")
+    if "feature" not in parts[:-1]:
+        return None
+    i = parts.index("feature")
+    return ".".join(parts[: i + 2])
 
 
 def owner(imported: str, packages: dict[str, str]) -> tuple[str, str] | None:
@@ -198,6 +211,11 @@ def check(root: str) -> list[str]:
                     violations.append(f"{rel}: imports {imported} from {module}, which {DOC} does not allow for {path}")
                 elif module == path and imported_pkg != pkg and not is_generated(imported, generated):
                     graph[pkg].add(imported_pkg)
+                    mine, theirs = feature_of(pkg), feature_of(imported_pkg)
+                    if mine and theirs and mine != theirs:
+                        violations.append(f"{rel}: feature {mine} imports {imported} from feature {theirs}; features do not import each other")
+                    elif mine and imported_pkg.split(".")[-1] == "di":
+                        violations.append(f"{rel}: feature {mine} imports {imported}; a route takes what it uses, not the container")
         for component in cycles(graph):
             violations.append(f"{path}: packages import each other in a cycle: {', '.join(sorted(component))}")
     return violations

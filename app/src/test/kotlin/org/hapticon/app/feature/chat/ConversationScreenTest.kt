@@ -1,5 +1,6 @@
 package org.hapticon.app.feature.chat
 
+import org.hapticon.app.ui.Sticker
 import android.content.Context
 import org.hapticon.core.platform.VibrationUsage
 import org.hapticon.app.playback.usageVibrator
