@@ -16,6 +16,10 @@ cannot drift apart:
   code and for the names the section allows, each with its reason.
 - "One type per name": no two top-level types in the main sources of the modules share a simple name
   (whatever their visibility or module), except the names the section allows.
+- "Features do not import each other": a package under a `feature` package (`….feature.chat`, and its
+  subpackages) uses no name of a sibling feature; what two features share lives outside `feature`, and a
+  screen one feature shows from another is handed in by the navigation. Nor does it use the dependency
+  container (a `di` package): a route takes what it uses.
 
 Standard library only, like the rest of the offline build: `check(root)` returns the violations as
 one-line messages (empty when the project follows the rules).
@@ -156,6 +160,15 @@ def is_generated(name: str, generated: tuple[str, ...]) -> bool:
     return any(name == g or name.startswith(g + ".") for g in generated)
 
 
+def feature_of(pkg: str) -> str | None:
+    """The feature a package belongs to (`org.x.app.feature.chat` for it and its subpackages), or None."""
+    parts = pkg.split(".")
+    if "feature" not in parts[:-1]:
+        return None
+    i = parts.index("feature")
+    return ".".join(parts[: i + 2])
+
+
 def owner(imported: str, packages: dict[str, str]) -> tuple[str, str] | None:
     """(module, package) declaring the longest package prefix of [imported], or None (a library)."""
     parts = imported.split(".")
@@ -255,6 +268,11 @@ def check(root: str) -> list[str]:
                     violations.append(f"{rel}: imports {imported} from {module}, which {DOC} does not allow for {path}")
                 elif module == path and imported_pkg != pkg and not is_generated(imported, generated):
                     graph[pkg].add(imported_pkg)
+                    mine, theirs = feature_of(pkg), feature_of(imported_pkg)
+                    if mine and theirs and mine != theirs:
+                        violations.append(f"{rel}: feature {mine} imports {imported} from feature {theirs}; features do not import each other")
+                    elif mine and imported_pkg.split(".")[-1] == "di":
+                        violations.append(f"{rel}: feature {mine} imports {imported}; a route takes what it uses, not the container")
         for component in cycles(graph):
             violations.append(f"{path}: packages import each other in a cycle: {', '.join(sorted(component))}")
     return violations + type_violations(root, rules, sources)

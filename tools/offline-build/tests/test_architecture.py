@@ -143,6 +143,33 @@ class ArchitectureTest(unittest.TestCase):
                 check(root),
             )
 
+    def test_featureImportingASiblingFeature_isReported_sharedPackagesAndItsOwnSubpackagesAreNot(self):
+        with tempfile.TemporaryDirectory() as root:
+            self.project(root, extra=[
+                ("cli/src/main/kotlin/org/x/cli/feature/chat/Chat.kt", kotlin("org.x.cli.feature.chat", "org.x.cli.feature.chat.parts.Row", "org.x.cli.common.Console")),
+                ("cli/src/main/kotlin/org/x/cli/feature/chat/parts/Row.kt", kotlin("org.x.cli.feature.chat.parts", "org.x.cli.feature.editor.Editor")),
+                ("cli/src/main/kotlin/org/x/cli/feature/editor/Editor.kt", kotlin("org.x.cli.feature.editor", "org.x.cli.common.Console")),
+                ("cli/src/main/kotlin/org/x/cli/nav/Nav.kt", kotlin("org.x.cli.nav", "org.x.cli.feature.chat.Chat", "org.x.cli.feature.editor.Editor")),
+            ])
+            self.assertEqual(
+                ["cli/src/main/kotlin/org/x/cli/feature/chat/parts/Row.kt: feature org.x.cli.feature.chat imports "
+                 "org.x.cli.feature.editor.Editor from feature org.x.cli.feature.editor; features do not import each other"],
+                [v.replace(os.sep, "/") for v in check(root)],
+            )
+
+    def test_featureUsingTheContainer_isReported_theNavigationMayUseIt(self):
+        with tempfile.TemporaryDirectory() as root:
+            self.project(root, extra=[
+                ("cli/src/main/kotlin/org/x/cli/di/Container.kt", kotlin("org.x.cli.di", "org.x.cli.common.Console")),
+                ("cli/src/main/kotlin/org/x/cli/feature/chat/Chat.kt", kotlin("org.x.cli.feature.chat", "org.x.cli.di.Container")),
+                ("cli/src/main/kotlin/org/x/cli/nav/Nav.kt", kotlin("org.x.cli.nav", "org.x.cli.di.Container", "org.x.cli.feature.chat.Chat")),
+            ])
+            self.assertEqual(
+                ["cli/src/main/kotlin/org/x/cli/feature/chat/Chat.kt: feature org.x.cli.feature.chat imports "
+                 "org.x.cli.di.Container; a route takes what it uses, not the container"],
+                [v.replace(os.sep, "/") for v in check(root)],
+            )
+
     def test_androidGeneratedClassesOfTheNamespace_closeNoCycle_aClassNamedLikeThemDoes(self):
         with tempfile.TemporaryDirectory() as root:
             self.project(root, extra=[

@@ -13,12 +13,7 @@ import androidx.compose.runtime.Composable
 import androidx.compose.runtime.saveable.rememberSaveableStateHolder
 import androidx.compose.ui.Modifier
 import org.hapticon.app.di.AppContainer
-import org.hapticon.app.feature.chat.ChatsRoute
 import org.hapticon.app.feature.chat.rememberChatsNavigation
-import org.hapticon.app.feature.gesture.GesturesRoute
-import org.hapticon.app.feature.icons.IconsRoute
-import org.hapticon.app.feature.sensors.SensorsRoute
-import org.hapticon.app.feature.study.StudyRoute
 import androidx.compose.runtime.getValue
 import androidx.lifecycle.compose.collectAsStateWithLifecycle
 import kotlinx.coroutines.flow.MutableStateFlow
@@ -59,14 +54,7 @@ fun HapticonApp(
     ) { padding ->
         Box(Modifier.fillMaxSize().padding(padding).consumeWindowInsets(padding)) {
             saveableStates.SaveableStateProvider(selected.name) {
-                when (selected) {
-                    // A container built without chat (some tests) shows an empty Chats destination.
-                    TopLevelDestination.CHATS -> container.chat?.let { ChatsRoute(it, onOpenStudy = { onSelect(TopLevelDestination.STUDY) }, navigation = chatsNavigation) }
-                    TopLevelDestination.ICONS -> IconsRoute(container)
-                    TopLevelDestination.SENSORS -> SensorsRoute(container)
-                    TopLevelDestination.STUDY -> StudyRoute(container)
-                    TopLevelDestination.GESTURES -> GesturesRoute(container)
-                }
+                Destination(container, selected, chatsNavigation, onSelect)
             }
         }
     }

@@ -1,53 +1,16 @@
 package org.hapticon.app.playback
 
-import android.app.ActivityManager
 import android.content.Context
-import android.media.AudioManager
 import android.os.Build
-import android.os.PowerManager
 import android.os.VibrationAttributes
 import android.os.VibrationEffect
 import android.os.Vibrator
-import android.provider.Settings
 import android.util.Log
 import androidx.annotation.RequiresApi
 import org.hapticon.core.platform.AndroidVibrationRules
-import org.hapticon.core.platform.PhoneState
 import org.hapticon.core.platform.VibrationRoute
 import org.hapticon.core.platform.VibrationUsage
 import org.hapticon.core.platform.VibrationVerdict
-
-/** What Android would do now with a vibration it judges by a usage ([AndroidVibrationRules.effectiveUsage]). */
-fun interface VibrationGate {
-    fun verdict(effectiveUsage: VibrationUsage): VibrationVerdict
-}
-
-/**
- * [VibrationGate] on this phone: [AndroidVibrationRules] over the state Android's vibrator service reads, each value
- * read from the system only when the rule for the usage needs it ([AndroidPhoneState]).
- */
-class AndroidVibrationGate(private val context: Context, private val vibrator: Vibrator) : VibrationGate {
-    override fun verdict(effectiveUsage: VibrationUsage): VibrationVerdict =
-        AndroidVibrationRules.verdict(effectiveUsage, AndroidPhoneState(context.applicationContext, vibrator))
-}
-
-/** [PhoneState] read from Android's services when asked. */
-class AndroidPhoneState(private val context: Context, private val vibrator: Vibrator) : PhoneState {
-    override val hasVibrator: Boolean get() = vibrator.hasVibrator()
-
-    override val processImportance: Int
-        get() = ActivityManager.RunningAppProcessInfo().also(ActivityManager::getMyMemoryState).importance
-
-    override val interactive: Boolean get() = context.getSystemService(PowerManager::class.java)?.isInteractive ?: true
-
-    override val batterySaver: Boolean get() = context.getSystemService(PowerManager::class.java)?.isPowerSaveMode ?: false
-
-    override val touchFeedbackEnabled: Boolean
-        get() = Settings.System.getInt(context.contentResolver, Settings.System.HAPTIC_FEEDBACK_ENABLED, 1) != 0
-
-    override val ringerSilent: Boolean
-        get() = context.getSystemService(AudioManager::class.java)?.ringerMode == AudioManager.RINGER_MODE_SILENT
-}
 
 /**
  * The phone's [vibrator] where every vibration carries the usage it is: `VibrationAttributes` from API 33

@@ -32,12 +32,6 @@ import org.hapticon.messaging.mqtt.DeviceId
 import org.hapticon.messaging.mqtt.MqttMessenger
 import org.hapticon.messaging.mqtt.MqttSettings
 
-/**
- * Asks a broker whether [user] can connect; null when it can, else a one-line reason. The chat screens' view
- * models take it; [ChatComponent] makes it from the sync's settings.
- */
-typealias BrokerProbe = suspend (user: String, broker: BrokerAddress, password: String?) -> String?
-
 /** Everything the chat feature needs, built once in the [org.hapticon.app.di.AppContainer]. */
 class ChatComponent(
     val repository: ChatRepository,
@@ -274,25 +268,4 @@ class ChatComponent(
         }
 
     }
-}
-
-/**
- * [text] shared from another app's share sheet, for [peer]'s conversation when the user picked it there (a sharing
- * shortcut, `Intent.EXTRA_SHORTCUT_ID`), else for the chat the user opens next.
- */
-data class SharedText(val peer: String?, val text: String)
-
-/** What [ChatComponent.peerKeys] knows of a peer's end-to-end keys. */
-enum class PeerKeys {
-    /** Encryption is off (the user's choice): no keys are needed. */
-    NOT_NEEDED,
-
-    /** The peer published keys: messages to it are sealed. */
-    PUBLISHED,
-
-    /** Connected, and the broker holds no keys of the peer: nothing can be sent until it connects with encryption on. */
-    NONE_PUBLISHED,
-
-    /** Not connected since the app started: the retained keys have not been read yet. */
-    NOT_KNOWN_YET,
 }

@@ -1,12 +1,12 @@
 package org.hapticon.app.screenshots
 
+import org.hapticon.app.data.ElectrodeLevelsStore
 import org.hapticon.app.feature.gesture.SocialTouchActions
 import org.hapticon.app.feature.gesture.SocialTouchResult
 import org.hapticon.app.feature.gesture.SocialTouchScreen
 import org.hapticon.app.feature.gesture.SocialTouchUiState
 import org.hapticon.app.feature.sensors.ElectrotactileActions
 import org.hapticon.app.feature.sensors.ElectrotactileCalibrationScreen
-import org.hapticon.app.feature.sensors.ElectrotactileCalibrationViewModel
 import org.hapticon.app.feature.sensors.ElectrotactileUiState
 import org.hapticon.app.feature.study.ComplianceActions
 import org.hapticon.app.feature.study.ComplianceScreen
@@ -66,7 +66,7 @@ class SensingPapersScreenshotTest : ScreenshotTest() {
         ElectrotactileCalibrationScreen(
             ElectrotactileUiState.Electrode(
                 0, 60, AmplitudeSteps.milliampsOf(60), atCap = false, steps = List(9) { 60 }, boardReady = true,
-                message = "Imported ${ElectrotactileCalibrationViewModel.describe(stored)}: the compliance study now stimulates at these levels",
+                message = "Imported ${ElectrodeLevelsStore.describe(stored)}: the compliance study now stimulates at these levels",
             ),
             ElectrotactileActions(),
             stored,

@@ -1,5 +1,8 @@
 package org.hapticon.app.feature.chat
 
+import androidx.compose.runtime.setValue
+import androidx.compose.runtime.getValue
+import org.hapticon.app.ui.Sticker
 import androidx.compose.foundation.ExperimentalFoundationApi
 import androidx.compose.foundation.background
 import androidx.compose.foundation.combinedClickable
@@ -16,7 +19,6 @@ import androidx.compose.foundation.layout.size
 import androidx.compose.foundation.layout.width
 import androidx.compose.foundation.lazy.LazyColumn
 import androidx.compose.foundation.lazy.items
-import androidx.compose.foundation.shape.CircleShape
 import androidx.compose.material3.AlertDialog
 import androidx.compose.material3.Badge
 import androidx.compose.material3.CircularProgressIndicator
@@ -40,17 +42,13 @@ import androidx.compose.material3.TextButton
 import androidx.compose.material3.TopAppBar
 import androidx.compose.material3.rememberSwipeToDismissBoxState
 import androidx.compose.runtime.Composable
-import androidx.compose.runtime.getValue
 import androidx.compose.runtime.mutableStateOf
 import androidx.compose.runtime.remember
 import androidx.compose.runtime.rememberCoroutineScope
 import androidx.compose.runtime.saveable.rememberSaveable
-import androidx.compose.runtime.setValue
 import androidx.compose.ui.Alignment
 import androidx.compose.ui.Modifier
-import androidx.compose.ui.graphics.Color
 import androidx.compose.ui.semantics.CustomAccessibilityAction
-import androidx.compose.ui.semantics.clearAndSetSemantics
 import androidx.compose.ui.semantics.contentDescription
 import androidx.compose.ui.semantics.customActions
 import androidx.compose.ui.semantics.semantics
@@ -133,32 +131,8 @@ fun ChatListScreen(
     val visible = uiState.conversations.filter { it.peer !in hidden && (it.peer in uiState.archived) == showArchived }
     val archivedCount = uiState.conversations.count { it.peer in uiState.archived }
     Scaffold(
-        topBar = {
-            Column {
-                TopAppBar(
-                    title = { Text(if (showArchived) "Archived chats" else "Chats") },
-                    navigationIcon = {
-                        if (showArchived) IconButton(onClick = { showArchived = false }) { Icon(HapticonIcons.ArrowBack, contentDescription = "Back to chats") }
-                    },
-                    actions = {
-                        IconButton(onClick = actions.onInvite) { Icon(HapticonIcons.PersonAdd, contentDescription = "Invite someone") }
-                        IconButton(onClick = actions.onSettings) { Icon(HapticonIcons.Settings, contentDescription = "Settings") }
-                    },
-                )
-                uiState.connection.line()?.let { ConnectionLine(it) }
-            }
-        },
-        floatingActionButton = {
-            if (!showArchived) {
-                ExtendedFloatingActionButton(
-                    onClick = { newChat = true },
-                    icon = { Icon(HapticonIcons.Edit, contentDescription = null) },
-                    text = { Text("New chat") },
-                    // Named on the button itself: the label is a child the merged tree does not always carry.
-                    modifier = Modifier.semantics { contentDescription = "New chat" },
-                )
-            }
-        },
+        topBar = { ChatListTopBar(showArchived, uiState.connection, onLeaveArchive = { showArchived = false }, actions) },
+        floatingActionButton = { if (!showArchived) NewChatButton(onClick = { newChat = true }) },
         snackbarHost = { SnackbarHost(snackbar) },
     ) { padding ->
         Column(Modifier.fillMaxSize().padding(padding)) {
@@ -174,14 +148,7 @@ fun ChatListScreen(
                             onArchive = { if (showArchived) actions.onUnarchive(it) else archive(it) }, onDelete = ::delete,
                         )
                     }
-                    if (!showArchived && archivedCount > 0) {
-                        item {
-                            TextButton(onClick = { showArchived = true }, modifier = Modifier.padding(horizontal = 8.dp)) {
-                                Icon(HapticonIcons.Archive, contentDescription = null)
-                                Text("Archived ($archivedCount)", Modifier.padding(start = 8.dp))
-                            }
-                        }
-                    }
+                    if (!showArchived && archivedCount > 0) item { ArchivedChatsButton(archivedCount, onClick = { showArchived = true }) }
                 }
             }
         }
@@ -191,6 +158,46 @@ fun ChatListScreen(
             onStart = { peer, evenIfUnknown -> actions.onNewChat(peer, evenIfUnknown).also { if (it == null) newChat = false } },
             onDismiss = { newChat = false },
         )
+    }
+}
+
+/** "Chats" (or "Archived chats", with the way back), invite and settings, and the connection line under them. */
+@OptIn(ExperimentalMaterial3Api::class)
+@Composable
+private fun ChatListTopBar(showArchived: Boolean, connection: ChatConnection, onLeaveArchive: () -> Unit, actions: ChatListActions) {
+    Column {
+        TopAppBar(
+            title = { Text(if (showArchived) "Archived chats" else "Chats") },
+            navigationIcon = {
+                if (showArchived) IconButton(onClick = onLeaveArchive) { Icon(HapticonIcons.ArrowBack, contentDescription = "Back to chats") }
+            },
+            actions = {
+                IconButton(onClick = actions.onInvite) { Icon(HapticonIcons.PersonAdd, contentDescription = "Invite someone") }
+                IconButton(onClick = actions.onSettings) { Icon(HapticonIcons.Settings, contentDescription = "Settings") }
+            },
+        )
+        connection.line()?.let { ConnectionLine(it) }
+    }
+}
+
+/** The "New chat" button over the list. */
+@Composable
+private fun NewChatButton(onClick: () -> Unit) {
+    ExtendedFloatingActionButton(
+        onClick = onClick,
+        icon = { Icon(HapticonIcons.Edit, contentDescription = null) },
+        text = { Text("New chat") },
+        // Named on the button itself: the label is a child the merged tree does not always carry.
+        modifier = Modifier.semantics { contentDescription = "New chat" },
+    )
+}
+
+/** The way to the archived chats, at the end of the list. */
+@Composable
+private fun ArchivedChatsButton(count: Int, onClick: () -> Unit) {
+    TextButton(onClick = onClick, modifier = Modifier.padding(horizontal = 8.dp)) {
+        Icon(HapticonIcons.Archive, contentDescription = null)
+        Text("Archived ($count)", Modifier.padding(start = 8.dp))
     }
 }
 
@@ -209,15 +216,6 @@ private fun EmptyChats(user: String, modifier: Modifier, onInvite: () -> Unit, o
         )
         androidx.compose.material3.Button(onClick = onInvite) { Text("Show my invite code") }
         TextButton(onClick = onNewChat) { Text("Start a chat by user name") }
-    }
-}
-
-/** Initials on the colour derived from the name. */
-@Composable
-fun Avatar(name: String, modifier: Modifier = Modifier.size(48.dp)) {
-    Box(modifier.background(avatarColorOf(name), CircleShape), contentAlignment = Alignment.Center) {
-        // Decoration: the name is said next to it, so TalkBack skips the initials (a lone "B" stop before "bob").
-        Text(initialsOf(name), color = Color.White, style = MaterialTheme.typography.titleMedium, modifier = Modifier.clearAndSetSemantics {})
     }
 }
 
@@ -246,17 +244,7 @@ private fun ConversationRow(
     val archiveLabel = if (archived) "Unarchive" else "Archive"
     SwipeToDismissBox(
         state = dismiss,
-        backgroundContent = {
-            val toDelete = dismiss.dismissDirection == SwipeToDismissBoxValue.EndToStart
-            Row(
-                Modifier.fillMaxSize().background(if (toDelete) MaterialTheme.colorScheme.errorContainer else MaterialTheme.colorScheme.secondaryContainer)
-                    .padding(horizontal = 24.dp),
-                verticalAlignment = Alignment.CenterVertically,
-                horizontalArrangement = if (toDelete) Arrangement.End else Arrangement.Start,
-            ) {
-                Icon(if (toDelete) HapticonIcons.Delete else HapticonIcons.Archive, contentDescription = null)
-            }
-        },
+        backgroundContent = { SwipeBackground(toDelete = dismiss.dismissDirection == SwipeToDismissBoxValue.EndToStart) },
     ) {
         Box {
             Row(
@@ -277,42 +265,76 @@ private fun ConversationRow(
                 verticalAlignment = Alignment.CenterVertically,
             ) {
                 Avatar(peer)
-                Column(Modifier.weight(1f).padding(horizontal = 16.dp)) {
-                    val unread = summary.unread > 0
-                    Text(
-                        peer, style = MaterialTheme.typography.titleMedium,
-                        fontWeight = if (unread) FontWeight.Bold else FontWeight.Normal, maxLines = 1, overflow = TextOverflow.Ellipsis,
-                    )
-                    Text(
-                        previewOf(summary), style = MaterialTheme.typography.bodyMedium, maxLines = 1, overflow = TextOverflow.Ellipsis,
-                        color = if (unread) MaterialTheme.colorScheme.onSurface else MaterialTheme.colorScheme.onSurfaceVariant,
-                        fontWeight = if (unread) FontWeight.SemiBold else FontWeight.Normal,
-                    )
-                }
-                Column(horizontalAlignment = Alignment.End, verticalArrangement = Arrangement.spacedBy(6.dp)) {
-                    time?.let { Text(it, style = MaterialTheme.typography.labelMedium, color = MaterialTheme.colorScheme.onSurfaceVariant) }
-                    if (summary.unread > 0) {
-                        Badge(containerColor = MaterialTheme.colorScheme.primary, contentColor = MaterialTheme.colorScheme.onPrimary) {
-                            Text(if (summary.unread > 99) "99+" else summary.unread.toString(), Modifier.semantics {
-                                this[androidx.compose.ui.semantics.SemanticsProperties.ContentDescription] = listOf("${summary.unread} unread")
-                            })
-                        }
-                    } else {
-                        Box(Modifier.height(16.dp).width(1.dp))
-                    }
-                }
+                NameAndPreview(summary, Modifier.weight(1f).padding(horizontal = 16.dp))
+                TimeAndUnread(time, summary.unread)
             }
-            DropdownMenu(expanded = menu, onDismissRequest = { menu = false }) {
-                DropdownMenuItem(
-                    text = { Text(archiveLabel) }, leadingIcon = { Icon(HapticonIcons.Archive, contentDescription = null) },
-                    onClick = { menu = false; onArchive(peer) },
-                )
-                DropdownMenuItem(
-                    text = { Text("Delete") }, leadingIcon = { Icon(HapticonIcons.Delete, contentDescription = null) },
-                    onClick = { menu = false; onDelete(peer) },
-                )
-            }
+            RowMenu(
+                expanded = menu, archiveLabel, onDismiss = { menu = false },
+                onArchive = { menu = false; onArchive(peer) }, onDelete = { menu = false; onDelete(peer) },
+            )
         }
+    }
+}
+
+/** What a swipe uncovers under a row: delete (to the start) or archive (to the end). */
+@Composable
+private fun SwipeBackground(toDelete: Boolean) {
+    Row(
+        Modifier.fillMaxSize().background(if (toDelete) MaterialTheme.colorScheme.errorContainer else MaterialTheme.colorScheme.secondaryContainer)
+            .padding(horizontal = 24.dp),
+        verticalAlignment = Alignment.CenterVertically,
+        horizontalArrangement = if (toDelete) Arrangement.End else Arrangement.Start,
+    ) {
+        Icon(if (toDelete) HapticonIcons.Delete else HapticonIcons.Archive, contentDescription = null)
+    }
+}
+
+/** The peer's name and the last message's preview, in bold while unread. */
+@Composable
+private fun NameAndPreview(summary: ConversationSummary, modifier: Modifier) {
+    Column(modifier) {
+        val unread = summary.unread > 0
+        Text(
+            summary.peer, style = MaterialTheme.typography.titleMedium,
+            fontWeight = if (unread) FontWeight.Bold else FontWeight.Normal, maxLines = 1, overflow = TextOverflow.Ellipsis,
+        )
+        Text(
+            previewOf(summary), style = MaterialTheme.typography.bodyMedium, maxLines = 1, overflow = TextOverflow.Ellipsis,
+            color = if (unread) MaterialTheme.colorScheme.onSurface else MaterialTheme.colorScheme.onSurfaceVariant,
+            fontWeight = if (unread) FontWeight.SemiBold else FontWeight.Normal,
+        )
+    }
+}
+
+/** The last message's time over the unread badge (or the badge's height kept empty). */
+@Composable
+private fun TimeAndUnread(time: String?, unread: Int) {
+    Column(horizontalAlignment = Alignment.End, verticalArrangement = Arrangement.spacedBy(6.dp)) {
+        time?.let { Text(it, style = MaterialTheme.typography.labelMedium, color = MaterialTheme.colorScheme.onSurfaceVariant) }
+        if (unread > 0) {
+            Badge(containerColor = MaterialTheme.colorScheme.primary, contentColor = MaterialTheme.colorScheme.onPrimary) {
+                Text(if (unread > 99) "99+" else unread.toString(), Modifier.semantics {
+                    this[androidx.compose.ui.semantics.SemanticsProperties.ContentDescription] = listOf("$unread unread")
+                })
+            }
+        } else {
+            Box(Modifier.height(16.dp).width(1.dp))
+        }
+    }
+}
+
+/** A row's long-press menu: archive (or unarchive) and delete. */
+@Composable
+private fun RowMenu(expanded: Boolean, archiveLabel: String, onDismiss: () -> Unit, onArchive: () -> Unit, onDelete: () -> Unit) {
+    DropdownMenu(expanded = expanded, onDismissRequest = onDismiss) {
+        DropdownMenuItem(
+            text = { Text(archiveLabel) }, leadingIcon = { Icon(HapticonIcons.Archive, contentDescription = null) },
+            onClick = onArchive,
+        )
+        DropdownMenuItem(
+            text = { Text("Delete") }, leadingIcon = { Icon(HapticonIcons.Delete, contentDescription = null) },
+            onClick = onDelete,
+        )
     }
 }
 

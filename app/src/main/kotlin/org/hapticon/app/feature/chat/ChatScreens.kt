@@ -15,12 +15,14 @@ import androidx.compose.runtime.LaunchedEffect
 import androidx.compose.runtime.getValue
 import androidx.compose.runtime.mutableStateOf
 import androidx.compose.runtime.remember
+import androidx.compose.runtime.rememberUpdatedState
 import androidx.compose.runtime.rememberCoroutineScope
 import androidx.compose.runtime.saveable.rememberSaveable
 import androidx.compose.runtime.setValue
 import androidx.compose.runtime.Stable
 import androidx.compose.runtime.saveable.Saver
 import kotlinx.coroutines.flow.Flow
+import kotlinx.coroutines.flow.MutableStateFlow
 import androidx.compose.ui.platform.LocalContext
 import androidx.core.content.ContextCompat
 import androidx.lifecycle.compose.collectAsStateWithLifecycle
@@ -33,7 +35,8 @@ import kotlinx.coroutines.flow.flowOf
 import kotlinx.coroutines.flow.map
 import kotlinx.coroutines.withContext
 import org.hapticon.app.data.ChatExport
-import org.hapticon.app.feature.iconeditor.IconEditorRoute
+import org.hapticon.app.data.PatternFileAccess
+import org.hapticon.messaging.mqtt.ClientCertificate
 import org.hapticon.app.playback.RendererChoice
 import org.hapticon.app.sync.ChatComponent
 import org.hapticon.app.sync.KeepAlive
@@ -73,30 +76,24 @@ fun rememberChatsNavigation(): ChatsNavigation = rememberSaveable(saver = ChatsN
  * The Chats destination: first launch, the conversation list, a conversation, settings, the invite and
  * the icon editor. State-based like the app frame (a handful of screens need no back stack); system
  * back returns to the list. An invite link opened from outside ([ChatComponent.pendingInvite]) is
- * applied here and its outcome shown in one line.
+ * applied here and its outcome shown in one line. The icon editor is a feature of its own: the app's navigation
+ * hands it in as [iconEditor].
  */
 @Composable
-fun ChatsRoute(component: ChatComponent, onOpenStudy: () -> Unit = {}, navigation: ChatsNavigation = rememberChatsNavigation()) {
+fun ChatsRoute(
+    component: ChatComponent,
+    iconEditor: @Composable (onDone: () -> Unit) -> Unit,
+    onOpenStudy: () -> Unit = {},
+    navigation: ChatsNavigation = rememberChatsNavigation(),
+) {
     var screen by navigation::screen
     var peer by rememberSaveable { mutableStateOf<String?>(null) }
     var inviteMessage by rememberSaveable { mutableStateOf<String?>(null) }
-    val pendingInvite by component.pendingInvite.collectAsStateWithLifecycle()
-    LaunchedEffect(pendingInvite) {
-        val text = pendingInvite ?: return@LaunchedEffect
-        component.pendingInvite.value = null
-        inviteMessage = when (val outcome = applyInvite(text, component.repository, component.settings)) {
-            is InviteOutcome.Rejected -> "Invite not used: ${outcome.reason}"
-            is InviteOutcome.Added -> outcome.note ?: buildString {
-                append(outcome.peer?.let { "$it added to your chats" } ?: "Invite opened")
-                if (outcome.brokerFilled) append("; broker filled in")
-            }
-        }
+    Consume(component.pendingInvite) { text ->
+        inviteMessage = applyInvite(text, component.repository, component.settings).message
         screen = ChatScreen.LIST
     }
-    val pendingConversation by component.pendingConversation.collectAsStateWithLifecycle()
-    LaunchedEffect(pendingConversation) {
-        val open = pendingConversation ?: return@LaunchedEffect
-        component.pendingConversation.value = null
+    Consume(component.pendingConversation) { open ->
         if (Topics.isValidUserName(open)) {
             peer = open
             screen = ChatScreen.CONVERSATION
@@ -105,10 +102,7 @@ fun ChatsRoute(component: ChatComponent, onOpenStudy: () -> Unit = {}, navigatio
     // Shared text: straight into the picked conversation's composer, or held for the chat the user opens next.
     var sharedDraft by rememberSaveable { mutableStateOf<String?>(null) }
     var choosingForShare by rememberSaveable { mutableStateOf(false) }
-    val pendingShare by component.pendingShare.collectAsStateWithLifecycle()
-    LaunchedEffect(pendingShare) {
-        val share = pendingShare ?: return@LaunchedEffect
-        component.pendingShare.value = null
+    Consume(component.pendingShare) { share ->
         sharedDraft = share.text
         val to = share.peer
         if (to != null && Topics.isValidUserName(to)) {
@@ -120,28 +114,16 @@ fun ChatsRoute(component: ChatComponent, onOpenStudy: () -> Unit = {}, navigatio
         }
     }
     if (choosingForShare) {
-        AlertDialog(
-            onDismissRequest = { choosingForShare = false },
-            confirmButton = { TextButton(onClick = { choosingForShare = false }) { Text("OK") } },
-            title = { Text("Share") },
-            text = { Text("Open a chat: the shared text will be in its message field, ready to send.") },
-        )
+        NoticeDialog("Share", "Open a chat: the shared text will be in its message field, ready to send.") { choosingForShare = false }
     }
-    inviteMessage?.let { message ->
-        AlertDialog(
-            onDismissRequest = { inviteMessage = null },
-            confirmButton = { TextButton(onClick = { inviteMessage = null }) { Text("OK") } },
-            title = { Text("Invite") },
-            text = { Text(message) },
-        )
-    }
+    inviteMessage?.let { message -> NoticeDialog("Invite", message) { inviteMessage = null } }
     // A scanned invite goes the way of an opened link: checked, applied, its outcome said in the dialog.
     val scanInvite = rememberInviteScanner(onScanned = { component.pendingInvite.value = it }, onFailed = { inviteMessage = it })
     val back = { screen = ChatScreen.LIST }
     when (screen) {
         ChatScreen.EDITOR -> {
             BackHandler { screen = ChatScreen.CONVERSATION }
-            IconEditorRoute(component.icons, component.player, onDone = { screen = ChatScreen.CONVERSATION })
+            iconEditor { screen = ChatScreen.CONVERSATION }
         }
         ChatScreen.CONVERSATION -> {
             val current = peer
@@ -287,6 +269,29 @@ fun ConversationRoute(
     )
 }
 
+/** Hands each value put in [pending] (from outside the app: a link, a notification, a share) to [handle] once. */
+@Composable
+private fun <T : Any> Consume(pending: MutableStateFlow<T?>, handle: suspend (T) -> Unit) {
+    val value by pending.collectAsStateWithLifecycle()
+    val current by rememberUpdatedState(handle)
+    LaunchedEffect(value) {
+        val arrived = value ?: return@LaunchedEffect
+        pending.value = null
+        current(arrived)
+    }
+}
+
+/** A dialog that tells the user one thing, closed with OK. */
+@Composable
+private fun NoticeDialog(title: String, text: String, onDismiss: () -> Unit) {
+    AlertDialog(
+        onDismissRequest = onDismiss,
+        confirmButton = { TextButton(onClick = onDismiss) { Text("OK") } },
+        title = { Text(title) },
+        text = { Text(text) },
+    )
+}
+
 /** Whether [component]'s messages can move now, for the line under the chat screens' top bars. */
 private fun connectionOf(component: ChatComponent): Flow<ChatConnection> =
     ChatConnection.flow(component.sync.connection, component.online, component.settings.preferences.map { it.brokerUrl })
@@ -294,23 +299,7 @@ private fun connectionOf(component: ChatComponent): Flow<ChatConnection> =
 @Composable
 private fun SettingsRoute(component: ChatComponent, onBack: () -> Unit, onOpenStudy: () -> Unit) {
     val context = LocalContext.current
-    val viewModel: SettingsViewModel = viewModel(
-        factory = viewModelFactory {
-            initializer {
-                SettingsViewModel(
-                    component.settings, component.sync.connection, component.sync.securityWarnings, component.sync.changedKeys,
-                    renderers = { RendererChoice.possible(component.device, null) },
-                    canNotify = { component.notifier?.canNotify() },
-                    probe = component.probe,
-                    trustKey = component.trustKey,
-                    exportJson = { ChatExport.toJson(component.repository.allMessages()) },
-                    republishCapabilities = component.sync::republishCapabilities,
-                    certificates = component.certificates,
-                    onCertificateChanged = component.sync::restartSession,
-                )
-            }
-        },
-    )
+    val viewModel: SettingsViewModel = viewModel(factory = viewModelFactory { initializer { settingsViewModel(component) } })
     val state by viewModel.uiState.collectAsStateWithLifecycle()
     // Asked again on every return to the screen: the user may have changed it in Android's settings.
     androidx.lifecycle.compose.LifecycleResumeEffect(Unit) {
@@ -331,23 +320,7 @@ private fun SettingsRoute(component: ChatComponent, onBack: () -> Unit, onOpenSt
         if (uri == null) return@rememberLauncherForActivityResult
         viewModel.export(uri.lastPathSegment.orEmpty()) { checkNotNull(context.contentResolver.openOutputStream(uri)) { "cannot write $uri" } }
     }
-    // The same system file picker as the Icons import (OpenDocument, read through PatternFileAccess).
-    val scope = androidx.compose.runtime.rememberCoroutineScope()
-    val certificatePicker = rememberLauncherForActivityResult(ActivityResultContracts.OpenDocument()) { uri ->
-        if (uri == null) return@rememberLauncherForActivityResult
-        scope.launch {
-            try {
-                val (bytes, name) = kotlinx.coroutines.withContext(kotlinx.coroutines.Dispatchers.IO) {
-                    org.hapticon.app.feature.icons.PatternFileAccess.read(
-                        context, uri, org.hapticon.messaging.mqtt.ClientCertificate.MAX_PKCS12_BYTES, "a client certificate (.p12)",
-                    )
-                }
-                viewModel.certificatePicked(bytes, name)
-            } catch (e: java.io.IOException) {
-                viewModel.certificateUnreadable(e.message ?: "the file could not be read")
-            }
-        }
-    }
+    val pickCertificate = rememberCertificatePicker(viewModel)
     SettingsScreen(
         state,
         SettingsActions(
@@ -368,14 +341,51 @@ private fun SettingsRoute(component: ChatComponent, onBack: () -> Unit, onOpenSt
             onExport = { export.launch("hapticon-chats.json") },
             onOpenStudy = onOpenStudy,
             onTrustKey = viewModel::trust,
-            // PKCS#12 files come as application/x-pkcs12 from some providers and octet-stream from others.
-            onImportCertificate = { certificatePicker.launch(arrayOf("application/x-pkcs12", "application/octet-stream", "*/*")) },
+            onImportCertificate = pickCertificate,
             onCertificatePassword = { viewModel.unlockCertificate(it) },
             onCancelCertificate = viewModel::cancelCertificateImport,
             onRemoveCertificate = viewModel::removeCertificate,
         ),
         version = runCatching { context.packageManager.getPackageInfo(context.packageName, 0).versionName }.getOrNull() ?: "",
     )
+}
+
+/** The settings' ViewModel over [component]'s settings, sync, certificates and messages. */
+private fun settingsViewModel(component: ChatComponent): SettingsViewModel = SettingsViewModel(
+    component.settings, component.sync.connection, component.sync.securityWarnings, component.sync.changedKeys,
+    renderers = { RendererChoice.possible(component.device, null) },
+    canNotify = { component.notifier?.canNotify() },
+    probe = component.probe,
+    trustKey = component.trustKey,
+    exportJson = { ChatExport.toJson(component.repository.allMessages()) },
+    republishCapabilities = component.sync::republishCapabilities,
+    certificates = component.certificates,
+    onCertificateChanged = component.sync::restartSession,
+)
+
+/**
+ * Opens the system file picker for a client certificate and hands what it reads to [viewModel]: the same picker as
+ * the Icons import (OpenDocument, read through PatternFileAccess). PKCS#12 files come as application/x-pkcs12 from
+ * some providers and octet-stream from others.
+ */
+@Composable
+private fun rememberCertificatePicker(viewModel: SettingsViewModel): () -> Unit {
+    val context = LocalContext.current
+    val scope = rememberCoroutineScope()
+    val picker = rememberLauncherForActivityResult(ActivityResultContracts.OpenDocument()) { uri ->
+        if (uri == null) return@rememberLauncherForActivityResult
+        scope.launch {
+            try {
+                val (bytes, name) = withContext(Dispatchers.IO) {
+                    PatternFileAccess.read(context, uri, ClientCertificate.MAX_PKCS12_BYTES, "a client certificate (.p12)")
+                }
+                viewModel.certificatePicked(bytes, name)
+            } catch (e: java.io.IOException) {
+                viewModel.certificateUnreadable(e.message ?: "the file could not be read")
+            }
+        }
+    }
+    return { picker.launch(arrayOf("application/x-pkcs12", "application/octet-stream", "*/*")) }
 }
 
 @Composable

@@ -1,5 +1,6 @@
 package org.hapticon.app.feature.chat
 
+import org.hapticon.app.ui.Sticker
 import androidx.compose.foundation.ExperimentalFoundationApi
 import androidx.compose.foundation.Image
 import androidx.compose.foundation.background
@@ -485,45 +486,12 @@ private fun Composer(
     }
     Surface(color = MaterialTheme.colorScheme.surfaceContainer) {
         Column(Modifier.fillMaxWidth().padding(horizontal = 8.dp, vertical = 6.dp), verticalArrangement = Arrangement.spacedBy(4.dp)) {
-            val iconRow = rememberLazyListState()
-            LazyRow(
-                state = iconRow,
-                horizontalArrangement = Arrangement.spacedBy(6.dp),
-                verticalAlignment = Alignment.CenterVertically,
-                contentPadding = PaddingValues(horizontal = 4.dp),
-                modifier = Modifier.fillMaxWidth().fadingEdges(iconRow).testTag(COMPOSER_ICONS_TAG),
-            ) {
-                items(uiState.icons, key = { it.name }) { icon ->
-                    IconChip(icon, selected = uiState.selectedIcon == icon, actions)
-                }
-                // The user's patterns after the icons; keyed apart, as a pattern may share an icon's name.
-                items(uiState.patterns, key = { "pattern:" + it.name }) { pattern ->
-                    PatternChip(pattern, selected = uiState.selectedPattern == pattern, actions)
-                }
-                item { TextButton(onClick = actions.onEditIcon) { Text("New icon…") } }
-            }
+            IconRow(uiState, actions)
             // With the keyboard up the stickers wait (as Signal's sticker panel takes the keyboard's place), and the
             // "how it will feel there" line keeps to one line: at 360 dp and font 2.0 the latest message keeps its room.
             val keyboardUp = WindowInsets.isImeVisible
             val stickerRow = rememberLazyListState()
-            if (!keyboardUp) LazyRow(
-                state = stickerRow,
-                horizontalArrangement = Arrangement.spacedBy(6.dp),
-                contentPadding = PaddingValues(horizontal = 4.dp),
-                modifier = Modifier.fillMaxWidth().fadingEdges(stickerRow),
-            ) {
-                items(Sticker.entries) { sticker ->
-                    val selected = uiState.selectedSticker == sticker
-                    Image(
-                        painterResource(sticker.drawable),
-                        contentDescription = "Sticker ${sticker.label}",
-                        modifier = Modifier.size(40.dp).clip(RoundedCornerShape(8.dp))
-                            .then(if (selected) Modifier.border(2.dp, MaterialTheme.colorScheme.primary, RoundedCornerShape(8.dp)) else Modifier)
-                            .semantics { stateDescription = if (selected) "selected" else "not selected" }
-                            .clickable { actions.onSelectSticker(if (selected) null else sticker) },
-                    )
-                }
-            }
+            if (!keyboardUp) StickerRow(stickerRow, uiState.selectedSticker, actions.onSelectSticker)
             (uiState.selectedIcon?.name ?: uiState.selectedPattern?.name)?.let { name ->
                 PeerFeelLines(name, uiState.peer, uiState.peerFeel, oneLine = keyboardUp)
             }
@@ -554,6 +522,54 @@ private fun Composer(
                     modifier = Modifier.padding(start = 8.dp).size(48.dp),
                 ) { Icon(HapticonIcons.Send, contentDescription = "Send") }
             }
+        }
+    }
+}
+
+/** The composer's icons, then the user's patterns, then "New icon…": one scrolling row of chips. */
+@Composable
+private fun IconRow(uiState: ConversationUiState.Success, actions: ConversationActions) {
+    val iconRow = rememberLazyListState()
+    LazyRow(
+        state = iconRow,
+        horizontalArrangement = Arrangement.spacedBy(6.dp),
+        verticalAlignment = Alignment.CenterVertically,
+        contentPadding = PaddingValues(horizontal = 4.dp),
+        modifier = Modifier.fillMaxWidth().fadingEdges(iconRow).testTag(COMPOSER_ICONS_TAG),
+    ) {
+        items(uiState.icons, key = { it.name }) { icon ->
+            IconChip(icon, selected = uiState.selectedIcon == icon, actions)
+        }
+        // The user's patterns after the icons; keyed apart, as a pattern may share an icon's name.
+        items(uiState.patterns, key = { "pattern:" + it.name }) { pattern ->
+            PatternChip(pattern, selected = uiState.selectedPattern == pattern, actions)
+        }
+        item { TextButton(onClick = actions.onEditIcon) { Text("New icon…") } }
+    }
+}
+
+/**
+ * The bundled stickers in one scrolling row; pressing the [selected] one again deselects it. [state] is the
+ * composer's, so the row keeps its place while the keyboard hides it.
+ */
+@Composable
+private fun StickerRow(state: LazyListState, selected: Sticker?, onSelect: (Sticker?) -> Unit) {
+    LazyRow(
+        state = state,
+        horizontalArrangement = Arrangement.spacedBy(6.dp),
+        contentPadding = PaddingValues(horizontal = 4.dp),
+        modifier = Modifier.fillMaxWidth().fadingEdges(state),
+    ) {
+        items(Sticker.entries) { sticker ->
+            val isSelected = selected == sticker
+            Image(
+                painterResource(sticker.drawable),
+                contentDescription = "Sticker ${sticker.label}",
+                modifier = Modifier.size(40.dp).clip(RoundedCornerShape(8.dp))
+                    .then(if (isSelected) Modifier.border(2.dp, MaterialTheme.colorScheme.primary, RoundedCornerShape(8.dp)) else Modifier)
+                    .semantics { stateDescription = if (isSelected) "selected" else "not selected" }
+                    .clickable { onSelect(if (isSelected) null else sticker) },
+            )
         }
     }
 }

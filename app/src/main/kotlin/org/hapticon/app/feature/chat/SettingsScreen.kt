@@ -77,7 +77,6 @@ fun SettingsScreen(
     actions: SettingsActions,
     version: String = "",
 ) {
-    val prefs = uiState.preferences
     Scaffold(
         topBar = {
             TopAppBar(
@@ -90,92 +89,142 @@ fun SettingsScreen(
             Modifier.fillMaxSize().padding(padding).verticalScroll(rememberScrollState()).padding(horizontal = 16.dp, vertical = 8.dp),
             verticalArrangement = Arrangement.spacedBy(8.dp),
         ) {
-            uiState.notice?.let {
-                androidx.compose.material3.Surface(color = MaterialTheme.colorScheme.secondaryContainer, shape = MaterialTheme.shapes.medium) {
-                    Text(it, style = MaterialTheme.typography.bodyMedium, modifier = Modifier.fillMaxWidth().padding(12.dp))
-                }
-            }
-            Section("Account", first = true)
-            EditableField("User name", prefs.userName ?: "", actions.onUserName, "Others start a chat with you by this name.")
-            EditableField("Broker", prefs.brokerUrl, actions.onBroker, "Connection: ${uiState.connection}", url = true)
-            EditableField(
-                "Broker password", if (prefs.brokerPassword == null) "" else "••••••••", actions.onPassword,
-                "The password `hapticon broker adduser` set for you.", secret = true,
-            )
-            ClientCertificateField(uiState.clientCertificate, uiState.certificateImport, actions)
-
-            Section("Haptic icons")
-            SwitchRow("Play icons when messages arrive", prefs.autoPlay, onCheckedChange = { on -> actions.update { it.copy(autoPlay = on) } })
-            SwitchRow("Tell senders when I felt their icon", prefs.sendFeltReceipts, onCheckedChange = { on -> actions.update { it.copy(sendFeltReceipts = on) } })
-            val selected = uiState.renderers.firstOrNull { it.name == prefs.rendererOverride }
-            DropdownField(
-                label = "Renderer",
-                choice = SingleChoice(listOf<RendererKind?>(null) + uiState.renderers, selected) { it?.label ?: "Automatic (best for this phone)" },
-                onSelect = { r -> actions.update { it.copy(rendererOverride = r?.name) } },
-            )
-            DropdownField(
-                label = "Notes this phone cannot play",
-                choice = SingleChoice(PitchFit.entries, prefs.pitchFit) { it.label },
-                onSelect = { fit -> actions.update { it.copy(pitchFit = fit) } },
-            )
-            Text(
-                "On Android 16 phones that report their actuator's frequency range. Senders see which pitch your phone plays.",
-                style = MaterialTheme.typography.bodyMedium, color = MaterialTheme.colorScheme.onSurfaceVariant,
-            )
-            Text(
-                "Masking noise is part of a study protocol; researchers set it in the Study tab.",
-                style = MaterialTheme.typography.bodyMedium, color = MaterialTheme.colorScheme.onSurfaceVariant,
-            )
-            TextButton(onClick = actions.onOpenStudy) { Text("Open Study") }
-
-            Section("Reachable")
-            if (!uiState.notificationsAllowed) {
-                androidx.compose.material3.Surface(color = MaterialTheme.colorScheme.errorContainer, shape = MaterialTheme.shapes.medium) {
-                    Column(Modifier.fillMaxWidth().padding(12.dp)) {
-                        Text(
-                            NOTIFICATIONS_OFF, style = MaterialTheme.typography.bodyMedium,
-                            color = MaterialTheme.colorScheme.onErrorContainer,
-                        )
-                        TextButton(onClick = actions.onAllowNotifications) { Text("Allow notifications") }
-                    }
-                }
-            }
-            SwitchRow("Stay reachable when the app is closed", prefs.stayReachable, actions.onStayReachable)
-            Text(
-                "Keeps the broker connection open with an ongoing notification, so icons reach you in your pocket.",
-                style = MaterialTheme.typography.bodyMedium, color = MaterialTheme.colorScheme.onSurfaceVariant,
-            )
-            SwitchRow(
-                "Also after the phone restarts", prefs.reachableAfterBoot, enabled = prefs.stayReachable,
-                onCheckedChange = { on -> actions.update { it.copy(reachableAfterBoot = on) } },
-            )
-
-            Section("Typing")
-            SwitchRow("Enter key sends", prefs.enterSends, onCheckedChange = { on -> actions.update { it.copy(enterSends = on) } })
-            Section("Privacy")
-            EndToEndRow(prefs.endToEnd) { on -> actions.update { it.copy(endToEnd = on) } }
-            for (warning in uiState.securityWarnings) {
-                Text("⚠ $warning", style = MaterialTheme.typography.bodyMedium, color = MaterialTheme.colorScheme.error)
-            }
-            // Signal's rule: a changed key is accepted only by the user, after comparing safety numbers with the peer.
-            for (peer in uiState.changedKeys.sorted()) {
-                OutlinedButton(onClick = { actions.onTrustKey(peer) }) { Text("Trust $peer's new key (safety numbers compared)") }
-            }
-
-            Section("Appearance")
-            SwitchRow("Colours from the wallpaper (Android 12+)", prefs.dynamicColor, onCheckedChange = { on -> actions.update { it.copy(dynamicColor = on) } })
-
-            Section("Data")
-            OutlinedButton(onClick = actions.onExport) { Text("Export chats as JSON…") }
-
-            Section("About")
-            Text(
-                "Hapticon $version: haptic icons as in the originating study (Table 3), felt through this phone's best renderer. " +
-                    "Messages go only through the broker you chose.",
-                style = MaterialTheme.typography.bodyMedium,
-            )
+            uiState.notice?.let { Notice(it) }
+            AccountSection(uiState, actions)
+            HapticIconsSection(uiState, actions)
+            ReachableSection(uiState, actions)
+            TypingSection(uiState.preferences, actions)
+            PrivacySection(uiState, actions)
+            AppearanceSection(uiState.preferences, actions)
+            DataSection(actions)
+            AboutSection(version)
         }
     }
+}
+
+/** A one-line notice over the settings (what the last change did, or why not). */
+@Composable
+private fun Notice(text: String) {
+    androidx.compose.material3.Surface(color = MaterialTheme.colorScheme.secondaryContainer, shape = MaterialTheme.shapes.medium) {
+        Text(text, style = MaterialTheme.typography.bodyMedium, modifier = Modifier.fillMaxWidth().padding(12.dp))
+    }
+}
+
+/** Who the user is and how they reach the broker: name, broker, password, client certificate. */
+@Composable
+private fun AccountSection(uiState: SettingsUiState, actions: SettingsActions) {
+    val prefs = uiState.preferences
+    Section("Account", first = true)
+    EditableField("User name", prefs.userName ?: "", actions.onUserName, "Others start a chat with you by this name.")
+    EditableField("Broker", prefs.brokerUrl, actions.onBroker, "Connection: ${uiState.connection}", url = true)
+    EditableField(
+        "Broker password", if (prefs.brokerPassword == null) "" else "••••••••", actions.onPassword,
+        "The password `hapticon broker adduser` set for you.", secret = true,
+    )
+    ClientCertificateField(uiState.clientCertificate, uiState.certificateImport, actions)
+}
+
+/** How received icons play: on arrival, felt receipts, the renderer and notes out of the phone's range. */
+@Composable
+private fun HapticIconsSection(uiState: SettingsUiState, actions: SettingsActions) {
+    val prefs = uiState.preferences
+    Section("Haptic icons")
+    SwitchRow("Play icons when messages arrive", prefs.autoPlay, onCheckedChange = { on -> actions.update { it.copy(autoPlay = on) } })
+    SwitchRow("Tell senders when I felt their icon", prefs.sendFeltReceipts, onCheckedChange = { on -> actions.update { it.copy(sendFeltReceipts = on) } })
+    val selected = uiState.renderers.firstOrNull { it.name == prefs.rendererOverride }
+    DropdownField(
+        label = "Renderer",
+        choice = SingleChoice(listOf<RendererKind?>(null) + uiState.renderers, selected) { it?.label ?: "Automatic (best for this phone)" },
+        onSelect = { r -> actions.update { it.copy(rendererOverride = r?.name) } },
+    )
+    DropdownField(
+        label = "Notes this phone cannot play",
+        choice = SingleChoice(PitchFit.entries, prefs.pitchFit) { it.label },
+        onSelect = { fit -> actions.update { it.copy(pitchFit = fit) } },
+    )
+    Text(
+        "On Android 16 phones that report their actuator's frequency range. Senders see which pitch your phone plays.",
+        style = MaterialTheme.typography.bodyMedium, color = MaterialTheme.colorScheme.onSurfaceVariant,
+    )
+    Text(
+        "Masking noise is part of a study protocol; researchers set it in the Study tab.",
+        style = MaterialTheme.typography.bodyMedium, color = MaterialTheme.colorScheme.onSurfaceVariant,
+    )
+    TextButton(onClick = actions.onOpenStudy) { Text("Open Study") }
+}
+
+/** Notifications and "Stay reachable": whether icons reach the user with the app closed. */
+@Composable
+private fun ReachableSection(uiState: SettingsUiState, actions: SettingsActions) {
+    val prefs = uiState.preferences
+    Section("Reachable")
+    if (!uiState.notificationsAllowed) {
+        androidx.compose.material3.Surface(color = MaterialTheme.colorScheme.errorContainer, shape = MaterialTheme.shapes.medium) {
+            Column(Modifier.fillMaxWidth().padding(12.dp)) {
+                Text(
+                    NOTIFICATIONS_OFF, style = MaterialTheme.typography.bodyMedium,
+                    color = MaterialTheme.colorScheme.onErrorContainer,
+                )
+                TextButton(onClick = actions.onAllowNotifications) { Text("Allow notifications") }
+            }
+        }
+    }
+    SwitchRow("Stay reachable when the app is closed", prefs.stayReachable, actions.onStayReachable)
+    Text(
+        "Keeps the broker connection open with an ongoing notification, so icons reach you in your pocket.",
+        style = MaterialTheme.typography.bodyMedium, color = MaterialTheme.colorScheme.onSurfaceVariant,
+    )
+    SwitchRow(
+        "Also after the phone restarts", prefs.reachableAfterBoot, enabled = prefs.stayReachable,
+        onCheckedChange = { on -> actions.update { it.copy(reachableAfterBoot = on) } },
+    )
+}
+
+/** The composer's Enter key. */
+@Composable
+private fun TypingSection(prefs: ChatPreferences, actions: SettingsActions) {
+    Section("Typing")
+    SwitchRow("Enter key sends", prefs.enterSends, onCheckedChange = { on -> actions.update { it.copy(enterSends = on) } })
+}
+
+/** End-to-end encryption, its warnings, and the peers whose changed keys wait for the user's trust. */
+@Composable
+private fun PrivacySection(uiState: SettingsUiState, actions: SettingsActions) {
+    val prefs = uiState.preferences
+    Section("Privacy")
+    EndToEndRow(prefs.endToEnd) { on -> actions.update { it.copy(endToEnd = on) } }
+    for (warning in uiState.securityWarnings) {
+        Text("⚠ $warning", style = MaterialTheme.typography.bodyMedium, color = MaterialTheme.colorScheme.error)
+    }
+    // Signal's rule: a changed key is accepted only by the user, after comparing safety numbers with the peer.
+    for (peer in uiState.changedKeys.sorted()) {
+        OutlinedButton(onClick = { actions.onTrustKey(peer) }) { Text("Trust $peer's new key (safety numbers compared)") }
+    }
+}
+
+/** Colours. */
+@Composable
+private fun AppearanceSection(prefs: ChatPreferences, actions: SettingsActions) {
+    Section("Appearance")
+    SwitchRow("Colours from the wallpaper (Android 12+)", prefs.dynamicColor, onCheckedChange = { on -> actions.update { it.copy(dynamicColor = on) } })
+}
+
+/** The user's data: the chats as JSON. */
+@Composable
+private fun DataSection(actions: SettingsActions) {
+    Section("Data")
+    OutlinedButton(onClick = actions.onExport) { Text("Export chats as JSON…") }
+}
+
+/** The version and what the app does with messages. */
+@Composable
+private fun AboutSection(version: String) {
+    Section("About")
+    Text(
+        "Hapticon $version: haptic icons as in the originating study (Table 3), felt through this phone's best renderer. " +
+            "Messages go only through the broker you chose.",
+        style = MaterialTheme.typography.bodyMedium,
+    )
 }
 
 /** What the settings call a [PitchFit]. */

@@ -213,3 +213,25 @@ class SettingsViewModel(
 /** A certificate's expiry as Settings shows it: the UTC date (ISO 8601), the same on every phone. */
 internal fun certificateDate(instant: java.time.Instant): String =
     java.time.format.DateTimeFormatter.ISO_LOCAL_DATE.format(instant.atZone(java.time.ZoneOffset.UTC))
+
+/** The settings screen's values, read from the chat settings. */
+data class SettingsUiState(
+    val preferences: ChatPreferences,
+    val renderers: List<RendererKind>,
+    val connection: String,
+    /** False when Android will not show this app's notifications (permission refused, or turned off). */
+    val notificationsAllowed: Boolean = true,
+    /** End-to-end warnings (a peer's changed key, forged payloads), newest last ([org.hapticon.app.sync.ChatSync.securityWarnings]). */
+    val securityWarnings: List<String> = emptyList(),
+    /** Peers whose changed key waits for the user's trust. */
+    val changedKeys: Set<String> = emptySet(),
+    /** The outcome of the last action that takes a moment (broker test, export, permission), one line. */
+    val notice: String? = null,
+    /** The client certificate for mutual TLS, if one is stored. */
+    val clientCertificate: org.hapticon.app.data.ClientCertificateStatus = org.hapticon.app.data.ClientCertificateStatus.None,
+    /** A picked certificate file waiting for its password, null when none is. */
+    val certificateImport: CertificateImport? = null,
+)
+
+/** A picked client certificate file ([fileName]) waiting for its password; [error] says why the last one did not open it. */
+data class CertificateImport(val fileName: String, val error: String? = null)

@@ -22,34 +22,43 @@ import androidx.compose.ui.unit.dp
 import androidx.lifecycle.viewmodel.compose.viewModel
 import androidx.lifecycle.viewmodel.initializer
 import androidx.lifecycle.viewmodel.viewModelFactory
-import org.hapticon.app.di.AppContainer
+import org.hapticon.app.data.ChatRepository
+import org.hapticon.app.data.RoomIconRepository
+import org.hapticon.app.gesture.GestureComponent
+import org.hapticon.app.playback.HapticPlayer
 import java.io.FileNotFoundException
 
 /** The Gestures destination's parts, in tab order. */
 enum class GestureTab(val label: String) { RECORD("Record"), TEACH("Teach"), RECOGNISE("Recognise"), SOCIAL("Social touch") }
 
-/** The Gestures destination: record and make an icon, teach a personal model, recognise live and send, recognise social touch. */
+/**
+ * The Gestures destination: record and make an icon, teach a personal model, recognise live and send, recognise social
+ * touch. Without chat ([icons] and [messages] null) an icon cannot be saved nor a recognised gesture sent; [user] is
+ * the sender's name, [onSent] wakes the chat's sync.
+ */
 @Composable
-fun GesturesRoute(container: AppContainer) {
-    val gestures = container.gestures ?: run {
+fun GesturesRoute(
+    gestures: GestureComponent?,
+    icons: RoomIconRepository?,
+    messages: ChatRepository?,
+    player: HapticPlayer,
+    user: () -> String?,
+    onSent: () -> Unit,
+) {
+    if (gestures == null) {
         Text("Gestures are not available in this build", Modifier.padding(16.dp))
         return
     }
-    val chat = container.chat
-    val recorder: RecorderViewModel = viewModel(factory = viewModelFactory { initializer { RecorderViewModel(gestures, chat?.icons, container.player) } })
+    val recorder: RecorderViewModel = viewModel(factory = viewModelFactory { initializer { RecorderViewModel(gestures, icons, player) } })
     val teach: TeachViewModel = viewModel(factory = viewModelFactory { initializer { TeachViewModel(gestures) } })
     val recognition: RecognitionViewModel = viewModel(
-        factory = viewModelFactory {
-            initializer {
-                RecognitionViewModel(gestures, chat?.repository, user = { chat?.settings?.preferences?.value?.userName }, onSent = { chat?.sync?.wake() })
-            }
-        },
+        factory = viewModelFactory { initializer { RecognitionViewModel(gestures, messages, user, onSent) } },
     )
     val social: SocialTouchViewModel = viewModel(
         factory = viewModelFactory {
             initializer {
                 SocialTouchViewModel(
-                    gestures.socialTouch, chat?.repository, user = { chat?.settings?.preferences?.value?.userName }, onSent = { chat?.sync?.wake() },
+                    gestures.socialTouch, messages, user, onSent,
                     // The pad's frames carry MotionEvent times: uptime.
                     clockSeconds = { SystemClock.uptimeMillis() / 1000.0 },
                 )

@@ -32,7 +32,7 @@ import androidx.compose.ui.semantics.contentDescription
 import androidx.compose.ui.semantics.semantics
 import androidx.compose.ui.unit.dp
 import androidx.lifecycle.compose.collectAsStateWithLifecycle
-import org.hapticon.app.feature.sensors.LivePlot
+import org.hapticon.app.ui.LivePlot
 import org.hapticon.app.gesture.TouchGestureSource
 import org.hapticon.app.gesture.GestureSourceKind
 import org.hapticon.app.ui.DropdownField

@@ -4,7 +4,7 @@ import org.hapticon.gesture.Recording
 import org.hapticon.sensor.live.PlotSource
 
 /**
- * A whole recorded take as a [PlotSource], so the trim view draws it with the same [org.hapticon.app.feature.sensors.LivePlot]
+ * A whole recorded take as a [PlotSource], so the trim view draws it with the same [org.hapticon.app.ui.LivePlot]
  * as the live stream: x runs over the entire take whatever window is asked for, and a take longer than
  * the output arrays is shown by every n-th frame.
  */

@@ -45,7 +45,8 @@ import androidx.lifecycle.viewmodel.compose.viewModel
 import androidx.lifecycle.viewmodel.initializer
 import androidx.lifecycle.viewmodel.viewModelFactory
 import java.util.Locale
-import org.hapticon.app.di.AppContainer
+import org.hapticon.app.sensors.CalibrationStore
+import org.hapticon.sensor.glove.GloveSource
 import org.hapticon.app.designsystem.HapticonIcons
 import org.hapticon.app.sensors.SavedCalibration
 import org.hapticon.sensor.glove.CalibrationState
@@ -55,9 +56,9 @@ import org.hapticon.sensor.glove.SensorFault
 
 /** The calibration flow wired to its [CalibrationViewModel]. */
 @Composable
-fun CalibrationRoute(container: AppContainer, onBack: () -> Unit) {
+fun CalibrationRoute(glove: GloveSource, calibrations: CalibrationStore, onBack: () -> Unit) {
     val viewModel: CalibrationViewModel = viewModel(
-        factory = viewModelFactory { initializer { CalibrationViewModel(container.glove, container.calibrations) } },
+        factory = viewModelFactory { initializer { CalibrationViewModel(glove, calibrations) } },
     )
     CalibrationRoute(viewModel, onBack)
 }

@@ -23,7 +23,6 @@ import androidx.compose.material3.TopAppBar
 import androidx.compose.runtime.Composable
 import androidx.compose.runtime.remember
 import androidx.compose.runtime.Immutable
-import org.hapticon.app.sensors.NoHandshakeLink
 import androidx.compose.material3.FilterChip
 import androidx.compose.foundation.layout.FlowRow
 import androidx.compose.foundation.layout.ExperimentalLayoutApi
@@ -42,22 +41,31 @@ import androidx.lifecycle.viewmodel.compose.viewModel
 import androidx.lifecycle.viewmodel.initializer
 import androidx.lifecycle.viewmodel.viewModelFactory
 import java.util.Locale
-import org.hapticon.app.di.AppContainer
+import org.hapticon.app.playback.VibrationOutput
+import org.hapticon.app.sensors.CalibrationStore
+import org.hapticon.app.sensors.HandshakeLink
+import org.hapticon.sensor.glove.GloveSource
+import org.hapticon.sensor.glove.PartnerHand
 import org.hapticon.app.designsystem.HapticonIcons
 import org.hapticon.app.ui.LabeledValue
 import org.hapticon.app.ui.SwitchRow
 
-/** The handshake view wired to its [HandshakeViewModel]. */
+/**
+ * The handshake view wired to its [HandshakeViewModel]: the [glove] and its [calibrations], the phone's [vibration],
+ * a [simulatedPartner] for the toggle, and the chat's [link] that carries hands over the network.
+ */
 @Composable
-fun HandshakeRoute(container: AppContainer, onBack: () -> Unit) {
+fun HandshakeRoute(
+    glove: GloveSource,
+    calibrations: CalibrationStore,
+    vibration: VibrationOutput,
+    simulatedPartner: () -> PartnerHand,
+    link: HandshakeLink,
+    onBack: () -> Unit,
+) {
     val viewModel: HandshakeViewModel = viewModel(
         factory = viewModelFactory {
-            initializer {
-                HandshakeViewModel(
-                    container.glove, container.calibrations, container.vibration, container.simulatedPartner(),
-                    link = container.chat?.sync ?: NoHandshakeLink,
-                )
-            }
+            initializer { HandshakeViewModel(glove, calibrations, vibration, simulatedPartner(), link = link) }
         },
     )
     val uiState by viewModel.uiState.collectAsStateWithLifecycle()

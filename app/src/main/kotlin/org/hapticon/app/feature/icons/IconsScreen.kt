@@ -1,5 +1,6 @@
 package org.hapticon.app.feature.icons
 
+import org.hapticon.app.data.PatternFileAccess
 import org.hapticon.app.playback.label
 import androidx.compose.foundation.clickable
 import androidx.compose.foundation.layout.Arrangement
@@ -50,22 +51,24 @@ import androidx.lifecycle.viewmodel.compose.viewModel
 import androidx.lifecycle.viewmodel.initializer
 import androidx.lifecycle.viewmodel.viewModelFactory
 import java.util.Locale
-import org.hapticon.app.di.AppContainer
+import kotlinx.coroutines.flow.MutableStateFlow
+import org.hapticon.app.data.IconRepository
+import org.hapticon.app.data.RoomPatternRepository
+import org.hapticon.app.playback.HapticPlayer
 import org.hapticon.core.HapticIcon
 import org.hapticon.app.ui.EnvelopeThumbnail
 
 /**
- * The icon list wired to its [IconsViewModel], with the user's patterns: the file picker and files shared to
- * Hapticon ([AppContainer.pendingPatternFile]) import, the share sheet exports, and a pattern opens in its editor.
+ * The icon list wired to its [IconsViewModel], with the user's [patterns] (null: the icons only): the file picker and
+ * files shared to Hapticon ([pendingPatternFile]) import, the share sheet exports, and a pattern opens in its editor.
  */
 @Composable
-fun IconsRoute(container: AppContainer) {
+fun IconsRoute(icons: IconRepository, player: HapticPlayer, patterns: RoomPatternRepository?, pendingPatternFile: MutableStateFlow<Uri?>) {
     val viewModel: IconsViewModel = viewModel(
-        factory = viewModelFactory { initializer { IconsViewModel(container.iconRepository, container.player, container.patterns) } },
+        factory = viewModelFactory { initializer { IconsViewModel(icons, player, patterns) } },
     )
     val uiState by viewModel.uiState.collectAsStateWithLifecycle()
     val iconsActions = remember(viewModel) { IconsActions(onPlay = viewModel::play) }
-    val patterns = container.patterns
     if (patterns == null) {
         IconsScreen(uiState, iconsActions)
         return
@@ -84,15 +87,15 @@ fun IconsRoute(container: AppContainer) {
         }
     }
     val picker = rememberLauncherForActivityResult(ActivityResultContracts.OpenDocument()) { uri -> uri?.let(importUri) }
-    val shared by container.pendingPatternFile.collectAsStateWithLifecycle()
+    val shared by pendingPatternFile.collectAsStateWithLifecycle()
     LaunchedEffect(shared) {
         shared?.let { uri ->
-            container.pendingPatternFile.value = null
+            pendingPatternFile.value = null
             importUri(uri)
         }
     }
     editing?.let { pattern ->
-        PatternEditorRoute(pattern, patterns, container.player, onDone = { editing = null })
+        PatternEditorRoute(pattern, patterns, player, onDone = { editing = null })
         return
     }
     val actions = remember(viewModel) {

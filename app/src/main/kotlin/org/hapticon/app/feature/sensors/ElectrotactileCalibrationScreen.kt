@@ -46,10 +46,29 @@ import androidx.compose.ui.unit.dp
 import androidx.lifecycle.compose.collectAsStateWithLifecycle
 import java.util.Locale
 import org.hapticon.app.designsystem.HapticonIcons
+import androidx.lifecycle.viewmodel.viewModelFactory
+import androidx.lifecycle.viewmodel.initializer
+import androidx.lifecycle.viewmodel.compose.viewModel
+import org.hapticon.app.sensors.StimulatorLink
+import org.hapticon.app.data.ElectrodeLevelsStore
 import org.hapticon.sensor.electrotactile.AmplitudeSteps
 import org.hapticon.sensor.electrotactile.ElectrodePattern
 import org.hapticon.sensor.electrotactile.ElectrotactileCalibration
 import org.hapticon.sensor.electrotactile.StoredCalibration
+
+/**
+ * The electrotactile calibration over [stimulator], its levels stored in the app's files. [key] names the
+ * calibration's ViewModel: a new key starts a fresh calibration (the compliance study's rounds).
+ */
+@Composable
+fun ElectrotactileCalibrationRoute(stimulator: StimulatorLink, onBack: () -> Unit, key: String? = null) {
+    val files = LocalContext.current.filesDir
+    val viewModel: ElectrotactileCalibrationViewModel = viewModel(
+        key = key,
+        factory = viewModelFactory { initializer { ElectrotactileCalibrationViewModel(stimulator, ElectrodeLevelsStore.inFolder(files)) } },
+    )
+    ElectrotactileCalibrationRoute(viewModel, onBack)
+}
 
 /**
  * The electrotactile calibration wired to [viewModel]; [onBack] returns to the Sensors screen. Export and import go
@@ -187,7 +206,7 @@ fun ElectrotactileCalibrationScreen(uiState: ElectrotactileUiState, actions: Ele
 private fun StoredCalibrationSection(stored: StoredCalibration?, actions: ElectrotactileActions) {
     Text("Stored calibration", style = MaterialTheme.typography.titleMedium, modifier = Modifier.semantics { heading() })
     Text(
-        stored?.let { "The compliance study uses ${ElectrotactileCalibrationViewModel.describe(it)}." }
+        stored?.let { "The compliance study uses ${ElectrodeLevelsStore.describe(it)}." }
             ?: "None yet: the compliance study needs a finished calibration, or one imported from a file.",
         style = MaterialTheme.typography.bodyMedium,
     )

@@ -1,5 +1,6 @@
 package org.hapticon.app.feature.sensors
 
+import org.hapticon.app.data.ElectrodeLevelsStore
 import androidx.lifecycle.ViewModel
 import androidx.lifecycle.viewModelScope
 import kotlinx.coroutines.CoroutineDispatcher
@@ -16,8 +17,6 @@ import kotlinx.coroutines.withContext
 import java.io.IOException
 import java.io.InputStream
 import java.io.OutputStream
-import java.time.ZoneOffset
-import java.time.format.DateTimeFormatter
 import org.hapticon.sensor.electrotactile.CalibrationFile
 import org.hapticon.sensor.electrotactile.StoredCalibration
 import org.hapticon.sensor.electrotactile.AmplitudeSteps
@@ -198,7 +197,7 @@ class ElectrotactileCalibrationViewModel(
         },
         report = { exported, error ->
             when {
-                exported != null -> "Exported ${describe(exported)}"
+                exported != null -> "Exported ${ElectrodeLevelsStore.describe(exported)}"
                 error is NothingToExport -> "Nothing to export: finish a calibration or import one first"
                 else -> "Not exported: ${oneLine(error)}"
             }
@@ -217,7 +216,7 @@ class ElectrotactileCalibrationViewModel(
             store.import(input.use { it.readNBytes(CalibrationFile.MAX_BYTES + 1) })
         },
         report = { imported, error ->
-            if (imported != null) "Imported ${describe(imported)}: the compliance study now stimulates at these levels" else "Not imported: ${oneLine(error)}"
+            if (imported != null) "Imported ${ElectrodeLevelsStore.describe(imported)}: the compliance study now stimulates at these levels" else "Not imported: ${oneLine(error)}"
         },
     )
 
@@ -335,19 +334,6 @@ class ElectrotactileCalibrationViewModel(
     companion object {
         /** Shown when the view model was made without a store (a preview or a test). */
         const val NO_STORE: String = "No calibration store on this screen"
-
-        /**
-         * "P07's calibration of 2026-11-27 00:12 UTC (0.810–1.215 mA)", or "the calibration of …" without a participant:
-         * whose, when, and its range of currents.
-         */
-        fun describe(calibration: StoredCalibration): String {
-            val at = DateTimeFormatter.ofPattern("yyyy-MM-dd HH:mm", Locale.ROOT).withZone(ZoneOffset.UTC).format(calibration.calibratedAt)
-            val milliamps = calibration.result.milliamps
-            val (low, high) = milliamps.min() to milliamps.max()
-            val range = if (low == high) String.format(Locale.ROOT, "%.3f mA", low) else String.format(Locale.ROOT, "%.3f–%.3f mA", low, high)
-            val whose = calibration.participant?.let { "$it's calibration" } ?: "the calibration"
-            return "$whose of $at UTC ($range)"
-        }
 
         // A file's problem on one line (a CalibrationFileException's message is one already, naming the member at fault).
         private fun oneLine(error: Throwable?): String =

@@ -28,7 +28,6 @@ import androidx.compose.runtime.saveable.rememberSaveable
 import androidx.compose.runtime.setValue
 import androidx.compose.ui.Alignment
 import androidx.compose.ui.Modifier
-import androidx.compose.ui.platform.LocalContext
 import androidx.compose.ui.semantics.contentDescription
 import androidx.compose.ui.semantics.heading
 import androidx.compose.ui.semantics.semantics
@@ -37,25 +36,39 @@ import androidx.lifecycle.compose.collectAsStateWithLifecycle
 import androidx.lifecycle.viewmodel.compose.viewModel
 import androidx.lifecycle.viewmodel.initializer
 import androidx.lifecycle.viewmodel.viewModelFactory
-import org.hapticon.app.di.AppContainer
+import org.hapticon.app.sensors.StimulatorLink
+import org.hapticon.sensor.glove.HubGloveSource
+import org.hapticon.sensor.grains.GrainEngine
+import org.hapticon.sensor.live.SensorSession
+import org.hapticon.sensor.live.UsbDevices
 import org.hapticon.app.designsystem.HapticonIcons
-import org.hapticon.app.feature.glove.CalibrationRoute
-import org.hapticon.app.feature.glove.HandshakeRoute
 import org.hapticon.sensor.grains.BinDistribution
 
 /** The screens inside the Sensors destination. */
 private enum class SensorsPane { STREAM, CALIBRATION, HANDSHAKE, ELECTROTACTILE }
 
-/** The Sensors destination: the stream screen, and the glove screens opened from it (Back returns). */
+/**
+ * The Sensors destination: the stream screen, and the screens opened from it (Back returns). The glove screens
+ * belong to the glove feature: the app's navigation hands them in as [gloveCalibration] and [handshake].
+ */
 @Composable
-fun SensorsRoute(container: AppContainer) {
+fun SensorsRoute(
+    usbDevices: UsbDevices,
+    session: SensorSession,
+    grainEngine: GrainEngine,
+    glove: HubGloveSource,
+    stimulator: StimulatorLink,
+    gloveCalibration: @Composable (onBack: () -> Unit) -> Unit,
+    handshake: @Composable (onBack: () -> Unit) -> Unit,
+) {
     var pane by rememberSaveable { mutableStateOf(SensorsPane.STREAM) }
     BackHandler(enabled = pane != SensorsPane.STREAM) { pane = SensorsPane.STREAM }
+    val back = { pane = SensorsPane.STREAM }
     when (pane) {
         SensorsPane.STREAM -> {
             val viewModel: SensorsViewModel = viewModel(
                 factory = viewModelFactory {
-                    initializer { SensorsViewModel(container.usbDevices, container.sensorSession, container.grainEngine, container.glove) }
+                    initializer { SensorsViewModel(usbDevices, session, grainEngine, glove) }
                 },
             )
             SensorsRoute(
@@ -65,17 +78,9 @@ fun SensorsRoute(container: AppContainer) {
                 onOpenElectrotactile = { pane = SensorsPane.ELECTROTACTILE },
             )
         }
-        SensorsPane.CALIBRATION -> CalibrationRoute(container, onBack = { pane = SensorsPane.STREAM })
-        SensorsPane.HANDSHAKE -> HandshakeRoute(container, onBack = { pane = SensorsPane.STREAM })
-        SensorsPane.ELECTROTACTILE -> {
-            val levels = ElectrodeLevelsStore.inFolder(LocalContext.current.filesDir)
-            val viewModel: ElectrotactileCalibrationViewModel = viewModel(
-                factory = viewModelFactory {
-                    initializer { ElectrotactileCalibrationViewModel(container.stimulator, levels) }
-                },
-            )
-            ElectrotactileCalibrationRoute(viewModel, onBack = { pane = SensorsPane.STREAM })
-        }
+        SensorsPane.CALIBRATION -> gloveCalibration(back)
+        SensorsPane.HANDSHAKE -> handshake(back)
+        SensorsPane.ELECTROTACTILE -> ElectrotactileCalibrationRoute(stimulator, onBack = back)
     }
 }
 

@@ -1,5 +1,6 @@
 package org.hapticon.app.feature.sensors
 
+import org.hapticon.app.ui.LivePlot
 import androidx.compose.foundation.layout.Arrangement
 import androidx.compose.foundation.layout.Column
 import androidx.compose.foundation.layout.Row

@@ -1,5 +1,6 @@
 package org.hapticon.app.feature.study
 
+import org.hapticon.app.data.ElectrodeLevelsStore
 import android.content.ActivityNotFoundException
 import android.content.Intent
 import androidx.compose.foundation.Canvas
@@ -55,7 +56,6 @@ import org.hapticon.app.ui.DropdownField
 import org.hapticon.app.ui.LabeledValue
 import org.hapticon.app.ui.SegmentedChoice
 import org.hapticon.app.ui.SingleChoice
-import org.hapticon.app.feature.sensors.ElectrotactileCalibrationViewModel
 import org.hapticon.study.compliance.ComplianceCondition
 import org.hapticon.study.compliance.ComplianceProtocol
 import org.hapticon.study.compliance.ComplianceTask
@@ -157,7 +157,7 @@ private fun SetupContent(state: ComplianceUiState.Setup, actions: ComplianceActi
     OutlinedTextField(state.participant, actions.onParticipant, label = { Text("Participant") }, singleLine = true, modifier = Modifier.fillMaxWidth())
     DropdownField("Participant number (order)", SingleChoice((0 until 48).toList(), state.participantIndex) { (it + 1).toString() }, actions.onParticipantIndex)
     Text(
-        state.calibration?.let { "Stored calibration: ${ElectrotactileCalibrationViewModel.describe(it)}. The session calibrates again before it starts." }
+        state.calibration?.let { "Stored calibration: ${ElectrodeLevelsStore.describe(it)}. The session calibrates again before it starts." }
             ?: "The session starts with the electrotactile calibration.",
         style = MaterialTheme.typography.bodyMedium,
     )
@@ -187,8 +187,8 @@ private fun CalibrateContent(state: ComplianceUiState.Calibrate, actions: Compli
     Text(
         when {
             state.calibration == null -> "No calibration stored yet."
-            state.fresh -> "Calibrated: ${ElectrotactileCalibrationViewModel.describe(state.calibration)}."
-            else -> "The stored calibration (${ElectrotactileCalibrationViewModel.describe(state.calibration)}) is from before this step."
+            state.fresh -> "Calibrated: ${ElectrodeLevelsStore.describe(state.calibration)}."
+            else -> "The stored calibration (${ElectrodeLevelsStore.describe(state.calibration)}) is from before this step."
         },
         style = MaterialTheme.typography.bodyMedium,
     )

@@ -1,5 +1,7 @@
 package org.hapticon.app.feature.study
 
+import org.hapticon.app.study.ExportResult
+import org.hapticon.app.study.SessionSummary
 import android.content.ActivityNotFoundException
 import android.content.Intent
 import androidx.compose.foundation.layout.Arrangement
@@ -43,7 +45,7 @@ import androidx.compose.ui.unit.dp
 import java.io.File
 import java.util.Locale
 import kotlin.math.roundToInt
-import org.hapticon.app.feature.chat.Sticker
+import org.hapticon.app.ui.Sticker
 import org.hapticon.app.study.MaskingSetting
 import org.hapticon.app.study.NoiseColor
 import org.hapticon.app.study.NoiseFiles
@@ -88,6 +90,85 @@ fun ResearcherScreen(state: ResearcherUiState, actions: ResearcherActions) {
 
 @Composable
 private fun ResearcherContent(state: ResearcherUiState.Success, actions: ResearcherActions) {
+    LazyColumn(Modifier.fillMaxSize(), contentPadding = PaddingValues(16.dp), verticalArrangement = Arrangement.spacedBy(12.dp)) {
+        item { ResearcherHeader(actions.onLock) }
+        item { ProtocolSection(state, actions) }
+        item {
+            // Shaping Compliance's study runs on the FSR board, not as an icon protocol: its own runner.
+            OutlinedButton(onClick = actions.onOpenCompliance, modifier = Modifier.fillMaxWidth(), shape = WrappingButtonShape) { Text("Compliance study (Shaping Compliance, FSR board)") }
+        }
+        item { Text("Sessions", style = MaterialTheme.typography.titleMedium, modifier = Modifier.semantics { heading() }) }
+        if (state.sessions.isEmpty()) item { Text("No sessions yet.", style = MaterialTheme.typography.bodyMedium) }
+        itemsIndexed(state.sessions, key = { _, s -> s.id }) { _, s -> SessionLine(s, running = s.id == state.activeSessionId) }
+        item { HorizontalDivider() }
+        item { ExportSection(state.export, actions.onExport) }
+        item { CollectorSettings(state, actions) }
+    }
+    if (state.headphoneWarning) HeadphoneWarning(actions)
+}
+
+/** The screen's title and the lock that hands the phone back to the participant. */
+@Composable
+private fun ResearcherHeader(onLock: () -> Unit) {
+    Row(Modifier.fillMaxWidth(), horizontalArrangement = Arrangement.SpaceBetween) {
+        Text("Study · researcher", style = MaterialTheme.typography.headlineSmall, modifier = Modifier.semantics { heading() })
+        TextButton(onClick = onLock) { Text("Lock") }
+    }
+}
+
+/** The chosen protocol: its summary, editing, and starting the next participant's session. */
+@Composable
+private fun ProtocolSection(state: ResearcherUiState.Success, actions: ResearcherActions) {
+    val selected = state.selected
+    Column(verticalArrangement = Arrangement.spacedBy(8.dp)) {
+        if (selected != null) {
+            DropdownField(
+                label = "Protocol",
+                choice = SingleChoice(state.protocols, selected) {
+                    "${it.protocol.title} (${it.protocol.id} r${it.protocol.revision})" + if (it.readOnly) " · default" else ""
+                },
+                onSelect = { actions.onSelect(it.protocol.id) },
+            )
+            val masking = selected.masking
+            Text(
+                "${selected.protocol.tasks.size} tasks · task order ${selected.protocol.taskOrder.jsonName} · seed ${selected.seed} · masking " +
+                    if (masking.isOn) "${masking.color.label} at ${"%.0f".format(Locale.ROOT, masking.cappedLevelDbfs)} dBFS" else "off",
+                style = MaterialTheme.typography.bodyMedium,
+            )
+            ButtonRow(spacing = 8.dp) {
+                if (selected.readOnly) {
+                    OutlinedButton(onClick = { actions.onDuplicate(selected) }) { Text("Duplicate to edit") }
+                } else {
+                    OutlinedButton(onClick = { actions.onEdit(selected.protocol.id) }) { Text("Edit") }
+                    OutlinedButton(onClick = { actions.onDuplicate(selected) }) { Text("Duplicate") }
+                    OutlinedButton(onClick = { actions.onDelete(selected.protocol.id) }) { Text("Delete") }
+                }
+            }
+            Button(onClick = { actions.onStartSession(false) }, modifier = Modifier.fillMaxWidth()) {
+                Text("Start session for ${state.nextParticipant}")
+            }
+        }
+        state.message?.let { Text(it, style = MaterialTheme.typography.bodyMedium) }
+    }
+}
+
+/** One stored session: who, which protocol, how far, and whether it finished. */
+@Composable
+private fun SessionLine(s: SessionSummary, running: Boolean) {
+    Text(
+        "${s.participant} · ${s.protocolId} · ${s.answers} of ${s.trials} rated · " +
+            when {
+                s.finished -> "finished"
+                running -> "running"
+                else -> "incomplete"
+            },
+        style = MaterialTheme.typography.bodyMedium,
+    )
+}
+
+/** Exporting the sessions as CSV and JSON, what the last export wrote and checked, and sharing its files. */
+@Composable
+private fun ExportSection(export: ExportResult?, onExport: () -> Unit) {
     val context = LocalContext.current
     fun share(file: File, type: String) {
         try {
@@ -96,89 +177,30 @@ private fun ResearcherContent(state: ResearcherUiState.Success, actions: Researc
             android.util.Log.w("Study", "no app to share with: ${e.message}")
         }
     }
-    LazyColumn(Modifier.fillMaxSize(), contentPadding = PaddingValues(16.dp), verticalArrangement = Arrangement.spacedBy(12.dp)) {
-        item {
-            Row(Modifier.fillMaxWidth(), horizontalArrangement = Arrangement.SpaceBetween) {
-                Text("Study · researcher", style = MaterialTheme.typography.headlineSmall, modifier = Modifier.semantics { heading() })
-                TextButton(onClick = actions.onLock) { Text("Lock") }
+    Column(verticalArrangement = Arrangement.spacedBy(8.dp)) {
+        Text("Export", style = MaterialTheme.typography.titleMedium, modifier = Modifier.semantics { heading() })
+        Button(onClick = onExport) { Text("Export CSV + JSON") }
+        if (export != null) {
+            Text("${export.csvFile.name}, ${export.jsonFile.name}: ${export.rows} rows", style = MaterialTheme.typography.bodySmall)
+            for (check in export.checks) Text("${check.participant}: ${check.summary}", style = MaterialTheme.typography.bodyMedium)
+            ButtonRow(spacing = 8.dp) {
+                OutlinedButton(onClick = { share(export.csvFile, "text/csv") }) { Text("Share CSV") }
+                OutlinedButton(onClick = { share(export.jsonFile, "application/json") }) { Text("Share JSON") }
             }
         }
-        item {
-            val selected = state.selected
-            Column(verticalArrangement = Arrangement.spacedBy(8.dp)) {
-                if (selected != null) {
-                    DropdownField(
-                        label = "Protocol",
-                        choice = SingleChoice(state.protocols, selected) {
-                            "${it.protocol.title} (${it.protocol.id} r${it.protocol.revision})" + if (it.readOnly) " · default" else ""
-                        },
-                        onSelect = { actions.onSelect(it.protocol.id) },
-                    )
-                    val masking = selected.masking
-                    Text(
-                        "${selected.protocol.tasks.size} tasks · task order ${selected.protocol.taskOrder.jsonName} · seed ${selected.seed} · masking " +
-                            if (masking.isOn) "${masking.color.label} at ${"%.0f".format(Locale.ROOT, masking.cappedLevelDbfs)} dBFS" else "off",
-                        style = MaterialTheme.typography.bodyMedium,
-                    )
-                    ButtonRow(spacing = 8.dp) {
-                        if (selected.readOnly) {
-                            OutlinedButton(onClick = { actions.onDuplicate(selected) }) { Text("Duplicate to edit") }
-                        } else {
-                            OutlinedButton(onClick = { actions.onEdit(selected.protocol.id) }) { Text("Edit") }
-                            OutlinedButton(onClick = { actions.onDuplicate(selected) }) { Text("Duplicate") }
-                            OutlinedButton(onClick = { actions.onDelete(selected.protocol.id) }) { Text("Delete") }
-                        }
-                    }
-                    Button(onClick = { actions.onStartSession(false) }, modifier = Modifier.fillMaxWidth()) {
-                        Text("Start session for ${state.nextParticipant}")
-                    }
-                }
-                state.message?.let { Text(it, style = MaterialTheme.typography.bodyMedium) }
-            }
-        }
-        item {
-            // Shaping Compliance's study runs on the FSR board, not as an icon protocol: its own runner.
-            OutlinedButton(onClick = actions.onOpenCompliance, modifier = Modifier.fillMaxWidth(), shape = WrappingButtonShape) { Text("Compliance study (Shaping Compliance, FSR board)") }
-        }
-        item { Text("Sessions", style = MaterialTheme.typography.titleMedium, modifier = Modifier.semantics { heading() }) }
-        if (state.sessions.isEmpty()) item { Text("No sessions yet.", style = MaterialTheme.typography.bodyMedium) }
-        itemsIndexed(state.sessions, key = { _, s -> s.id }) { _, s ->
-            Text(
-                "${s.participant} · ${s.protocolId} · ${s.answers} of ${s.trials} rated · " +
-                    when {
-                        s.finished -> "finished"
-                        s.id == state.activeSessionId -> "running"
-                        else -> "incomplete"
-                    },
-                style = MaterialTheme.typography.bodyMedium,
-            )
-        }
-        item { HorizontalDivider() }
-        item {
-            Column(verticalArrangement = Arrangement.spacedBy(8.dp)) {
-                Text("Export", style = MaterialTheme.typography.titleMedium, modifier = Modifier.semantics { heading() })
-                Button(onClick = actions.onExport) { Text("Export CSV + JSON") }
-                state.export?.let { export ->
-                    Text("${export.csvFile.name}, ${export.jsonFile.name}: ${export.rows} rows", style = MaterialTheme.typography.bodySmall)
-                    for (check in export.checks) Text("${check.participant}: ${check.summary}", style = MaterialTheme.typography.bodyMedium)
-                    ButtonRow(spacing = 8.dp) {
-                        OutlinedButton(onClick = { share(export.csvFile, "text/csv") }) { Text("Share CSV") }
-                        OutlinedButton(onClick = { share(export.jsonFile, "application/json") }) { Text("Share JSON") }
-                    }
-                }
-            }
-        }
-        item { CollectorSettings(state, actions) }
     }
-    if (state.headphoneWarning) {
-        AlertDialog(
-            onDismissRequest = actions.onDismissHeadphoneWarning,
-            title = { Text("No headphones connected") },
-            text = { Text("The masking noise will play from the speaker, where the experimenter hears it too. Connect headphones, or start anyway.") },
-            confirmButton = { TextButton(onClick = { actions.onStartSession(true) }) { Text("Start anyway") } },
-            dismissButton = { TextButton(onClick = actions.onDismissHeadphoneWarning) { Text("Cancel") } },
-        )
-    }
+}
+
+/** Asked before a session with masking noise starts while no headphones are connected. */
+@Composable
+private fun HeadphoneWarning(actions: ResearcherActions) {
+    AlertDialog(
+        onDismissRequest = actions.onDismissHeadphoneWarning,
+        title = { Text("No headphones connected") },
+        text = { Text("The masking noise will play from the speaker, where the experimenter hears it too. Connect headphones, or start anyway.") },
+        confirmButton = { TextButton(onClick = { actions.onStartSession(true) }) { Text("Start anyway") } },
+        dismissButton = { TextButton(onClick = actions.onDismissHeadphoneWarning) { Text("Cancel") } },
+    )
 }
 
 @Composable

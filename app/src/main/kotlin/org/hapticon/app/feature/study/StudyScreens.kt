@@ -58,12 +58,13 @@ import androidx.lifecycle.compose.collectAsStateWithLifecycle
 import androidx.lifecycle.viewmodel.compose.viewModel
 import androidx.lifecycle.viewmodel.initializer
 import androidx.lifecycle.viewmodel.viewModelFactory
-import org.hapticon.app.di.AppContainer
+import org.hapticon.app.data.IconRepository
+import org.hapticon.app.playback.HapticPlayer
+import org.hapticon.app.sensors.StimulatorLink
+import org.hapticon.app.study.StudyComponent
 import org.hapticon.app.designsystem.HapticonIcons
-import org.hapticon.app.feature.chat.Sticker
-import org.hapticon.app.feature.sensors.ElectrodeLevelsStore
-import org.hapticon.app.feature.sensors.ElectrotactileCalibrationRoute
-import org.hapticon.app.feature.sensors.ElectrotactileCalibrationViewModel
+import org.hapticon.app.ui.Sticker
+import org.hapticon.app.data.ElectrodeLevelsStore
 import org.hapticon.study.LikertScale
 import org.hapticon.study.Stimulus
 import org.hapticon.study.StudyStep
@@ -71,11 +72,19 @@ import java.io.File
 
 /**
  * The Study destination: the running session when there is one (the app reopens into it), else the PIN gate, the
- * researcher screen or the protocol editor.
+ * researcher screen or the protocol editor. Sessions play on [player], protocols pick from [icons]; the compliance
+ * study drives the [stimulator] and redoes its calibration in [electrotactileCalibration], a screen of the Sensors
+ * feature that the app's navigation hands in (a new key each round: a fresh calibration).
  */
 @Composable
-fun StudyRoute(container: AppContainer) {
-    val study = container.study ?: return
+fun StudyRoute(
+    study: StudyComponent?,
+    player: HapticPlayer,
+    icons: IconRepository,
+    stimulator: StimulatorLink,
+    electrotactileCalibration: @Composable (key: String, onBack: () -> Unit) -> Unit,
+) {
+    if (study == null) return
     val researcher: ResearcherViewModel = viewModel(factory = viewModelFactory { initializer { ResearcherViewModel(study) } })
     val state by researcher.uiState.collectAsStateWithLifecycle()
     var editing by rememberSaveable { mutableStateOf<String?>(null) }
@@ -88,106 +97,122 @@ fun StudyRoute(container: AppContainer) {
     val active = ready?.activeSessionId
     when {
         ready == null -> ResearcherScreen(state, ResearcherActions())
-        active != null -> {
-            val session: StudySessionViewModel = viewModel(
-                key = "study-session-$active",
-                factory = viewModelFactory { initializer { StudySessionViewModel(active, study.repository, container.player, study.noise, study.clock) } },
-            )
-            LifecycleEventEffect(Lifecycle.Event.ON_PAUSE) { session.pause() }
-            LifecycleEventEffect(Lifecycle.Event.ON_RESUME) { session.resume() }
-            val sessionState by session.uiState.collectAsStateWithLifecycle()
-            val actions = remember(session, researcher) {
-                SessionActions(
-                    onStartTask = { session.startTask() },
-                    onPressIcon = { session.pressIcon() },
-                    onPressStimulus = { session.pressIcon(it) },
-                    onFinishExploring = { session.finishExploring() },
-                    onSelect = { session.select(it) },
-                    onNext = { session.next() },
-                    onFinishTask = { session.finishTask() },
-                    onExit = { researcher.exitSession(it) },
-                )
-            }
-            SessionScreen(sessionState, actions, pinError = state.pinError)
-        }
+        active != null -> SessionRoute(active, study, player, researcher, pinError = state.pinError)
         state.lock != LockState.UNLOCKED -> PinScreen(state.lock, state.pinError, onSetPin = researcher::setPin, onUnlock = { researcher.unlock(it) })
-        compliance && calibrating -> {
-            // The calibration the study redoes before each repetition: a fresh one each time (keyed by the round).
-            val files = LocalContext.current.filesDir
-            val calibration: ElectrotactileCalibrationViewModel = viewModel(
-                key = "compliance-calibration-$calibrationRound",
-                factory = viewModelFactory { initializer { ElectrotactileCalibrationViewModel(container.stimulator, ElectrodeLevelsStore.inFolder(files)) } },
-            )
-            ElectrotactileCalibrationRoute(calibration, onBack = { calibrating = false })
-        }
-        compliance -> {
-            val context = LocalContext.current
-            val runner: ComplianceViewModel = viewModel(
-                factory = viewModelFactory {
-                    initializer {
-                        val levels = ElectrodeLevelsStore.inFolder(context.filesDir)
-                        ComplianceViewModel(container.stimulator, levels::stored, File(context.filesDir, "compliance"), File(context.cacheDir, "exports"))
-                    }
-                },
-            )
-            // Back from the calibration: read what it stored.
-            LaunchedEffect(calibrationRound) { runner.refreshCalibration() }
-            ComplianceRoute(
-                runner,
-                onCalibrate = {
-                    calibrationRound++
-                    calibrating = true
-                },
-                onBack = {
-                    // Leaving a running session asks for the PIN again, as the Likert sessions' way out does.
-                    val running = runner.uiState.value
-                    if (running is ComplianceUiState.Trial || running is ComplianceUiState.Calibrate) researcher.lock()
-                    runner.finish()
-                    compliance = false
-                },
-            )
-        }
-        editing != null -> {
-            val id = editing!!
-            val editor: ProtocolEditorViewModel = viewModel(
-                key = "protocol-editor-$id",
-                factory = viewModelFactory { initializer { ProtocolEditorViewModel(id, study.repository, container.iconRepository) } },
-            )
-            val editorState by editor.uiState.collectAsStateWithLifecycle()
-            val actions = remember(editor) {
-                ProtocolEditorActions(
-                    onBack = { editing = null },
-                    onEdit = editor::edit,
-                    onSetPoints = editor::setPoints,
-                    onEditTask = editor::editTask,
-                    onEditStimulus = editor::editStimulus,
-                    onSave = { editor.save() },
-                    onSetJson = editor::setJson,
-                    onExportJson = editor::exportJson,
-                    onImportJson = editor::importJson,
-                )
-            }
-            ProtocolEditorScreen(editorState, actions)
-        }
-        else -> {
-            val actions = remember(researcher) {
-                ResearcherActions(
-                    onLock = researcher::lock,
-                    onSelect = researcher::select,
-                    onEdit = { editing = it },
-                    onDuplicate = { researcher.duplicate(it) },
-                    onDelete = { researcher.delete(it) },
-                    onStartSession = { researcher.startSession(ignoreHeadphones = it) },
-                    onDismissHeadphoneWarning = researcher::dismissHeadphoneWarning,
-                    onExport = { researcher.export() },
-                    onSetCollector = { url, token -> researcher.setCollector(url, token) },
-                    onUpload = { researcher.upload() },
-                    onOpenCompliance = { compliance = true },
-                )
-            }
-            ResearcherScreen(ready, actions)
-        }
+        // The calibration the study redoes before each repetition: a fresh one each time (keyed by the round).
+        compliance && calibrating -> electrotactileCalibration("compliance-calibration-$calibrationRound") { calibrating = false }
+        compliance -> ComplianceStudyRoute(
+            stimulator, calibrationRound,
+            onCalibrate = {
+                calibrationRound++
+                calibrating = true
+            },
+            onLock = researcher::lock,
+            onBack = { compliance = false },
+        )
+        editing != null -> ProtocolEditorRoute(editing!!, study, icons, onBack = { editing = null })
+        else -> ResearcherRoute(ready, researcher, onEdit = { editing = it }, onOpenCompliance = { compliance = true })
     }
+}
+
+/** The running session [sessionId], played on [player]; the participant leaves it through the researcher's PIN. */
+@Composable
+private fun SessionRoute(sessionId: Long, study: StudyComponent, player: HapticPlayer, researcher: ResearcherViewModel, pinError: String?) {
+    val session: StudySessionViewModel = viewModel(
+        key = "study-session-$sessionId",
+        factory = viewModelFactory { initializer { StudySessionViewModel(sessionId, study.repository, player, study.noise, study.clock) } },
+    )
+    LifecycleEventEffect(Lifecycle.Event.ON_PAUSE) { session.pause() }
+    LifecycleEventEffect(Lifecycle.Event.ON_RESUME) { session.resume() }
+    val sessionState by session.uiState.collectAsStateWithLifecycle()
+    val actions = remember(session, researcher) {
+        SessionActions(
+            onStartTask = { session.startTask() },
+            onPressIcon = { session.pressIcon() },
+            onPressStimulus = { session.pressIcon(it) },
+            onFinishExploring = { session.finishExploring() },
+            onSelect = { session.select(it) },
+            onNext = { session.next() },
+            onFinishTask = { session.finishTask() },
+            onExit = { researcher.exitSession(it) },
+        )
+    }
+    SessionScreen(sessionState, actions, pinError = pinError)
+}
+
+/**
+ * The compliance study's runner over [stimulator], reading the stored calibration again whenever
+ * [calibrationRound] changes (back from a calibration). Leaving a running session calls [onLock] first.
+ */
+@Composable
+private fun ComplianceStudyRoute(stimulator: StimulatorLink, calibrationRound: Int, onCalibrate: () -> Unit, onLock: () -> Unit, onBack: () -> Unit) {
+    val context = LocalContext.current
+    val runner: ComplianceViewModel = viewModel(
+        factory = viewModelFactory {
+            initializer {
+                val levels = ElectrodeLevelsStore.inFolder(context.filesDir)
+                ComplianceViewModel(stimulator, levels::stored, File(context.filesDir, "compliance"), File(context.cacheDir, "exports"))
+            }
+        },
+    )
+    // Back from the calibration: read what it stored.
+    LaunchedEffect(calibrationRound) { runner.refreshCalibration() }
+    ComplianceRoute(
+        runner,
+        onCalibrate = onCalibrate,
+        onBack = {
+            // Leaving a running session asks for the PIN again, as the Likert sessions' way out does.
+            val running = runner.uiState.value
+            if (running is ComplianceUiState.Trial || running is ComplianceUiState.Calibrate) onLock()
+            runner.finish()
+            onBack()
+        },
+    )
+}
+
+/** The protocol editor for the stored protocol [id], its stimuli picked from [icons]. */
+@Composable
+private fun ProtocolEditorRoute(id: String, study: StudyComponent, icons: IconRepository, onBack: () -> Unit) {
+    val editor: ProtocolEditorViewModel = viewModel(
+        key = "protocol-editor-$id",
+        factory = viewModelFactory { initializer { ProtocolEditorViewModel(id, study.repository, icons) } },
+    )
+    val editorState by editor.uiState.collectAsStateWithLifecycle()
+    val actions = remember(editor, onBack) {
+        ProtocolEditorActions(
+            onBack = onBack,
+            onEdit = editor::edit,
+            onSetPoints = editor::setPoints,
+            onEditTask = editor::editTask,
+            onEditStimulus = editor::editStimulus,
+            onSave = { editor.save() },
+            onSetJson = editor::setJson,
+            onExportJson = editor::exportJson,
+            onImportJson = editor::importJson,
+        )
+    }
+    ProtocolEditorScreen(editorState, actions)
+}
+
+/** The unlocked researcher screen: protocols, sessions, export and upload, wired to [researcher]. */
+@Composable
+private fun ResearcherRoute(ready: ResearcherUiState.Success, researcher: ResearcherViewModel, onEdit: (String) -> Unit, onOpenCompliance: () -> Unit) {
+    val actions = remember(researcher) {
+        ResearcherActions(
+            onLock = researcher::lock,
+            onSelect = researcher::select,
+            onEdit = onEdit,
+            onDuplicate = { researcher.duplicate(it) },
+            onDelete = { researcher.delete(it) },
+            onStartSession = { researcher.startSession(ignoreHeadphones = it) },
+            onDismissHeadphoneWarning = researcher::dismissHeadphoneWarning,
+            onExport = { researcher.export() },
+            onSetCollector = { url, token -> researcher.setCollector(url, token) },
+            onUpload = { researcher.upload() },
+            onOpenCompliance = onOpenCompliance,
+        )
+    }
+    ResearcherScreen(ready, actions)
 }
 
 /** First use: set the researcher PIN (twice); afterwards: enter it. A wrong PIN shows "wrong PIN". */

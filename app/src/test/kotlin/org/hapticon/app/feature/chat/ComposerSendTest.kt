@@ -1,5 +1,6 @@
 package org.hapticon.app.feature.chat
 
+import org.hapticon.app.ui.Sticker
 import androidx.compose.ui.test.hasSetTextAction
 import org.hapticon.app.playback.lastUsage
 import org.hapticon.core.platform.VibrationUsage

@@ -1,5 +1,6 @@
 package org.hapticon.app.feature.chat
 
+import org.hapticon.app.ui.Sticker
 import android.content.Context
 import android.os.Vibrator
 import androidx.compose.runtime.collectAsState

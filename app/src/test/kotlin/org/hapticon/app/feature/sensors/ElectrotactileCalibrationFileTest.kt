@@ -1,5 +1,6 @@
 package org.hapticon.app.feature.sensors
 
+import org.hapticon.app.data.ElectrodeLevelsStore
 import java.io.ByteArrayInputStream
 import java.io.ByteArrayOutputStream
 import java.io.File

@@ -1,5 +1,6 @@
 package org.hapticon.app.feature.sensors
 
+import org.hapticon.app.data.ElectrodeLevelsStore
 import androidx.compose.ui.test.assertIsEnabled
 import androidx.compose.ui.test.assertIsNotEnabled
 import androidx.compose.ui.test.junit4.createComposeRule

@@ -10,7 +10,7 @@ import androidx.compose.ui.test.performScrollTo
 import androidx.compose.ui.test.performTouchInput
 import androidx.compose.ui.test.swipe
 import androidx.compose.ui.geometry.Offset
-import org.hapticon.app.feature.sensors.ElectrodeLevelsStore
+import org.hapticon.app.data.ElectrodeLevelsStore
 import org.hapticon.app.sensors.SessionStimulatorLink
 import org.hapticon.app.sensors.StimulatorLink
 import org.hapticon.app.feature.sensors.TestStimulatorLink

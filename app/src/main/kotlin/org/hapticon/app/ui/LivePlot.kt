@@ -1,4 +1,4 @@
-package org.hapticon.app.feature.sensors
+package org.hapticon.app.ui
 
 import androidx.compose.foundation.Canvas
 import androidx.compose.foundation.layout.fillMaxWidth

@@ -1,4 +1,4 @@
-package org.hapticon.app.feature.icons
+package org.hapticon.app.data
 
 import android.content.Context
 import android.content.Intent

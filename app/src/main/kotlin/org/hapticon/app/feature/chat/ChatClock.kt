@@ -1,6 +1,5 @@
 package org.hapticon.app.feature.chat
 
-import androidx.compose.ui.graphics.Color
 import java.time.Instant
 import java.time.LocalDate
 import java.time.ZoneId
@@ -8,7 +7,6 @@ import java.time.format.DateTimeFormatter
 import java.time.format.FormatStyle
 import java.time.temporal.ChronoUnit
 import java.util.Locale
-import org.hapticon.app.data.database.StoredMessage
 
 /**
  * How times and days read in the chat screens, the way Google Messages and Signal write them: the list
@@ -61,50 +59,4 @@ class ChatClock(
 
     /** Whether two instants fall on different calendar days here. */
     fun differentDays(a: Long, b: Long): Boolean = date(a) != date(b)
-}
-
-/** One row of a conversation: a message bubble, or the separator before a day's first message. */
-sealed interface ConversationItem {
-    val key: String
-
-    data class Bubble(val message: StoredMessage, val time: String) : ConversationItem {
-        override val key: String get() = message.id
-    }
-
-    data class DaySeparator(val label: String, override val key: String) : ConversationItem
-}
-
-/** The rows for [messages] (oldest first) newest first, as the bottom-anchored (reversed) list shows them. */
-fun conversationItems(messages: List<StoredMessage>, clock: ChatClock, nowMillis: Long): List<ConversationItem> {
-    val rows = ArrayList<ConversationItem>(messages.size + 4)
-    for ((i, message) in messages.withIndex()) {
-        val previous = messages.getOrNull(i - 1)
-        if (previous == null || clock.differentDays(previous.sentAtMillis, message.sentAtMillis)) {
-            rows += ConversationItem.DaySeparator(clock.dayLabel(message.sentAtMillis, nowMillis), "day-${message.id}")
-        }
-        rows += ConversationItem.Bubble(message, clock.timeOfDay(message.sentAtMillis))
-    }
-    rows.reverse()
-    return rows
-}
-
-/** Up to two initials of a user name: "alice" → "A", "bob.smith" → "BS", "x_y-z" → "XY". */
-fun initialsOf(name: String): String {
-    val parts = name.split('.', '_', '-', ' ').filter { it.isNotEmpty() }
-    return when {
-        parts.isEmpty() -> "?"
-        parts.size == 1 -> parts[0].take(1).uppercase()
-        else -> (parts[0].take(1) + parts[1].take(1)).uppercase()
-    }
-}
-
-/**
- * The avatar colour of [name]: a hue from the name's hash at fixed saturation and lightness, so the same
- * person always gets the same colour and white initials stay readable on every hue (lightness 0.32
- * keeps the contrast with white at 4.5:1 or more, WCAG 2.x's AA level for text, even for yellow, the
- * brightest hue at equal HSL lightness).
- */
-fun avatarColorOf(name: String): Color {
-    val hue = Math.floorMod(name.hashCode(), 360).toFloat()
-    return Color.hsl(hue, saturation = 0.45f, lightness = 0.32f)
 }

@@ -1,4 +1,4 @@
-package org.hapticon.app.feature.sensors
+package org.hapticon.app.data
 
 import org.hapticon.app.gesture.replaceFile
 import org.hapticon.sensor.electrotactile.CalibrationFile
@@ -6,6 +6,9 @@ import org.hapticon.sensor.electrotactile.CalibrationFileException
 import org.hapticon.sensor.electrotactile.ElectrotactileCalibrationResult
 import org.hapticon.sensor.electrotactile.StoredCalibration
 import java.io.File
+import java.util.Locale
+import java.time.format.DateTimeFormatter
+import java.time.ZoneOffset
 import java.time.Instant
 
 /**
@@ -66,6 +69,19 @@ class ElectrodeLevelsStore(
     }
 
     companion object {
+        /**
+         * "P07's calibration of 2026-11-27 00:12 UTC (0.810–1.215 mA)", or "the calibration of …" without a participant:
+         * whose, when, and its range of currents.
+         */
+        fun describe(calibration: StoredCalibration): String {
+            val at = DateTimeFormatter.ofPattern("yyyy-MM-dd HH:mm", Locale.ROOT).withZone(ZoneOffset.UTC).format(calibration.calibratedAt)
+            val milliamps = calibration.result.milliamps
+            val (low, high) = milliamps.min() to milliamps.max()
+            val range = if (low == high) String.format(Locale.ROOT, "%.3f mA", low) else String.format(Locale.ROOT, "%.3f–%.3f mA", low, high)
+            val whose = calibration.participant?.let { "$it's calibration" } ?: "the calibration"
+            return "$whose of $at UTC ($range)"
+        }
+
         /** The file name under the app's files directory. */
         const val FILE_NAME: String = "electrotactile-calibration.json"
 

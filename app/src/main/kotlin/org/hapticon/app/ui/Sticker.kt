@@ -1,4 +1,4 @@
-package org.hapticon.app.feature.chat
+package org.hapticon.app.ui
 
 import androidx.annotation.DrawableRes
 import org.hapticon.app.R

@@ -1,21 +1,7 @@
 package org.hapticon.app.feature.iconeditor
 
-import androidx.compose.foundation.layout.fillMaxWidth
-import androidx.compose.foundation.layout.height
-import androidx.compose.material3.MaterialTheme
-import androidx.compose.material3.Text
-import androidx.compose.runtime.Composable
-import androidx.compose.runtime.Immutable
-import androidx.compose.runtime.getValue
-import androidx.compose.runtime.remember
-import androidx.compose.ui.Modifier
-import androidx.compose.ui.unit.dp
 import androidx.lifecycle.ViewModel
-import androidx.lifecycle.compose.collectAsStateWithLifecycle
 import androidx.lifecycle.viewModelScope
-import androidx.lifecycle.viewmodel.compose.viewModel
-import androidx.lifecycle.viewmodel.initializer
-import androidx.lifecycle.viewmodel.viewModelFactory
 import kotlinx.coroutines.flow.MutableStateFlow
 import kotlinx.coroutines.flow.SharingStarted
 import kotlinx.coroutines.flow.StateFlow
@@ -24,12 +10,8 @@ import kotlinx.coroutines.flow.stateIn
 import kotlinx.coroutines.launch
 import org.hapticon.app.data.RoomIconRepository
 import org.hapticon.app.playback.HapticPlayer
-import org.hapticon.app.ui.EditorScaffold
 import org.hapticon.app.playback.playOffMain
 import org.hapticon.core.platform.VibrationUsage
-import org.hapticon.app.ui.EnvelopeThumbnail
-import org.hapticon.app.ui.PlayAndSave
-import org.hapticon.app.ui.ValidatedField
 import org.hapticon.core.HapticIcon
 import org.hapticon.core.IconValidationException
 
@@ -66,15 +48,6 @@ sealed interface IconEditorUiState {
         override val icon: HapticIcon? get() = null
     }
 }
-
-/** What the editor can ask for. */
-@Immutable
-class IconEditorActions(
-    val onChange: (IconField, String) -> Unit = { _, _ -> },
-    val onPlay: () -> Unit = {},
-    val onSave: () -> Unit = {},
-    val onBack: () -> Unit = {},
-)
 
 class IconEditorViewModel(
     private val icons: RoomIconRepository,
@@ -129,28 +102,5 @@ class IconEditorViewModel(
                 IconEditorUiState.Invalid(fields, mapOf(field to (e.message ?: "Not valid")))
             }
         }
-    }
-}
-
-@Composable
-fun IconEditorRoute(icons: RoomIconRepository, player: HapticPlayer, onDone: () -> Unit) {
-    val viewModel: IconEditorViewModel = viewModel(factory = viewModelFactory { initializer { IconEditorViewModel(icons, player) } })
-    val uiState by viewModel.uiState.collectAsStateWithLifecycle()
-    val actions = remember(viewModel, onDone) {
-        IconEditorActions(onChange = viewModel::update, onPlay = viewModel::play, onSave = { viewModel.save(onDone) }, onBack = onDone)
-    }
-    IconEditorScreen(uiState, actions)
-}
-
-/** Seven parameters and a name, a live envelope plot, each field's validation message under it, play and save. */
-@Composable
-fun IconEditorScreen(uiState: IconEditorUiState, actions: IconEditorActions) {
-    EditorScaffold("New haptic icon", actions.onBack) {
-        uiState.icon?.let { EnvelopeThumbnail(it, Modifier.fillMaxWidth().height(96.dp)) }
-            ?: Text("Fix the fields below to see the envelope", style = MaterialTheme.typography.bodySmall)
-        for (field in IconField.entries) {
-            ValidatedField(uiState.fields[field].orEmpty(), field.label, uiState.errors[field]) { actions.onChange(field, it) }
-        }
-        PlayAndSave(uiState.icon != null, actions.onPlay, actions.onSave)
     }
 }
