@@ -55,6 +55,9 @@ dependencies {
     testImplementation(project(":test-fixtures:android"))
     // The embedded broker: "Stay reachable" is tested end to end over real MQTT.
     testImplementation(project(":messaging:broker"))
+    // A bare MQTT client: the tests publish what a hostile participant or the broker's operator would (a flood, a
+    // recorded payload replayed byte for byte), which the app's messenger never sends.
+    testImplementation(libs.hivemq.mqtt.client)
     testImplementation(libs.junit4)
     testImplementation(libs.robolectric)
     testImplementation(libs.androidx.test.core)

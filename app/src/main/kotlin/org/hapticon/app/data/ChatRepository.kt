@@ -10,6 +10,7 @@ import org.hapticon.app.data.database.MessageEntity
 import org.hapticon.app.data.database.MessageState
 import org.hapticon.app.data.database.OutboxEntity
 import org.hapticon.app.data.database.PendingReceiptEntity
+import org.hapticon.app.data.database.SeenMessageEntity
 import org.hapticon.app.data.database.StoredMessage
 import org.hapticon.app.data.database.asExternalModel
 import org.hapticon.app.data.database.patternFromJson
@@ -52,7 +53,10 @@ interface ChatRepository {
         pattern: HapticPattern? = null,
     ): StoredMessage
 
-    /** Stores a received [message] unless its id is known; returns true when it is new (first delivery). */
+    /**
+     * Stores a received [message] unless its sender's id was seen before, even in a conversation deleted since;
+     * returns true when it is new (first delivery), false for a repeat or a replay.
+     */
     suspend fun receive(message: ChatMessage): Boolean
 
     /** Records a receipt for an own message; states only move forward (a late DELIVERED never undoes READ). */
@@ -73,7 +77,10 @@ interface ChatRepository {
      */
     suspend fun retryNow(messageId: String)
 
-    /** Deletes the conversation with [peer], its messages and whatever of it is still in the outbox. */
+    /**
+     * Deletes the conversation with [peer], its messages and whatever of it is still in the outbox. The ids of its
+     * received messages stay seen: a replay of one of them is not shown as new.
+     */
     suspend fun deleteConversation(peer: String)
 
     /** Keeps [receipt] for [peer] until [receiptSent]: it could not be sent now. */
@@ -100,6 +107,7 @@ class OfflineFirstChatRepository(
     private val messages = db.messageDao()
     private val outbox = db.outboxDao()
     private val receipts = db.pendingReceiptDao()
+    private val seen = db.seenMessageDao()
 
     override fun conversations(): Flow<List<ConversationSummary>> = conversations.conversationSummaries()
 
@@ -117,6 +125,8 @@ class OfflineFirstChatRepository(
     }
 
     override suspend fun receive(message: ChatMessage): Boolean = db.withTransaction {
+        // The seen id decides, not the message row: "Delete conversation" removes rows but must not reopen replays.
+        if (seen.insertOrIgnore(SeenMessageEntity(message.sender, message.id, clock.nowMillis())) == -1L) return@withTransaction false
         val inserted = messages.insertOrIgnore(message.asEntity(conversation = message.sender, outgoing = false, state = MessageState.RECEIVED))
         if (inserted != -1L) conversations.insertOrIgnore(ConversationEntity(message.sender, clock.nowMillis()))
         inserted != -1L

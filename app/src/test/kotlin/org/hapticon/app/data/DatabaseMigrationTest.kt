@@ -9,7 +9,9 @@ import kotlinx.coroutines.test.runTest
 import org.hapticon.app.data.database.HapticonDatabase
 import org.hapticon.app.data.database.IconEntity
 import org.hapticon.app.data.database.MessageEntity
+import org.hapticon.app.data.database.OutboxEntity
 import org.hapticon.app.data.database.PatternEntity
+import org.hapticon.app.data.database.SeenMessageEntity
 import org.hapticon.app.data.database.asExternalModel
 import org.hapticon.app.data.database.patternToJson
 import org.hapticon.core.pattern.AmplitudeKey
@@ -165,6 +167,67 @@ class DatabaseMigrationTest {
         } finally {
             db.close()
         }
+    }
+
+    /**
+     * v6 keeps received ids apart from the messages: v5's received messages become seen ids (its own messages do not),
+     * every row stays as it was, and once the conversation is deleted those ids still refuse a replay.
+     */
+    @Test
+    fun migrate5To6_receivedIdsSeen_rowsKept_replayAfterDeleteRefused() = runTest {
+        val file = context.getDatabasePath("migration-5-6.db").also { it.parentFile!!.mkdirs(); it.delete() }
+        createFromSchema(file, version = 5)
+        val received = "0b7e7c1e-3f7b-4a57-9d3e-2f1c5a6b7c8d"
+        val own = "2b7e7c1e-3f7b-4a57-9d3e-2f1c5a6b7c8d"
+        SQLiteDatabase.openDatabase(file.path, null, SQLiteDatabase.OPEN_READWRITE).use { v5 ->
+            v5.execSQL("INSERT INTO conversations (peer, created_at) VALUES ('bob', 1)")
+            v5.execSQL(
+                "INSERT INTO messages (id, conversation, sender, sent_at, text, sticker, icon_json, outgoing, state, read_at, pattern_json) " +
+                    "VALUES ('$received', 'bob', 'bob', 5, 'meet at 5', 'hug', NULL, 0, 'READ', 9, NULL)",
+            )
+            v5.execSQL(
+                "INSERT INTO messages (id, conversation, sender, sent_at, text, sticker, icon_json, outgoing, state, read_at, pattern_json) " +
+                    "VALUES ('$own', 'bob', 'alice', 7, 'ok', NULL, NULL, 1, 'DELIVERED', NULL, NULL)",
+            )
+            v5.execSQL("INSERT INTO outbox (message_id, recipient, enqueued_at, attempts, next_attempt_at, last_error) VALUES ('$own', 'bob', 7, 1, 30007, NULL)")
+        }
+
+        val db = Room.databaseBuilder(context, HapticonDatabase::class.java, file.path).allowMainThreadQueries().build()
+        try {
+            assertEquals(
+                listOf(
+                    MessageEntity(received, "bob", "bob", 5, "meet at 5", "hug", null, false, "READ", 9),
+                    MessageEntity(own, "bob", "alice", 7, "ok", null, null, true, "DELIVERED", null),
+                ),
+                db.messageDao().all(),
+            )
+            assertEquals(listOf(OutboxEntity(own, "bob", 7, 1, 30007, null)), db.outboxDao().pending())
+            // The received id is seen, with its sending time standing in for the arrival v5 did not keep.
+            assertEquals(listOf(SeenMessageEntity("bob", received, 5)), db.seenMessageDao().seenFrom("bob"))
+            assertEquals(emptyList<SeenMessageEntity>(), db.seenMessageDao().seenFrom("alice"))
+
+            val repository = OfflineFirstChatRepository(db, clock = { 100 })
+            repository.deleteConversation("bob")
+            assertEquals(emptyList<MessageEntity>(), db.messageDao().all())
+            val replay = ChatMessage(received, "bob", 5, "meet at 5", "hug")
+            assertEquals(false, repository.receive(replay))
+            assertEquals(emptyList<MessageEntity>(), db.messageDao().all())
+            assertEquals(emptyList<String>(), db.conversationDao().conversationSummaries().first().map { it.peer })
+            assertEquals(listOf(SeenMessageEntity("bob", received, 5)), db.seenMessageDao().seenFrom("bob"))
+        } finally {
+            db.close()
+        }
+    }
+
+    @Test
+    fun schema6_exported_addsTheSeenMessagesTable() {
+        val tables = schema(6).getJSONObject("database").getJSONArray("entities")
+        val byName = (0 until tables.length()).associate { tables.getJSONObject(it).getString("tableName") to tables.getJSONObject(it) }
+        assertEquals(
+            "CREATE TABLE IF NOT EXISTS `\${TABLE_NAME}` (`peer` TEXT NOT NULL, `message_id` TEXT NOT NULL, `seen_at` INTEGER NOT NULL, " +
+                "PRIMARY KEY(`peer`, `message_id`))",
+            byName.getValue("seen_messages").getString("createSql"),
+        )
     }
 
     @Test

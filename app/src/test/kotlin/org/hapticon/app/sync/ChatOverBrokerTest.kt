@@ -13,7 +13,14 @@ import kotlinx.coroutines.flow.first
 import kotlinx.coroutines.runBlocking
 import kotlinx.coroutines.withTimeout
 import kotlinx.coroutines.withTimeoutOrNull
+import android.database.sqlite.SQLiteDatabase
+import com.hivemq.client.mqtt.MqttClient
+import com.hivemq.client.mqtt.datatypes.MqttQos
+import java.util.concurrent.TimeUnit
 import org.hapticon.app.HapticonApplication
+import org.hapticon.app.data.database.HapticonDatabase
+import org.hapticon.messaging.MessageCodec
+import org.hapticon.messaging.Topics
 import org.hapticon.core.HapticIcon
 import org.hapticon.messaging.ChatMessage
 import org.hapticon.messaging.Clock
@@ -206,6 +213,58 @@ class ChatOverBrokerTest {
         val stored = chat.repository.messages("bob").first()
         assertEquals(listOf("are you coming?" to false, "on my way" to true), stored.map { it.text to it.outgoing })
     }
+
+    /**
+     * A replay after "Delete conversation": the operator recorded a genuine payload of bob's (sealed for alice and
+     * signed by bob) and publishes it again, byte for byte, once alice has deleted the conversation. The receive path
+     * (broker, the app's sealing messenger, ChatSync, Room) shows it once: the replay stores no row, brings no
+     * conversation back, and the id stays seen; a fresh message of bob's after it is shown as usual.
+     */
+    @Test
+    fun replayOfAGenuineSealedPayload_afterDeleteConversation_isNotShownAgain() = runBlocking {
+        val bobKeys = EndToEnd(Identity.generate("bob"), InMemoryKeyPins())
+        val fast = RetryPolicy(initialDelayMillis = 50, maxDelayMillis = 500, jitter = 0.0)
+        val bobPhone = MqttMessenger(MqttSettings(address, "bob", "bob-secret", DeviceId.generate(), reconnectPolicy = fast), bobKeys)
+        bob = bobPhone
+        bobPhone.connect(InboxListener { })
+        assertNull(probe("alice-secret"))
+        awaitTrue("bob's key pinned") { chat.peerKeys("bob") == PeerKeys.PUBLISHED }
+        // bob's messenger learns alice's key from her retained one; the first message goes through it.
+        val meet = ChatMessage.compose("bob", "meet at 5", null, HapticIcon.KNOCK, Clock.SYSTEM)
+        sendWhenKeyKnown(bobPhone, "alice", meet)
+        awaitTrue("bob's message stored") { chat.repository.messages("bob").first().isNotEmpty() }
+        // What the operator recorded: bob's genuine bytes for that message, published again from bob's name.
+        val recorded = bobKeys.seal("alice", MessageCodec.encode(meet))
+        val wire = MqttClient.builder().useMqttVersion3().identifier("bob:" + DeviceId.generate().value)
+            .serverHost(address.host).serverPort(address.port)
+            .simpleAuth().username("bob").password("bob-secret".toByteArray()).applySimpleAuth()
+            .buildAsync()
+        wire.connect().get(20, TimeUnit.SECONDS)
+        val after = ChatMessage.compose("bob", "after the replay", null, null, Clock.SYSTEM)
+        try {
+            chat.repository.deleteConversation("bob")
+            assertEquals(emptyList<String>(), chat.repository.conversations().first().map { it.peer })
+
+            wire.publishWith().topic(Topics.inbox("alice", "bob")).qos(MqttQos.AT_LEAST_ONCE).payload(recorded).send().get(20, TimeUnit.SECONDS)
+            wire.publishWith().topic(Topics.inbox("alice", "bob")).qos(MqttQos.AT_LEAST_ONCE)
+                .payload(bobKeys.seal("alice", MessageCodec.encode(after))).send().get(20, TimeUnit.SECONDS)
+            awaitTrue("the message after the replay stored") { chat.repository.messages("bob").first().isNotEmpty() }
+        } finally {
+            wire.disconnect().get(20, TimeUnit.SECONDS)
+        }
+        // One inbox, in order: the replay arrived before the later message and was refused.
+        assertEquals(listOf("after the replay"), chat.repository.messages("bob").first().map { it.text })
+        assertEquals(listOf("bob"), chat.repository.conversations().first().map { it.peer })
+        assertEquals(setOf(meet.id, after.id), seenIds("bob"))
+    }
+
+    /** The ids Room keeps as seen from [peer], read from the app's database file on a connection of its own. */
+    private fun seenIds(peer: String): Set<String> =
+        SQLiteDatabase.openDatabase(app.getDatabasePath(HapticonDatabase.NAME).path, null, SQLiteDatabase.OPEN_READONLY).use { db ->
+            db.rawQuery("SELECT message_id FROM seen_messages WHERE peer = ?", arrayOf(peer)).use { c ->
+                generateSequence { if (c.moveToNext()) c.getString(0) else null }.toSet()
+            }
+        }
 
     /**
      * End to end by default: the app's session publishes alice's key and pins bob's; a peer who never published a key

@@ -80,6 +80,17 @@ interface MessageDao {
     suspend fun deleteConversationMessages(peer: String)
 }
 
+/** The ids of received messages, kept when their conversation is deleted ([SeenMessageEntity]). */
+@Dao
+interface SeenMessageDao {
+    /** Records the id unless [peer] sent it before; returns the row id, or -1 when it was seen already (a repeat or a replay). */
+    @Insert(onConflict = OnConflictStrategy.IGNORE)
+    suspend fun insertOrIgnore(seen: SeenMessageEntity): Long
+
+    @Query("SELECT * FROM seen_messages WHERE peer = :peer ORDER BY seen_at, rowid")
+    suspend fun seenFrom(peer: String): List<SeenMessageEntity>
+}
+
 /** The outbox of composed, unacknowledged messages, in the order [org.hapticon.messaging.Outbox] defines. */
 @Dao
 interface OutboxDao {

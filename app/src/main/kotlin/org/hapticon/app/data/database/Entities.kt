@@ -60,6 +60,22 @@ data class OutboxEntity(
     @ColumnInfo(name = "last_error") val lastError: String? = null,
 )
 
+/**
+ * The id of every message received from [peer], kept apart from the message rows so that deleting a conversation
+ * (its messages) does not forget them: a replayed genuine payload (recorded by the broker's operator, sealed and
+ * signed by the peer) is then still a repeat, never a new message (added in v6). Kept for good (~100 bytes a row),
+ * as `hapticon chat` keeps its `seen` ids: a window by sending time would refuse a message the peer's outbox still
+ * resends after a long absence.
+ */
+@Entity(tableName = "seen_messages", primaryKeys = ["peer", "message_id"])
+data class SeenMessageEntity(
+    /** The sender, as the inbox topic proves it. */
+    val peer: String,
+    @ColumnInfo(name = "message_id") val messageId: String,
+    /** When this device first stored it; for ids carried over from v5's message rows, the message's sending time. */
+    @ColumnInfo(name = "seen_at") val seenAtMillis: Long,
+)
+
 /** A custom haptic icon the user made in the editor. */
 @Entity(tableName = "icons")
 data class IconEntity(

@@ -192,7 +192,11 @@ class FirstLaunchOfferTest {
      * invite on another phone's screen; the photo decodes, the invite fills in the server and adds bob.
      */
     @Test
-    @org.junit.Ignore("InviteScan.decode finds no code in this photo under Robolectric's native graphics (decoded = null); to be fixed before the scan path counts as tested")
+    @org.junit.Ignore(
+        "InviteScan.decode(context, uri) finds no code here (null), although BitmapFactory and InviteScan.decode(bitmap) read this " +
+            "very JPEG from its bytes at inSampleSize 1, 2, 4 and 8 under native graphics: the photo is lost on the content-URI " +
+            "path (the write through ContentResolver to the FileProvider URI, or the read back); to be fixed before the scan path counts as tested",
+    )
     fun scanInvite_cameraPhotoOfTheCode_fillsTheServerAndAddsTheInviter() {
         val chat = component()
         compose.setContent { ChatsRoute(chat, iconEditor = {}) }
