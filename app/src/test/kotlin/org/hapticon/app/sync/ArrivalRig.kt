@@ -81,15 +81,20 @@ enum class ArrivalStage(val label: String) {
     SENT("bob's send() called"),
     DECODED("delivered and decoded: the inbox listener has it"),
     STORED("stored in Room"),
-    RECEIPTED("delivered receipt acknowledged by the broker"),
-    NOTIFYING("arrival planned: the notifier called"),
+    NOTIFYING("receipt sent, arrival planned: the notifier called"),
     NOTIFIED("notification built and posted"),
     VIBRATED("first vibration handed to the platform"),
 }
 
-/** One message's stamps ([ArrivalStage], 0 = not reached) and what happened to it, in order. */
+/**
+ * One message's stamps ([ArrivalStage], 0 = not reached) and what happened to it, in order; [receiptAcked] when the
+ * broker acknowledged its delivered receipt, which the phone awaits beside the notification and the icon.
+ */
 class Arrival(val id: String) {
     val at = LongArray(ArrivalStage.entries.size)
+
+    @Volatile
+    var receiptAcked: Long = 0L
     val events: MutableList<String> = java.util.Collections.synchronizedList(mutableListOf())
 
     fun stamp(stage: ArrivalStage, nanos: Long = System.nanoTime()) {
@@ -239,7 +244,7 @@ class ArrivalRig(private val context: Context, dir: File) : AutoCloseable {
 
         override suspend fun send(recipient: String, receipt: Receipt) {
             real.send(recipient, receipt)
-            if (receipt.state == ReceiptState.DELIVERED) arrivals[receipt.messageId]?.stamp(ArrivalStage.RECEIPTED)
+            if (receipt.state == ReceiptState.DELIVERED) arrivals[receipt.messageId]?.let { it.receiptAcked = System.nanoTime() }
         }
     }
 }

@@ -29,7 +29,7 @@ import org.robolectric.annotation.Config
  *     HAPTICON_BENCH_ARRIVAL=10000 ./build test :app --tests ArrivalToTouchBench
  *
  * bob sends a text with the knock icon, sealed end to end, through the embedded broker; alice's phone ([ArrivalRig]:
- * the app's receive path) decodes it, stores it in Room, answers with a delivered receipt, posts the notification and
+ * the app's receive path) decodes it, stores it in Room, sends a delivered receipt, posts the notification and
  * hands the icon's vibration to the platform; the next message goes once bob has the felt receipt. Per message the
  * stages' times are kept ([ArrivalStage]); after each, the same run times the baseline: decoding alone (opening a
  * payload sealed the same way and [MessageCodec.decodeInbox], what the messenger does before its listener).
@@ -106,6 +106,8 @@ class ArrivalToTouchBench {
             val mean = times.average()
             line("  %-56s %8.2f %8.2f %8.2f %8.2f %6.0f%%", "-> " + to.label, percentile(times, 50.0), percentile(times, 99.0), times.max(), mean, 100 * mean / totalMean)
         }
+        val acked = arrivals.map { (it.receiptAcked - it.at[ArrivalStage.STORED.ordinal]) / 1e6 }
+        line("  %-56s %8.2f %8.2f %8.2f %8.2f", "(beside: stored -> delivered receipt acknowledged)", percentile(acked, 50.0), percentile(acked, 99.0), acked.max(), acked.average())
         line("  %-56s %8.2f %8.2f %8.2f %8.2f", "arrival to touch (send() to the vibration)", percentile(total, 50.0), percentile(total, 99.0), total.max(), totalMean)
         val b = baseline.toList()
         line("  %-56s %8.2f %8.2f %8.2f %8.2f", "baseline, same run: decode alone (open + decodeInbox)", percentile(b, 50.0), percentile(b, 99.0), b.max(), b.average())

@@ -21,8 +21,7 @@ import org.robolectric.annotation.Config
 
 /**
  * What the arrival-to-touch bench ([ArrivalToTouchBench]) times, checked for behaviour, not time: each of a few sealed
- * messages through the real broker passes every stage once and in order (decoded, stored, delivered receipt,
- * notification posted, then its icon handed to the platform vibrator), nothing vibrates or notifies outside a message,
+ * messages through the real broker passes every stage once and in order (decoded, stored, notification posted, then its icon handed to the platform vibrator), nothing vibrates or notifies outside a message,
  * and the icon plays as the peer's communication.
  */
 @RunWith(RobolectricTestRunner::class)
@@ -55,6 +54,8 @@ class ArrivalToTouchTest {
             assertEquals(arrival.id, ArrivalStage.entries.map { it.name }, arrival.events)
             // Stamped in order in time too (one clock for sender and phone).
             assertEquals(arrival.id, arrival.at.toList().sorted(), arrival.at.toList())
+            // The delivered receipt: acknowledged after the row was stored (awaited beside the notification).
+            assertEquals(arrival.id, true, arrival.receiptAcked > arrival.at[ArrivalStage.STORED.ordinal])
         }
         assertEquals(emptyList<String>(), rig.strays)
         val vibrator = context.getSystemService(Vibrator::class.java)
