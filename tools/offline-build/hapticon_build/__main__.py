@@ -32,6 +32,8 @@ USAGE = """usage: ./build COMMAND [options]
   companion           build the companion command-line tool (used by ./hapticon)
   demo                build the APK, then run the companion demo into out/demo
   bench               build the companion and run `hapticon bench`
+  bench --arrival [N] the app's arrival-to-touch benchmark over N messages (default 10,000; Robolectric,
+                      embedded broker): p50/p99/max per stage beside decoding alone (docs/performance.md)
   classpath MODULE [main|test]
                       print a module's runtime classpath
   clean               delete out/ (keeps downloaded artifacts and .build-cache/)
@@ -79,6 +81,8 @@ def main(argv: list[str]) -> int:
             build.kotlinc.close()
             cp = companion_classpath(build)
             run_companion(build, cp, ["demo", "--out", os.path.join(root, "out", "demo"), "--apk", apk])
+        elif command == "bench" and "--arrival" in rest:
+            return bench_arrival(build, arrival_count(rest))
         elif command == "bench":
             cp = companion_classpath(build)
             build.kotlinc.close()
@@ -185,6 +189,37 @@ def run_tests(build: Build, rest: list[str]) -> int:
                   + (" (test JVM crashed)" if r.crashed else ""))
     print(f"{passed} passed, {failed} failed, {skipped} skipped")
     return 0 if failed == 0 else 1
+
+
+ARRIVAL_DEFAULT = 10_000
+
+
+def arrival_count(rest: list[str]) -> int:
+    """The message count of `bench --arrival [N]`: N, or ARRIVAL_DEFAULT without one."""
+    i = rest.index("--arrival")
+    given = rest[i + 1] if i + 1 < len(rest) else None
+    if given is None:
+        return ARRIVAL_DEFAULT
+    if not given.isdigit() or int(given) < 1:
+        raise BuildError(f"bench --arrival takes a message count (a whole number >= 1), not {given!r}")
+    return int(given)
+
+
+def bench_arrival(build: Build, count: int) -> int:
+    """
+    `./build bench --arrival [N]`: the app's arrival-to-touch benchmark (ArrivalToTouchBench, a Robolectric class the
+    test suite skips unless HAPTICON_BENCH_ARRIVAL names a message count). Its table shows as it runs and stays in
+    out/app/bench-arrival.txt.
+    """
+    from .android import AndroidApp
+    os.environ["HAPTICON_BENCH_ARRIVAL"] = str(count)
+    result = AndroidApp(build, app_module(build.project)).test(r"\.ArrivalToTouchBench\.")
+    build.kotlinc.close()
+    if result.failed or result.crashed or not result.passed:
+        print(f"the arrival bench did not run to the end ({result.passed} passed, {result.failed} failed, "
+              f"{result.skipped} skipped); see out/app/test.log", file=sys.stderr)
+        return 1
+    return 0
 
 
 def record_screenshots(build: Build, rest: list[str]) -> int:

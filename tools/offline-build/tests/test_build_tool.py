@@ -272,6 +272,22 @@ class ProjectReaderTest(unittest.TestCase):
         self.assertEqual("26", catalog.version("android.minSdk"))
 
 
+class ArrivalBenchArgsTest(unittest.TestCase):
+    def test_arrivalCount_withoutNumber_isTheDocumentedTenThousand(self):
+        from hapticon_build.__main__ import arrival_count
+        self.assertEqual(10_000, arrival_count(["--arrival"]))
+
+    def test_arrivalCount_givenNumber_isThatNumber(self):
+        from hapticon_build.__main__ import arrival_count
+        self.assertEqual(200, arrival_count(["--arrival", "200"]))
+
+    def test_arrivalCount_notAWholePositiveNumber_failsNamingIt(self):
+        from hapticon_build.__main__ import arrival_count
+        for bad in ("0", "-5", "lots"):
+            with self.assertRaisesRegex(BuildError, f"not '{bad}'"):
+                arrival_count(["--arrival", bad])
+
+
 class VersionTest(unittest.TestCase):
     def test_highest_ordersLikeGradle(self):
         self.assertEqual("1.10.0", highest(["1.9.0", "1.10.0", "1.10.0-rc01"]))

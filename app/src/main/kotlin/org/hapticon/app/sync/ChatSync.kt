@@ -408,11 +408,16 @@ class ChatSync(
         }
     }
 
-    private suspend fun onMessage(messenger: Messenger, message: ChatMessage) {
+    private suspend fun onMessage(messenger: Messenger, message: ChatMessage): Unit = coroutineScope {
         val first = repository.receive(message)
+        // Stored, so the receipt is true. It goes out now, but the broker's acknowledgement is awaited beside the
+        // notification and the icon, not before them (a round trip the user would feel: docs/performance.md, "Arrival
+        // to touch"); the scope still waits for it, so the message is acknowledged to the broker only after it.
         // A repeat gets its receipt again (the first may have been lost) but never vibrates again.
-        sendReceipt(messenger, message.sender, Receipt(message.id, messenger.user, ReceiptState.DELIVERED, clock.nowMillis()))
-        if (!first) return
+        launch(start = kotlinx.coroutines.CoroutineStart.UNDISPATCHED) {
+            sendReceipt(messenger, message.sender, Receipt(message.id, messenger.user, ReceiptState.DELIVERED, clock.nowMillis()))
+        }
+        if (!first) return@coroutineScope
         // A new message brings an archived conversation back to the list, as in Signal.
         if (message.sender in settings.preferences.value.archived) settings.update { it.copy(archived = it.archived - message.sender) }
         val open = message.sender in onScreen()
