@@ -74,11 +74,7 @@ def main(argv: list[str]) -> int:
             m = project.module(rest[0])
             print(os.pathsep.join(build.runtime_classpath(m, rest[1] if len(rest) > 1 else "main")))
         elif command == "demo":
-            from .android import AndroidApp
-            apk = AndroidApp(build, app_module(project)).assemble()
-            build.kotlinc.close()
-            cp = companion_classpath(build)
-            run_companion(build, cp, ["demo", "--out", os.path.join(root, "out", "demo"), "--apk", apk])
+            run_demo(build)
         elif command == "bench":
             cp = companion_classpath(build)
             build.kotlinc.close()
@@ -150,6 +146,37 @@ def run_companion(build: Build, classpath: list[str], args: list[str]) -> None:
     code = subprocess.call(cmd, cwd=build.root)
     if code != 0:
         raise BuildError(f"hapticon {' '.join(args)} exited {code}")
+
+
+def run_demo(build: Build) -> None:
+    """`./build demo`: the debug APK and the companion's demo. The demo needs no APK, so it runs as soon as the
+    companion is compiled, beside the rest of the APK's build (the app's own Kotlin, its dex, packaging), which
+    leaves a core idle most of the time; its output is printed when it ends, then the APK's line. The library dex
+    starts first of all, in the background ([AndroidApp.start_library_dex])."""
+    from .android import AndroidApp
+    app = AndroidApp(build, app_module(build.project))
+    app.start_library_dex()
+    cp = companion_classpath(build)
+    module = build.project.module(":companion")
+    log_path = os.path.join(build.out, "demo.log")
+    os.makedirs(build.out, exist_ok=True)
+    with open(log_path, "w") as log:
+        ui.info("the companion's demo runs beside the APK's build (out/demo.log)")
+        demo = subprocess.Popen([build.tools.java, "-Djava.awt.headless=true", "-cp", os.pathsep.join(cp),
+                                 module.main_class, "demo", "--out", os.path.join(build.root, "out", "demo")],
+                                cwd=build.root, stdout=log, stderr=subprocess.STDOUT)
+        try:
+            apk = app.assemble()
+            build.kotlinc.close()
+        finally:
+            if demo.poll() is None:
+                ui.info("waiting for the companion's demo")
+            code = demo.wait()
+    sys.stdout.write(open(log_path).read())
+    if code != 0:
+        raise BuildError(f"hapticon demo exited {code} (out/demo.log)")
+    size = os.path.getsize(apk)
+    print(f"APK: {apk} ({size} bytes, {size / 1e6:.1f} MB)")
 
 
 def run_tests(build: Build, rest: list[str]) -> int:
