@@ -6,6 +6,7 @@ import re
 import shutil
 import subprocess
 import sys
+import threading
 import time
 
 from . import ui
@@ -148,6 +149,10 @@ def run_companion(build: Build, classpath: list[str], args: list[str]) -> None:
         raise BuildError(f"hapticon {' '.join(args)} exited {code}")
 
 
+# Before the companion's demo has been timed on this machine, its estimate in seconds (docs/build.md).
+DEMO_S = 30.0
+
+
 def run_demo(build: Build) -> None:
     """`./build demo`: the debug APK and the companion's demo. The demo needs no APK, so it runs as soon as the
     companion is compiled, beside the rest of the APK's build (the app's own Kotlin, its dex, packaging), which
@@ -162,16 +167,25 @@ def run_demo(build: Build) -> None:
     os.makedirs(build.out, exist_ok=True)
     with open(log_path, "w") as log:
         ui.info("the companion's demo runs beside the APK's build (out/demo.log)")
+        started = time.monotonic()
         demo = subprocess.Popen([build.tools.java, "-Djava.awt.headless=true", "-cp", os.pathsep.join(cp),
                                  module.main_class, "demo", "--out", os.path.join(build.root, "out", "demo")],
                                 cwd=build.root, stdout=log, stderr=subprocess.STDOUT)
+        ended = []
+        waiter = threading.Thread(target=lambda: ended.append((demo.wait(), time.monotonic())), daemon=True)
+        waiter.start()
         try:
             apk = app.assemble()
             build.kotlinc.close()
         finally:
-            if demo.poll() is None:
-                ui.info("waiting for the companion's demo")
-            code = demo.wait()
+            if waiter.is_alive():
+                expected = build.stage_times.expected("companion demo", DEMO_S) - (time.monotonic() - started)
+                with ui.Stage("waiting for the companion's demo", max(expected, 1.0)):
+                    waiter.join()
+            waiter.join()
+    code, end = ended[0]
+    if code == 0:
+        build.stage_times.record("companion demo", end - started)
     sys.stdout.write(open(log_path).read())
     if code != 0:
         raise BuildError(f"hapticon demo exited {code} (out/demo.log)")

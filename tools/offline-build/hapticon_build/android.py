@@ -17,7 +17,7 @@ import zipfile
 from dataclasses import dataclass
 
 from .builder import Build, Outputs, TestResult
-from .dexing import D8Tool, dex_files, jar_dex_cache, dex_libraries, dex_modules, library_globals, module_jar, start_in_background
+from .dexing import D8Tool, dex_files, shared_dex_cache, dex_libraries, dex_modules, library_globals, module_jar, start_in_background
 from .errors import BuildError
 from .kotlin import fingerprint
 from .project import Module
@@ -34,6 +34,9 @@ JAVA_RESOURCE_EXCLUDES = [
     "*.class", "META-INF/versions/*/module-info.class",
 ]
 MERGED_JAVA_RESOURCES = ("META-INF/services/",)  # concatenated, as AGP's default merges do
+# Estimates before a stage has been timed on this machine (docs/build.md, 2026-11-28).
+RESOURCES_S = 15.0
+PACKAGE_S = 10.0
 
 
 def excluded(name: str) -> bool:
@@ -204,7 +207,8 @@ class AndroidApp:
         self.res_apk, self.r_jar = os.path.join(work, "resources.apk"), os.path.join(work, "R.jar")
         fresh = all(os.path.exists(f) for f in (stamp, self.r_jar, os.path.join(work, "aapt2-rules.pro")))
         if not (fresh and open(stamp).read() == fp):
-            with Stage(f"resources {self.m.path}"):
+            key = f"resources {self.m.path}"
+            with Stage(key, self.b.stage_times.expected(key, RESOURCES_S), self.b.stage_times):
                 self._link("main-runtime", work)
                 with open(stamp, "w") as f:
                     f.write(fp)
@@ -227,7 +231,7 @@ class AndroidApp:
             return self.apk
         with Stage("dex"):
             dexes = self._dex(project_entries, library_jars)
-        with Stage("package and sign"):
+        with Stage("package and sign", self.b.stage_times.expected("package and sign", PACKAGE_S), self.b.stage_times):
             unsigned = os.path.join(self.out, "intermediates", "unsigned.apk")
             shutil.copyfile(self.res_apk, unsigned)
             # Deflate level 9 (zlib's best; Python's default is 6): about 30 KB smaller on our dex.
@@ -435,7 +439,7 @@ class AndroidApp:
         helper = self.tools.helper_classes("LibraryDexer", [self.tools.r8])
         return D8Tool(java=self.tools.java, classpath=[helper, self.tools.r8], r8_jar=self.tools.r8,
                       android_jar=self.tools.android_jar, java_home=self.tools.java_home, min_sdk=self.min_sdk,
-                      cache=self.b.cache, threads=max(1, os.cpu_count() or 1), jar_cache=jar_dex_cache())
+                      cache=self.b.cache, threads=max(1, os.cpu_count() or 1), shared=shared_dex_cache())
 
     def start_library_dex(self) -> None:
         """Starts the debug APK's library dex in the background ([start_in_background]) when it is not cached: it

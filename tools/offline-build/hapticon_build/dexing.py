@@ -37,8 +37,8 @@ MODE = "debug"  # D8's compilation mode, part of each cache key: LibraryDexer co
 @dataclass(frozen=True)
 class D8Tool:
     """What LibraryDexer runs with: the JVM, its classpath (the compiled helper and R8's jar), the library jars D8
-    resolves against, minSdk, the project's build cache, how many jars to dex at a time, and where each library
-    jar's dex is kept ([jar_dex_cache]; by default inside `cache`)."""
+    resolves against, minSdk, the project's build cache, how many jars to dex at a time, and the dex cache the
+    clones of this machine share ([shared_dex_cache]; without one, the libraries' dex stays in `cache`)."""
     java: str
     classpath: list[str]
     r8_jar: str
@@ -47,21 +47,32 @@ class D8Tool:
     min_sdk: str
     cache: str
     threads: int
-    jar_cache: str = ""
+    shared: str = ""
 
     @property
     def jars_root(self) -> str:
-        return self.jar_cache or os.path.join(self.cache, "dex", "jars")
+        """Each library jar's dex, by [jar_key]."""
+        return os.path.join(self.shared, "jars") if self.shared else os.path.join(self.cache, "dex", "jars")
+
+    @property
+    def libraries_root(self) -> str:
+        """Each merged set of libraries, by the key of the set."""
+        return os.path.join(self.shared, "libraries") if self.shared else os.path.join(self.cache, "dex", "libraries")
 
 
-def jar_dex_cache(env=os.environ, home: str = os.path.expanduser("~")) -> str:
-    """Where the library jars' dex is kept, shared by every clone of the project on this machine, as Gradle keeps
-    AGP's dexed jars in its user home (`~/.gradle/caches/…/transforms`): `HAPTICON_DEX_CACHE`, else
-    `$XDG_CACHE_HOME/hapticon/dex-jars`, else `~/.cache/hapticon/dex-jars`. A jar's dex depends only on the jar's
-    content, the D8 version, minSdk and the mode ([jar_key]), so sharing it is safe."""
+def shared_dex_cache(env=os.environ, home: str = os.path.expanduser("~")) -> str:
+    """Where the libraries' dex is kept (each jar's, and each merged set's), shared by every clone of the project on
+    this machine, as Gradle keeps AGP's dexed jars in its user home (`~/.gradle/caches/…/transforms`):
+    `HAPTICON_DEX_CACHE`, else `$XDG_CACHE_HOME/hapticon/dex`, else `~/.cache/hapticon/dex`. A jar's dex depends only
+    on the jar's content, the D8 version, minSdk and the mode ([jar_key]), a merged set only on its jars' keys, so
+    sharing them is safe."""
     if env.get("HAPTICON_DEX_CACHE"):
         return env["HAPTICON_DEX_CACHE"]
-    return os.path.join(env.get("XDG_CACHE_HOME") or os.path.join(home, ".cache"), "hapticon", "dex-jars")
+    return os.path.join(env.get("XDG_CACHE_HOME") or os.path.join(home, ".cache"), "hapticon", "dex")
+
+
+# A merged set of libraries unused this long is deleted from the shared cache (several clones may use several sets).
+SHARED_SET_DAYS = 7
 
 
 def jar_key(jar: str, tool: D8Tool) -> str:
@@ -85,7 +96,7 @@ def _locate(jars: list[str], tool: D8Tool) -> tuple[list[str], str]:
     """The jars' cache keys and the directory of their merged dex."""
     keys = [jar_key(j, tool) for j in jars]
     set_key = hashlib.sha1("\n".join(keys + [MERGED_LAYOUT]).encode()).hexdigest()[:20]
-    return keys, os.path.join(tool.cache, "dex", "libraries", set_key)
+    return keys, os.path.join(tool.libraries_root, set_key)
 
 
 # Runs started by [start_in_background], by their merged directory: (thread, "print progress" flag, failure if any).
@@ -139,7 +150,8 @@ def dex_libraries(jars: list[str], tool: D8Tool) -> list[str]:
         if failure:
             raise failure[0]
     if os.path.isdir(merged):
-        info(f"library dex up to date ({len(jars)} jars, {os.path.relpath(merged, os.path.dirname(tool.cache))})")
+        os.utime(merged)  # in use: kept in the shared cache ([SHARED_SET_DAYS])
+        info(f"library dex up to date ({len(jars)} jars, {merged})")
         return dex_files(merged)
     loud = threading.Event()
     loud.set()
@@ -173,15 +185,22 @@ def _make(jars: list[str], tool: D8Tool, loud: threading.Event) -> None:
     if run.failed or run.merge_ms is None:
         shutil.rmtree(out, ignore_errors=True)
         raise BuildError(f"D8 of the library jars failed (exit {run.returncode})\n{run.tail}")
-    for old in os.listdir(merged_root):  # one app: only the current set of libraries is worth keeping merged
-        if old != os.path.basename(out):
-            shutil.rmtree(os.path.join(merged_root, old), ignore_errors=True)
+    for old in os.listdir(merged_root):
+        # One clone, one app: only the current set of libraries is worth keeping merged. In the shared cache other
+        # clones' sets stay until unused for [SHARED_SET_DAYS] days.
+        path = os.path.join(merged_root, old)
+        unused = time.time() - os.path.getmtime(path) > SHARED_SET_DAYS * 86400 if tool.shared else True
+        if old != os.path.basename(out) and ".tmp" not in old and unused:
+            shutil.rmtree(path, ignore_errors=True)
     # The jars' global synthetics, beside their merged dex: compiled once with the app's (AndroidApp._dex).
     os.makedirs(os.path.join(out, "globals"))
     for i, (_jar, directory) in enumerate(jobs):
         if os.path.exists(os.path.join(directory, "globals.zip")):
             shutil.copyfile(os.path.join(directory, "globals.zip"), os.path.join(out, "globals", f"{i}.zip"))
-    os.replace(out, merged)
+    try:
+        os.rename(out, merged)
+    except OSError:  # another clone merged the same set first
+        shutil.rmtree(out, ignore_errors=True)
     dexed_mb = sum(sizes.values())
     _write_timing(tool.cache, {
         **timing,

@@ -860,16 +860,54 @@ class ModuleDexTest(unittest.TestCase):
         self.assertEqual(set(), defined_twice([{"La/A;"}, {"La/C;"}]))
 
 
-class JarDexCacheTest(unittest.TestCase):
-    def test_jarDexCache_variableWins_thenXdgCacheHome_thenHomeCache(self):
-        from hapticon_build.dexing import jar_dex_cache
-        self.assertEqual("/d", jar_dex_cache({"HAPTICON_DEX_CACHE": "/d", "XDG_CACHE_HOME": "/x"}, "/h"))
-        self.assertEqual("/x/hapticon/dex-jars", jar_dex_cache({"XDG_CACHE_HOME": "/x"}, "/h"))
-        self.assertEqual("/h/.cache/hapticon/dex-jars", jar_dex_cache({}, "/h"))
+class SharedDexCacheTest(unittest.TestCase):
+    def test_sharedDexCache_variableWins_thenXdgCacheHome_thenHomeCache(self):
+        from hapticon_build.dexing import shared_dex_cache
+        self.assertEqual("/d", shared_dex_cache({"HAPTICON_DEX_CACHE": "/d", "XDG_CACHE_HOME": "/x"}, "/h"))
+        self.assertEqual("/x/hapticon/dex", shared_dex_cache({"XDG_CACHE_HOME": "/x"}, "/h"))
+        self.assertEqual("/h/.cache/hapticon/dex", shared_dex_cache({}, "/h"))
 
-    def test_d8Tool_noJarCache_keepsTheJarsDexInTheProjectCache(self):
+    def test_d8Tool_sharedCache_holdsJarsAndMergedSets_elseTheProjectCacheDoes(self):
         from hapticon_build.dexing import D8Tool
         tool = D8Tool("java", [], "r8.jar", "android.jar", "/jdk", "26", "/p/.build-cache", 2)
-        self.assertEqual("/p/.build-cache/dex/jars", tool.jars_root)
-        self.assertEqual("/u/dex-jars", D8Tool("java", [], "r8.jar", "android.jar", "/jdk", "26", "/p/.build-cache", 2,
-                                               jar_cache="/u/dex-jars").jars_root)
+        self.assertEqual(("/p/.build-cache/dex/jars", "/p/.build-cache/dex/libraries"),
+                         (tool.jars_root, tool.libraries_root))
+        shared = D8Tool("java", [], "r8.jar", "android.jar", "/jdk", "26", "/p/.build-cache", 2, shared="/u/dex")
+        self.assertEqual(("/u/dex/jars", "/u/dex/libraries"), (shared.jars_root, shared.libraries_root))
+
+
+class ProgressTest(unittest.TestCase):
+    def test_progress_beforeAndPastTheEstimate(self):
+        from hapticon_build.ui import progress
+        self.assertEqual("12 s, ~30 s left", progress(12.2, 42.0))
+        self.assertEqual("50 s, longer than the ~42 s expected", progress(50.0, 42.0))
+
+    def test_stageTimes_recordedDurationIsTheNextRunsEstimate(self):
+        from hapticon_build.ui import Stage, StageTimes
+        path = os.path.join(tempfile.mkdtemp(), "cache", "stage-times.json")
+        times = StageTimes(path)
+        self.assertEqual(63.0, times.expected("compile :core main", 63.0))  # never timed: the default
+        with mock.patch("time.monotonic", side_effect=[100.0, 141.5]), mock.patch("sys.stderr"):
+            with Stage("compile :core main (63 files)", None, times, "compile :core main"):
+                pass
+        self.assertEqual(41.5, StageTimes(path).expected("compile :core main", 63.0))
+
+    def test_stageTimes_failedStage_recordsNothing(self):
+        from hapticon_build.ui import Stage, StageTimes
+        times = StageTimes(os.path.join(tempfile.mkdtemp(), "stage-times.json"))
+        with self.assertRaises(BuildError), mock.patch("sys.stderr"):
+            with Stage("compile :core main", 10.0, times):
+                raise BuildError("e: a.kt:1:1 Unresolved reference")
+        self.assertEqual(10.0, times.expected("compile :core main", 10.0))
+
+    def test_stage_longStage_printsElapsedAndEstimateWhileRunning(self):
+        import io
+        from hapticon_build import ui
+        err = io.StringIO()
+        with mock.patch.object(ui, "HEARTBEAT_S", 0.05), mock.patch("sys.stderr", err):
+            with ui.Stage("compile :app main", 1000.0):
+                import time
+                time.sleep(0.3)
+        beats = [line for line in err.getvalue().splitlines() if "left" in line]
+        self.assertTrue(beats)
+        self.assertRegex(beats[0], r"^  compile :app main: 0 s, ~1000 s left$")
