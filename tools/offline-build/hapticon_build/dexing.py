@@ -1,7 +1,9 @@
-"""The debug APK's library dex, as AGP builds it for a debuggable variant: each library jar dexed alone by D8 in
-intermediate mode (AGP's dexing transform), cached by the jar's content so that a jar is dexed once ever, then the
-jars' dex merged by D8 once per set of libraries (AGP's mergeExtDex). tools/offline-build/java/LibraryDexer.java
-does both in one JVM and reports each jar as it ends, from which the build prints its progress and estimate.
+"""The debug APK's dex, as AGP builds it for a debuggable variant: each library jar dexed alone by D8 in
+intermediate mode (AGP's dexing transform), cached by the jar's content in a cache the clones of this machine share,
+so that a jar is dexed once per machine, then the jars' dex merged by D8 once per set of libraries (AGP's
+mergeExtDex); each of the app's own modules dexed alone and cached by content, so that an edit re-dexes only its
+module. tools/offline-build/java/LibraryDexer.java does the dexing (and the merge) in one JVM and reports each jar as
+it ends, from which the build prints its progress and estimate.
 """
 from __future__ import annotations
 
@@ -137,8 +139,8 @@ def finish_background() -> None:
 
 
 def dex_libraries(jars: list[str], tool: D8Tool) -> list[str]:
-    """The merged dex files of `jars` (classpath order). Each jar's dex is kept in `cache/dex/jars/<jar key>/` and
-    the merged set in `cache/dex/libraries/<set key>/`; only what is missing is made, and a run of the same set
+    """The merged dex files of `jars` (classpath order). Each jar's dex is kept in `<jars_root>/<jar key>/` and the
+    merged set in `<libraries_root>/<set key>/` ([D8Tool]); only what is missing is made, and a run of the same set
     started in the background is waited for."""
     _keys, merged = _locate(jars, tool)
     if merged in _background:
@@ -203,7 +205,6 @@ def _make(jars: list[str], tool: D8Tool, loud: threading.Event) -> None:
         shutil.rmtree(out, ignore_errors=True)
     dexed_mb = sum(sizes.values())
     _write_timing(tool.cache, {
-        **timing,
         "dex_ms_per_mb": run.dex_s * 1000 / dexed_mb if dexed_mb > 5 else timing["dex_ms_per_mb"],
         "merge_ms_per_mb": run.merge_ms / total_mb if total_mb > 0 else timing["merge_ms_per_mb"]})
     say(f"D8: {len(pending)} jars dexed in {run.dex_s:.1f} s, merged in {run.merge_ms / 1000:.1f} s")
@@ -230,7 +231,7 @@ def dex_modules(jars: list[str], tool: D8Tool) -> list[str]:
             raise BuildError(f"D8 of the app's modules failed (exit {run.returncode})\n{run.tail}")
         dexed_mb = sum(sizes.values())
         if dexed_mb > 1:
-            _write_timing(tool.cache, {**timing, "module_ms_per_mb": run.dex_s * 1000 / dexed_mb})
+            _write_timing(tool.cache, {"module_ms_per_mb": run.dex_s * 1000 / dexed_mb})
         info(f"D8 of the app's modules: {len(pending)} dexed in {run.dex_s:.1f} s")
     else:
         info(f"D8 of the app's modules: all {len(jars)} unchanged")
@@ -314,6 +315,9 @@ def _run_dexer(tool: D8Tool, jobs: list[tuple[str, str]], pending: dict[int, str
                     + (f"~{left:.0f} s left" if left >= 1 else f"longer than the ~{merge_estimate:.0f} s expected"))
     proc.wait()
     os.remove(jobs_file)
+    with open(os.path.join(tool.cache, "dex", f"{unit}.log"), "w") as f:  # D8's time per jar: "DONE <job> <ms>"
+        f.writelines(f"{line.rstrip()}\t{jobs[int(line.split()[1])][0]}\n" if line.startswith("DONE") else line
+                     for line in log_lines)
     # D8's own messages (e.g. "Type a.B is defined multiple times: …") and each failed jar by its path.
     shown = [re.sub(r"^FAIL (\d+)", lambda m: f"FAIL {jars[int(m.group(1))]}:", line.rstrip())
              for line in log_lines if not line.startswith(("DONE", "\tat "))]
@@ -365,6 +369,14 @@ def _read_timing(cache: str) -> dict[str, float]:
     return timing
 
 
-def _write_timing(cache: str, timing: dict[str, float]) -> None:
-    with open(_timing_path(cache), "w") as f:
-        json.dump(timing, f)
+def _write_timing(cache: str, rates: dict[str, float]) -> None:
+    """Updates `rates` in `cache/dex/timing.json`, keeping the others (the library and module dex may end together)."""
+    with _timing_lock:
+        timing = _read_timing(cache)
+        timing.update(rates)
+        with open(_timing_path(cache) + ".tmp", "w") as f:
+            json.dump(timing, f)
+        os.replace(_timing_path(cache) + ".tmp", _timing_path(cache))
+
+
+_timing_lock = threading.Lock()
