@@ -329,12 +329,14 @@ def module_jar(entry: str, jar: str) -> bool:
     """Writes the class files of `entry` (a class directory or a jar) into `jar`, stored, sorted and with fixed
     times, so that its content key ([jar_key]) changes only when a class does; False (and no jar) if it has none."""
     from .android import _iter_files
-    classes = sorted((n, read) for n, read in _iter_files(entry) if n.endswith(".class") and not n.startswith("META-INF/"))
+    # Read while iterating: a jar's entries can be read only while _iter_files holds it open.
+    classes = sorted((n, read()) for n, read in _iter_files(entry)
+                     if n.endswith(".class") and not n.startswith("META-INF/"))
     if not classes:
         return False
     with zipfile.ZipFile(jar + ".tmp", "w", zipfile.ZIP_STORED) as z:
-        for name, read in classes:
-            z.writestr(zipfile.ZipInfo(name, date_time=(1980, 1, 1, 0, 0, 0)), read())
+        for name, data in classes:
+            z.writestr(zipfile.ZipInfo(name, date_time=(1980, 1, 1, 0, 0, 0)), data)
     os.replace(jar + ".tmp", jar)
     return True
 

@@ -911,3 +911,21 @@ class ProgressTest(unittest.TestCase):
         beats = [line for line in err.getvalue().splitlines() if "left" in line]
         self.assertTrue(beats)
         self.assertRegex(beats[0], r"^  compile :app main: 0 s, ~1000 s left$")
+
+
+class ModuleJarTest(unittest.TestCase):
+    def test_moduleJar_fromAJar_copiesItsClassesSortedWithFixedTimes(self):
+        import zipfile
+        from hapticon_build.dexing import module_jar
+        tmp = tempfile.mkdtemp()
+        source, jar = os.path.join(tmp, "R.jar"), os.path.join(tmp, "out.jar")
+        with zipfile.ZipFile(source, "w") as z:
+            z.writestr("org/x/R$string.class", b"\xca\xfe\xba\xbe2")
+            z.writestr("org/x/R.class", b"\xca\xfe\xba\xbe1")
+            z.writestr("META-INF/MANIFEST.MF", "Manifest-Version: 1.0\n")
+        self.assertTrue(module_jar(source, jar))
+        with zipfile.ZipFile(jar) as z:
+            self.assertEqual(["org/x/R$string.class", "org/x/R.class"], z.namelist())
+            self.assertEqual(b"\xca\xfe\xba\xbe1", z.read("org/x/R.class"))
+            self.assertEqual({(1980, 1, 1, 0, 0, 0)}, {i.date_time for i in z.infolist()})
+            self.assertEqual({zipfile.ZIP_STORED}, {i.compress_type for i in z.infolist()})
