@@ -20,7 +20,7 @@ import zipfile
 from dataclasses import dataclass
 
 from .errors import BuildError
-from .ui import info
+from .ui import info, progress
 
 # Before any run on this machine has been timed: D8 wall time per MB of library jar, and of the merge, on two
 # idle cores, from the CPU time of the project's 101 jars (44.9 MB) measured under load on 2026-11-28: 364 s of
@@ -306,9 +306,12 @@ def _run_dexer(tool: D8Tool, jobs: list[tuple[str, str]], pending: dict[int, str
             last_print = now
             if merge_started is None:
                 done_mb = sum(sizes[i] for i in done)
-                rate = (now - started) / done_mb if done_mb > 1 else ms_per_mb / 1000
-                left = (sum(sizes.values()) - done_mb) * rate + merge_estimate
-                say(f"D8: {len(done)}/{len(pending)} {unit}, ~{left:.0f} s left")
+                if done_mb > 1:  # this run's own rate
+                    left = (sum(sizes.values()) - done_mb) * (now - started) / done_mb + merge_estimate
+                    say(f"D8: {len(done)}/{len(pending)} {unit}, ~{left:.0f} s left")
+                else:
+                    expected = sum(sizes.values()) * ms_per_mb / 1000 + merge_estimate
+                    say(f"D8: {len(done)}/{len(pending)} {unit}, {progress(now - started, expected)}")
             elif merge_out and merge_ms is None:
                 left = merge_estimate - (now - merge_started)
                 say(f"D8 merge of {len(jobs)} jars' dex: {now - merge_started:.0f} s, "
