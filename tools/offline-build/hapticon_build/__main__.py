@@ -6,6 +6,7 @@ import re
 import shutil
 import subprocess
 import sys
+import threading
 import time
 
 from . import ui
@@ -76,11 +77,7 @@ def main(argv: list[str]) -> int:
             m = project.module(rest[0])
             print(os.pathsep.join(build.runtime_classpath(m, rest[1] if len(rest) > 1 else "main")))
         elif command == "demo":
-            from .android import AndroidApp
-            apk = AndroidApp(build, app_module(project)).assemble()
-            build.kotlinc.close()
-            cp = companion_classpath(build)
-            run_companion(build, cp, ["demo", "--out", os.path.join(root, "out", "demo"), "--apk", apk])
+            run_demo(build)
         elif command == "bench" and "--arrival" in rest:
             return bench_arrival(build, arrival_count(rest))
         elif command == "bench":
@@ -154,6 +151,50 @@ def run_companion(build: Build, classpath: list[str], args: list[str]) -> None:
     code = subprocess.call(cmd, cwd=build.root)
     if code != 0:
         raise BuildError(f"hapticon {' '.join(args)} exited {code}")
+
+
+# Before the companion's demo has been timed on this machine, its estimate in seconds (docs/build.md).
+DEMO_S = 30.0
+
+
+def run_demo(build: Build) -> None:
+    """`./build demo`: the debug APK and the companion's demo. The demo needs no APK, so it runs as soon as the
+    companion is compiled, beside the rest of the APK's build (the app's own Kotlin, its dex, packaging), which
+    leaves a core idle most of the time; its output is printed when it ends, then the APK's line. The library dex
+    starts first of all, in the background ([AndroidApp.start_library_dex])."""
+    from .android import AndroidApp
+    app = AndroidApp(build, app_module(build.project))
+    app.start_library_dex()
+    cp = companion_classpath(build)
+    module = build.project.module(":companion")
+    log_path = os.path.join(build.out, "demo.log")
+    os.makedirs(build.out, exist_ok=True)
+    with open(log_path, "w") as log:
+        ui.info("the companion's demo runs beside the APK's build (out/demo.log)")
+        started = time.monotonic()
+        demo = subprocess.Popen([build.tools.java, "-Djava.awt.headless=true", "-cp", os.pathsep.join(cp),
+                                 module.main_class, "demo", "--out", os.path.join(build.root, "out", "demo")],
+                                cwd=build.root, stdout=log, stderr=subprocess.STDOUT)
+        ended = []
+        waiter = threading.Thread(target=lambda: ended.append((demo.wait(), time.monotonic())), daemon=True)
+        waiter.start()
+        try:
+            apk = app.assemble()
+            build.kotlinc.close()
+        finally:
+            if waiter.is_alive():
+                expected = build.stage_times.expected("companion demo", DEMO_S) - (time.monotonic() - started)
+                with ui.Stage("waiting for the companion's demo", max(expected, 1.0)):
+                    waiter.join()
+            waiter.join()
+    code, end = ended[0]
+    if code == 0:
+        build.stage_times.record("companion demo", end - started)
+    sys.stdout.write(open(log_path).read())
+    if code != 0:
+        raise BuildError(f"hapticon demo exited {code} (out/demo.log)")
+    size = os.path.getsize(apk)
+    print(f"APK: {apk} ({size} bytes, {size / 1e6:.1f} MB)")
 
 
 def run_tests(build: Build, rest: list[str]) -> int:

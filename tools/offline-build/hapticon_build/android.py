@@ -17,7 +17,7 @@ import zipfile
 from dataclasses import dataclass
 
 from .builder import Build, Outputs, TestResult
-from .dexing import D8Tool, dex_libraries, library_globals, start_in_background
+from .dexing import D8Tool, dex_files, shared_dex_cache, dex_libraries, dex_modules, library_globals, module_jar, start_in_background
 from .errors import BuildError
 from .kotlin import fingerprint
 from .project import Module
@@ -34,6 +34,9 @@ JAVA_RESOURCE_EXCLUDES = [
     "*.class", "META-INF/versions/*/module-info.class",
 ]
 MERGED_JAVA_RESOURCES = ("META-INF/services/",)  # concatenated, as AGP's default merges do
+# Estimates before a stage has been timed on this machine (docs/build.md, 2026-11-28).
+RESOURCES_S = 15.0
+PACKAGE_S = 10.0
 
 
 def excluded(name: str) -> bool:
@@ -204,7 +207,8 @@ class AndroidApp:
         self.res_apk, self.r_jar = os.path.join(work, "resources.apk"), os.path.join(work, "R.jar")
         fresh = all(os.path.exists(f) for f in (stamp, self.r_jar, os.path.join(work, "aapt2-rules.pro")))
         if not (fresh and open(stamp).read() == fp):
-            with Stage(f"resources {self.m.path}"):
+            key = f"resources {self.m.path}"
+            with Stage(key, self.b.stage_times.expected(key, RESOURCES_S), self.b.stage_times):
                 self._link("main-runtime", work)
                 with open(stamp, "w") as f:
                     f.write(fp)
@@ -227,7 +231,7 @@ class AndroidApp:
             return self.apk
         with Stage("dex"):
             dexes = self._dex(project_entries, library_jars)
-        with Stage("package and sign"):
+        with Stage("package and sign", self.b.stage_times.expected("package and sign", PACKAGE_S), self.b.stage_times):
             unsigned = os.path.join(self.out, "intermediates", "unsigned.apk")
             shutil.copyfile(self.res_apk, unsigned)
             # Deflate level 9 (zlib's best; Python's default is 6): about 30 KB smaller on our dex.
@@ -324,8 +328,8 @@ class AndroidApp:
             run([self.tools.java, "-Xmx3g", "-cp", self.tools.r8, "com.android.tools.r8.R8", *args, program,
                  *library_jars], "R8", log=os.path.join(work, "r8.log"))
 
-    def _d8(self, args: list[str], what: str) -> None:
-        run([self.tools.java, "-Xmx3g", "-cp", self.tools.r8, "com.android.tools.r8.D8", "--release",
+    def _d8(self, args: list[str], what: str, debug: bool = False) -> None:
+        run([self.tools.java, "-Xmx3g", "-cp", self.tools.r8, "com.android.tools.r8.D8", "--debug" if debug else "--release",
              "--min-api", self.min_sdk, "--lib", self.tools.android_jar, "--lib", self.tools.java_home, *args], what)
 
     def _dex_program(self, program: str, library_jars: list[str], library_dex: list[str], out: str) -> list[str]:
@@ -358,9 +362,9 @@ class AndroidApp:
 
     def _dex(self, project_entries: list[str], library_jars: list[str]) -> list[str]:
         """Dex files for the debug APK, as AGP makes them for a debuggable variant: the libraries dexed jar by jar
-        and merged ([dex_libraries]: a jar is dexed once ever, the merge once per set of libraries), then the
-        app's own classes by D8 on their own. minSdk ≥ 21 loads several dex files natively, so the two are never
-        merged. Nothing is shrunk (the release APK carries the size target): the debug build runs the libraries'
+        and merged ([dex_libraries]: a jar is dexed once ever, the merge once per set of libraries), and each of the
+        app's own modules (and its R classes) dexed alone, kept by content ([dex_modules]: an edit re-dexes only its
+        module). minSdk ≥ 21 loads several dex files natively, so none of these is merged with another. Nothing is shrunk (the release APK carries the size target): the debug build runs the libraries'
         code as published. Afterwards every class the app names must be defined in the dex or by the platform,
         no class may be defined twice, and the manifest components, Room's `_Impl` classes and
         [REFLECTIVE_CLASSES] must be there."""
@@ -373,29 +377,41 @@ class AndroidApp:
             with zipfile.ZipFile(self.r_jar) as r:
                 for n in r.namelist():
                     z.writestr(n, r.read(n))
-        library_dex = dex_libraries(library_jars, self._d8_tool())
-        program_out = os.path.join(work, "program")
-        shutil.rmtree(program_out, ignore_errors=True)
-        os.makedirs(program_out)
-        app_globals = os.path.join(work, "program-globals.zip")
-        if os.path.exists(app_globals):
-            os.remove(app_globals)
-        with Stage("D8 of the app's classes"):
-            self._d8([*_each("--classpath", library_jars), "--intermediate", "--globals-output", app_globals,
-                      "--output", program_out, program], "D8 of app classes")
-            # Global synthetics (e.g. the LambdaMethod annotation D8 adds to desugared lambdas) are made apart by
-            # each intermediate D8 run, the libraries' and the app's; compiled here once for all, as AGP's
-            # global-synthetics merge does.
-            globals_files = library_globals(library_dex) + ([app_globals] if os.path.exists(app_globals) else [])
-            globals_out = os.path.join(work, "globals")
-            shutil.rmtree(globals_out, ignore_errors=True)
-            os.makedirs(globals_out)
-            if globals_files:
-                self._d8([*_each("--globals", globals_files), "--output", globals_out], "D8 of the global synthetics")
-        program_dex = sorted((os.path.join(program_out, f) for f in os.listdir(program_out)), key=_dex_order)
+        # One jar per module (and the R classes), each dexed apart and cached by content: an edit re-dexes its module.
+        module_work = os.path.join(work, "modules")
+        shutil.rmtree(module_work, ignore_errors=True)
+        os.makedirs(module_work)
+        module_jars = []
+        for i, entry in enumerate(project_entries + [self.r_jar]):
+            rel = os.path.relpath(entry, self.b.out)
+            name = "R" if entry == self.r_jar else rel.split(os.sep)[0] if not rel.startswith("..") else "classes"
+            jar = os.path.join(module_work, f"{i:02d}-{name}.jar")
+            if module_jar(entry, jar):
+                module_jars.append(jar)
+        tool = self._d8_tool()
+        with Stage("D8 of the app's modules"):
+            module_dirs = dex_modules(module_jars, tool)
+        library_dex = dex_libraries(library_jars, tool)
+        program_dex = [d for directory in module_dirs for d in dex_files(directory)]
+        # Global synthetics (e.g. the LambdaMethod annotation D8 adds to desugared lambdas) are made apart by each
+        # intermediate D8 run, the libraries' and each module's; compiled here once for all, as AGP's
+        # global-synthetics merge does.
+        globals_files = library_globals(library_dex) + [os.path.join(d, "globals.zip") for d in module_dirs
+                                                        if os.path.exists(os.path.join(d, "globals.zip"))]
+        globals_out = os.path.join(work, "globals")
+        shutil.rmtree(globals_out, ignore_errors=True)
+        os.makedirs(globals_out)
+        if globals_files:
+            with Stage("D8 of the global synthetics"):
+                self._d8([*_each("--globals", globals_files), "--output", globals_out], "D8 of the global synthetics",
+                         debug=True)
         program_dex += sorted((os.path.join(globals_out, f) for f in os.listdir(globals_out)), key=_dex_order)
         library_types = set().union(*(dex_type_names(open(d, "rb").read()) for d in library_dex))
-        program_types = set().union(*(dex_type_names(open(d, "rb").read()) for d in program_dex))
+        per_dex = [dex_type_names(open(d, "rb").read()) for d in program_dex]
+        program_types = set().union(*per_dex)
+        twice = defined_twice(per_dex)  # ART would load the first dex's and silently ignore the other
+        if twice:
+            raise BuildError(f"classes defined by two of the app's modules: {sorted(twice)[:5]}")
         # Two dex sets must not define one class twice (e.g. a global synthetic made for both); within the
         # libraries the merge already fails on a class two jars define.
         clash = library_types & program_types
@@ -423,7 +439,7 @@ class AndroidApp:
         helper = self.tools.helper_classes("LibraryDexer", [self.tools.r8])
         return D8Tool(java=self.tools.java, classpath=[helper, self.tools.r8], r8_jar=self.tools.r8,
                       android_jar=self.tools.android_jar, java_home=self.tools.java_home, min_sdk=self.min_sdk,
-                      cache=self.b.cache, threads=max(1, os.cpu_count() or 1))
+                      cache=self.b.cache, threads=max(1, os.cpu_count() or 1), shared=shared_dex_cache())
 
     def start_library_dex(self) -> None:
         """Starts the debug APK's library dex in the background ([start_in_background]) when it is not cached: it
@@ -623,6 +639,15 @@ def _uleb128(data: bytes, pos: int) -> tuple[int, int]:
         if b < 0x80:
             return result, pos
         shift += 7
+
+
+def defined_twice(type_sets: list[set[str]]) -> set[str]:
+    """The types that more than one of `type_sets` (each dex file's [dex_type_names]) defines."""
+    seen, twice = set(), set()
+    for types in type_sets:
+        twice |= seen & types
+        seen |= types
+    return twice
 
 
 def dex_type_names(dex: bytes) -> set[str]:

@@ -14,12 +14,16 @@ from .maven import Repository
 from .project import Dependency, Module, Project
 from .resolver import Resolver
 from .toolchain import Toolchain
-from .ui import Stage, info
+from .ui import Stage, StageTimes, info
 
 MAIN_COMPILE = ("implementation", "api", "compileOnly")
 MAIN_RUNTIME = ("implementation", "api", "runtimeOnly")
 TEST_COMPILE = ("testImplementation", "testCompileOnly")
 TEST_RUNTIME = ("testImplementation", "testRuntimeOnly")
+# Before a module's compilation has been timed on this machine, its estimate: seconds of kotlinc per source file
+# (a first compilation in a fresh compiler process, JIT warm-up included), measured on 2026-11-28 (docs/build.md).
+COMPILE_S_PER_FILE = 1.0
+KSP_S = 30.0
 
 
 @dataclass
@@ -51,6 +55,7 @@ class Build:
         self.repo = repo or Repository()
         self.tools = Toolchain(project, self.repo, self.cache)
         self.kotlinc = KotlinCompiler(self.tools, os.path.join(self.out, "tmp"))
+        self.stage_times = StageTimes(os.path.join(self.cache, "stage-times.json"))
         self._classpaths: dict[tuple, list[str]] = {}
         self._outputs: dict[tuple, Outputs] = {}
 
@@ -194,7 +199,9 @@ class Build:
         if not sources:
             os.makedirs(out_dir, exist_ok=True)
         elif not (os.path.exists(stamp) and open(stamp).read() == fp):
-            with Stage(f"compile {module.path} {source_set} ({len(sources)} files)"):
+            key = f"compile {module.path} {source_set}"
+            with Stage(f"{key} ({len(sources)} files)", self.stage_times.expected(key, len(sources) * COMPILE_S_PER_FILE),
+                       self.stage_times, key):
                 shutil.rmtree(out_dir, ignore_errors=True)
                 os.makedirs(out_dir)
                 friends = [self._outputs[(module.path, "main")].classes] if source_set == "test" else []
@@ -222,7 +229,7 @@ class Build:
         fp = fingerprint(sources, classpath, processor_jars, str(sorted(module.ksp_args.items())))
         generated = os.path.join(base, "kotlin")
         if not (os.path.exists(stamp) and open(stamp).read() == fp):
-            with Stage(f"ksp {module.path}"):
+            with Stage(f"ksp {module.path}", self.stage_times.expected(f"ksp {module.path}", KSP_S), self.stage_times):
                 shutil.rmtree(base, ignore_errors=True)
                 os.makedirs(base)
                 source_roots = sorted({os.path.join(module.directory, "src", "main", "kotlin")})

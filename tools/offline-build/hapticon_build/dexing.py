@@ -1,7 +1,9 @@
-"""The debug APK's library dex, as AGP builds it for a debuggable variant: each library jar dexed alone by D8 in
-intermediate mode (AGP's dexing transform), cached by the jar's content so that a jar is dexed once ever, then the
-jars' dex merged by D8 once per set of libraries (AGP's mergeExtDex). tools/offline-build/java/LibraryDexer.java
-does both in one JVM and reports each jar as it ends, from which the build prints its progress and estimate.
+"""The debug APK's dex, as AGP builds it for a debuggable variant: each library jar dexed alone by D8 in
+intermediate mode (AGP's dexing transform), cached by the jar's content in a cache the clones of this machine share,
+so that a jar is dexed once per machine, then the jars' dex merged by D8 once per set of libraries (AGP's
+mergeExtDex); each of the app's own modules dexed alone and cached by content, so that an edit re-dexes only its
+module. tools/offline-build/java/LibraryDexer.java does the dexing (and the merge) in one JVM and reports each jar as
+it ends, from which the build prints its progress and estimate.
 """
 from __future__ import annotations
 
@@ -14,16 +16,20 @@ import shutil
 import subprocess
 import threading
 import time
+import zipfile
 from dataclasses import dataclass
 
 from .errors import BuildError
-from .ui import info
+from .ui import info, progress
 
 # Before any run on this machine has been timed: D8 wall time per MB of library jar, and of the merge, on two
 # idle cores, from the CPU time of the project's 101 jars (44.9 MB) measured under load on 2026-11-28: 364 s of
 # CPU for the jars (docs/build.md), the merge about a minute.
 DEFAULT_DEX_MS_PER_MB = 4000.0
 DEFAULT_MERGE_MS_PER_MB = 1000.0
+# The app's modules are dexed from uncompressed class files (module_jar), so per MB D8 has less to do than for a
+# compressed library jar.
+DEFAULT_MODULE_MS_PER_MB = 1500.0
 PROGRESS_EVERY_S = 5.0
 # What a merged set's directory holds, part of its key: intermediate dex (classes*.dex) and globals/*.zip.
 MERGED_LAYOUT = "intermediate+globals"
@@ -33,7 +39,8 @@ MODE = "debug"  # D8's compilation mode, part of each cache key: LibraryDexer co
 @dataclass(frozen=True)
 class D8Tool:
     """What LibraryDexer runs with: the JVM, its classpath (the compiled helper and R8's jar), the library jars D8
-    resolves against, minSdk, the build cache and how many jars to dex at a time."""
+    resolves against, minSdk, the project's build cache, how many jars to dex at a time, and the dex cache the
+    clones of this machine share ([shared_dex_cache]; without one, the libraries' dex stays in `cache`)."""
     java: str
     classpath: list[str]
     r8_jar: str
@@ -42,6 +49,32 @@ class D8Tool:
     min_sdk: str
     cache: str
     threads: int
+    shared: str = ""
+
+    @property
+    def jars_root(self) -> str:
+        """Each library jar's dex, by [jar_key]."""
+        return os.path.join(self.shared, "jars") if self.shared else os.path.join(self.cache, "dex", "jars")
+
+    @property
+    def libraries_root(self) -> str:
+        """Each merged set of libraries, by the key of the set."""
+        return os.path.join(self.shared, "libraries") if self.shared else os.path.join(self.cache, "dex", "libraries")
+
+
+def shared_dex_cache(env=os.environ, home: str = os.path.expanduser("~")) -> str:
+    """Where the libraries' dex is kept (each jar's, and each merged set's), shared by every clone of the project on
+    this machine, as Gradle keeps AGP's dexed jars in its user home (`~/.gradle/caches/…/transforms`):
+    `HAPTICON_DEX_CACHE`, else `$XDG_CACHE_HOME/hapticon/dex`, else `~/.cache/hapticon/dex`. A jar's dex depends only
+    on the jar's content, the D8 version, minSdk and the mode ([jar_key]), a merged set only on its jars' keys, so
+    sharing them is safe."""
+    if env.get("HAPTICON_DEX_CACHE"):
+        return env["HAPTICON_DEX_CACHE"]
+    return os.path.join(env.get("XDG_CACHE_HOME") or os.path.join(home, ".cache"), "hapticon", "dex")
+
+
+# A merged set of libraries unused this long is deleted from the shared cache (several clones may use several sets).
+SHARED_SET_DAYS = 7
 
 
 def jar_key(jar: str, tool: D8Tool) -> str:
@@ -65,7 +98,7 @@ def _locate(jars: list[str], tool: D8Tool) -> tuple[list[str], str]:
     """The jars' cache keys and the directory of their merged dex."""
     keys = [jar_key(j, tool) for j in jars]
     set_key = hashlib.sha1("\n".join(keys + [MERGED_LAYOUT]).encode()).hexdigest()[:20]
-    return keys, os.path.join(tool.cache, "dex", "libraries", set_key)
+    return keys, os.path.join(tool.libraries_root, set_key)
 
 
 # Runs started by [start_in_background], by their merged directory: (thread, "print progress" flag, failure if any).
@@ -106,8 +139,8 @@ def finish_background() -> None:
 
 
 def dex_libraries(jars: list[str], tool: D8Tool) -> list[str]:
-    """The merged dex files of `jars` (classpath order). Each jar's dex is kept in `cache/dex/jars/<jar key>/` and
-    the merged set in `cache/dex/libraries/<set key>/`; only what is missing is made, and a run of the same set
+    """The merged dex files of `jars` (classpath order). Each jar's dex is kept in `<jars_root>/<jar key>/` and the
+    merged set in `<libraries_root>/<set key>/` ([D8Tool]); only what is missing is made, and a run of the same set
     started in the background is waited for."""
     _keys, merged = _locate(jars, tool)
     if merged in _background:
@@ -119,7 +152,8 @@ def dex_libraries(jars: list[str], tool: D8Tool) -> list[str]:
         if failure:
             raise failure[0]
     if os.path.isdir(merged):
-        info(f"library dex up to date ({len(jars)} jars, {os.path.relpath(merged, os.path.dirname(tool.cache))})")
+        os.utime(merged)  # in use: kept in the shared cache ([SHARED_SET_DAYS])
+        info(f"library dex up to date ({len(jars)} jars, {merged})")
         return dex_files(merged)
     loud = threading.Event()
     loud.set()
@@ -130,23 +164,12 @@ def dex_libraries(jars: list[str], tool: D8Tool) -> list[str]:
 def _make(jars: list[str], tool: D8Tool, loud: threading.Event) -> None:
     """Dexes the jars not cached yet and merges the set; prints progress while `loud` is set."""
     keys, merged = _locate(jars, tool)
-    jar_root = os.path.join(tool.cache, "dex", "jars")
+    jar_root = tool.jars_root
     merged_root = os.path.dirname(merged)
     os.makedirs(jar_root, exist_ok=True)
     os.makedirs(merged_root, exist_ok=True)
     tag = f".tmp{os.getpid()}"
-    jobs, pending = [], {}
-    for i, (jar, key) in enumerate(zip(jars, keys)):
-        final = os.path.join(jar_root, key)
-        if os.path.isdir(final):
-            jobs.append(("-", final))
-        else:
-            shutil.rmtree(final + tag, ignore_errors=True)
-            jobs.append((jar, final + tag))
-            pending[i] = final
-    jobs_file = os.path.join(merged_root, "jobs" + tag)
-    with open(jobs_file, "w") as f:
-        f.writelines(f"{jar}\t{out}\n" for jar, out in jobs)
+    jobs, pending = _jobs(jars, [os.path.join(jar_root, key) for key in keys])
     timing = _read_timing(tool.cache)
     sizes = {i: os.path.getsize(jars[i]) / 1e6 for i in pending}
     total_mb = sum(os.path.getsize(j) for j in jars) / 1e6
@@ -156,15 +179,109 @@ def _make(jars: list[str], tool: D8Tool, loud: threading.Event) -> None:
         if loud.is_set():
             info(message)
     say(f"D8: {len(pending)} of {len(jars)} library jars to dex ({sum(sizes.values()):.1f} MB, "
-         f"{len(jars) - len(pending)} cached), then their merge; "
-         f"~{sum(sizes.values()) * timing['dex_ms_per_mb'] / 1000 + merge_estimate:.0f} s")
+        f"{len(jars) - len(pending)} cached), then their merge; "
+        f"~{sum(sizes.values()) * timing['dex_ms_per_mb'] / 1000 + merge_estimate:.0f} s")
     out = merged + tag
     shutil.rmtree(out, ignore_errors=True)
+    run = _run_dexer(tool, jobs, pending, sizes, out, say, "jars", timing["dex_ms_per_mb"], merge_estimate, jars)
+    if run.failed or run.merge_ms is None:
+        shutil.rmtree(out, ignore_errors=True)
+        raise BuildError(f"D8 of the library jars failed (exit {run.returncode})\n{run.tail}")
+    for old in os.listdir(merged_root):
+        # One clone, one app: only the current set of libraries is worth keeping merged. In the shared cache other
+        # clones' sets stay until unused for [SHARED_SET_DAYS] days.
+        path = os.path.join(merged_root, old)
+        unused = time.time() - os.path.getmtime(path) > SHARED_SET_DAYS * 86400 if tool.shared else True
+        if old != os.path.basename(out) and ".tmp" not in old and unused:
+            shutil.rmtree(path, ignore_errors=True)
+    # The jars' global synthetics, beside their merged dex: compiled once with the app's (AndroidApp._dex).
+    os.makedirs(os.path.join(out, "globals"))
+    for i, (_jar, directory) in enumerate(jobs):
+        if os.path.exists(os.path.join(directory, "globals.zip")):
+            shutil.copyfile(os.path.join(directory, "globals.zip"), os.path.join(out, "globals", f"{i}.zip"))
+    try:
+        os.rename(out, merged)
+    except OSError:  # another clone merged the same set first
+        shutil.rmtree(out, ignore_errors=True)
+    dexed_mb = sum(sizes.values())
+    _write_timing(tool.cache, {
+        "dex_ms_per_mb": run.dex_s * 1000 / dexed_mb if dexed_mb > 5 else timing["dex_ms_per_mb"],
+        "merge_ms_per_mb": run.merge_ms / total_mb if total_mb > 0 else timing["merge_ms_per_mb"]})
+    say(f"D8: {len(pending)} jars dexed in {run.dex_s:.1f} s, merged in {run.merge_ms / 1000:.1f} s")
+
+
+def dex_modules(jars: list[str], tool: D8Tool) -> list[str]:
+    """The dex directories of the app's own modules, one jar each ([module_jar]), in order: each dexed alone by D8
+    (intermediate, debug mode, global synthetics apart), as AGP dexes a debuggable variant's project classes, and
+    kept by content in `cache/dex/modules/<jar key>/`, so that a change re-dexes only the module it touches. Not
+    merged: minSdk ≥ 21 loads every classesN.dex of the APK natively. Only the current modules' dex is kept."""
+    root = os.path.join(tool.cache, "dex", "modules")
+    os.makedirs(root, exist_ok=True)
+    keys = [jar_key(j, tool) for j in jars]
+    finals = [os.path.join(root, k) for k in keys]
+    jobs, pending = _jobs(jars, finals)
+    names = ", ".join(os.path.basename(jars[i]).removesuffix(".jar") for i in pending)
+    if pending:
+        timing = _read_timing(tool.cache)
+        sizes = {i: os.path.getsize(jars[i]) / 1e6 for i in pending}
+        info(f"D8 of the app's modules: {len(pending)} of {len(jars)} to dex ({names}; {sum(sizes.values()):.1f} MB, "
+             f"{len(jars) - len(pending)} unchanged); ~{sum(sizes.values()) * timing['module_ms_per_mb'] / 1000:.0f} s")
+        run = _run_dexer(tool, jobs, pending, sizes, None, info, "modules", timing["module_ms_per_mb"], 0.0, jars)
+        if run.failed:
+            raise BuildError(f"D8 of the app's modules failed (exit {run.returncode})\n{run.tail}")
+        dexed_mb = sum(sizes.values())
+        if dexed_mb > 1:
+            _write_timing(tool.cache, {"module_ms_per_mb": run.dex_s * 1000 / dexed_mb})
+        info(f"D8 of the app's modules: {len(pending)} dexed in {run.dex_s:.1f} s")
+    else:
+        info(f"D8 of the app's modules: all {len(jars)} unchanged")
+    for old in os.listdir(root):  # an edited module's old dex is never used again
+        if old not in keys and ".tmp" not in old:
+            shutil.rmtree(os.path.join(root, old), ignore_errors=True)
+    return finals
+
+
+def _jobs(jars: list[str], finals: list[str]) -> tuple[list[tuple[str, str]], dict[int, str]]:
+    """LibraryDexer's jobs, `(jar, its dex directory)` or `("-", directory)` for one dexed already, and the
+    directories still to make by job index."""
+    jobs, pending = [], {}
+    for i, (jar, final) in enumerate(zip(jars, finals)):
+        if os.path.isdir(final):
+            jobs.append(("-", final))
+        else:
+            jobs.append((jar, final))
+            pending[i] = final
+    return jobs, pending
+
+
+@dataclass
+class _DexerRun:
+    returncode: int
+    done: set
+    merge_ms: int | None
+    dex_s: float
+    tail: str
+    expected: int
+
+    @property
+    def failed(self) -> bool:
+        return self.returncode != 0 or len(self.done) < self.expected
+
+
+def _run_dexer(tool: D8Tool, jobs: list[tuple[str, str]], pending: dict[int, str], sizes: dict[int, float],
+               merge_out: str | None, say, unit: str, ms_per_mb: float, merge_estimate: float,
+               jars: list[str]) -> _DexerRun:
+    """Runs LibraryDexer on `jobs` (`(jar, out dir)`, `-` for one cached), prints progress through `say` every
+    [PROGRESS_EVERY_S] with an estimate (this run's own rate once a few MB are done, else `ms_per_mb`). LibraryDexer
+    puts each jar's dex in its place as soon as it is done, so a failure or a stopped build keeps what was done."""
+    jobs_file = os.path.join(tool.cache, "dex", f"jobs.tmp{os.getpid()}.{threading.get_ident()}")
+    with open(jobs_file, "w") as f:
+        f.writelines(f"{jar}\t{out}\n" for jar, out in jobs)
     cmd = [tool.java, "-Xmx2g", "-XX:+UseParallelGC", "-cp", os.pathsep.join(tool.classpath), "LibraryDexer",
-           tool.min_sdk, tool.android_jar, tool.java_home, str(tool.threads), jobs_file, out]
+           tool.min_sdk, tool.android_jar, tool.java_home, str(tool.threads), jobs_file, merge_out or "-"]
     log_lines, done, merge_ms = [], set(), None
     started = time.monotonic()
-    merge_started = None
+    merge_started = None if pending else started
     last_print = started
     proc = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
     lines: queue.Queue = queue.Queue()
@@ -185,49 +302,46 @@ def _make(jars: list[str], tool: D8Tool, loud: threading.Event) -> None:
                     merge_started = now
             elif m := re.match(r"MERGED (\d+)", line):
                 merge_ms = int(m.group(1))
-        if not pending and merge_started is None:
-            merge_started = started
         if now - last_print >= PROGRESS_EVERY_S:
             last_print = now
             if merge_started is None:
                 done_mb = sum(sizes[i] for i in done)
-                rate = (now - started) / done_mb if done_mb > 1 else timing["dex_ms_per_mb"] / 1000
-                left = (sum(sizes.values()) - done_mb) * rate + merge_estimate
-                say(f"D8: {len(done)}/{len(pending)} jars, ~{left:.0f} s left")
-            elif merge_ms is None:
+                if done_mb > 1:  # this run's own rate
+                    left = (sum(sizes.values()) - done_mb) * (now - started) / done_mb + merge_estimate
+                    say(f"D8: {len(done)}/{len(pending)} {unit}, ~{left:.0f} s left")
+                else:
+                    expected = sum(sizes.values()) * ms_per_mb / 1000 + merge_estimate
+                    say(f"D8: {len(done)}/{len(pending)} {unit}, {progress(now - started, expected)}")
+            elif merge_out and merge_ms is None:
                 left = merge_estimate - (now - merge_started)
-                say(f"D8 merge of {len(jars)} jars' dex: {now - merge_started:.0f} s, "
+                say(f"D8 merge of {len(jobs)} jars' dex: {now - merge_started:.0f} s, "
                     + (f"~{left:.0f} s left" if left >= 1 else f"longer than the ~{merge_estimate:.0f} s expected"))
     proc.wait()
     os.remove(jobs_file)
-    for i in done:  # a jar dexed is kept even if another failed or the merge did
-        shutil.rmtree(pending[i], ignore_errors=True)
-        os.replace(pending[i] + tag, pending[i])
-    for i in set(pending) - done:
-        shutil.rmtree(pending[i] + tag, ignore_errors=True)
-    if proc.returncode != 0 or merge_ms is None:
-        shutil.rmtree(out, ignore_errors=True)
-        # D8's own messages (e.g. "Type a.B is defined multiple times: …") and each failed jar by its path.
-        lines = [re.sub(r"^FAIL (\d+)", lambda m: f"FAIL {jars[int(m.group(1))]}:", l.rstrip())
-                 for l in log_lines if not l.startswith(("DONE", "\tat "))]
-        tail = "\n".join(lines[-30:])
-        raise BuildError(f"D8 of the library jars failed (exit {proc.returncode})\n{tail}")
-    for old in os.listdir(merged_root):  # one app: only the current set of libraries is worth keeping merged
-        if not old.startswith(("jobs", "timing")) and old != os.path.basename(out):
-            shutil.rmtree(os.path.join(merged_root, old), ignore_errors=True)
-    # The jars' global synthetics, beside their merged dex: compiled once with the app's (AndroidApp._dex).
-    os.makedirs(os.path.join(out, "globals"))
-    for i, (_jar, directory) in enumerate(jobs):
-        directory = pending.get(i, directory)
-        if os.path.exists(os.path.join(directory, "globals.zip")):
-            shutil.copyfile(os.path.join(directory, "globals.zip"), os.path.join(out, "globals", f"{i}.zip"))
-    os.replace(out, merged)
-    dex_s = (merge_started or time.monotonic()) - started
-    dexed_mb = sum(sizes.values())
-    _write_timing(tool.cache, {
-        "dex_ms_per_mb": dex_s * 1000 / dexed_mb if dexed_mb > 5 else timing["dex_ms_per_mb"],
-        "merge_ms_per_mb": merge_ms / total_mb if total_mb > 0 else timing["merge_ms_per_mb"]})
-    say(f"D8: {len(pending)} jars dexed in {dex_s:.1f} s, merged in {merge_ms / 1000:.1f} s")
+    with open(os.path.join(tool.cache, "dex", f"{unit}.log"), "w") as f:  # D8's time per jar: "DONE <job> <ms>"
+        f.writelines(f"{line.rstrip()}\t{jobs[int(line.split()[1])][0]}\n" if line.startswith("DONE") else line
+                     for line in log_lines)
+    # D8's own messages (e.g. "Type a.B is defined multiple times: …") and each failed jar by its path.
+    shown = [re.sub(r"^FAIL (\d+)", lambda m: f"FAIL {jars[int(m.group(1))]}:", line.rstrip())
+             for line in log_lines if not line.startswith(("DONE", "\tat "))]
+    return _DexerRun(proc.returncode, done, merge_ms, (merge_started or time.monotonic()) - started,
+                     "\n".join(shown[-30:]), len(pending))
+
+
+def module_jar(entry: str, jar: str) -> bool:
+    """Writes the class files of `entry` (a class directory or a jar) into `jar`, stored, sorted and with fixed
+    times, so that its content key ([jar_key]) changes only when a class does; False (and no jar) if it has none."""
+    from .android import _iter_files
+    # Read while iterating: a jar's entries can be read only while _iter_files holds it open.
+    classes = sorted((n, read()) for n, read in _iter_files(entry)
+                     if n.endswith(".class") and not n.startswith("META-INF/"))
+    if not classes:
+        return False
+    with zipfile.ZipFile(jar + ".tmp", "w", zipfile.ZIP_STORED) as z:
+        for name, data in classes:
+            z.writestr(zipfile.ZipInfo(name, date_time=(1980, 1, 1, 0, 0, 0)), data)
+    os.replace(jar + ".tmp", jar)
+    return True
 
 
 def library_globals(dexes: list[str]) -> list[str]:
@@ -250,7 +364,8 @@ def _timing_path(cache: str) -> str:
 
 def _read_timing(cache: str) -> dict[str, float]:
     """The last run's rates on this machine (`cache/dex/timing.json`), else [DEFAULT_DEX_MS_PER_MB]'s."""
-    timing = {"dex_ms_per_mb": DEFAULT_DEX_MS_PER_MB, "merge_ms_per_mb": DEFAULT_MERGE_MS_PER_MB}
+    timing = {"dex_ms_per_mb": DEFAULT_DEX_MS_PER_MB, "merge_ms_per_mb": DEFAULT_MERGE_MS_PER_MB,
+              "module_ms_per_mb": DEFAULT_MODULE_MS_PER_MB}
     try:
         with open(_timing_path(cache)) as f:
             timing.update({k: float(v) for k, v in json.load(f).items() if k in timing})
@@ -259,6 +374,14 @@ def _read_timing(cache: str) -> dict[str, float]:
     return timing
 
 
-def _write_timing(cache: str, timing: dict[str, float]) -> None:
-    with open(_timing_path(cache), "w") as f:
-        json.dump(timing, f)
+def _write_timing(cache: str, rates: dict[str, float]) -> None:
+    """Updates `rates` in `cache/dex/timing.json`, keeping the others (the library and module dex may end together)."""
+    with _timing_lock:
+        timing = _read_timing(cache)
+        timing.update(rates)
+        with open(_timing_path(cache) + ".tmp", "w") as f:
+            json.dump(timing, f)
+        os.replace(_timing_path(cache) + ".tmp", _timing_path(cache))
+
+
+_timing_lock = threading.Lock()

@@ -7,10 +7,15 @@ import com.android.tools.r8.DiagnosticsHandler;
 import com.android.tools.r8.JdkClassFileProvider;
 import com.android.tools.r8.OutputMode;
 import com.android.tools.r8.ProgramResource;
+import java.io.IOException;
 import java.nio.charset.StandardCharsets;
+import java.nio.file.DirectoryNotEmptyException;
+import java.nio.file.FileAlreadyExistsException;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.nio.file.StandardCopyOption;
 import java.util.ArrayList;
+import java.util.Comparator;
 import java.util.List;
 import java.util.Set;
 import java.util.concurrent.ExecutorService;
@@ -28,11 +33,14 @@ import java.util.stream.Stream;
  * usage: LibraryDexer MIN_API ANDROID_JAR JAVA_HOME THREADS JOBS_FILE MERGE_OUT
  *
  * JOBS_FILE holds `jar<TAB>dir` lines, in classpath order; a jar of `-` means `dir` already holds that jar's dex.
- * Each jar is dexed into its directory (classes*.dex, and globals.zip when it needs global synthetics); "DONE i ms"
- * or "FAIL i message" is printed per job i (0-based line number) as it ends. Then every directory's dex files
+ * Each jar is dexed into a directory of its own beside `dir`, renamed to `dir` when D8 is done with it (classes*.dex,
+ * and globals.zip when it needs global synthetics; a jar dexed is kept even if the build is stopped, and a `dir`
+ * another process made first is left as it is: the same key, the same dex); "DONE i ms" or "FAIL i message" is
+ * printed per job i (0-based line number) as it ends. Then every directory's dex files
  * are merged by D8, still in intermediate mode, into MERGE_OUT ("MERGED ms"); a class defined by two jars fails the
- * merge. The global synthetics stay in each jar's globals.zip, for the build to compile once with the app's. Exit 1
- * on any failure. Debug mode throughout, as AGP's debuggable variants.
+ * merge. A MERGE_OUT of `-` merges nothing (the app's own modules: each module's dex goes into the APK as it is, so
+ * that a change re-dexes only that module). The global synthetics stay in each jar's globals.zip, for the build to
+ * compile once with the app's. Exit 1 on any failure. Debug mode throughout, as AGP's debuggable variants.
  */
 public final class LibraryDexer {
     public static void main(String[] args) throws Exception {
@@ -44,7 +52,7 @@ public final class LibraryDexer {
         for (String line : Files.readAllLines(Path.of(args[4]), StandardCharsets.UTF_8)) {
             if (!line.isBlank()) jobs.add(line.split("\t", 2));
         }
-        Path mergeOut = Path.of(args[5]);
+        Path mergeOut = args[5].equals("-") ? null : Path.of(args[5]);
         // D8 runs its own work (per class) on `inner`; the jars go `threads` at a time on `outer`, whose threads
         // only wait for D8, so the cores stay busy on the tail of a large jar as on many small ones.
         ExecutorService inner = Executors.newFixedThreadPool(threads);
@@ -59,7 +67,7 @@ public final class LibraryDexer {
         boolean ok = true;
         for (Future<Boolean> r : results) ok &= r.get();
         outer.shutdown();
-        if (ok) ok = merge(jobs, mergeOut, minApi, inner);
+        if (ok && mergeOut != null) ok = merge(jobs, mergeOut, minApi, inner);
         inner.shutdown();
         System.exit(ok ? 0 : 1);
     }
@@ -67,8 +75,10 @@ public final class LibraryDexer {
     private static boolean dex(int index, String[] job, int minApi, ClassFileResourceProvider androidJar,
                                ClassFileResourceProvider jdk, ExecutorService executor) {
         long start = System.nanoTime();
+        Path done = Path.of(job[1]);
+        Path out = done.resolveSibling(done.getFileName() + ".tmp" + ProcessHandle.current().pid());
         try {
-            Path out = Path.of(job[1]);
+            deleteTree(out);
             Files.createDirectories(out);
             D8Command command = D8Command.builder()
                     .addProgramFiles(Path.of(job[0]))
@@ -81,11 +91,28 @@ public final class LibraryDexer {
                     .setOutput(out, OutputMode.DexIndexed)
                     .build();
             D8.run(command, executor);
+            try {
+                Files.move(out, done, StandardCopyOption.ATOMIC_MOVE);
+            } catch (FileAlreadyExistsException | DirectoryNotEmptyException e) {
+                deleteTree(out);
+            }
             report("DONE " + index + " " + (System.nanoTime() - start) / 1_000_000);
             return true;
         } catch (Throwable t) {
+            try {
+                deleteTree(out);
+            } catch (IOException ignored) {
+                // reported below; a leftover directory is replaced by the next run
+            }
             report("FAIL " + index + " " + String.valueOf(t).replace('\n', ' '));
             return false;
+        }
+    }
+
+    private static void deleteTree(Path dir) throws IOException {
+        if (!Files.exists(dir)) return;
+        try (Stream<Path> paths = Files.walk(dir)) {
+            for (Path p : paths.sorted(Comparator.reverseOrder()).toList()) Files.delete(p);
         }
     }
 

@@ -774,3 +774,174 @@ class LibraryDexTest(unittest.TestCase):
         self.assertIn("lib.b.Counter", str(e.exception))
         merged = os.listdir(os.path.join(self.cache, "dex", "libraries"))
         self.assertFalse([m for m in merged if ".tmp" in m])  # no half-merged set left behind
+
+
+class ModuleDexTest(unittest.TestCase):
+    """The app's own modules' dex (dexing.dex_modules, module_jar): each module dexed alone, kept by content, only the
+    changed module dexed again. D8 takes seconds per run, so the class dexes two modules once and the tests build on
+    that cache."""
+
+    @classmethod
+    def setUpClass(cls):
+        from hapticon_build.builder import Build
+        from hapticon_build.dexing import D8Tool, dex_modules, module_jar
+        tools = Build(load_project(REPO)).tools
+        cls.tmp = tempfile.mkdtemp()
+        cls.classes = {}
+        for module, source in (("core", "package m.core; public class Core { public Runnable r() { return () -> {}; } }"),
+                               ("ui", "package m.ui; public class Screen { public int n() { return 1; } }")):
+            out = os.path.join(cls.tmp, module)
+            javac(out, {f"m/{module}/{'Core' if module == 'core' else 'Screen'}.java": source})
+            cls.classes[module] = out
+        helper = tools.helper_classes("LibraryDexer", [tools.r8])
+        cls.cache = os.path.join(cls.tmp, "cache")
+        cls.tool = D8Tool(java=tools.java, classpath=[helper, tools.r8], r8_jar=tools.r8, android_jar=tools.android_jar,
+                          java_home=tools.java_home, min_sdk="26", cache=cls.cache, threads=2)
+        cls.jars = [os.path.join(cls.tmp, f"{m}.jar") for m in ("core", "ui")]
+        for m, jar in zip(("core", "ui"), cls.jars):
+            module_jar(cls.classes[m], jar)
+        cls.first = dex_modules(cls.jars, cls.tool)
+        # read now: a later test replaces ui's dex
+        cls.first_defined = [cls.defined(d) for d in cls.first]
+        cls.first_globals = [cls.global_synthetics(d) for d in cls.first]
+        with mock.patch("subprocess.Popen", side_effect=AssertionError("D8 ran again")):
+            cls.again = dex_modules(cls.jars, cls.tool)
+
+    @staticmethod
+    def global_synthetics(directory):
+        import zipfile
+        path = os.path.join(directory, "globals.zip")
+        return zipfile.ZipFile(path).namelist() if os.path.exists(path) else []
+
+    @staticmethod
+    def defined(directory):
+        from hapticon_build.android import dex_type_names
+        from hapticon_build.dexing import dex_files
+        return set().union(*(dex_type_names(read(d, "rb")) for d in dex_files(directory)))
+
+    def test_dexModules_twoModules_eachDexDefinesItsOwnClassesOnly(self):
+        core, ui = self.first_defined
+        self.assertIn("Lm/core/Core;", core)
+        self.assertTrue(any(d.startswith("Lm/core/Core$") for d in core))  # its lambda, desugared
+        self.assertNotIn("Lm/ui/Screen;", core)
+        self.assertEqual({"Lm/ui/Screen;"}, ui)
+        # core's lambda needs D8's global LambdaMethod annotation: kept apart, to be compiled once with the others'.
+        self.assertEqual([["classes.globals"], []], self.first_globals)
+
+    def test_dexModules_sameClassesAgain_runsNoD8(self):
+        self.assertEqual(self.first, self.again)  # setUpClass made D8 fail had it run
+
+    def test_moduleJar_sameClassesWrittenLater_sameKey(self):
+        from hapticon_build.dexing import jar_key, module_jar
+        later = os.path.join(tempfile.mkdtemp(), "ui.jar")
+        for root, _dirs, files in os.walk(self.classes["ui"]):
+            for f in files:
+                os.utime(os.path.join(root, f), (1e9, 1e9))  # recompiled to the same bytes: another time stamp
+        self.assertTrue(module_jar(self.classes["ui"], later))
+        self.assertEqual(jar_key(self.jars[1], self.tool), jar_key(later, self.tool))
+
+    def test_moduleJar_noClasses_writesNothing(self):
+        from hapticon_build.dexing import module_jar
+        resources = tempfile.mkdtemp()
+        write(resources, "icons/knock.json", "{}")
+        jar = os.path.join(resources, "r.jar")
+        self.assertFalse(module_jar(resources, jar))
+        self.assertFalse(os.path.exists(jar))
+
+    def test_dexModules_oneModuleChanged_dexesOnlyItAndDropsItsOldDex(self):
+        from hapticon_build.dexing import dex_modules, module_jar
+        changed = os.path.join(tempfile.mkdtemp(), "ui")
+        javac(changed, {"m/ui/Screen.java": "package m.ui; public class Screen { public int n() { return 2; } }"})
+        jar = os.path.join(os.path.dirname(changed), "ui.jar")
+        module_jar(changed, jar)
+        jobs, real_popen = [], subprocess.Popen
+
+        def popen(cmd, **kwargs):
+            with open(cmd[-2]) as f:
+                jobs.extend(line.split("\t")[0] for line in f.read().splitlines())
+            self.assertEqual("-", cmd[-1])  # nothing merged
+            return real_popen(cmd, **kwargs)
+        with mock.patch("subprocess.Popen", side_effect=popen):
+            dirs = dex_modules([self.jars[0], jar], self.tool)
+        self.assertEqual(["-", jar], jobs)
+        self.assertEqual(self.first[0], dirs[0])
+        self.assertNotEqual(self.first[1], dirs[1])
+        self.assertEqual({"Lm/ui/Screen;"}, self.defined(dirs[1]))
+        self.assertEqual(sorted(os.path.basename(d) for d in dirs),
+                         sorted(os.listdir(os.path.join(self.cache, "dex", "modules"))))  # the old ui dex is gone
+
+    def test_definedTwice_typeInTwoDexFiles_namesOnlyIt(self):
+        from hapticon_build.android import defined_twice
+        self.assertEqual({"La/B;"}, defined_twice([{"La/A;", "La/B;"}, {"La/B;", "La/C;"}, {"La/D;"}]))
+        self.assertEqual(set(), defined_twice([{"La/A;"}, {"La/C;"}]))
+
+
+class SharedDexCacheTest(unittest.TestCase):
+    def test_sharedDexCache_variableWins_thenXdgCacheHome_thenHomeCache(self):
+        from hapticon_build.dexing import shared_dex_cache
+        self.assertEqual("/d", shared_dex_cache({"HAPTICON_DEX_CACHE": "/d", "XDG_CACHE_HOME": "/x"}, "/h"))
+        self.assertEqual("/x/hapticon/dex", shared_dex_cache({"XDG_CACHE_HOME": "/x"}, "/h"))
+        self.assertEqual("/h/.cache/hapticon/dex", shared_dex_cache({}, "/h"))
+
+    def test_d8Tool_sharedCache_holdsJarsAndMergedSets_elseTheProjectCacheDoes(self):
+        from hapticon_build.dexing import D8Tool
+        tool = D8Tool("java", [], "r8.jar", "android.jar", "/jdk", "26", "/p/.build-cache", 2)
+        self.assertEqual(("/p/.build-cache/dex/jars", "/p/.build-cache/dex/libraries"),
+                         (tool.jars_root, tool.libraries_root))
+        shared = D8Tool("java", [], "r8.jar", "android.jar", "/jdk", "26", "/p/.build-cache", 2, shared="/u/dex")
+        self.assertEqual(("/u/dex/jars", "/u/dex/libraries"), (shared.jars_root, shared.libraries_root))
+
+
+class ProgressTest(unittest.TestCase):
+    def test_progress_beforeAndPastTheEstimate(self):
+        from hapticon_build.ui import progress
+        self.assertEqual("12 s, ~30 s left", progress(12.2, 42.0))
+        self.assertEqual("50 s, longer than the ~42 s expected", progress(50.0, 42.0))
+
+    def test_stageTimes_recordedDurationIsTheNextRunsEstimate(self):
+        from hapticon_build.ui import Stage, StageTimes
+        path = os.path.join(tempfile.mkdtemp(), "cache", "stage-times.json")
+        times = StageTimes(path)
+        self.assertEqual(63.0, times.expected("compile :core main", 63.0))  # never timed: the default
+        with mock.patch("time.monotonic", side_effect=[100.0, 141.5]), mock.patch("sys.stderr"):
+            with Stage("compile :core main (63 files)", None, times, "compile :core main"):
+                pass
+        self.assertEqual(41.5, StageTimes(path).expected("compile :core main", 63.0))
+
+    def test_stageTimes_failedStage_recordsNothing(self):
+        from hapticon_build.ui import Stage, StageTimes
+        times = StageTimes(os.path.join(tempfile.mkdtemp(), "stage-times.json"))
+        with self.assertRaises(BuildError), mock.patch("sys.stderr"):
+            with Stage("compile :core main", 10.0, times):
+                raise BuildError("e: a.kt:1:1 Unresolved reference")
+        self.assertEqual(10.0, times.expected("compile :core main", 10.0))
+
+    def test_stage_longStage_printsElapsedAndEstimateWhileRunning(self):
+        import io
+        from hapticon_build import ui
+        err = io.StringIO()
+        with mock.patch.object(ui, "HEARTBEAT_S", 0.05), mock.patch("sys.stderr", err):
+            with ui.Stage("compile :app main", 1000.0):
+                import time
+                time.sleep(0.3)
+        beats = [line for line in err.getvalue().splitlines() if "left" in line]
+        self.assertTrue(beats)
+        self.assertRegex(beats[0], r"^  compile :app main: 0 s, ~1000 s left$")
+
+
+class ModuleJarTest(unittest.TestCase):
+    def test_moduleJar_fromAJar_copiesItsClassesSortedWithFixedTimes(self):
+        import zipfile
+        from hapticon_build.dexing import module_jar
+        tmp = tempfile.mkdtemp()
+        source, jar = os.path.join(tmp, "R.jar"), os.path.join(tmp, "out.jar")
+        with zipfile.ZipFile(source, "w") as z:
+            z.writestr("org/x/R$string.class", b"\xca\xfe\xba\xbe2")
+            z.writestr("org/x/R.class", b"\xca\xfe\xba\xbe1")
+            z.writestr("META-INF/MANIFEST.MF", "Manifest-Version: 1.0\n")
+        self.assertTrue(module_jar(source, jar))
+        with zipfile.ZipFile(jar) as z:
+            self.assertEqual(["org/x/R$string.class", "org/x/R.class"], z.namelist())
+            self.assertEqual(b"\xca\xfe\xba\xbe1", z.read("org/x/R.class"))
+            self.assertEqual({(1980, 1, 1, 0, 0, 0)}, {i.date_time for i in z.infolist()})
+            self.assertEqual({zipfile.ZIP_STORED}, {i.compress_type for i in z.infolist()})

@@ -163,3 +163,70 @@ class CompanionInputsTest(unittest.TestCase):
 
 if __name__ == "__main__":
     unittest.main()
+
+
+class RunDemoTest(unittest.TestCase):
+    """`./build demo` (run_demo): the companion's demo runs while the APK is built, its output then the APK's line."""
+
+    def setUp(self):
+        from types import SimpleNamespace
+        from unittest import mock
+        from hapticon_build.ui import StageTimes
+        self.root = tempfile.mkdtemp()
+        java = os.path.join(self.root, "java")  # stands in for java running the companion: prints its arguments
+        write(self.root, "java", '#!/usr/bin/env bash\necho "hapticon ${@: -3}"\nexit ${FAKE_DEMO_EXIT:-0}\n',
+              stat.S_IXUSR)
+        self.apk = os.path.join(self.root, "out", "app", "hapticon-debug.apk")
+        write(self.root, "out/app/hapticon-debug.apk", "x" * 2_500_000)
+        companion = SimpleNamespace(main_class="org.hapticon.companion.MainKt")
+        self.build = SimpleNamespace(root=self.root, out=os.path.join(self.root, "out"), tools=SimpleNamespace(java=java),
+                                     project=SimpleNamespace(module=lambda path: companion), kotlinc=mock.Mock(),
+                                     stage_times=StageTimes(os.path.join(self.root, ".build-cache", "st.json")))
+        self.seen_during_assemble = []
+        test = self
+
+        class FakeApp:
+            def __init__(self, build, module):
+                pass
+
+            def start_library_dex(self):
+                pass
+
+            def assemble(self):
+                log = os.path.join(test.root, "out", "demo.log")
+                for _ in range(100):  # the demo is already running: its output arrives while the APK is built
+                    if os.path.exists(log) and open(log).read():
+                        break
+                    time.sleep(0.05)
+                test.seen_during_assemble.append(open(log).read())
+                return test.apk
+        self.patches = [mock.patch("hapticon_build.android.AndroidApp", FakeApp),
+                        mock.patch("hapticon_build.__main__.companion_classpath", return_value=["classes"]),
+                        mock.patch("hapticon_build.__main__.app_module", return_value=None)]
+        for p in self.patches:
+            p.start()
+        self.addCleanup(lambda: [p.stop() for p in self.patches])
+
+    def run_demo(self) -> str:
+        import contextlib
+        import io
+        from hapticon_build.__main__ import run_demo
+        out = io.StringIO()
+        with contextlib.redirect_stdout(out), contextlib.redirect_stderr(io.StringIO()):
+            run_demo(self.build)
+        return out.getvalue()
+
+    def test_runDemo_demoRunsDuringTheApkBuild_thenItsOutputAndTheApkLine(self):
+        printed = self.run_demo()
+        out_demo = os.path.join(self.root, "out", "demo")
+        self.assertEqual([f"hapticon demo --out {out_demo}\n"], self.seen_during_assemble)
+        self.assertEqual(f"hapticon demo --out {out_demo}\nAPK: {self.apk} (2500000 bytes, 2.5 MB)\n", printed)
+        self.assertIn("companion demo", self.build.stage_times.times)
+
+    def test_runDemo_demoFails_failsNamingItsExitAndLog(self):
+        from unittest import mock
+        from hapticon_build.errors import BuildError
+        with mock.patch.dict(os.environ, {"FAKE_DEMO_EXIT": "3"}), self.assertRaises(BuildError) as e:
+            self.run_demo()
+        self.assertEqual("hapticon demo exited 3 (out/demo.log)", str(e.exception))
+        self.assertNotIn("companion demo", self.build.stage_times.times)
