@@ -199,9 +199,9 @@ class Build:
         if not sources:
             os.makedirs(out_dir, exist_ok=True)
         elif not (os.path.exists(stamp) and open(stamp).read() == fp):
-            key = f"compile {module.path} {source_set}"
-            with Stage(f"{key} ({len(sources)} files)", self.stage_times.expected(key, len(sources) * COMPILE_S_PER_FILE),
-                       self.stage_times, key):
+            stage = f"compile {module.path} {source_set}"
+            with Stage(f"{stage} ({len(sources)} files)", self.stage_times.expected(stage, len(sources) * COMPILE_S_PER_FILE),
+                       self.stage_times, stage):
                 shutil.rmtree(out_dir, ignore_errors=True)
                 os.makedirs(out_dir)
                 friends = [self._outputs[(module.path, "main")].classes] if source_set == "test" else []
