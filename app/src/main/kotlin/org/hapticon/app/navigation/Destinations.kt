@@ -39,7 +39,7 @@ internal fun Destination(
         }
         TopLevelDestination.ICONS -> IconsRoute(container.iconRepository, container.player, container.patterns, container.pendingPatternFile)
         TopLevelDestination.SENSORS -> SensorsRoute(
-            container.usbDevices, container.sensorHub, container.grainEngine, container.glove, container.stimulator,
+            container.usbDevices, container.sensorSession, container.grainEngine, container.glove, container.stimulator,
             gloveCalibration = { onBack -> CalibrationRoute(container.glove, container.calibrations, onBack) },
             handshake = { onBack ->
                 HandshakeRoute(

@@ -19,10 +19,10 @@ public data class LraGrain(val durationSeconds: Double = GrainSettings.DEFAULT_G
 
     /**
      * The burst for `VibrationEffect.createWaveform`: one entry of round(duration) ms at [amplitude]
-     * (via [VibrationWaveform.render] with a constant envelope).
+     * (via [VibrationWaveform.amplitudeSteps] with a constant envelope).
      */
     public fun waveform(): VibrationWaveform =
-        VibrationWaveform.render({ amplitude.toDouble() / SafetyLimits.VIBRATION_AMPLITUDE_MAX }, durationSeconds)
+        VibrationWaveform.amplitudeSteps({ amplitude.toDouble() / SafetyLimits.VIBRATION_AMPLITUDE_MAX }, durationSeconds)
 
     /**
      * The burst as a haptic icon: a [LRA_NOTE] carrier (174.6 Hz, near a typical phone LRA's resonance) held

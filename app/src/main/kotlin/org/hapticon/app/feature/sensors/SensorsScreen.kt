@@ -37,7 +37,7 @@ import androidx.lifecycle.viewmodel.compose.viewModel
 import androidx.lifecycle.viewmodel.initializer
 import androidx.lifecycle.viewmodel.viewModelFactory
 import org.hapticon.app.sensors.StimulatorLink
-import org.hapticon.sensor.glove.HubGloveSource
+import org.hapticon.sensor.glove.SessionGloveSource
 import org.hapticon.sensor.grains.GrainEngine
 import org.hapticon.sensor.live.SensorSession
 import org.hapticon.sensor.live.UsbDevices
@@ -56,7 +56,7 @@ fun SensorsRoute(
     usbDevices: UsbDevices,
     session: SensorSession,
     grainEngine: GrainEngine,
-    glove: HubGloveSource,
+    glove: SessionGloveSource,
     stimulator: StimulatorLink,
     gloveCalibration: @Composable (onBack: () -> Unit) -> Unit,
     handshake: @Composable (onBack: () -> Unit) -> Unit,
