@@ -9,6 +9,7 @@ import org.hapticon.sensor.port.LineSettings
 import org.junit.Assert.assertEquals
 import org.junit.Assert.assertThrows
 import org.junit.Assert.assertTrue
+import org.hapticon.testing.android.AndroidTestDevices
 import org.junit.Test
 import org.junit.runner.RunWith
 import org.robolectric.RobolectricTestRunner
