@@ -15,7 +15,6 @@ import kotlinx.coroutines.runBlocking
 import kotlinx.coroutines.withTimeout
 import org.hapticon.messaging.ChatMessage
 import org.hapticon.messaging.Clock
-import org.hapticon.messaging.InMemoryOutbox
 import org.hapticon.messaging.OutboxSender
 import org.hapticon.messaging.Receipt
 import org.hapticon.messaging.ReceiptState

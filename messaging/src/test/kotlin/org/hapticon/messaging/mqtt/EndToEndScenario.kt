@@ -11,7 +11,6 @@ import org.hapticon.core.HapticIcon
 import org.hapticon.messaging.BoundedDeduplicator
 import org.hapticon.messaging.ChatMessage
 import org.hapticon.messaging.Clock
-import org.hapticon.messaging.InMemoryOutbox
 import org.hapticon.messaging.InboxEvent
 import org.hapticon.messaging.InboxListener
 import org.hapticon.messaging.OutboxSender

@@ -18,7 +18,6 @@ import org.hapticon.messaging.Capabilities
 import org.hapticon.messaging.ChatMessage
 import org.hapticon.messaging.Clock
 import org.hapticon.messaging.CollectingListener
-import org.hapticon.messaging.InMemoryOutbox
 import org.hapticon.messaging.InboxEvent
 import org.hapticon.messaging.MessageCodec
 import org.hapticon.messaging.MessagingException
