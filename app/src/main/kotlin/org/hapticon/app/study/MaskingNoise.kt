@@ -25,7 +25,7 @@ class NoiseFiles(private val directory: File, private val seed: Long = SEED) {
         require(color != NoiseColor.OFF) { "no file for OFF" }
         val file = File(directory, "${color.name.lowercase()}-$seed-${SAMPLE_RATE}.wav")
         if (file.isFile) return file
-        val samples = NoiseGenerator.render(color, SAMPLE_RATE, SAMPLE_RATE * SECONDS, seed, RENDER_LEVEL_DBFS)
+        val samples = NoiseGenerator.samples(color, SAMPLE_RATE, SAMPLE_RATE * SECONDS, seed, RENDER_LEVEL_DBFS)
         writeWholeFile(file) { WavWriter.write(NoiseGenerator.stream(samples, SAMPLE_RATE), it) }
         return file
     }

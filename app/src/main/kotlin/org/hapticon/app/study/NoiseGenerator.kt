@@ -40,7 +40,7 @@ object NoiseGenerator {
      * [NoiseColor.OFF], [samples] is not above the crossfade length or over 2^26, [sampleRate] is not positive, or
      * [rmsDbfs] is not a finite value ≤ 0.
      */
-    fun render(color: NoiseColor, sampleRate: Int, samples: Int, seed: Long, rmsDbfs: Double): FloatArray {
+    fun samples(color: NoiseColor, sampleRate: Int, samples: Int, seed: Long, rmsDbfs: Double): FloatArray {
         require(color != NoiseColor.OFF) { "no noise to render for OFF" }
         require(sampleRate > 0) { "sampleRate must be > 0, was $sampleRate" }
         require(samples in (LOOP_CROSSFADE_SAMPLES + 1)..(1 shl 26)) {

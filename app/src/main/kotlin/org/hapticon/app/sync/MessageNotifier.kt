@@ -70,6 +70,23 @@ class MessageNotifier(
     private val lines = HashMap<String, ArrayDeque<ChatMessage>>()
     private val shown = LinkedHashSet<String>()
     private val shortcuts = HashSet<String>()
+    // What a peer's notification repeats at every message, made once per peer (the avatar is drawn, the intents are
+    // binder calls): arrival to touch waits for the notification (docs/performance.md, "Arrival to touch").
+    private val parts = object : LinkedHashMap<String, PeerParts>(16, 0.75f, true) {
+        override fun removeEldestEntry(eldest: MutableMap.MutableEntry<String, PeerParts>) = size > MAX_PEERS_KEPT
+    }
+    // The channels known to exist: only this app deletes its channels, and it never does.
+    private val channels = HashSet<String>()
+
+    private class PeerParts(
+        val person: Person,
+        val open: PendingIntent,
+        val reply: NotificationCompat.Action,
+        val markRead: NotificationCompat.Action,
+    )
+
+    private fun partsOf(peer: String): PeerParts =
+        parts.getOrPut(peer) { PeerParts(personOf(peer), openIntent(peer), replyAction(peer), markReadAction(peer)) }
 
     /** Whether a notification would be shown now. */
     fun canNotify(): Boolean {
@@ -167,7 +184,8 @@ class MessageNotifier(
     @Suppress("MissingPermission") // canNotify() checked it.
     private fun post(peer: String, history: List<ChatMessage>, alertChannel: AlertChannel) {
         val channel = channelFor(peer, alertChannel)
-        val them = personOf(peer)
+        val peerParts = partsOf(peer)
+        val them = peerParts.person
         pushShortcut(peer, them)
         val me = Person.Builder().setName(selfName() ?: "You").setKey("self").build()
         val style = NotificationCompat.MessagingStyle(me).setGroupConversation(false)
@@ -182,9 +200,9 @@ class MessageNotifier(
             .setShortcutId(shortcutId(peer))
             .setLocusId(LocusIdCompat(shortcutId(peer)))
             .setAutoCancel(true)
-            .setContentIntent(openIntent(peer))
-            .addAction(replyAction(peer))
-            .addAction(markReadAction(peer))
+            .setContentIntent(peerParts.open)
+            .addAction(peerParts.reply)
+            .addAction(peerParts.markRead)
         (latest.icon?.name ?: latest.pattern?.name)?.let { builder.addAction(feelAction(peer, latest.id, DisplayText.neutralise(it))) }
         manager.notify(peer, NOTIFICATION_ID, builder.build())
     }
@@ -220,12 +238,13 @@ class MessageNotifier(
 
     private fun channelFor(peer: String, kind: AlertChannel): String {
         val id = channelId(peer, kind)
-        if (Build.VERSION.SDK_INT >= 26) {
+        if (Build.VERSION.SDK_INT >= 26 && id !in channels) {
             val system = context.getSystemService(NotificationManager::class.java)
             if (system.getNotificationChannel(id) == null) {
                 system.createNotificationChannelGroup(NotificationChannelGroup(GROUP, "Chats"))
                 system.createNotificationChannel(newChannel(id, peer, kind))
             }
+            channels += id
         }
         return id
     }
@@ -280,6 +299,8 @@ class MessageNotifier(
 
     companion object {
         const val NOTIFICATION_ID: Int = 1
+        /** Peers whose notification parts (avatar, intents) are kept; the least recently notified is dropped beyond. */
+        const val MAX_PEERS_KEPT: Int = 16
         const val GROUP: String = "chats"
         const val ACTION_OPEN_CHAT: String = "org.hapticon.app.OPEN_CHAT"
         const val ACTION_REPLY: String = "org.hapticon.app.REPLY"

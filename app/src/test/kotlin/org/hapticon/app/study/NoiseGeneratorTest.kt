@@ -19,14 +19,14 @@ class NoiseGeneratorTest {
 
     @Test
     fun white_isFlat_withinOneDecibelPerOctave() {
-        val slopes = octaveSlopes(NoiseGenerator.render(NoiseColor.WHITE, rate, samples, 1L, -12.0))
+        val slopes = octaveSlopes(NoiseGenerator.samples(NoiseColor.WHITE, rate, samples, 1L, -12.0))
         println("white noise PSD change per octave, 125 Hz..16 kHz (dB): ${slopes.joinToString { "%.2f".format(it) }}")
         for ((i, slope) in slopes.withIndex()) assertEquals("octave $i", 0.0, slope, 1.0)
     }
 
     @Test
     fun pink_fallsThreeDecibelsPerOctave_withinOneDecibel() {
-        val slopes = octaveSlopes(NoiseGenerator.render(NoiseColor.PINK, rate, samples, 1L, -12.0))
+        val slopes = octaveSlopes(NoiseGenerator.samples(NoiseColor.PINK, rate, samples, 1L, -12.0))
         println("pink noise PSD change per octave, 125 Hz..16 kHz (dB): ${slopes.joinToString { "%.2f".format(it) }}")
         for ((i, slope) in slopes.withIndex()) assertEquals("octave $i", -3.01, slope, 1.0)
     }
@@ -34,7 +34,7 @@ class NoiseGeneratorTest {
     @Test
     fun render_hitsTheRequestedRmsLevel_andStaysInFullScale() {
         for (color in listOf(NoiseColor.WHITE, NoiseColor.PINK)) {
-            val noise = NoiseGenerator.render(color, rate, samples, 9L, -12.0)
+            val noise = NoiseGenerator.samples(color, rate, samples, 9L, -12.0)
             assertEquals(color.name, -12.0, NoiseGenerator.rmsDbfs(noise), 0.01)
             assertTrue(noise.all { it in -1f..1f && !it.isNaN() })
         }
@@ -42,15 +42,15 @@ class NoiseGeneratorTest {
 
     @Test
     fun render_sameSeedSameNoise_otherSeedOtherNoise() {
-        val a = NoiseGenerator.render(NoiseColor.PINK, rate, 10_000, 3L, -20.0)
-        assertArrayEquals(a, NoiseGenerator.render(NoiseColor.PINK, rate, 10_000, 3L, -20.0), 0f)
-        assertFalse(a.contentEquals(NoiseGenerator.render(NoiseColor.PINK, rate, 10_000, 4L, -20.0)))
+        val a = NoiseGenerator.samples(NoiseColor.PINK, rate, 10_000, 3L, -20.0)
+        assertArrayEquals(a, NoiseGenerator.samples(NoiseColor.PINK, rate, 10_000, 3L, -20.0), 0f)
+        assertFalse(a.contentEquals(NoiseGenerator.samples(NoiseColor.PINK, rate, 10_000, 4L, -20.0)))
     }
 
     @Test
     fun loopSeam_jumpsNoMoreThanNeighbouringSamplesDo() {
         for (color in listOf(NoiseColor.WHITE, NoiseColor.PINK)) {
-            val noise = NoiseGenerator.render(color, rate, samples, 5L, -12.0)
+            val noise = NoiseGenerator.samples(color, rate, samples, 5L, -12.0)
             val largestStep = (1 until noise.size).maxOf { abs(noise[it] - noise[it - 1]) }
             assertTrue(color.name, abs(noise[0] - noise.last()) <= largestStep)
         }
@@ -60,23 +60,23 @@ class NoiseGeneratorTest {
     fun render_rejectsBadInput_withWhatWasWrong() {
         assertEquals(
             "no noise to render for OFF",
-            assertThrows(IllegalArgumentException::class.java) { NoiseGenerator.render(NoiseColor.OFF, rate, samples, 1L, -12.0) }.message,
+            assertThrows(IllegalArgumentException::class.java) { NoiseGenerator.samples(NoiseColor.OFF, rate, samples, 1L, -12.0) }.message,
         )
         assertEquals(
             "samples must be in 2049..67108864, was 2048",
-            assertThrows(IllegalArgumentException::class.java) { NoiseGenerator.render(NoiseColor.WHITE, rate, 2048, 1L, -12.0) }.message,
+            assertThrows(IllegalArgumentException::class.java) { NoiseGenerator.samples(NoiseColor.WHITE, rate, 2048, 1L, -12.0) }.message,
         )
         assertEquals(
             "rmsDbfs must be a finite value <= 0, was NaN",
-            assertThrows(IllegalArgumentException::class.java) { NoiseGenerator.render(NoiseColor.WHITE, rate, samples, 1L, Double.NaN) }.message,
+            assertThrows(IllegalArgumentException::class.java) { NoiseGenerator.samples(NoiseColor.WHITE, rate, samples, 1L, Double.NaN) }.message,
         )
         assertEquals(
             "rmsDbfs must be a finite value <= 0, was 3.0",
-            assertThrows(IllegalArgumentException::class.java) { NoiseGenerator.render(NoiseColor.WHITE, rate, samples, 1L, 3.0) }.message,
+            assertThrows(IllegalArgumentException::class.java) { NoiseGenerator.samples(NoiseColor.WHITE, rate, samples, 1L, 3.0) }.message,
         )
         assertEquals(
             "sampleRate must be > 0, was 0",
-            assertThrows(IllegalArgumentException::class.java) { NoiseGenerator.render(NoiseColor.WHITE, 0, samples, 1L, -12.0) }.message,
+            assertThrows(IllegalArgumentException::class.java) { NoiseGenerator.samples(NoiseColor.WHITE, 0, samples, 1L, -12.0) }.message,
         )
         assertEquals(Double.NEGATIVE_INFINITY, NoiseGenerator.rmsDbfs(FloatArray(0)), 0.0)
     }

@@ -63,7 +63,7 @@ fun runComplianceAnalysis(args: List<String>, console: Console) {
             val dir = File(path)
             OutputFiles.ensureDirectory(dir)
             for (heatmap in heatmaps) {
-                out.println(PngExport.write(ComplianceHeatmapImage.render(heatmap), File(dir, "heatmap-${ComplianceCondition.shapeName(heatmap.shape)}.png")))
+                out.println(PngExport.write(ComplianceHeatmapImage.draw(heatmap), File(dir, "heatmap-${ComplianceCondition.shapeName(heatmap.shape)}.png")))
             }
         }
     }
@@ -121,7 +121,7 @@ internal object ComplianceHeatmapImage {
     private const val CELL = 60
     private const val GAP = 20
 
-    fun render(heatmap: ShapeHeatmap): BufferedImage {
+    fun draw(heatmap: ShapeHeatmap): BufferedImage {
         val size = ShapeDrawings.SIZE
         val width = GAP + 3 * CELL + GAP + size + GAP
         val height = GAP + size + GAP

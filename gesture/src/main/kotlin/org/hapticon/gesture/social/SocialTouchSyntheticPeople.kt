@@ -195,7 +195,7 @@ public object SocialTouchSyntheticPeople {
             start = QUIET_SECONDS, seconds = between(random, 0.3, 1.5), intensity = NO_TOUCH_INTENSITY * between(random, 0.5, 1.0),
             radius = 0.2, x = between(random, -0.8, 0.8), y = between(random, 0.2, 0.8), travel = 0.0, push = 0.0, shakeHz = 0.0, shakeDepth = 0.0,
         )
-        return render(listOf(touch), touch.start + touch.seconds + QUIET_SECONDS)
+        return skinFrames(listOf(touch), touch.start + touch.seconds + QUIET_SECONDS)
     }
 
     private fun message(p: Prototype, style: Style, random: SplittableRandom): Sequence<SkinFrame> {
@@ -209,7 +209,7 @@ public object SocialTouchSyntheticPeople {
         val touches = List(count) {
             Touch(t, seconds, intensity, p.radius, x, y, p.travel, p.push * style.push, p.shakeHz, p.shakeDepth).also { t += seconds + maxOf(gap, 2 / SAMPLE_RATE) }
         }
-        return render(touches, touches.last().let { it.start + it.seconds } + QUIET_SECONDS)
+        return skinFrames(touches, touches.last().let { it.start + it.seconds } + QUIET_SECONDS)
     }
 
     private class Touch(
@@ -218,7 +218,7 @@ public object SocialTouchSyntheticPeople {
     )
 
     /** Frames at [SAMPLE_RATE] from 0 to [end] s: each touch's blob where it is on, zeros elsewhere. */
-    private fun render(touches: List<Touch>, end: Double): Sequence<SkinFrame> {
+    private fun skinFrames(touches: List<Touch>, end: Double): Sequence<SkinFrame> {
         val frames = (end * SAMPLE_RATE).roundToLong()
         return (0L..frames).asSequence().map { k ->
             val t = k / SAMPLE_RATE

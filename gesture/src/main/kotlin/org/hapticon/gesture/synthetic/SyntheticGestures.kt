@@ -105,7 +105,7 @@ public object SyntheticGestures {
         val total = if (gesture == null) 3.0 else before + active + minRestAfterSeconds + random.nextDouble(0.0, 0.4)
         val frames = (total * SAMPLE_RATE).toInt()
         val onset = if (gesture == null) 0 else (before * SAMPLE_RATE).toInt()
-        val recording = render(person, frames, onset, shape, random)
+        val recording = record(person, frames, onset, shape, random)
         val spans = if (gesture == null) emptyList() else listOf(LabelledSpan(onset, minOf(frames, onset + maxOf(1, (active * SAMPLE_RATE).toInt())), label))
         return SyntheticTake(LabelledRecording(recording, spans), label, onset.takeIf { gesture != null })
     }
@@ -130,7 +130,7 @@ public object SyntheticGestures {
         return LabelledRecording(Recording(SAMPLE_RATE, channels), spans)
     }
 
-    private fun render(person: SimulatedPerson, frames: Int, onset: Int, shape: GestureShape, random: SplittableRandom): Recording {
+    private fun record(person: SimulatedPerson, frames: Int, onset: Int, shape: GestureShape, random: SplittableRandom): Recording {
         val force = DoubleArray(frames)
         val ax = DoubleArray(frames)
         val ay = DoubleArray(frames)

@@ -5,7 +5,7 @@ import org.hapticon.core.midiNoteToHz
 import org.junit.Assert.assertEquals
 import org.junit.Assert.assertFalse
 import org.junit.Assert.assertTrue
-import org.junit.Assert.fail
+import org.hapticon.core.render.RenderAssertions.assertRejected
 import org.junit.Test
 import kotlin.math.sqrt
 
@@ -25,15 +25,6 @@ class EnvelopeControlPointsTest {
         assertTrue(result.points.all { it.amplitude in 0.0..1.0 })
         assertEquals(0.0, result.points.last().amplitude, 0.0)
         assertEquals(totalMillis, result.totalMillis)
-    }
-
-    private fun assertRejected(message: String, call: () -> Unit) {
-        try {
-            call()
-            fail("accepted")
-        } catch (e: IllegalArgumentException) {
-            assertEquals(message, e.message)
-        }
     }
 
     @Test

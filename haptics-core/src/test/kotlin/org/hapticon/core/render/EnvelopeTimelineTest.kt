@@ -65,16 +65,7 @@ class EnvelopeTimelineTest {
         // The stream sweeps the runs; sampleAt finds each by binary search. They must agree exactly.
         for (icon in awkward) for (fs in listOf(8_000, 44_100)) for (model in EnvelopeModel.values()) {
             val renderer = IconRenderer(icon, fs, model, RenderMode.EXACT)
-            val stream = renderer.stream()
-            val block = DoubleArray(1000)
-            var index = 0L
-            while (true) {
-                val n = stream.read(block)
-                if (n < 0) break
-                for (j in 0 until n) assertEquals("${icon.name} $fs $model $index", renderer.sampleAt(index + j), block[j], 0.0)
-                index += n
-            }
-            assertEquals(renderer.sampleCount, index)
+            assertEquals(renderer.sampleCount, RenderAssertions.streamEqualsSampleAt(renderer, "${icon.name} $fs $model"))
         }
     }
 

@@ -95,17 +95,7 @@ class StreamingTest {
     @Test
     fun readDoubles_exactMode_equalsSampleAtBitForBit() {
         for (model in EnvelopeModel.values()) {
-            val renderer = IconRenderer(HapticIcon.KNOCK, 44_100, model)
-            val stream = renderer.stream()
-            val block = DoubleArray(1000)
-            var index = 0L
-            while (true) {
-                val n = stream.read(block)
-                if (n < 0) break
-                for (j in 0 until n) assertEquals("$model ${index + j}", renderer.sampleAt(index + j), block[j], 0.0)
-                index += n
-            }
-            assertEquals(24_696L, index)
+            assertEquals(24_696L, RenderAssertions.streamEqualsSampleAt(IconRenderer(HapticIcon.KNOCK, 44_100, model), "$model"))
         }
     }
 

@@ -4,20 +4,11 @@ import org.hapticon.core.HapticIcon
 import org.junit.Assert.assertArrayEquals
 import org.junit.Assert.assertEquals
 import org.junit.Assert.assertTrue
-import org.junit.Assert.fail
+import org.hapticon.core.render.RenderAssertions.assertRejected
 import org.junit.Test
 import kotlin.math.sqrt
 
 class VibrationWaveformTest {
-    private fun assertRejected(message: String, call: () -> Unit) {
-        try {
-            call()
-            fail("accepted")
-        } catch (e: IllegalArgumentException) {
-            assertEquals(message, e.message)
-        }
-    }
-
     /** The limits the app relies on when it hands the arrays to VibrationEffect. */
     private fun assertPlayable(waveform: VibrationWaveform, expectedMillis: Long) {
         val timings = waveform.timings()

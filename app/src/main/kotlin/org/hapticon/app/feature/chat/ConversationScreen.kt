@@ -488,12 +488,12 @@ private fun Composer(
         Column(Modifier.fillMaxWidth().padding(horizontal = 8.dp, vertical = 6.dp), verticalArrangement = Arrangement.spacedBy(4.dp)) {
             IconRow(uiState, actions)
             // With the keyboard up the stickers wait (as Signal's sticker panel takes the keyboard's place), and the
-            // "how it will feel there" line keeps to one line: at 360 dp and font 2.0 the latest message keeps its room.
+            // "how it will feel there" line is its short form: at 360 dp and font 2.0 the latest message keeps its room.
             val keyboardUp = WindowInsets.isImeVisible
             val stickerRow = rememberLazyListState()
             if (!keyboardUp) StickerRow(stickerRow, uiState.selectedSticker, actions.onSelectSticker)
             (uiState.selectedIcon?.name ?: uiState.selectedPattern?.name)?.let { name ->
-                PeerFeelLines(name, uiState.peer, uiState.peerFeel, oneLine = keyboardUp)
+                PeerFeelLines(name, uiState.peer, uiState.peerFeel, short = keyboardUp)
             }
             uiState.error?.let { Text(it, color = MaterialTheme.colorScheme.error, modifier = Modifier.padding(horizontal = 4.dp)) }
             Row(verticalAlignment = Alignment.CenterVertically) {
@@ -579,14 +579,16 @@ const val PEER_FEEL_TAG: String = "peer-feel"
 
 /**
  * Under the composer, how the chosen icon or pattern [name] will feel on [peer]'s phone: the renderer line, then the
- * pitch and the envelope's control points (one line each). With details, the lines collapse to ONE line that names
- * the renderer first ("Envelope effect on bob's phone"), and a chevron; a tap (or TalkBack's double-tap, "collapsed, button, double-tap to show details")
- * shows them all. At font scale 2.0 the three wrapped lines took half the screen, pushing the messages away. The whole
+ * pitch and the envelope's control points (one line each). With details, the lines collapse to the short summary that
+ * names the renderer first ("Envelope effect on bob's phone"), and a chevron; a tap (or TalkBack's double-tap, "collapsed, button, double-tap to show details")
+ * shows them all. At font scale 2.0 the three wrapped lines took half the screen, pushing the messages away. The short
+ * summary ([short], with the keyboard up, or collapsed) wraps rather than being cut: cut to one line at 360 dp and font
+ * 2.0 it read "Amplitude waveform on bo…", losing whose phone and the fidelity. The whole
  * row is the control, at least 48 dp high; besides the click it offers Compose's expand/collapse semantics actions
  * (`AccessibilityNodeInfo.ACTION_EXPAND` / `ACTION_COLLAPSE` in TalkBack's actions menu).
  */
 @Composable
-private fun PeerFeelLines(name: String, peer: String, feel: PeerFeel?, oneLine: Boolean = false) {
+private fun PeerFeelLines(name: String, peer: String, feel: PeerFeel?, short: Boolean = false) {
     val summary = if (feel == null) "How $name will feel there: unknown until $peer connects"
     else "How $name will feel there: ${feel.renderer.label}" + (feel.alternative?.let { " or ${it.label}" } ?: "") +
         (feel.fidelityPercent?.let { ", $it% fidelity" } ?: "")
@@ -599,11 +601,7 @@ private fun PeerFeelLines(name: String, peer: String, feel: PeerFeel?, oneLine: 
     val style = MaterialTheme.typography.bodySmall
     val color = MaterialTheme.colorScheme.onSurfaceVariant
     if (details.isEmpty()) {
-        if (oneLine) {
-            Text(collapsedSummary, style = style, color = color, maxLines = 1, overflow = TextOverflow.Ellipsis, modifier = Modifier.padding(horizontal = 4.dp))
-        } else {
-            Text(summary, style = style, color = color, modifier = Modifier.padding(horizontal = 4.dp))
-        }
+        Text(if (short) collapsedSummary else summary, style = style, color = color, modifier = Modifier.padding(horizontal = 4.dp))
         return
     }
     // Collapsed whenever a new choice brings the lines back (they leave the composition with the choice).
@@ -620,10 +618,7 @@ private fun PeerFeelLines(name: String, peer: String, feel: PeerFeel?, oneLine: 
         verticalAlignment = Alignment.CenterVertically,
     ) {
         Column(Modifier.weight(1f), verticalArrangement = Arrangement.spacedBy(4.dp)) {
-            Text(
-                if (expanded) summary else collapsedSummary, style = style, color = color,
-                maxLines = if (expanded) Int.MAX_VALUE else 1, overflow = TextOverflow.Ellipsis,
-            )
+            Text(if (expanded) summary else collapsedSummary, style = style, color = color)
             if (expanded) details.forEach { Text(it, style = style, color = color) }
         }
         Icon(

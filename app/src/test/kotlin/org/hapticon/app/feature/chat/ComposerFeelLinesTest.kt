@@ -1,6 +1,9 @@
 package org.hapticon.app.feature.chat
 
+import androidx.compose.foundation.layout.Box
+import androidx.compose.foundation.layout.width
 import androidx.compose.runtime.CompositionLocalProvider
+import androidx.compose.ui.Modifier
 import androidx.compose.ui.platform.LocalDensity
 import androidx.compose.ui.semantics.Role
 import androidx.compose.ui.semantics.SemanticsActions
@@ -17,6 +20,8 @@ import androidx.compose.ui.test.performClick
 import androidx.compose.ui.test.performSemanticsAction
 import androidx.compose.ui.text.TextLayoutResult
 import androidx.compose.ui.unit.Density
+import androidx.compose.ui.unit.Dp
+import androidx.compose.ui.unit.dp
 import org.hapticon.core.HapticIcon
 import org.hapticon.core.render.RendererKind
 import org.junit.Assert.assertEquals
@@ -31,8 +36,9 @@ import org.robolectric.annotation.GraphicsMode
 
 /**
  * The composer's "how it will feel there" lines at the largest font scale (2.0), laid out with real fonts (native
- * graphics, a Pixel 7's 411 × 891 dp): with a pitch and an envelope line they collapse to one summary line that a tap,
+ * graphics, a Pixel 7's 411 × 891 dp): with a pitch and an envelope line they collapse to a short summary, which a tap,
  * or TalkBack's double-tap or expand action, opens to show every line, and the message field and Send stay on screen.
+ * The short summary wraps, never cut, also on a 360 dp phone.
  */
 @RunWith(RobolectricTestRunner::class)
 @GraphicsMode(GraphicsMode.Mode.NATIVE)
@@ -46,16 +52,18 @@ class ComposerFeelLinesTest {
     private val pitchLine = "bob's phone (120–240\u00A0Hz): 147\u00A0Hz → plays 147\u00A0Hz"
     private val envelopeLine = "bob's envelope: 4 control points (7 merged into 4 by its limits: 4 points, 50\u00A0ms–1\u00A0s each, 4\u00A0s in all)"
 
-    private fun show(feel: PeerFeel, fontScale: Float = 2f) = compose.setContent {
+    private fun show(feel: PeerFeel, fontScale: Float = 2f, width: Dp = 411.dp) = compose.setContent {
         val density = LocalDensity.current
         CompositionLocalProvider(LocalDensity provides Density(density.density, fontScale)) {
-            ConversationScreen(
-                ConversationUiState.Success(
-                    peer = "bob", messages = emptyList(), icons = HapticIcon.PRESETS, selectedIcon = HapticIcon.HUG,
-                    selectedSticker = null, peerFeel = feel, error = null,
-                ),
-                ConversationActions(),
-            )
+            Box(Modifier.width(width)) {
+                ConversationScreen(
+                    ConversationUiState.Success(
+                        peer = "bob", messages = emptyList(), icons = HapticIcon.PRESETS, selectedIcon = HapticIcon.HUG,
+                        selectedSticker = null, peerFeel = feel, error = null,
+                    ),
+                    ConversationActions(),
+                )
+            }
         }
     }
 
@@ -82,7 +90,7 @@ class ComposerFeelLinesTest {
     }
 
     @Test
-    fun collapsedByDefault_oneSummaryLine_aButtonTalkBackCallsCollapsed() {
+    fun collapsedByDefault_shortSummary_aButtonTalkBackCallsCollapsed() {
         show(withDetails)
         val node = control().fetchSemanticsNode()
         assertEquals(Role.Button, node.config.getOrNull(SemanticsProperties.Role))
@@ -91,8 +99,8 @@ class ComposerFeelLinesTest {
         // At least 48 dp high (Material's minimum target) and the screen's width.
         val density = compose.density.density
         assertTrue("${node.size}", node.size.height >= 48 * density && node.size.width >= 380 * density)
-        // One line at 2.0 that starts with the renderer; the full wording waits behind the tap.
-        assertEquals(1, summaryLayout(collapsedSummary).lineCount)
+        // The short summary that starts with the renderer, whole (it wraps at 2.0); the full wording waits behind the tap.
+        assertWhole(summaryLayout(collapsedSummary))
         compose.onNodeWithText(summary).assertDoesNotExist()
         compose.onNodeWithText(pitchLine).assertDoesNotExist()
         compose.onNodeWithText(envelopeLine).assertDoesNotExist()
@@ -116,8 +124,11 @@ class ComposerFeelLinesTest {
         control().performClick()
         assertEquals("collapsed", control().state())
         compose.onNodeWithText(pitchLine).assertDoesNotExist()
-        assertEquals(1, summaryLayout(collapsedSummary).lineCount)
+        assertWhole(summaryLayout(collapsedSummary))
     }
+
+    private fun assertWhole(layout: TextLayoutResult) =
+        assertTrue("cut: ${layout.lineCount} lines", (0 until layout.lineCount).none { layout.isLineEllipsized(it) })
 
     @Test
     fun talkBackExpandAndCollapseActions_openAndCloseTheLines() {
@@ -131,6 +142,17 @@ class ComposerFeelLinesTest {
         control().performSemanticsAction(SemanticsActions.Collapse)
         assertEquals("collapsed", control().state())
         compose.onNodeWithText(envelopeLine).assertDoesNotExist()
+    }
+
+    /** 360 dp and font 2.0: the collapsed summary wraps whole; cut to one line it read "Amplitude waveform on bo…". */
+    @Test
+    fun smallPhoneLargestFont_collapsedSummaryWrapsWhole() {
+        show(withDetails.copy(renderer = RendererKind.AMPLITUDE_WAVEFORM, fidelityPercent = 93), width = 360.dp)
+        assertEquals("collapsed", control().state())
+        val layout = summaryLayout("Amplitude waveform on bob's phone, 93% fidelity")
+        assertTrue("${layout.lineCount} lines", layout.lineCount >= 2)
+        assertWhole(layout)
+        assertFieldAndSendOnScreen()
     }
 
     @Test
