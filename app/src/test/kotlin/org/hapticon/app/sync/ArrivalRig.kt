@@ -46,7 +46,7 @@ import org.hapticon.messaging.BrokerAddress
 import org.hapticon.messaging.broker.EmbeddedBroker
 import org.hapticon.messaging.e2e.EndToEnd
 import org.hapticon.messaging.e2e.Identity
-import org.hapticon.messaging.e2e.InMemoryKeyPins
+import org.hapticon.testing.TestKeyPins
 import org.hapticon.messaging.mqtt.DeviceId
 import org.hapticon.messaging.mqtt.MqttMessenger
 import org.hapticon.messaging.mqtt.MqttSettings
@@ -175,7 +175,7 @@ class ArrivalRig(private val context: Context, dir: File) : AutoCloseable {
         }
         HandoffVibrator.onHandoff = { nanos -> current?.stamp(ArrivalStage.VIBRATED, nanos) ?: strays.add("vibration") }
         sync.start()
-        bob = MqttMessenger(MqttSettings(address, "bob", "bob-secret", DeviceId.generate()), EndToEnd(Identity.generate("bob"), InMemoryKeyPins()))
+        bob = MqttMessenger(MqttSettings(address, "bob", "bob-secret", DeviceId.generate()), EndToEnd(Identity.generate("bob"), TestKeyPins()))
         runBlocking {
             withTimeout(60_000) { sync.connection.first { it == ConnectionState.Connected } }
             bob.connect(InboxListener { event ->

@@ -10,7 +10,7 @@ import org.hapticon.messaging.Decoded
 import org.hapticon.messaging.MessageCodec
 import org.hapticon.messaging.e2e.EndToEnd
 import org.hapticon.messaging.e2e.Identity
-import org.hapticon.messaging.e2e.InMemoryKeyPins
+import org.hapticon.testing.TestKeyPins
 import org.hapticon.messaging.e2e.Opened
 import org.junit.After
 import org.junit.Assume.assumeTrue
@@ -76,8 +76,8 @@ class ArrivalToTouchBench {
 
     /** Opening and decoding a sealed payload alone, as the messenger does before its listener; µs are returned in ms. */
     private class DecodeBaseline {
-        private val alice = EndToEnd(Identity.generate("alice"), InMemoryKeyPins())
-        private val bob = EndToEnd(Identity.generate("bob"), InMemoryKeyPins()).also { it.learn("alice", alice.identity.bundle.encoded) }
+        private val alice = EndToEnd(Identity.generate("alice"), TestKeyPins())
+        private val bob = EndToEnd(Identity.generate("bob"), TestKeyPins()).also { it.learn("alice", alice.identity.bundle.encoded) }
 
         fun time(message: ChatMessage): Double {
             val sealed = bob.seal("alice", MessageCodec.encode(message))

@@ -222,7 +222,7 @@ class ChatOverBrokerTest {
      */
     @Test
     fun replayOfAGenuineSealedPayload_afterDeleteConversation_isNotShownAgain() = runBlocking {
-        val bobKeys = EndToEnd(Identity.generate("bob"), InMemoryKeyPins())
+        val bobKeys = EndToEnd(Identity.generate("bob"), TestKeyPins())
         val fast = RetryPolicy(initialDelayMillis = 50, maxDelayMillis = 500, jitter = 0.0)
         val bobPhone = MqttMessenger(MqttSettings(address, "bob", "bob-secret", DeviceId.generate(), reconnectPolicy = fast), bobKeys)
         bob = bobPhone
