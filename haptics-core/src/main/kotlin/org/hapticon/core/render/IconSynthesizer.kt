@@ -50,9 +50,12 @@ internal class IconSynthesizer(
         }
     }
 
-    /** FAST's float kernel: as [fill], the samples narrowed to float32 as written (the same doubles, narrowed); null for EXACT. */
-    override fun fillFloats(destination: FloatArray, offset: Int, length: Int): Int? {
-        if (mode != RenderMode.FAST) return null
+    /** FAST has a float kernel; EXACT narrows its doubles. */
+    override val hasFloatKernel: Boolean get() = mode == RenderMode.FAST
+
+    /** FAST's float kernel: as [fill], the samples narrowed to float32 as written (the same doubles, narrowed). */
+    override fun fillFloats(destination: FloatArray, offset: Int, length: Int): Int {
+        check(mode == RenderMode.FAST) { "EXACT has no float kernel" }
         return fillRuns(length) { at, wanted ->
             fastChunk(wanted) { count, m -> phasor.fill(destination, offset + at, count, sweep.risingValue, sweep.risingSlope, sweep.fallingValue, sweep.fallingSlope, m) }
         }

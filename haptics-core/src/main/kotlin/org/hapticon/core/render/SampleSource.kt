@@ -16,8 +16,12 @@ internal interface SampleSource {
     fun fill(destination: DoubleArray, offset: Int, length: Int): Int
 
     /**
-     * As [fill], narrowed to floats by a kernel of the source's own, or null when the source has none (the
-     * stream then narrows a double block). The same samples either way.
+     * Whether [fillFloats] has a kernel of the source's own; without one the stream narrows a double block. (A flag
+     * rather than a nullable count: an `Int?` return boxes every count above 127, an allocation per block.)
      */
-    fun fillFloats(destination: FloatArray, offset: Int, length: Int): Int? = null
+    val hasFloatKernel: Boolean get() = false
+
+    /** As [fill], narrowed to floats by the source's own kernel; only when [hasFloatKernel]. The same samples either way. */
+    fun fillFloats(destination: FloatArray, offset: Int, length: Int): Int =
+        throw UnsupportedOperationException("this source has no float kernel")
 }

@@ -18,7 +18,7 @@ internal class SampleSourceStream(
     override fun read(destination: FloatArray, offset: Int, length: Int): Int {
         checkRange(destination.size, offset, length)
         if (position >= totalSamples) return -1
-        source.fillFloats(destination, offset, length)?.let { return it }
+        if (source.hasFloatKernel) return source.fillFloats(destination, offset, length)
         return readBlocks(length) { written, made ->
             for (j in 0 until made) destination[offset + written + j] = scratch[j].toFloat()
         }
