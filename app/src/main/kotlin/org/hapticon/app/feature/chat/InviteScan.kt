@@ -72,8 +72,10 @@ object InviteScan {
     /** Reads the photo at [uri], scaled down to [MAX_DECODE_SIDE], and decodes it; null when none is there. Blocking. */
     fun decode(context: Context, uri: Uri): String? {
         val resolver = context.contentResolver
+        // Only the size first: with inJustDecodeBounds, decodeStream fills the options and always returns null.
         val bounds = BitmapFactory.Options().apply { inJustDecodeBounds = true }
-        resolver.openInputStream(uri)?.use { BitmapFactory.decodeStream(it, null, bounds) } ?: return null
+        (resolver.openInputStream(uri) ?: return null).use { BitmapFactory.decodeStream(it, null, bounds) }
+        if (bounds.outWidth <= 0 || bounds.outHeight <= 0) return null
         var sample = 1
         while (maxOf(bounds.outWidth, bounds.outHeight) / sample > MAX_DECODE_SIDE) sample *= 2
         val bitmap = resolver.openInputStream(uri)?.use {
