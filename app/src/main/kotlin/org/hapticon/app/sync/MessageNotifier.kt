@@ -213,12 +213,30 @@ class MessageNotifier(
         DisplayText.neutralise(m.text).takeIf { it.isNotBlank() } ?: m.sticker?.let { "Sticker: $it" },
     ).joinToString(" · ")
 
-    /** The person [peer] as notifications show them: the name, with a round letter avatar. */
+    /**
+     * The person [peer] as notifications show them: the name, with a round letter avatar drawn no larger than Android
+     * keeps it ([personIconPx]). `Notification.Builder.build` scales every larger sender icon of a MessagingStyle down,
+     * at every build and for every line (AOSP `Notification.reduceImageSizes`; `NotificationTest`
+     * `testBuild_ensureMessagingUserIsNotTooBig_resizesIcon`): at 216 px on a 144 px limit that was 7 of the
+     * notification's 9 ms on the arrival path (docs/performance.md, "Arrival to touch").
+     */
     internal fun personOf(peer: String): Person = Person.Builder()
         .setName(peer)
         .setKey(peer)
-        .setIcon(IconCompat.createWithBitmap(avatarOf(peer, round = true)))
+        .setIcon(IconCompat.createWithBitmap(avatarOf(peer, sizePx = minOf(AVATAR_PX, personIconPx), round = true)))
         .build()
+
+    /**
+     * The largest sender icon Android keeps in a notification, in pixels: the platform's
+     * `notification_person_icon_max_size` (`_low_ram` on a low-RAM phone), as `Notification.reduceImageSizes` reads it;
+     * 48 dp where the platform has no such dimension.
+     */
+    internal val personIconPx: Int by lazy {
+        val system = android.content.res.Resources.getSystem()
+        val lowRam = context.getSystemService(android.app.ActivityManager::class.java)?.isLowRamDevice == true
+        val id = system.getIdentifier(if (lowRam) "notification_person_icon_max_size_low_ram" else "notification_person_icon_max_size", "dimen", "android")
+        if (id != 0) system.getDimensionPixelSize(id) else (48 * context.resources.displayMetrics.density).toInt()
+    }
 
     // The long-lived shortcut Android's Conversations section needs; pushed once per peer per process (it persists).
     private fun pushShortcut(peer: String, person: Person) {
@@ -299,6 +317,9 @@ class MessageNotifier(
 
     companion object {
         const val NOTIFICATION_ID: Int = 1
+        /** An avatar's side: 108 dp at 2x, an adaptive icon's full size. */
+        const val AVATAR_PX: Int = 216
+
         /** Peers whose notification parts (avatar, intents) are kept; the least recently notified is dropped beyond. */
         const val MAX_PEERS_KEPT: Int = 16
         const val GROUP: String = "chats"
@@ -356,7 +377,7 @@ class MessageNotifier(
          * Square for an adaptive icon (108 dp, the letter inside the 72 dp safe zone), which launchers mask to their shape;
          * [round] a disc on transparency, for the notification's person, which the shade shows as drawn.
          */
-        internal fun avatarOf(peer: String, sizePx: Int = 216, round: Boolean = false): Bitmap {
+        internal fun avatarOf(peer: String, sizePx: Int = AVATAR_PX, round: Boolean = false): Bitmap {
             val bitmap = Bitmap.createBitmap(sizePx, sizePx, Bitmap.Config.ARGB_8888)
             val canvas = Canvas(bitmap)
             val background = AVATAR_COLORS[Math.floorMod(peer.hashCode(), AVATAR_COLORS.size)]

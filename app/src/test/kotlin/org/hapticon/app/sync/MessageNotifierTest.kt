@@ -177,4 +177,16 @@ class MessageNotifierTest {
         assertEquals(0, android.graphics.Color.alpha(disc.getPixel(0, 0)))
         assertEquals(0xFFAD1457.toInt(), disc.getPixel(108, 4))
     }
+
+    @Test
+    fun personIcon_isDrawnNoLargerThanAndroidKeepsIt_soBuildScalesNothing() {
+        val limit = android.content.res.Resources.getSystem().let {
+            it.getDimensionPixelSize(it.getIdentifier("notification_person_icon_max_size", "dimen", "android"))
+        }
+        assertEquals(limit, notifier.personIconPx)
+        // This phone keeps 144 px: the disc is drawn at that size, below the 216 px of the adaptive icon.
+        assertEquals(144, limit)
+        val drawn = notifier.personOf("bob").icon!!.loadDrawable(context) as android.graphics.drawable.BitmapDrawable
+        assertEquals(144, drawn.bitmap.width)
+    }
 }
