@@ -250,11 +250,13 @@ def bench_arrival(build: Build, count: int) -> int:
     """
     `./build bench --arrival [N]`: the app's arrival-to-touch benchmark (ArrivalToTouchBench, a Robolectric class the
     test suite skips unless HAPTICON_BENCH_ARRIVAL names a message count). Its table shows as it runs and stays in
-    out/app/bench-arrival.txt.
+    out/app/bench-arrival.txt. HAPTICON_BENCH_JVM_ARGS adds options to its JVM (another garbage collector).
     """
     from .android import AndroidApp
     os.environ["HAPTICON_BENCH_ARRIVAL"] = str(count)
-    result = AndroidApp(build, app_module(build.project)).test(r"\.ArrivalToTouchBench\.")
+    # e.g. "-XX:-UseParallelGC -XX:+UseZGC": the test JVM's collector is the build's (ParallelGC) unless this says otherwise.
+    extra = tuple(os.environ.get("HAPTICON_BENCH_JVM_ARGS", "").split())
+    result = AndroidApp(build, app_module(build.project)).test(r"\.ArrivalToTouchBench\.", extra_jvm_args=extra)
     build.kotlinc.close()
     if result.failed or result.crashed or not result.passed:
         print(f"the arrival bench did not run to the end ({result.passed} passed, {result.failed} failed, "

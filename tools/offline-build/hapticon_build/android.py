@@ -529,9 +529,10 @@ class AndroidApp:
              f"targetSdk {self.target_sdk}, {len(dexes)} dex, {size / 1e6:.2f} MB")
 
     # -- tests ------------------------------------------------------------------------------------
-    def test(self, name_filter: str | None, record_screenshots: bool = False) -> TestResult:
+    def test(self, name_filter: str | None, record_screenshots: bool = False, extra_jvm_args: tuple[str, ...] = ()) -> TestResult:
         """Runs the app's Robolectric tests. Screenshot tests compare with docs/images/screens/ unless
-        `record_screenshots` (./build screenshots), which passes `roborazzi.test.record=true` instead."""
+        `record_screenshots` (./build screenshots), which passes `roborazzi.test.record=true` instead. `extra_jvm_args`
+        go last on the test JVM's command line (the arrival bench's `HAPTICON_BENCH_JVM_ARGS`)."""
         if not self.b.sources(self.m, "test"):
             return TestResult(self.m.path)
         self.b.compile_module(self.m, "main")
@@ -570,7 +571,7 @@ class AndroidApp:
             "-XX:CompileCommand=exclude,android.database.sqlite.SQLiteConnection::*applyBlockGuardPolicy",
             f"-Droborazzi.test.{mode}=true", f"-Droborazzi.output.dir={roborazzi}",
             f"-Droborazzi.compare.output.dir={roborazzi}", f"-Droborazzi.result.dir={roborazzi}/results",
-            f"-Dhapticon.screens.dir={os.path.join(self.b.root, 'docs', 'images', 'screens')}"]
+            f"-Dhapticon.screens.dir={os.path.join(self.b.root, 'docs', 'images', 'screens')}", *extra_jvm_args]
         # SDK 36's framework jar is Java 21 bytecode: the classes that ask @Config(sdk = [36]) run in a second JVM on a
         # JDK 21+, everything else (screenshots included) in the build's JDK as before.
         rest = self.b.run_junit(self.m, test_classes, runtime, name_filter, jvm_args=[*jvm_args, "-Dhapticon.test.sdk36=without"])

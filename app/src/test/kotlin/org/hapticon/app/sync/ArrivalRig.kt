@@ -81,7 +81,7 @@ enum class ArrivalStage(val label: String) {
     SENT("bob's send() called"),
     DECODED("delivered and decoded: the inbox listener has it"),
     STORED("stored in Room"),
-    NOTIFYING("receipt sent, arrival planned: the notifier called"),
+    NOTIFYING("receipt handed over, arrival planned: the notifier called"),
     NOTIFIED("notification built and posted"),
     VIBRATED("first vibration handed to the platform"),
 }
