@@ -268,15 +268,24 @@ class _DexerRun:
         return self.returncode != 0 or len(self.done) < self.expected
 
 
+def write_jobs(tool: D8Tool, jobs: list[tuple[str, str]]) -> str:
+    """Writes LibraryDexer's job list (`jar<TAB>out dir` lines) into the project's build cache and returns its path.
+    The directory is made here: with the dex in a shared cache elsewhere, a fresh clone has no `.build-cache/dex/`."""
+    directory = os.path.join(tool.cache, "dex")
+    os.makedirs(directory, exist_ok=True)
+    jobs_file = os.path.join(directory, f"jobs.tmp{os.getpid()}.{threading.get_ident()}")
+    with open(jobs_file, "w") as f:
+        f.writelines(f"{jar}\t{out}\n" for jar, out in jobs)
+    return jobs_file
+
+
 def _run_dexer(tool: D8Tool, jobs: list[tuple[str, str]], pending: dict[int, str], sizes: dict[int, float],
                merge_out: str | None, say, unit: str, ms_per_mb: float, merge_estimate: float,
                jars: list[str]) -> _DexerRun:
     """Runs LibraryDexer on `jobs` (`(jar, out dir)`, `-` for one cached), prints progress through `say` every
     [PROGRESS_EVERY_S] with an estimate (this run's own rate once a few MB are done, else `ms_per_mb`). LibraryDexer
     puts each jar's dex in its place as soon as it is done, so a failure or a stopped build keeps what was done."""
-    jobs_file = os.path.join(tool.cache, "dex", f"jobs.tmp{os.getpid()}.{threading.get_ident()}")
-    with open(jobs_file, "w") as f:
-        f.writelines(f"{jar}\t{out}\n" for jar, out in jobs)
+    jobs_file = write_jobs(tool, jobs)
     cmd = [tool.java, "-Xmx2g", "-XX:+UseParallelGC", "-cp", os.pathsep.join(tool.classpath), "LibraryDexer",
            tool.min_sdk, tool.android_jar, tool.java_home, str(tool.threads), jobs_file, merge_out or "-"]
     log_lines, done, merge_ms = [], set(), None

@@ -892,6 +892,18 @@ class SharedDexCacheTest(unittest.TestCase):
         self.assertEqual(("/u/dex/jars", "/u/dex/libraries"), (shared.jars_root, shared.libraries_root))
 
 
+    def test_writeJobs_freshCloneWithTheDexCacheElsewhere_makesItsDirectory(self):
+        # A fresh clone with HAPTICON_DEX_CACHE elsewhere has no .build-cache/dex/ yet; the first demo failed there.
+        import tempfile
+        from hapticon_build.dexing import D8Tool, write_jobs
+        with tempfile.TemporaryDirectory() as project:
+            cache = os.path.join(project, ".build-cache")
+            tool = D8Tool("java", [], "r8.jar", "android.jar", "/jdk", "26", cache, 2, shared=os.path.join(project, "shared"))
+            path = write_jobs(tool, [("a.jar", "/out/a"), ("b.jar", "-")])
+            self.assertEqual(os.path.join(cache, "dex"), os.path.dirname(path))
+            with open(path) as f:
+                self.assertEqual("a.jar\t/out/a\nb.jar\t-\n", f.read())
+
 class ProgressTest(unittest.TestCase):
     def test_progress_beforeAndPastTheEstimate(self):
         from hapticon_build.ui import progress
